@@ -1,0 +1,83 @@
+// sepax/best_axis.hpp
+//
+// BestAxis: keeps the candidate axis of maximum separation while a SAT scans
+// candidates, applying the tie-break of feature.hpp.  Because the rule is
+// "greater separation, or equal separation and an earlier feature", the result
+// does not depend on the order in which candidates are visited: brute force,
+// Gauss map and traversal, which visit axes in different orders, agree.
+#pragma once
+
+#include "sat_kernel.hpp"
+
+namespace sepax::sat::detail {
+
+template <SatKernel K>
+class BestAxis {
+ public:
+  using T = typename K::FT;
+
+  /// Offer a candidate; returns true when it became the best.
+  bool consider(const K& k, const Separation<T>& s, const Feature& f) {
+    if (!has_) {
+      set(s, f);
+      return true;
+    }
+    const int c = k.compare(s, f, sep_, feature_);
+    if (c > 0 || (c == 0 && precedes(f, feature_))) {
+      set(s, f);
+      return true;
+    }
+    return false;
+  }
+
+  bool has() const { return has_; }
+  const Separation<T>& separation() const { return sep_; }
+  const Feature& feature() const { return feature_; }
+
+  /// The finished result.
+  SatResult<T> result(K& k, const SatStats& stats, bool early_out) const {
+    SatResult<T> r;
+    r.feature = feature_;
+    r.separation = sep_;
+    r.overlap = k.sign(sep_, feature_) <= 0;
+    r.axis = k.axis(feature_);
+    r.early_out = early_out;
+    r.stats = stats;
+    r.stats.exact_fallbacks = k.exact_fallbacks();
+    return r;
+  }
+
+ private:
+  void set(const Separation<T>& s, const Feature& f) {
+    sep_ = s;
+    feature_ = f;
+    has_ = true;
+  }
+
+  bool has_ = false;
+  Separation<T> sep_;
+  Feature feature_;
+};
+
+/// The face axes of A then of B: shared by every SAT.  Returns true when
+/// early_out is set and a separating face axis was found.
+template <SatKernel K>
+bool scan_face_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt) {
+  for (int f = 0; f < k.a().face_count(); ++f) {
+    const auto q = k.face_query_a(f);
+    ++stats.face_axes;
+    const Feature feat = Feature::face_a(f, q.support_vertex);
+    best.consider(k, q.separation, feat);
+    if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
+  }
+  for (int f = 0; f < k.b().face_count(); ++f) {
+    const auto q = k.face_query_b(f);
+    ++stats.face_axes;
+    const Feature feat = Feature::face_b(q.support_vertex, f);
+    best.consider(k, q.separation, feat);
+    if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
+  }
+  return false;
+}
+
+}  // namespace sepax::sat::detail

@@ -1,0 +1,554 @@
+// sepax/convex_polyhedron.hpp
+//
+// ConvexPolyhedron<T>: a validated convex polyhedron as a half-edge mesh.
+//
+// Layout (flat arrays, indices are int):
+//   vertices     V points
+//   half-edges   2E records, stored in twin pairs: half-edge 2k and 2k+1 are
+//                the two sides of undirected edge k (twin(h) == h ^ 1).  A
+//                half-edge runs from its origin to the origin of its twin, and
+//                belongs to the face on its left seen from outside (faces are
+//                counter-clockwise seen from outside).
+//   faces        F loops, each with a plane and the three vertices that define
+//                that plane (the "plane triple", see below).
+//   vertex fans  for each vertex, its outgoing half-edges (CSR arrays).
+//
+// Edge k runs from tail(k) = origin(2k) to head(k) = origin(2k+1); its two faces
+// are face(2k) and face(2k+1); its direction head - tail is a positive multiple
+// of normal(face(2k)) x normal(face(2k+1)).  On the Gauss map, edge k is the arc
+// between those two normals, and the plane of that arc has normal head - tail:
+// this is what the Minkowski-face test uses, and it stays defined for a
+// double-sided polygon, whose two face normals are opposite.
+//
+// Planes.  A face's plane is the plane through its plane triple (i, j, k):
+//   N = (v_j - v_i) x (v_k - v_i),   offset = N . v_i.
+// For number types that normalise (float, double, CORE::Expr) the stored normal
+// is N/|N| and the offset is taken with that unit normal; for rationals the
+// stored normal is N itself, exactly.  Defining planes by vertex triples makes
+// every plane a function of the vertex coordinates alone, so the exact image of
+// a float polyhedron (convert_from) has exactly defined planes, and the robust
+// predicates can decide the sign of any plane test from the vertices.
+//
+// Flat shapes.  A convex polygon is a polyhedron with two faces, the polygon and
+// its reverse (a double-sided polygon); its two plane triples are the same
+// three vertices in opposite order, so its two normals are exactly opposite for
+// every T.  is_flat() says which case a polyhedron is.
+//
+// Validation (from_faces) throws InvalidInput naming the broken rule and the
+// offending vertex/face/edge.  See validate() for the list.  Tolerances for
+// float and double are in tolerances.hpp; for exact T every check is exact.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <span>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "error.hpp"
+#include "number_traits.hpp"
+#include "tolerances.hpp"
+#include "vec3.hpp"
+
+namespace sepax {
+
+struct HalfEdge {
+  int origin = -1;  // vertex this half-edge starts at
+  int face = -1;    // face on its left (seen from outside)
+  int next = -1;    // next half-edge around that face
+  int prev = -1;    // previous half-edge around that face
+};
+
+struct FaceLoop {
+  int edge = -1;                          // first half-edge of the loop
+  int count = 0;                          // number of vertices (= half-edges)
+  std::array<int, 3> plane_vertices{};    // the plane triple (i, j, k)
+};
+
+template <class T>
+struct Plane {
+  Vec3<T> normal;  // outward; unit length iff number_traits<T>::normalizes
+  T offset;        // normal . x == offset on the plane
+};
+
+/// Plane through three points, normalised when T normalises.
+template <Number T>
+inline Plane<T> plane_through(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  Vec3<T> n = cross(Vec3<T>(b - a), Vec3<T>(c - a));
+  if constexpr (number_traits<T>::normalizes) {
+    const T len = number_traits<T>::sqrt(squared_norm(n));
+    if (len > T(0)) n = Vec3<T>(n[0] / len, n[1] / len, n[2] / len);
+  }
+  const T off = dot(n, a);
+  return Plane<T>{n, off};
+}
+
+template <Number T>
+class ConvexPolyhedron {
+ public:
+  using Scalar = T;
+
+  ConvexPolyhedron() = default;
+
+  /// Build from vertices and faces (each face a list of vertex indices,
+  /// counter-clockwise seen from outside), and validate.  A flat shape is given
+  /// as two faces: the polygon and the same polygon reversed.
+  static ConvexPolyhedron from_faces(std::vector<Vec3<T>> vertices,
+                                     const std::vector<std::vector<int>>& faces) {
+    ConvexPolyhedron p;
+    p.vertices_ = std::move(vertices);
+    p.check_coordinates();
+    p.build_topology(faces);
+    p.choose_plane_triples();
+    p.compute_derived();
+    p.validate_geometry();
+    return p;
+  }
+
+  /// A double-sided convex polygon from its vertices in order (either
+  /// orientation); the first face's normal follows the right-hand rule.
+  static ConvexPolyhedron polygon(std::vector<Vec3<T>> loop) {
+    std::vector<int> front(loop.size());
+    for (std::size_t i = 0; i < loop.size(); ++i) front[i] = static_cast<int>(i);
+    std::vector<int> back(front.rbegin(), front.rend());
+    return from_faces(std::move(loop), {front, back});
+  }
+
+  /// The same combinatorics and plane triples with the vertices converted from
+  /// another number type U (float or double) to T.  Planes and the centroid
+  /// are recomputed in T.  No geometric re-validation: the exact image of a
+  /// float polyhedron may have faces that are planar only up to float rounding,
+  /// and sepax defines each face's plane by its plane triple exactly so that
+  /// float and exact runs see "the same inputs".
+  template <Number U>
+  static ConvexPolyhedron convert_from(const ConvexPolyhedron<U>& other) {
+    ConvexPolyhedron p;
+    p.vertices_.reserve(other.vertex_count());
+    for (const auto& v : other.vertices()) p.vertices_.push_back(vec_cast<T>(v));
+    p.half_edges_ = other.half_edges();
+    p.faces_ = other.faces();
+    p.fan_start_ = other.fan_start();
+    p.fan_ = other.fan();
+    p.compute_derived();
+    return p;
+  }
+
+  /// Same topology with new vertex positions (for rigid motions: the caller
+  /// guarantees the new positions are a rigid image of the old ones).
+  ConvexPolyhedron with_vertices(std::vector<Vec3<T>> vertices) const {
+    ConvexPolyhedron p = *this;
+    p.vertices_ = std::move(vertices);
+    p.compute_derived();
+    return p;
+  }
+
+  // ---- sizes ----
+  int vertex_count() const { return static_cast<int>(vertices_.size()); }
+  int half_edge_count() const { return static_cast<int>(half_edges_.size()); }
+  int edge_count() const { return half_edge_count() / 2; }
+  int face_count() const { return static_cast<int>(faces_.size()); }
+  bool empty() const { return vertices_.empty(); }
+  /// A double-sided polygon (two faces with opposite normals).
+  bool is_flat() const { return faces_.size() == 2; }
+
+  // ---- vertices ----
+  const Vec3<T>& vertex(int v) const { return vertices_[static_cast<std::size_t>(v)]; }
+  const std::vector<Vec3<T>>& vertices() const { return vertices_; }
+  /// Outgoing half-edges of vertex v.
+  std::span<const int> vertex_half_edges(int v) const {
+    const auto b = static_cast<std::size_t>(fan_start_[static_cast<std::size_t>(v)]);
+    const auto e = static_cast<std::size_t>(fan_start_[static_cast<std::size_t>(v) + 1]);
+    return std::span<const int>(fan_.data() + b, e - b);
+  }
+
+  // ---- half-edges and edges ----
+  static int twin(int h) { return h ^ 1; }
+  const HalfEdge& half_edge(int h) const { return half_edges_[static_cast<std::size_t>(h)]; }
+  const std::vector<HalfEdge>& half_edges() const { return half_edges_; }
+  int edge_tail(int e) const { return half_edge(2 * e).origin; }
+  int edge_head(int e) const { return half_edge(2 * e + 1).origin; }
+  /// side 0: the face of half-edge 2e; side 1: the face of half-edge 2e+1.
+  int edge_face(int e, int side) const { return half_edge(2 * e + side).face; }
+  /// head - tail; parallel to normal(edge_face(e,0)) x normal(edge_face(e,1)).
+  Vec3<T> edge_direction(int e) const {
+    return Vec3<T>(vertex(edge_head(e)) - vertex(edge_tail(e)));
+  }
+
+  // ---- faces ----
+  const FaceLoop& face(int f) const { return faces_[static_cast<std::size_t>(f)]; }
+  const std::vector<FaceLoop>& faces() const { return faces_; }
+  const Plane<T>& plane(int f) const { return planes_[static_cast<std::size_t>(f)]; }
+  const std::vector<Plane<T>>& planes() const { return planes_; }
+  /// The face's vertex indices in loop order.
+  std::vector<int> face_vertices(int f) const {
+    std::vector<int> out;
+    out.reserve(static_cast<std::size_t>(face(f).count));
+    int h = face(f).edge;
+    for (int i = 0; i < face(f).count; ++i) {
+      out.push_back(half_edge(h).origin);
+      h = half_edge(h).next;
+    }
+    return out;
+  }
+  /// The face's plane triple as points.
+  std::array<Vec3<T>, 3> plane_points(int f) const {
+    const auto& t = face(f).plane_vertices;
+    return {vertex(t[0]), vertex(t[1]), vertex(t[2])};
+  }
+
+  // ---- derived geometry ----
+  /// Average of the vertices: strictly inside a solid, strictly inside the
+  /// polygon of a flat shape (rounded to T for float types).
+  const Vec3<T>& centroid() const { return centroid_; }
+  const Vec3<T>& bounds_min() const { return bmin_; }
+  const Vec3<T>& bounds_max() const { return bmax_; }
+  /// Length of the bounding-box diagonal, as a double: the scale every
+  /// tolerance is relative to.  (For exact T it is used for reporting only.)
+  double extent() const { return extent_; }
+  /// max |coordinate| over all vertices, as a double (for filter bounds).
+  double max_abs_coordinate() const { return max_abs_; }
+
+  // raw arrays, for converters and serialisers
+  const std::vector<int>& fan_start() const { return fan_start_; }
+  const std::vector<int>& fan() const { return fan_; }
+
+ private:
+  template <Number U>
+  friend class ConvexPolyhedron;
+
+  [[noreturn]] static void fail(ErrorCode code, const std::string& what) {
+    throw InvalidInput(code, what);
+  }
+
+  void check_coordinates() {
+    for (std::size_t i = 0; i < vertices_.size(); ++i) {
+      for (int c = 0; c < 3; ++c) {
+        if (!number_traits<T>::is_finite(vertices_[i][c])) {
+          std::ostringstream s;
+          s << "vertex " << i << " has a non-finite coordinate (NaN or infinity)";
+          fail(ErrorCode::NonFinite, s.str());
+        }
+      }
+    }
+    if (vertices_.size() < 3) {
+      fail(ErrorCode::TooFewPoints, "a polyhedron needs at least 3 vertices, got " +
+                                        std::to_string(vertices_.size()));
+    }
+  }
+
+  void build_topology(const std::vector<std::vector<int>>& faces) {
+    const int nv = vertex_count();
+    if (faces.size() < 2) fail(ErrorCode::NotManifold, "a closed polyhedron needs at least 2 faces");
+    std::map<std::pair<int, int>, int> directed;  // (u,v) -> half-edge
+    std::map<std::pair<int, int>, int> undirected;  // (min,max) -> edge index
+    half_edges_.clear();
+    faces_.clear();
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const auto& loop = faces[f];
+      const std::string fname = "face " + std::to_string(f);
+      if (loop.size() < 3) fail(ErrorCode::DegenerateFace, fname + " has fewer than 3 vertices");
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        if (loop[i] < 0 || loop[i] >= nv) {
+          fail(ErrorCode::BadIndex, fname + " refers to vertex " + std::to_string(loop[i]) +
+                                        ", but there are only " + std::to_string(nv) + " vertices");
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+          if (loop[i] == loop[j]) {
+            fail(ErrorCode::DegenerateFace,
+                 fname + " uses vertex " + std::to_string(loop[i]) + " twice");
+          }
+        }
+      }
+      FaceLoop fl;
+      fl.count = static_cast<int>(loop.size());
+      std::vector<int> loop_edges;
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const int u = loop[i];
+        const int v = loop[(i + 1) % loop.size()];
+        if (directed.count({u, v})) {
+          fail(ErrorCode::NotManifold,
+               "edge " + std::to_string(u) + "->" + std::to_string(v) +
+                   " is used twice in the same direction (second time in " + fname +
+                   "): faces are inconsistently oriented or the surface is not a 2-manifold");
+        }
+        const auto key = std::minmax(u, v);
+        int h;
+        auto it = undirected.find(key);
+        if (it == undirected.end()) {
+          const int e = static_cast<int>(half_edges_.size() / 2);
+          undirected[key] = e;
+          half_edges_.push_back(HalfEdge{});
+          half_edges_.push_back(HalfEdge{});
+          h = 2 * e;
+        } else {
+          h = 2 * it->second + 1;
+          if (half_edges_[static_cast<std::size_t>(h)].face != -1) {
+            fail(ErrorCode::NotManifold, "edge " + std::to_string(key.first) + "-" +
+                                             std::to_string(key.second) +
+                                             " is shared by more than two faces");
+          }
+        }
+        directed[{u, v}] = h;
+        half_edges_[static_cast<std::size_t>(h)].origin = u;
+        half_edges_[static_cast<std::size_t>(h)].face = static_cast<int>(f);
+        loop_edges.push_back(h);
+      }
+      for (std::size_t i = 0; i < loop_edges.size(); ++i) {
+        auto& he = half_edges_[static_cast<std::size_t>(loop_edges[i])];
+        he.next = loop_edges[(i + 1) % loop_edges.size()];
+        he.prev = loop_edges[(i + loop_edges.size() - 1) % loop_edges.size()];
+      }
+      fl.edge = loop_edges[0];
+      faces_.push_back(fl);
+    }
+    for (std::size_t h = 0; h < half_edges_.size(); ++h) {
+      if (half_edges_[h].face == -1) {
+        const auto& o = half_edges_[h ^ 1];
+        const int u = o.origin;
+        const int v = half_edges_[static_cast<std::size_t>(o.next)].origin;
+        fail(ErrorCode::NotManifold, "edge " + std::to_string(u) + "-" + std::to_string(v) +
+                                         " has only one face: the surface is not closed");
+      }
+    }
+    // vertex fans
+    std::vector<int> degree(static_cast<std::size_t>(nv), 0);
+    for (const auto& he : half_edges_) ++degree[static_cast<std::size_t>(he.origin)];
+    for (int v = 0; v < nv; ++v) {
+      if (degree[static_cast<std::size_t>(v)] == 0) {
+        fail(ErrorCode::UnusedVertex, "vertex " + std::to_string(v) + " is on no face");
+      }
+    }
+    fan_start_.assign(static_cast<std::size_t>(nv) + 1, 0);
+    for (int v = 0; v < nv; ++v)
+      fan_start_[static_cast<std::size_t>(v) + 1] =
+          fan_start_[static_cast<std::size_t>(v)] + degree[static_cast<std::size_t>(v)];
+    fan_.assign(half_edges_.size(), -1);
+    std::vector<int> fill(fan_start_.begin(), fan_start_.end() - 1);
+    for (std::size_t h = 0; h < half_edges_.size(); ++h) {
+      const auto o = static_cast<std::size_t>(half_edges_[h].origin);
+      fan_[static_cast<std::size_t>(fill[o]++)] = static_cast<int>(h);
+    }
+    const long euler = static_cast<long>(nv) - static_cast<long>(edge_count()) +
+                       static_cast<long>(face_count());
+    if (euler != 2) {
+      fail(ErrorCode::BadEuler, "V - E + F = " + std::to_string(nv) + " - " +
+                                    std::to_string(edge_count()) + " + " +
+                                    std::to_string(face_count()) + " = " + std::to_string(euler) +
+                                    ", not 2: the surface is not a topological sphere");
+    }
+  }
+
+  // Plane triple: the best-conditioned triangle (0, j, k) of the face loop
+  // (largest |cross| in T) for faces of up to 16 vertices; (0, n/3, 2n/3) for
+  // larger ones.  For the back face of a flat shape, the front face's triple
+  // reversed, so the two normals are exactly opposite.
+  void choose_plane_triples() {
+    for (int f = 0; f < face_count(); ++f) {
+      const auto loop = face_vertices(f);
+      const int n = static_cast<int>(loop.size());
+      std::array<int, 3> best{loop[0], loop[1], loop[2]};
+      if (n <= 16) {
+        T best_area(-1);
+        for (int j = 1; j + 1 < n; ++j) {
+          for (int k = j + 1; k < n; ++k) {
+            const Vec3<T> c = cross(Vec3<T>(vertex(loop[j]) - vertex(loop[0])),
+                                    Vec3<T>(vertex(loop[k]) - vertex(loop[0])));
+            const T a = squared_norm(c);
+            if (a > best_area) {
+              best_area = a;
+              best = {loop[0], loop[j], loop[k]};
+            }
+          }
+        }
+      } else {
+        best = {loop[0], loop[n / 3], loop[(2 * n) / 3]};
+      }
+      faces_[static_cast<std::size_t>(f)].plane_vertices = best;
+    }
+    if (face_count() == 2) {
+      const auto& t = faces_[0].plane_vertices;
+      faces_[1].plane_vertices = {t[0], t[2], t[1]};
+    }
+  }
+
+  void compute_derived() {
+    planes_.clear();
+    planes_.reserve(faces_.size());
+    for (int f = 0; f < face_count(); ++f) {
+      const auto pts = plane_points(f);
+      planes_.push_back(plane_through(pts[0], pts[1], pts[2]));
+    }
+    Vec3<T> sum(T(0), T(0), T(0));
+    bmin_ = bmax_ = vertices_.empty() ? sum : vertices_[0];
+    for (const auto& v : vertices_) {
+      sum = Vec3<T>(sum + v);
+      for (int c = 0; c < 3; ++c) {
+        if (v[c] < bmin_[c]) bmin_[c] = v[c];
+        if (v[c] > bmax_[c]) bmax_[c] = v[c];
+      }
+    }
+    const T n(static_cast<int>(vertices_.size()));
+    if (!vertices_.empty()) centroid_ = Vec3<T>(sum[0] / n, sum[1] / n, sum[2] / n);
+    double d2 = 0;
+    max_abs_ = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double w = to_double(T(bmax_[c] - bmin_[c]));
+      d2 += w * w;
+      max_abs_ = std::max({max_abs_, std::abs(to_double(bmin_[c])), std::abs(to_double(bmax_[c]))});
+    }
+    extent_ = std::sqrt(d2);
+  }
+
+  // Signed distance-like value of p above plane f: exact N.(p - v_i) for exact
+  // T; the Euclidean signed distance for normalising T.
+  T height(int f, const Vec3<T>& p) const {
+    const auto& pl = plane(f);
+    return T(dot(pl.normal, p) - pl.offset);
+  }
+
+  // Tolerance in height() units for a relative tolerance rel.
+  T height_tolerance(double rel) const {
+    if constexpr (number_traits<T>::is_exact) {
+      (void)rel;
+      return T(0);
+    } else {
+      return static_cast<T>(rel * extent_);
+    }
+  }
+
+  void validate_geometry() {
+    if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
+    if constexpr (!number_traits<T>::is_exact) {
+      // Squares of coordinates must stay finite (plane and cross-product terms).
+      if (!std::isfinite(max_abs_ * max_abs_ * max_abs_ * 8.0) ||
+          !number_traits<T>::is_finite(static_cast<T>(max_abs_ * max_abs_ * 4.0))) {
+        fail(ErrorCode::BadScale, "coordinates up to " + std::to_string(max_abs_) +
+                                      " overflow " + std::string(number_traits<T>::name) +
+                                      " in plane computations");
+      }
+    }
+    const T plan_tol = height_tolerance(Tolerances<T>::planarity);
+    const T conv_tol = height_tolerance(Tolerances<T>::convexity);
+    // faces: non-zero area, planar, convex loops
+    for (int f = 0; f < face_count(); ++f) {
+      const auto& pl = plane(f);
+      if (is_zero(pl.normal) || !(squared_norm(pl.normal) > T(0))) {
+        fail(ErrorCode::DegenerateFace, "face " + std::to_string(f) +
+                                            " has zero area (its vertices are collinear)");
+      }
+      const auto loop = face_vertices(f);
+      const int n = static_cast<int>(loop.size());
+      for (int i = 0; i < n; ++i) {
+        const T h = height(f, vertex(loop[static_cast<std::size_t>(i)]));
+        if (abs_of(h) > plan_tol) {
+          fail(ErrorCode::NonPlanarFace,
+               "face " + std::to_string(f) + " is not planar: vertex " + std::to_string(loop[i]) +
+                   " is " + std::to_string(to_double(h)) + " off the face's plane");
+        }
+      }
+      for (int i = 0; i < n; ++i) {
+        const Vec3<T>& a = vertex(loop[static_cast<std::size_t>((i + n - 1) % n)]);
+        const Vec3<T>& b = vertex(loop[static_cast<std::size_t>(i)]);
+        const Vec3<T>& c = vertex(loop[static_cast<std::size_t>((i + 1) % n)]);
+        const Vec3<T> ab(b - a);
+        const Vec3<T> bc(c - b);
+        const T turn = dot(pl.normal, cross(ab, bc));
+        bool bad;
+        if constexpr (number_traits<T>::is_exact) {
+          bad = !(turn > T(0));
+        } else {
+          // turn/|ab| is the distance of c from the line a-b (times |n| = 1).
+          const T lab = number_traits<T>::sqrt(squared_norm(ab));
+          bad = !(lab > T(0)) || turn < -(conv_tol * lab);
+        }
+        if (bad) {
+          fail(ErrorCode::NonConvexFace,
+               "face " + std::to_string(f) + " is not convex at vertex " +
+                   std::to_string(loop[static_cast<std::size_t>(i)]) +
+                   (number_traits<T>::is_exact ? " (reflex or collinear corner)" : " (reflex corner)"));
+        }
+      }
+    }
+    if (is_flat()) {
+      if (!(cross(plane(0).normal, plane(1).normal) == Vec3<T>(T(0), T(0), T(0))) ||
+          !(dot(plane(0).normal, plane(1).normal) < T(0))) {
+        fail(ErrorCode::NotConvex, "a two-face shape must be a polygon and its reverse");
+      }
+      return;
+    }
+    // solids: every vertex has degree >= 3
+    for (int v = 0; v < vertex_count(); ++v) {
+      if (vertex_half_edges(v).size() < 3) {
+        fail(ErrorCode::NotConvex, "vertex " + std::to_string(v) +
+                                       " has only two edges (it lies in the middle of an edge)");
+      }
+    }
+    // global convexity and orientation
+    int faces_all_above = 0;
+    int first_bad_face = -1, first_bad_vertex = -1;
+    double first_bad_height = 0;
+    for (int f = 0; f < face_count(); ++f) {
+      bool any_below = false, any_above = false;
+      for (int v = 0; v < vertex_count(); ++v) {
+        const T h = height(f, vertex(v));
+        if (h < -conv_tol) any_below = true;
+        if (h > conv_tol) {
+          any_above = true;
+          if (first_bad_face < 0) {
+            first_bad_face = f;
+            first_bad_vertex = v;
+            first_bad_height = to_double(h);
+          }
+        }
+      }
+      if (any_above && !any_below) ++faces_all_above;
+    }
+    if (faces_all_above == face_count()) {
+      fail(ErrorCode::InwardFaces,
+           "all faces point inward: list each face counter-clockwise seen from outside");
+    }
+    if (first_bad_face >= 0) {
+      fail(ErrorCode::NotConvex, "not convex: vertex " + std::to_string(first_bad_vertex) +
+                                     " is " + std::to_string(first_bad_height) +
+                                     " above the plane of face " + std::to_string(first_bad_face));
+    }
+    // adjacent faces must not be coplanar (they must be merged)
+    for (int e = 0; e < edge_count(); ++e) {
+      const int f = edge_face(e, 0), g = edge_face(e, 1);
+      bool coplanar;
+      if constexpr (number_traits<T>::is_exact) {
+        coplanar = is_zero(cross(plane(f).normal, plane(g).normal));
+      } else {
+        const T tol = height_tolerance(Tolerances<T>::coplanar / 4);
+        coplanar = true;
+        for (int v : face_vertices(g)) {
+          if (abs_of(height(f, vertex(v))) > tol) {
+            coplanar = false;
+            break;
+          }
+        }
+      }
+      if (coplanar) {
+        fail(ErrorCode::NotConvex, "faces " + std::to_string(f) + " and " + std::to_string(g) +
+                                       " are adjacent and coplanar: merge them into one face");
+      }
+    }
+  }
+
+  std::vector<Vec3<T>> vertices_;
+  std::vector<HalfEdge> half_edges_;
+  std::vector<FaceLoop> faces_;
+  std::vector<Plane<T>> planes_;
+  std::vector<int> fan_start_;
+  std::vector<int> fan_;
+  Vec3<T> centroid_ = Vec3<T>(T(0), T(0), T(0));
+  Vec3<T> bmin_ = Vec3<T>(T(0), T(0), T(0));
+  Vec3<T> bmax_ = Vec3<T>(T(0), T(0), T(0));
+  double extent_ = 0;
+  double max_abs_ = 0;
+};
+
+}  // namespace sepax

@@ -1,0 +1,177 @@
+// sepax/plain_kernel.hpp
+//
+// PlainKernel<T>: the SAT kernel that evaluates everything in T.
+//
+// * Exact T (rationals, Epeck::FT): every value and decision is exact.  Axes
+//   are unnormalised and separations compared in squared form (separation.hpp);
+//   exactly parallel edges are skipped; the support check of the brute force
+//   compares projections exactly.
+// * float/double: plain rounding arithmetic, with the named tolerances of
+//   tolerances.hpp (parallel, support).  This is the fast path the benchmark
+//   measures and the fuzzer audits against exact arithmetic.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "sat_kernel.hpp"
+
+namespace sepax {
+
+template <Number T>
+class PlainKernel {
+ public:
+  using FT = T;
+
+  PlainKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) : a_(a), b_(b) {}
+
+  const ConvexPolyhedron<T>& a() const { return a_; }
+  const ConvexPolyhedron<T>& b() const { return b_; }
+
+  FaceQuery<T> face_query_a(int f) const { return face_query(a_, f, b_); }
+  FaceQuery<T> face_query_b(int f) const { return face_query(b_, f, a_); }
+
+  ArcSigns arc_signs(int ea, int eb) const {
+    const Vec3<T> da = a_.edge_direction(ea);
+    const Vec3<T> db = b_.edge_direction(eb);
+    ArcSigns s;
+    s.cba = sign_of(dot(b_.plane(b_.edge_face(eb, 0)).normal, da));
+    s.dba = sign_of(dot(b_.plane(b_.edge_face(eb, 1)).normal, da));
+    s.adc = -sign_of(dot(a_.plane(a_.edge_face(ea, 0)).normal, db));
+    s.bdc = -sign_of(dot(a_.plane(a_.edge_face(ea, 1)).normal, db));
+    return s;
+  }
+
+  bool edges_parallel(int ea, int eb) const {
+    const Vec3<T> da = a_.edge_direction(ea);
+    const Vec3<T> db = b_.edge_direction(eb);
+    const Vec3<T> n = cross(da, db);
+    if constexpr (number_traits<T>::is_exact) {
+      return is_zero(n);
+    } else {
+      const T tol = static_cast<T>(Tolerances<T>::parallel);
+      return !(squared_norm(n) > tol * tol * squared_norm(da) * squared_norm(db));
+    }
+  }
+
+  Separation<T> edge_separation(int ea, int eb) const {
+    Vec3<T> n = edge_axis(ea, eb);
+    const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
+    const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
+    return Separation<T>{dot(n, Vec3<T>(pb - pa)), norm2_of(n)};
+  }
+
+  std::optional<Separation<T>> edge_separation_full(int ea, int eb) const {
+    const Vec3<T> n = unoriented_axis(ea, eb);
+    T min_a, max_a, min_b, max_b;
+    project(a_, n, min_a, max_a);
+    project(b_, n, min_b, max_b);
+    const T ta = support_tolerance(a_), tb = support_tolerance(b_);
+    const T pa0 = dot(n, a_.vertex(a_.edge_tail(ea))), pa1 = dot(n, a_.vertex(a_.edge_head(ea)));
+    const T pb0 = dot(n, b_.vertex(b_.edge_tail(eb))), pb1 = dot(n, b_.vertex(b_.edge_head(eb)));
+    // +n from A to B: A's edge at A's max, B's edge at B's min.
+    const bool plus = pa0 >= max_a - ta && pa1 >= max_a - ta && pb0 <= min_b + tb && pb1 <= min_b + tb;
+    // -n from A to B: A's edge at A's min, B's edge at B's max.
+    const bool minus = pa0 <= min_a + ta && pa1 <= min_a + ta && pb0 >= max_b - tb && pb1 >= max_b - tb;
+    if (!plus && !minus) return std::nullopt;
+    const T n2 = norm2_of(n);
+    const Separation<T> sp{T(min_b - max_a), n2};
+    const Separation<T> sm{T(min_a - max_b), n2};
+    if (plus && minus) return sepax::compare(sp, sm) >= 0 ? sp : sm;
+    return plus ? sp : sm;
+  }
+
+  int compare(const Separation<T>& x, const Feature&, const Separation<T>& y, const Feature&) const {
+    return sepax::compare(x, y);
+  }
+  int sign(const Separation<T>& x, const Feature&) const { return sepax::sign(x); }
+
+  Vec3<T> axis(const Feature& f) const {
+    switch (f.type) {
+      case FeatureType::FaceA: return a_.plane(f.a).normal;
+      case FeatureType::FaceB: return Vec3<T>(-b_.plane(f.b).normal);
+      case FeatureType::EdgePair: return oriented_axis_for_report(f.a, f.b);
+    }
+    return Vec3<T>(T(0), T(0), T(0));
+  }
+
+  std::int64_t exact_fallbacks() const { return 0; }
+
+ private:
+  static FaceQuery<T> face_query(const ConvexPolyhedron<T>& p, int f, const ConvexPolyhedron<T>& q) {
+    const Plane<T>& pl = p.plane(f);
+    const auto& vs = q.vertices();
+    int best = 0;
+    T best_h = dot(pl.normal, vs[0]);
+    for (int i = 1; i < static_cast<int>(vs.size()); ++i) {
+      const T h = dot(pl.normal, vs[static_cast<std::size_t>(i)]);
+      if (h < best_h) {
+        best_h = h;
+        best = i;
+      }
+    }
+    return FaceQuery<T>{Separation<T>{T(best_h - pl.offset), norm2_of(pl.normal)}, best};
+  }
+
+  static T norm2_of(const Vec3<T>& n) {
+    if constexpr (number_traits<T>::normalizes) {
+      (void)n;
+      return T(1);
+    } else {
+      return squared_norm(n);
+    }
+  }
+
+  static Vec3<T> normalized(const Vec3<T>& n) {
+    if constexpr (number_traits<T>::normalizes) {
+      const T len = number_traits<T>::sqrt(squared_norm(n));
+      return Vec3<T>(n[0] / len, n[1] / len, n[2] / len);
+    } else {
+      return n;
+    }
+  }
+
+  // eA x eB, normalised when T normalises (not oriented).
+  Vec3<T> unoriented_axis(int ea, int eb) const {
+    return normalized(cross(a_.edge_direction(ea), b_.edge_direction(eb)));
+  }
+
+  // eA x eB oriented away from A's centroid at edge eA (Gregorius' rule: for a
+  // Minkowski edge pair the axis points out of A there, for any interior point).
+  Vec3<T> edge_axis(int ea, int eb) const {
+    Vec3<T> n = unoriented_axis(ea, eb);
+    const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
+    if (dot(n, Vec3<T>(pa - a_.centroid())) < T(0)) n = Vec3<T>(-n);
+    return n;
+  }
+
+  Vec3<T> oriented_axis_for_report(int ea, int eb) const { return edge_axis(ea, eb); }
+
+  static void project(const ConvexPolyhedron<T>& p, const Vec3<T>& n, T& lo, T& hi) {
+    lo = hi = dot(n, p.vertex(0));
+    for (int i = 1; i < p.vertex_count(); ++i) {
+      const T h = dot(n, p.vertex(i));
+      if (h < lo) lo = h;
+      if (h > hi) hi = h;
+    }
+  }
+
+  static T support_tolerance(const ConvexPolyhedron<T>& p) {
+    if constexpr (number_traits<T>::is_exact) {
+      (void)p;
+      return T(0);
+    } else {
+      return static_cast<T>(Tolerances<T>::support * p.extent());
+    }
+  }
+
+  const ConvexPolyhedron<T>& a_;
+  const ConvexPolyhedron<T>& b_;
+};
+
+template <Number T>
+struct kernel_for<policy::Plain, T> {
+  using type = PlainKernel<T>;
+};
+
+}  // namespace sepax

@@ -1,0 +1,96 @@
+// sepax/sat_kernel.hpp
+//
+// The interface between the SAT algorithms and arithmetic.
+//
+// A SAT algorithm (brute force, Gauss map, traversal) is written once.  Every
+// number it computes and every sign it decides goes through a *kernel*, built
+// for one pair of shapes (A, B) in a common frame.  Kernels take features
+// (indices into A and B), not numbers, so a kernel can recompute any decision
+// exactly from the vertex coordinates: that is how the robust policy (robust/)
+// makes float SATs decide exactly what exact arithmetic decides, without a
+// second copy of any algorithm.
+//
+// A *policy* is a tag that picks the kernel for a number type:
+//   policy::Plain   PlainKernel<T>: evaluate in T.  Exact for exact T; plain
+//                   rounding arithmetic (with the named tolerances of
+//                   tolerances.hpp) for float and double.
+//   policy::Robust  (robust/sepax/robust/robust_kernel.hpp) float/double values,
+//                   every decision by a filtered exact predicate.
+// Usage:  sat::gauss_map(A, B)                  // Plain
+//         sat::gauss_map<policy::Robust>(A, B)  // Robust (include robust/)
+#pragma once
+
+#include <concepts>
+#include <optional>
+
+#include "convex_polyhedron.hpp"
+#include "feature.hpp"
+#include "sat_result.hpp"
+#include "separation.hpp"
+
+namespace sepax {
+
+namespace policy {
+struct Plain {};
+}  // namespace policy
+
+/// Result of a face query: the support vertex of the other shape along the
+/// face's inward normal, and its height above the face plane.
+template <class T>
+struct FaceQuery {
+  Separation<T> separation;
+  int support_vertex = -1;
+};
+
+/// Signs of the four triple products of the Minkowski-face (arc intersection)
+/// test of edge eA of A and edge eB of B.  With a, b the normals of eA's faces
+/// (sides 0 and 1), c, d those of eB's, and the Gauss map of -B (so -c, -d):
+///   cba = sign((-c).(b x a)) = sign(c . eA)     dba = sign(d . eA)
+///   adc = sign(a.((-d) x (-c))) = -sign(a . eB) bdc = -sign(b . eB)
+/// using the edge directions eA ~ a x b, eB ~ c x d, which stay defined for a
+/// double-sided polygon (a = -b).  The arcs cross (eA x eB is a face normal of
+/// A - B) iff cba*dba < 0, adc*bdc < 0 (they straddle each other's planes)
+/// and cba*bdc > 0 (same hemisphere).  Signs, not products: products of float
+/// triple products can underflow to zero.
+struct ArcSigns {
+  int cba = 0, dba = 0, adc = 0, bdc = 0;
+  bool minkowski_face() const { return cba * dba < 0 && adc * bdc < 0 && cba * bdc > 0; }
+};
+
+/// What a SAT algorithm needs of a kernel.
+template <class K>
+concept SatKernel = requires(K k, const K ck, int i, int j, const Separation<typename K::FT>& s,
+                             const Feature& f) {
+  typename K::FT;
+  { ck.a() } -> std::same_as<const ConvexPolyhedron<typename K::FT>&>;
+  { ck.b() } -> std::same_as<const ConvexPolyhedron<typename K::FT>&>;
+  // face i of A against B / face i of B against A (full support scan)
+  { k.face_query_a(i) } -> std::same_as<FaceQuery<typename K::FT>>;
+  { k.face_query_b(i) } -> std::same_as<FaceQuery<typename K::FT>>;
+  // Minkowski-face test of edge i of A and edge j of B
+  { k.arc_signs(i, j) } -> std::same_as<ArcSigns>;
+  // edges skipped as parallel
+  { k.edges_parallel(i, j) } -> std::same_as<bool>;
+  // O(1) separation of a Minkowski edge pair, axis oriented from A to B
+  { k.edge_separation(i, j) } -> std::same_as<Separation<typename K::FT>>;
+  // brute force: project both shapes on eA x eB; the separation if the two
+  // edges support the shapes along the axis (one orientation or the other)
+  { k.edge_separation_full(i, j) } -> std::same_as<std::optional<Separation<typename K::FT>>>;
+  // exact comparison of two candidates' separations (-1, 0, +1)
+  { k.compare(s, f, s, f) } -> std::same_as<int>;
+  // sign of a candidate's separation
+  { k.sign(s, f) } -> std::same_as<int>;
+  // the axis of a feature, from A to B (unit when FT normalises)
+  { k.axis(f) } -> std::same_as<Vec3<typename K::FT>>;
+  // decisions the kernel had to make exactly (0 for Plain)
+  { ck.exact_fallbacks() } -> std::convertible_to<std::int64_t>;
+};
+
+/// Maps (policy, T) to a kernel type.  Specialised by each policy.
+template <class Policy, class T>
+struct kernel_for;
+
+template <class Policy, class T>
+using kernel_t = typename kernel_for<Policy, T>::type;
+
+}  // namespace sepax

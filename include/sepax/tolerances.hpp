@@ -1,0 +1,69 @@
+// sepax/tolerances.hpp
+//
+// Every tolerance sepax uses, in one place.  All of them are *relative*: they
+// are multiplied by the extent of the shapes involved (the length of the
+// diagonal of the axis-aligned bounding box of the point set or polyhedron), so
+// that a configuration scaled by 1e-4 or 1e4 is treated exactly like the
+// original.  There are no absolute tolerances anywhere in sepax.
+//
+// For exact number types every tolerance is zero: decisions are exact.
+//
+// | name        | used by                         | meaning                                                     |
+// |-------------|---------------------------------|-------------------------------------------------------------|
+// | weld        | hull builder                    | points closer than weld*extent are one point                |
+// | coplanar    | hull builder                    | a point within coplanar*extent of a face plane is on it;    |
+// |             |                                 | adjacent faces whose vertices lie within it of one plane    |
+// |             |                                 | are merged into one face (no slivers, no near-duplicates)   |
+// | flat        | hull builder                    | a point set within flat*extent of a plane is a flat polygon |
+// | planarity   | ConvexPolyhedron validation     | face vertices within planarity*extent of the face's plane   |
+// | convexity   | ConvexPolyhedron validation     | no vertex more than convexity*extent above any face plane   |
+// | support     | brute-force SAT, float only     | an edge endpoint within support*extent of the extreme       |
+// |             |                                 | projection (on the unit axis) counts as supporting          |
+// | parallel    | plain float SATs                | edges with |eA x eB| <= parallel*|eA||eB| (the sine of their |
+// |             |                                 | angle) are parallel and skipped: their float cross product  |
+// |             |                                 | is too inaccurate to be an axis.  The robust policy skips   |
+// |             |                                 | only exactly parallel edges; exact types likewise.          |
+//
+// The validation tolerances are looser than the hull builder's so that every
+// hull the builder produces validates.
+#pragma once
+
+#include "number_traits.hpp"
+
+namespace sepax {
+
+template <class T>
+struct Tolerances {
+  // Exact types (and any type not specialised below): all zero.
+  static constexpr double weld = 0;
+  static constexpr double coplanar = 0;
+  static constexpr double flat = 0;
+  static constexpr double planarity = 0;
+  static constexpr double convexity = 0;
+  static constexpr double support = 0;
+  static constexpr double parallel = 0;
+};
+
+template <>
+struct Tolerances<float> {
+  static constexpr double weld = 1e-5;
+  static constexpr double coplanar = 1e-5;
+  static constexpr double flat = 1e-5;
+  static constexpr double planarity = 4e-5;
+  static constexpr double convexity = 4e-5;
+  static constexpr double support = 1e-5;
+  static constexpr double parallel = 1e-4;
+};
+
+template <>
+struct Tolerances<double> {
+  static constexpr double weld = 1e-10;
+  static constexpr double coplanar = 1e-10;
+  static constexpr double flat = 1e-10;
+  static constexpr double planarity = 4e-10;
+  static constexpr double convexity = 4e-10;
+  static constexpr double support = 1e-10;
+  static constexpr double parallel = 1e-8;
+};
+
+}  // namespace sepax
