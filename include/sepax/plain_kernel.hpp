@@ -31,6 +31,9 @@ class PlainKernel {
   FaceQuery<T> face_query_a(int f) const { return face_query(a_, f, b_); }
   FaceQuery<T> face_query_b(int f) const { return face_query(b_, f, a_); }
 
+  Separation<T> face_separation_a(int f, int vb) const { return height(a_.plane(f), b_.vertex(vb)); }
+  Separation<T> face_separation_b(int f, int va) const { return height(b_.plane(f), a_.vertex(va)); }
+
   ArcSigns arc_signs(int ea, int eb) const {
     const Vec3<T> da = a_.edge_direction(ea);
     const Vec3<T> db = b_.edge_direction(eb);
@@ -111,6 +114,10 @@ class PlainKernel {
       }
     }
     return FaceQuery<T>{Separation<T>{T(best_h - pl.offset), norm2_of(pl.normal)}, best};
+  }
+
+  static Separation<T> height(const Plane<T>& pl, const Vec3<T>& p) {
+    return Separation<T>{T(dot(pl.normal, p) - pl.offset), norm2_of(pl.normal)};
   }
 
   static T norm2_of(const Vec3<T>& n) {
