@@ -390,7 +390,7 @@ class ConvexPolyhedron {
         if (v[c] > bmax_[c]) bmax_[c] = v[c];
       }
     }
-    const T n(static_cast<int>(vertices_.size()));
+    const T n = from_double<T>(static_cast<double>(vertices_.size()));  // exact for any count < 2^53
     if (!vertices_.empty()) centroid_ = Vec3<T>(sum[0] / n, sum[1] / n, sum[2] / n);
     double d2 = 0;
     max_abs_ = 0;
