@@ -23,6 +23,10 @@
 // |             |                                 | angle) are parallel and skipped: their float cross product  |
 // |             |                                 | is too inaccurate to be an axis.  The robust policy skips   |
 // |             |                                 | only exactly parallel edges; exact types likewise.          |
+// | contact_weld| contact manifold, float only    | clip points closer than contact_weld*extent are one point   |
+// |             |                                 | (extent = the smaller of the two shapes' extents)           |
+// | contact_area| contact manifold reduction      | a point is kept by the 4-point reduction only if it adds    |
+// |             |                                 | more than contact_area*extent^2 of (doubled) area           |
 //
 // The validation tolerances are looser than the hull builder's so that every
 // hull the builder produces validates.
@@ -42,6 +46,8 @@ struct Tolerances {
   static constexpr double convexity = 0;
   static constexpr double support = 0;
   static constexpr double parallel = 0;
+  static constexpr double contact_weld = 0;
+  static constexpr double contact_area = 0;
 };
 
 template <>
@@ -53,6 +59,8 @@ struct Tolerances<float> {
   static constexpr double convexity = 4e-5;
   static constexpr double support = 1e-5;
   static constexpr double parallel = 1e-4;
+  static constexpr double contact_weld = 1e-5;
+  static constexpr double contact_area = 1e-6;
 };
 
 template <>
@@ -64,6 +72,8 @@ struct Tolerances<double> {
   static constexpr double convexity = 4e-10;
   static constexpr double support = 1e-10;
   static constexpr double parallel = 1e-8;
+  static constexpr double contact_weld = 1e-10;
+  static constexpr double contact_area = 1e-14;
 };
 
 }  // namespace sepax
