@@ -1,0 +1,74 @@
+// src/commands/query_output.cpp -- see query_output.hpp.
+#include "commands/query_output.hpp"
+
+#include <string>
+
+namespace sepax::cli {
+
+json::Value feature_json(const Feature& f) {
+  return json::Value(json::Object{{"type", type_name(f.type)}, {"a", f.a}, {"b", f.b}});
+}
+
+json::Value vector_json(const Vec3<double>& v) { return json::Value(json::Array{v[0], v[1], v[2]}); }
+
+namespace {
+
+json::Value stats_json(const SatStats& s) {
+  return json::Value(json::Object{{"face_axes", static_cast<long long>(s.face_axes)},
+                                  {"edge_pairs", static_cast<long long>(s.edge_pairs)},
+                                  {"minkowski_faces", static_cast<long long>(s.minkowski_faces)},
+                                  {"exact_fallbacks", static_cast<long long>(s.exact_fallbacks)}});
+}
+
+std::string counts_text(const ShapeCounts& c) {
+  return std::to_string(c.vertices) + " vertices, " + std::to_string(c.edges) + " edges, " +
+         std::to_string(c.faces) + " faces" + (c.flat ? " (flat)" : "");
+}
+
+std::string feature_text(const Feature& f) {
+  const std::string a = std::to_string(f.a), b = std::to_string(f.b);
+  switch (f.type) {
+    case FeatureType::FaceA: return "faceA: face " + a + " of A, support vertex " + b + " of B";
+    case FeatureType::FaceB: return "faceB: face " + b + " of B, support vertex " + a + " of A";
+    case FeatureType::EdgePair: return "edges: edge " + a + " of A, edge " + b + " of B";
+  }
+  return "?";
+}
+
+}  // namespace
+
+json::Value query_json(const RunOutcome& r, const RunConfig& cfg) {
+  return json::Value(json::Object{{"overlap", r.overlap},
+                                  {"separation", r.separation},
+                                  {"feature", feature_json(r.feature)},
+                                  {"normal", vector_json(r.normal)},
+                                  {"number", name(cfg.number)},
+                                  {"algorithm", name(cfg.algorithm)},
+                                  {"policy", cfg.robust ? "robust" : "plain"},
+                                  {"stats", stats_json(r.stats)}});
+}
+
+json::Value batch_result_json(const json::Value& id, const RunOutcome& r) {
+  return json::Value(json::Object{{"id", id},
+                                  {"overlap", r.overlap},
+                                  {"separation", r.separation},
+                                  {"feature", feature_json(r.feature)},
+                                  {"normal", vector_json(r.normal)}});
+}
+
+void print_query_text(std::ostream& out, const RunOutcome& r, const RunConfig& cfg, const std::string& name_a,
+                      const std::string& name_b) {
+  out << "A:          " << name_a << " (" << counts_text(r.a) << ")\n"
+      << "B:          " << name_b << " (" << counts_text(r.b) << ")\n"
+      << "overlap:    " << (r.overlap ? "yes" : "no") << "\n"
+      << "separation: " << json::number_text(r.separation) << "\n"
+      << "feature:    " << feature_text(r.feature) << "\n"
+      << "normal:     " << json::number_text(r.normal[0]) << " " << json::number_text(r.normal[1]) << " "
+      << json::number_text(r.normal[2]) << "  (unit axis from A towards B)\n"
+      << "arithmetic: " << name(cfg.number) << ", algorithm " << name(cfg.algorithm) << ", "
+      << (cfg.robust ? "robust" : "plain") << " policy\n"
+      << "stats:      " << r.stats.face_axes << " face axes, " << r.stats.edge_pairs << " edge pairs, "
+      << r.stats.minkowski_faces << " Minkowski faces, " << r.stats.exact_fallbacks << " exact fallbacks\n";
+}
+
+}  // namespace sepax::cli

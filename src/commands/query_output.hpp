@@ -1,0 +1,36 @@
+// src/commands/query_output.hpp
+//
+// How a query result is printed: as text, as the --json object, and as a
+// batch output line.  Keys (JSON):
+//   overlap     true when the shapes share a point (touching counts)
+//   separation  signed distance along the reported axis (> 0 separated)
+//   feature     {"type": "faceA"|"faceB"|"edges", "a": i, "b": j}:
+//               faceA: a = face of A, b = support vertex of B;
+//               faceB: a = support vertex of A, b = face of B;
+//               edges: a = edge of A, b = edge of B
+//   normal      [x, y, z] unit axis pointing from A towards B
+//   number, algorithm, policy, stats      (query --json only)
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "commands/sat_runner.hpp"
+#include "json/json.hpp"
+
+namespace sepax::cli {
+
+json::Value feature_json(const Feature& f);
+json::Value vector_json(const Vec3<double>& v);
+
+/// The `query --json` object.
+json::Value query_json(const RunOutcome& r, const RunConfig& cfg);
+
+/// One batch output line.
+json::Value batch_result_json(const json::Value& id, const RunOutcome& r);
+
+/// The human-readable report of `query`.
+void print_query_text(std::ostream& out, const RunOutcome& r, const RunConfig& cfg, const std::string& name_a,
+                      const std::string& name_b);
+
+}  // namespace sepax::cli

@@ -1,0 +1,158 @@
+// src/commands/sat_runner.cpp -- see sat_runner.hpp.
+#include "commands/sat_runner.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <gmpxx.h>
+
+#include <sepax/robust/number_types.hpp>
+#include <sepax/sat_brute_force.hpp>
+#include <sepax/sat_gauss_map.hpp>
+
+#include "commands/shape_builder.hpp"
+
+#if __has_include(<sepax/sat_traversal.hpp>)
+#include <sepax/sat_traversal.hpp>
+#define SEPAX_CLI_HAVE_TRAVERSAL 1
+#else
+#define SEPAX_CLI_HAVE_TRAVERSAL 0
+#endif
+
+#if __has_include(<sepax/robust/robust_kernel.hpp>)
+#include <sepax/robust/robust_kernel.hpp>
+#define SEPAX_CLI_HAVE_ROBUST 1
+#else
+#define SEPAX_CLI_HAVE_ROBUST 0
+#endif
+
+namespace sepax::cli {
+
+const char* name(NumberKind k) {
+  switch (k) {
+    case NumberKind::Float: return "float";
+    case NumberKind::Double: return "double";
+    case NumberKind::Exact: return "exact";
+  }
+  return "?";
+}
+
+const char* name(AlgorithmKind k) {
+  switch (k) {
+    case AlgorithmKind::Brute: return "brute";
+    case AlgorithmKind::Gauss: return "gauss";
+    case AlgorithmKind::Traversal: return "traversal";
+  }
+  return "?";
+}
+
+std::optional<NumberKind> parse_number_kind(std::string_view s) {
+  if (s == "float") return NumberKind::Float;
+  if (s == "double") return NumberKind::Double;
+  if (s == "exact") return NumberKind::Exact;
+  return std::nullopt;
+}
+
+std::optional<AlgorithmKind> parse_algorithm_kind(std::string_view s) {
+  if (s == "brute") return AlgorithmKind::Brute;
+  if (s == "gauss") return AlgorithmKind::Gauss;
+  if (s == "traversal") return AlgorithmKind::Traversal;
+  return std::nullopt;
+}
+
+bool traversal_available() { return SEPAX_CLI_HAVE_TRAVERSAL != 0; }
+bool robust_available() { return SEPAX_CLI_HAVE_ROBUST != 0; }
+bool hull_builder_available() { return hull_available; }
+
+std::string unsupported_reason(const RunConfig& cfg) {
+  if (cfg.algorithm == AlgorithmKind::Traversal && !traversal_available()) {
+    return "--algorithm traversal: this build has no traversal SAT (sepax/sat_traversal.hpp)";
+  }
+  if (cfg.robust && cfg.number == NumberKind::Exact) {
+    return "--robust applies to --number float or double (exact arithmetic needs no robust policy)";
+  }
+  if (cfg.robust && !robust_available()) {
+    return "--robust: this build has no robust policy (sepax/robust/robust_kernel.hpp)";
+  }
+  return {};
+}
+
+namespace {
+
+template <Number T>
+ShapeCounts counts_of(const ConvexPolyhedron<T>& p) {
+  return ShapeCounts{p.vertex_count(), p.edge_count(), p.face_count(), p.is_flat()};
+}
+
+template <class Policy, Number T>
+SatResult<T> run_algorithm(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, AlgorithmKind alg) {
+  switch (alg) {
+    case AlgorithmKind::Brute: return sat::brute_force<Policy>(a, b);
+    case AlgorithmKind::Gauss: return sat::gauss_map<Policy>(a, b);
+    case AlgorithmKind::Traversal:
+#if SEPAX_CLI_HAVE_TRAVERSAL
+      return sat::traversal<Policy>(a, b);
+#else
+      break;
+#endif
+  }
+  throw std::invalid_argument("--algorithm traversal: this build has no traversal SAT");
+}
+
+template <Number T>
+RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b, const RunConfig& cfg) {
+  const ConvexPolyhedron<T> a = build_shape<T>(sa);
+  const ConvexPolyhedron<T> b = build_shape<T>(sb, pose_b);
+  SatResult<T> r;
+  if (cfg.robust) {
+#if SEPAX_CLI_HAVE_ROBUST
+    if constexpr (!number_traits<T>::is_exact) {
+      r = run_algorithm<policy::Robust>(a, b, cfg.algorithm);
+    } else {
+      throw std::invalid_argument(unsupported_reason(cfg));
+    }
+#else
+    throw std::invalid_argument(unsupported_reason(cfg));
+#endif
+  } else {
+    r = run_algorithm<policy::Plain>(a, b, cfg.algorithm);
+  }
+  RunOutcome out;
+  out.overlap = r.overlap;
+  out.separation = r.separation_as_double();
+  out.feature = r.feature;
+  out.stats = r.stats;
+  out.early_out = r.early_out;
+  Vec3<double> n = vec_to_double(r.axis);
+  if constexpr (!number_traits<T>::normalizes) {
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (len > 0 && std::isfinite(len)) n = n / len;
+  }
+  out.normal = n;
+  out.a = counts_of(a);
+  out.b = counts_of(b);
+  return out;
+}
+
+}  // namespace
+
+RunOutcome run_sat(const io::ShapeData& a, const io::ShapeData& b, const Pose* pose_b, const RunConfig& cfg) {
+  if (const std::string why = unsupported_reason(cfg); !why.empty()) throw std::invalid_argument(why);
+  switch (cfg.number) {
+    case NumberKind::Float: return run_typed<float>(a, b, pose_b, cfg);
+    case NumberKind::Double: return run_typed<double>(a, b, pose_b, cfg);
+    case NumberKind::Exact: return run_typed<mpq_class>(a, b, pose_b, cfg);
+  }
+  throw std::invalid_argument("unknown number type");
+}
+
+ShapeCounts shape_counts(const io::ShapeData& s, NumberKind number, const Pose* pose) {
+  switch (number) {
+    case NumberKind::Float: return counts_of(build_shape<float>(s, pose));
+    case NumberKind::Double: return counts_of(build_shape<double>(s, pose));
+    case NumberKind::Exact: return counts_of(build_shape<mpq_class>(s, pose));
+  }
+  throw std::invalid_argument("unknown number type");
+}
+
+}  // namespace sepax::cli

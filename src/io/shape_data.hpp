@@ -1,0 +1,26 @@
+// src/io/shape_data.hpp
+//
+// ShapeData: a shape as read from a file or named on the command line, before
+// it is built in a number type: double coordinates plus either a face list
+// (validated later by ConvexPolyhedron<T>::from_faces) or a bare point set
+// (hulled later by sepax::convex_hull<T>).  Doubles are the input format:
+// converting them to an exact type is exact (from_double).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <sepax/vec3.hpp>
+
+namespace sepax::cli::io {
+
+struct ShapeData {
+  enum class Kind { Faces, Points };
+  Kind kind = Kind::Faces;
+  std::string name;                     // file name or built-in spec, for messages
+  std::vector<Vec3<double>> vertices;   // Faces: the vertices; Points: the point set
+  std::vector<std::vector<int>> faces;  // Faces only: 0-based vertex indices, CCW from outside
+  std::vector<std::size_t> face_lines;  // Faces read from a file: the line of each face (0 if none)
+};
+
+}  // namespace sepax::cli::io

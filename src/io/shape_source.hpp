@@ -1,0 +1,38 @@
+// src/io/shape_source.hpp
+//
+// Resolving a shape argument of the command line to ShapeData:
+//
+//   cube                 the cube [-1,1]^3
+//   box:HX,HY,HZ         axis-aligned box with half extents HX, HY, HZ (> 0)
+//   tetra                regular tetrahedron (1,1,1), (1,-1,-1), (-1,1,-1), (-1,-1,1)
+//   prism:N              regular N-gon prism around z, circumradius 1, z in [-1,1]
+//   polygon:N            double-sided regular N-gon in z = 0, circumradius 1
+//   triangle             double-sided triangle (0,0,0), (1,0,0), (0,1,0)
+//   FILE.off             OFF face list
+//   FILE.obj             OBJ face list
+//   FILE.pts|.xyz|.txt   points file (hulled)
+//
+// Built-in names win over files of the same name; write ./cube for a file
+// called "cube".  Built-ins are made by sepax/shapes.hpp in double and passed
+// on as a face list.  Errors: InvalidInput naming the argument or FILE:LINE.
+#pragma once
+
+#include <string>
+
+#include "io/shape_data.hpp"
+
+namespace sepax::cli::io {
+
+/// True when spec names a built-in shape (whether or not its parameters are valid).
+bool is_builtin_shape(const std::string& spec);
+
+/// The built-in shape spec as a face list (InvalidInput for bad parameters).
+ShapeData builtin_shape(const std::string& spec);
+
+/// A built-in shape or a file (by extension).
+ShapeData load_shape(const std::string& spec);
+
+/// One line per built-in, for --help.
+const char* builtin_shapes_help();
+
+}  // namespace sepax::cli::io

@@ -1,0 +1,57 @@
+// src/io/text_input.hpp
+//
+// Line-oriented text input shared by the shape readers (OFF, OBJ, points):
+// a line reader that counts lines, tokenising with '#' comments stripped,
+// strict number parsing, and the error every reader throws:
+//   InvalidInput(ErrorCode::Parse, "FILE:LINE: <what is wrong>").
+#pragma once
+
+#include <cstddef>
+#include <istream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sepax::cli::io {
+
+/// Throws InvalidInput(ErrorCode::Parse, "file:line: what").
+[[noreturn]] void fail_at(const std::string& file, std::size_t line, const std::string& what);
+
+/// Reads lines, keeping the 1-based number of the last line read.  Strips a
+/// trailing '\r' (CRLF files) and rejects NUL bytes (binary data).
+class LineReader {
+ public:
+  LineReader(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
+  /// The next line, false at end of input.
+  bool next(std::string& line);
+  std::size_t line_number() const { return line_; }
+  const std::string& file() const { return file_; }
+  /// Throws the parse error for the current line.
+  [[noreturn]] void fail(const std::string& what) const { fail_at(file_, line_ == 0 ? 1 : line_, what); }
+
+ private:
+  std::istream& in_;
+  std::string file_;
+  std::size_t line_ = 0;
+};
+
+/// The whitespace-separated tokens of line, up to a '#' comment.  With
+/// commas_separate, ',' also separates tokens (points files).
+std::vector<std::string_view> tokens(std::string_view line, bool commas_separate = false);
+
+/// The finite double spelled by token (a leading '+' is allowed); on failure
+/// throws via reader.fail with "bad number 'tok' for <what>", or "<what> is
+/// not finite" for NaN/Inf, or "... out of the range of a double".
+double parse_double(const LineReader& reader, std::string_view token, const std::string& what);
+
+/// A non-negative decimal integer (at most max); errors like parse_double.
+long long parse_count(const LineReader& reader, std::string_view token, const std::string& what,
+                      long long max);
+
+/// A (possibly negative) decimal integer; errors like parse_double.
+long long parse_integer(const LineReader& reader, std::string_view token, const std::string& what);
+
+/// Shortens a token for an error message (binary garbage can be long).
+std::string shown(std::string_view token);
+
+}  // namespace sepax::cli::io
