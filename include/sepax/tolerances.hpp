@@ -24,9 +24,11 @@
 // |             |                                 | is too inaccurate to be an axis.  The robust policy skips   |
 // |             |                                 | only exactly parallel edges; exact types likewise.          |
 // | contact_weld| contact manifold, float only    | clip points closer than contact_weld*extent are one point   |
-// |             |                                 | (extent = the smaller of the two shapes' extents)           |
+// |             |                                 | (extent = the smaller of the two shapes' extents); in the   |
+// |             |                                 | 4-point reduction, depths within it are equally deep        |
 // | contact_area| contact manifold reduction      | a point is kept by the 4-point reduction only if it adds    |
-// |             |                                 | more than contact_area*extent^2 of (doubled) area           |
+// |             |                                 | more than contact_area*extent^2 of (doubled) area; squared  |
+// |             |                                 | distances / areas within it of the largest are ties         |
 //
 // The validation tolerances are looser than the hull builder's so that every
 // hull the builder produces validates.

@@ -1,0 +1,155 @@
+// sepax/clip_polygon.hpp
+//
+// Sutherland-Hodgman clipping of a convex polygon against one plane, keeping
+// the part on the inner side (dot(normal, x) - offset <= 0), with the features
+// that made every output vertex.
+//
+// The polygon being clipped is the *incident* face; the planes are the side
+// planes of the *reference* face (contact_manifold.hpp).  Each vertex carries
+//   * id.a:  its feature on the reference side (Face = not cut yet, Edge(s) =
+//            on side plane s, Vertex(c) = the reference corner c),
+//   * id.b:  its feature on the incident side (Vertex(v), Edge(e), Face(G)),
+//   * the label of the segment from it to the next vertex: an incident edge,
+//     or a side plane of the reference face (the segment a previous clip
+//     created along that plane).
+// A cut of an incident edge e by side plane s gives {Edge(s), Edge(e)}; a cut
+// of a segment lying on side plane s' by side plane s gives the reference
+// corner between s' and s: {Vertex(c), Face(G)}.
+//
+// Arithmetic: the intersection parameter t = d_a / (d_a - d_b) is a quotient of
+// plane heights, so for exact T every output point is exact (no sqrt, no
+// rounding).  A vertex exactly on the plane is kept and produces no extra
+// intersection point, so exact clipping never duplicates a point; float
+// clipping can produce near-duplicates, which weld_polygon removes with a
+// tolerance the caller scales by the shapes' extent.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "contact_feature.hpp"
+#include "vec3.hpp"
+
+namespace sepax {
+
+template <class T>
+struct ClipVertex {
+  Vec3<T> point;
+  /// a: reference-side feature, b: incident-side feature.
+  ContactFeatureId id;
+  /// The segment to the next vertex lies on incident edge `next_edge`
+  /// (next_on_side false) or on the side plane of reference edge `next_edge`
+  /// whose vertices are side_tail/side_head (next_on_side true).
+  int next_edge = -1;
+  bool next_on_side = false;
+  int side_tail = -1;
+  int side_head = -1;
+};
+
+/// A side plane: points with dot(normal, x) - offset <= 0 are kept.
+template <class T>
+struct ClipPlane {
+  Vec3<T> normal;
+  T offset;
+  int edge = -1;  // the reference edge (undirected index) this plane stands on
+  int tail = -1;  // its two vertices, for the ids of reference corners
+  int head = -1;
+};
+
+/// The reference corner shared by the side edges (t1,h1) and (t2,h2), or -1
+/// when they share no vertex.
+inline int shared_corner(int t1, int h1, int t2, int h2) {
+  if (h1 == t2 || h1 == h2) return h1;
+  if (t1 == t2 || t1 == h2) return t1;
+  return -1;
+}
+
+/// Clip `in` against `plane` into `out` (cleared first).  `incident_face` is
+/// the incident face index (the incident feature of reference corners).
+template <Number T>
+void clip_polygon(const std::vector<ClipVertex<T>>& in, const ClipPlane<T>& plane, int incident_face,
+                  std::vector<ClipVertex<T>>& out) {
+  out.clear();
+  const std::size_t n = in.size();
+  if (n == 0) return;
+  const T zero(0);
+  auto height = [&](const Vec3<T>& p) { return T(dot(plane.normal, p) - plane.offset); };
+  auto cut = [&](const ClipVertex<T>& a, const T& da, const ClipVertex<T>& b, const T& db) {
+    // da and db have strictly opposite signs (one may be <= 0, the other > 0).
+    const T t = da / T(da - db);
+    ClipVertex<T> c;
+    c.point = Vec3<T>(a.point[0] + t * T(b.point[0] - a.point[0]),
+                      a.point[1] + t * T(b.point[1] - a.point[1]),
+                      a.point[2] + t * T(b.point[2] - a.point[2]));
+    if (a.next_on_side) {
+      const int corner = shared_corner(a.side_tail, a.side_head, plane.tail, plane.head);
+      c.id.a = corner >= 0 ? ShapeFeature::vertex(corner) : ShapeFeature::edge(plane.edge);
+      c.id.b = ShapeFeature::face(incident_face);
+    } else {
+      c.id.a = ShapeFeature::edge(plane.edge);
+      c.id.b = ShapeFeature::edge(a.next_edge);
+    }
+    return c;
+  };
+  auto on_side = [&](ClipVertex<T>& v) {
+    v.next_edge = plane.edge;
+    v.next_on_side = true;
+    v.side_tail = plane.tail;
+    v.side_head = plane.head;
+  };
+  T dcur = height(in[0].point);
+  const T d0 = dcur;
+  for (std::size_t i = 0; i < n; ++i) {
+    const ClipVertex<T>& cur = in[i];
+    const ClipVertex<T>& nxt = in[(i + 1) % n];
+    const T dnxt = (i + 1 == n) ? d0 : height(nxt.point);
+    const bool cur_in = !(dcur > zero);
+    const bool nxt_in = !(dnxt > zero);
+    if (cur_in) {
+      out.push_back(cur);
+      // On the plane and the polygon leaves here: the segment from cur now
+      // runs along the plane.
+      if (!nxt_in && dcur == zero) on_side(out.back());
+    }
+    if (cur_in && !nxt_in && dcur < zero) {
+      ClipVertex<T> c = cut(cur, dcur, nxt, dnxt);  // exit point
+      on_side(c);
+      out.push_back(c);
+    } else if (!cur_in && nxt_in && dnxt < zero) {
+      ClipVertex<T> c = cut(cur, dcur, nxt, dnxt);  // entry point, continues along cur's segment
+      c.next_edge = cur.next_edge;
+      c.next_on_side = cur.next_on_side;
+      c.side_tail = cur.side_tail;
+      c.side_head = cur.side_head;
+      out.push_back(c);
+    }
+    dcur = dnxt;
+  }
+}
+
+/// Remove consecutive vertices (cyclically) closer than sqrt(tol2) to the
+/// vertex kept before them.  The first vertex of a run is kept, with the label
+/// of the last one (the segment leaving the run).  tol2 = 0 removes exact
+/// duplicates only (the exact-type case).
+template <Number T>
+void weld_polygon(std::vector<ClipVertex<T>>& poly, const T& tol2) {
+  if (poly.size() < 2) return;
+  std::vector<ClipVertex<T>> out;
+  out.reserve(poly.size());
+  for (const auto& v : poly) {
+    if (!out.empty() && !(squared_norm(Vec3<T>(v.point - out.back().point)) > tol2)) {
+      out.back().next_edge = v.next_edge;
+      out.back().next_on_side = v.next_on_side;
+      out.back().side_tail = v.side_tail;
+      out.back().side_head = v.side_head;
+      continue;
+    }
+    out.push_back(v);
+  }
+  while (out.size() > 1 && !(squared_norm(Vec3<T>(out.front().point - out.back().point)) > tol2)) {
+    out.pop_back();
+  }
+  poly.swap(out);
+}
+
+}  // namespace sepax

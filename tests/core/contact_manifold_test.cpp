@@ -1,0 +1,378 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include <Eigen/Geometry>
+
+#include <sepax/contact_manifold.hpp>
+#include <sepax/sat_brute_force.hpp>
+#include <sepax/sat_gauss_map.hpp>
+#include <sepax/shapes.hpp>
+
+using namespace sepax;
+
+namespace {
+
+// Rotation about a unit axis (double), then translation; converted to T.
+template <Number T>
+ConvexPolyhedron<T> moved(const ConvexPolyhedron<T>& p, const Eigen::Matrix3d& R, const Vec3<double>& t) {
+  std::vector<Vec3<T>> vs;
+  for (const auto& v : p.vertices()) {
+    const Vec3<double> w = R * vec_to_double(v) + t;
+    vs.push_back(vec_from_double<T>(w));
+  }
+  return p.with_vertices(vs);
+}
+
+Eigen::Matrix3d rot(const Vec3<double>& axis, double angle) {
+  return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+}
+
+template <Number T>
+ConvexPolyhedron<T> scaled_box(double s, double hx, double hy, double hz) {
+  return shapes::box<T>(s * hx, s * hy, s * hz);
+}
+
+/// The properties every manifold must have, whatever the configuration.
+template <Number T>
+void check_invariants(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, const ContactManifold<T>& m) {
+  const double ext = std::max(a.extent(), b.extent());
+  const double tol = (std::is_same_v<T, float> ? 2e-5 : 1e-11) * ext;
+  for (const auto& c : m.points) {
+    // point_a on A, point_b on B (inside the closures)
+    for (int f = 0; f < a.face_count(); ++f)
+      CHECK(to_double(T(dot(a.plane(f).normal, c.point_a) - a.plane(f).offset)) <= tol);
+    for (int f = 0; f < b.face_count(); ++f)
+      CHECK(to_double(T(dot(b.plane(f).normal, c.point_b) - b.plane(f).offset)) <= tol);
+    // the separation is measured along the normal between the two points
+    CHECK(to_double(T(dot(m.normal, Vec3<T>(c.point_b - c.point_a)))) == Approx(to_double(c.separation.num)).margin(tol));
+    // ... and is never deeper than the SAT's minimum penetration
+    CHECK(to_double(c.separation) >= to_double(m.separation) - tol);
+  }
+}
+
+template <Number T>
+std::vector<ContactFeatureId> ids_of(const ContactManifold<T>& m) {
+  std::vector<ContactFeatureId> out;
+  for (const auto& c : m.points) out.push_back(c.id);
+  return out;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("box resting on a box: 4 points at the right depth", "[contact]", float, double) {
+  using T = TestType;
+  const auto a = shapes::cube<T>(1.0);
+  const auto b = moved(shapes::cube<T>(0.5), Eigen::Matrix3d::Identity(), Vec3<double>(0.1, -0.2, 1.375));
+  const auto m = contact_manifold(a, b);
+  REQUIRE(m.kind == ContactKind::Face);
+  CHECK(m.reference_shape == 0);
+  CHECK(m.reference_face == 1);  // +z face of A
+  CHECK(m.incident_face == 0);   // -z face of B
+  CHECK(vec_to_double(m.normal).isApprox(Vec3<double>(0, 0, 1)));
+  REQUIRE(m.size() == 4);
+  for (const auto& c : m.points) {
+    CHECK(c.depth() == Approx(0.125));
+    CHECK(to_double(c.point_b[2]) == Approx(0.875));
+    CHECK(to_double(c.point_a[2]) == Approx(1.0));
+    CHECK(std::abs(to_double(c.point_b[0]) - 0.1) == Approx(0.5));
+    CHECK(std::abs(to_double(c.point_b[1]) + 0.2) == Approx(0.5));
+    CHECK(c.id.a == ShapeFeature::face(1));
+    CHECK(c.id.b.kind == ShapeFeatureKind::Vertex);
+  }
+  // distinct incident vertices: all four corners of B's bottom face
+  std::vector<int> vs;
+  for (const auto& c : m.points) vs.push_back(c.id.b.index);
+  std::sort(vs.begin(), vs.end());
+  CHECK(vs == std::vector<int>{0, 1, 2, 3});
+  check_invariants(a, b, m);
+  // Moving B by the depth along the normal brings the shapes to touching.
+  const auto t = vec_to_double(m.resolving_translation());
+  const auto b2 = moved(b, Eigen::Matrix3d::Identity(), t);
+  CHECK(sat::gauss_map(a, b2).separation_as_double() == Approx(0.0).margin(1e-6));
+}
+
+TEMPLATE_TEST_CASE("box on a larger box rotated by 45 degrees: octagon reduced to 4", "[contact]", float, double) {
+  using T = TestType;
+  const auto a = shapes::cube<T>(1.0);
+  const auto b = moved(shapes::box<T>(0.9, 0.9, 0.5), rot({0, 0, 1}, std::numbers::pi / 4), {0, 0, 1.4});
+  ManifoldOptions all;
+  all.reduce = false;
+  all.record_steps = true;
+  const auto full = contact_manifold(a, b, sat::gauss_map(a, b), all);
+  REQUIRE(full.kind == ContactKind::Face);
+  REQUIRE(full.size() == 8);
+  CHECK(full.clip_steps.size() == 4);
+  for (const auto& c : full.points) {
+    CHECK(c.depth() == Approx(0.1));
+    // every octagon corner is a side edge of A's top face cutting an edge of B
+    CHECK(c.id.a.kind == ShapeFeatureKind::Edge);
+    CHECK(c.id.b.kind == ShapeFeatureKind::Edge);
+  }
+  check_invariants(a, b, full);
+  const auto red = contact_manifold(a, b);
+  REQUIRE(red.size() == 4);
+  CHECK(red.candidate_points == 8);
+  // the kept points are octagon points, and the deepest (first, all equal) is kept
+  for (const auto& c : red.points) {
+    bool found = false;
+    for (const auto& d : full.points) found = found || (c.id == d.id);
+    CHECK(found);
+  }
+  CHECK(red.points[0].id == full.points[0].id);
+  // area of the kept quad vs the best quad of 4 octagon points
+  auto quad_area = [](std::array<Vec3<double>, 4> q) {
+    // sort by angle around the centroid, then shoelace in xy
+    Vec3<double> c = (q[0] + q[1] + q[2] + q[3]) / 4;
+    std::sort(q.begin(), q.end(), [&](auto& x, auto& y) {
+      return std::atan2(x[1] - c[1], x[0] - c[0]) < std::atan2(y[1] - c[1], y[0] - c[0]);
+    });
+    double s = 0;
+    for (int i = 0; i < 4; ++i) s += q[i][0] * q[(i + 1) % 4][1] - q[(i + 1) % 4][0] * q[i][1];
+    return std::abs(s) / 2;
+  };
+  std::array<Vec3<double>, 4> kept;
+  for (int i = 0; i < 4; ++i) kept[i] = vec_to_double(red.points[i].position);
+  double best = 0;
+  for (int i = 0; i < 8; ++i)
+    for (int j = i + 1; j < 8; ++j)
+      for (int k = j + 1; k < 8; ++k)
+        for (int l = k + 1; l < 8; ++l)
+          best = std::max(best, quad_area({vec_to_double(full.points[i].position), vec_to_double(full.points[j].position),
+                                           vec_to_double(full.points[k].position), vec_to_double(full.points[l].position)}));
+  CHECK(quad_area(kept) >= 0.95 * best);
+  // deterministic: the same input gives the same manifold
+  const auto again = contact_manifold(a, b);
+  CHECK(ids_of(again) == ids_of(red));
+}
+
+TEMPLATE_TEST_CASE("crossed edges: one point at the right place", "[contact]", float, double) {
+  using T = TestType;
+  const double r2 = std::sqrt(2.0);
+  const auto a = moved(shapes::cube<T>(1.0), rot({1, 0, 0}, std::numbers::pi / 4), {0, 0, 0});
+  const auto b = moved(shapes::cube<T>(1.0), rot({0, 1, 0}, std::numbers::pi / 4), {0.1, -0.2, 2 * r2 - 0.1});
+  const auto m = contact_manifold(a, b);
+  REQUIRE(m.kind == ContactKind::Edge);
+  REQUIRE(m.size() == 1);
+  const auto& c = m.points[0];
+  CHECK(c.depth() == Approx(0.1).epsilon(1e-4));
+  CHECK(vec_to_double(m.normal).isApprox(Vec3<double>(0, 0, 1), 1e-5));
+  CHECK(vec_to_double(c.position).isApprox(Vec3<double>(0.1, 0, r2 - 0.05), 1e-5));
+  CHECK(vec_to_double(c.point_a).isApprox(Vec3<double>(0.1, 0, r2), 1e-5));
+  CHECK(vec_to_double(c.point_b).isApprox(Vec3<double>(0.1, 0, r2 - 0.1), 1e-5));
+  CHECK(c.id == ContactFeatureId{ShapeFeature::edge(m.feature.a), ShapeFeature::edge(m.feature.b)});
+  check_invariants(a, b, m);
+}
+
+TEMPLATE_TEST_CASE("double-sided triangle on a box face", "[contact]", float, double) {
+  using T = TestType;
+  const auto box = shapes::cube<T>(1.0);
+  SECTION("small triangle as incident face: its three vertices") {
+    const auto tri = shapes::triangle<T>(vec_from_double<T>({-0.5, -0.5, 0.95}), vec_from_double<T>({0.6, -0.4, 0.95}),
+                                         vec_from_double<T>({0.0, 0.7, 0.95}));
+    const auto m = contact_manifold(box, tri);
+    REQUIRE(m.kind == ContactKind::Face);
+    CHECK(m.reference_shape == 0);
+    CHECK(m.reference_face == 1);
+    REQUIRE(m.size() == 3);
+    for (const auto& c : m.points) {
+      CHECK(c.depth() == Approx(0.05));
+      CHECK(c.id.a == ShapeFeature::face(1));
+      CHECK(c.id.b.kind == ShapeFeatureKind::Vertex);
+    }
+    // the incident face of the triangle faces down
+    CHECK(to_double(tri.plane(m.incident_face).normal[2]) < 0);
+    check_invariants(box, tri, m);
+  }
+  SECTION("large triangle as incident face: clipped to the box face's corners") {
+    const auto tri = shapes::triangle<T>(vec_from_double<T>({-3, -2, 0.95}), vec_from_double<T>({3, -2, 0.95}),
+                                         vec_from_double<T>({0, 4, 0.95}));
+    const auto m = contact_manifold(box, tri);
+    REQUIRE(m.kind == ContactKind::Face);
+    REQUIRE(m.size() == 4);
+    for (const auto& c : m.points) {
+      CHECK(c.depth() == Approx(0.05));
+      CHECK(c.id.a.kind == ShapeFeatureKind::Vertex);  // a corner of the box's top face
+      CHECK(c.id.b == ShapeFeature::face(m.incident_face));
+      CHECK(std::abs(to_double(c.point_a[0])) == Approx(1.0));
+      CHECK(std::abs(to_double(c.point_a[1])) == Approx(1.0));
+    }
+    check_invariants(box, tri, m);
+  }
+  SECTION("triangle as reference face (shape A), box corners as incident vertices") {
+    const auto tri = shapes::triangle<T>(vec_from_double<T>({-3, -2, 0}), vec_from_double<T>({3, -2, 0}),
+                                         vec_from_double<T>({0, 4, 0}));
+    const auto b = moved(box, Eigen::Matrix3d::Identity(), {0, 0, 0.95});
+    const auto m = contact_manifold(tri, b);
+    REQUIRE(m.kind == ContactKind::Face);
+    CHECK(m.reference_shape == 0);
+    CHECK(to_double(tri.plane(m.reference_face).normal[2]) > 0);
+    REQUIRE(m.size() == 4);
+    for (const auto& c : m.points) {
+      CHECK(c.depth() == Approx(0.05));
+      CHECK(c.id.a == ShapeFeature::face(m.reference_face));
+      CHECK(c.id.b.kind == ShapeFeatureKind::Vertex);
+    }
+    check_invariants(tri, b, m);
+  }
+}
+
+TEMPLATE_TEST_CASE("triangle against triangle", "[contact]", float, double) {
+  using T = TestType;
+  SECTION("coplanar star: the hexagon of the two triangles") {
+    const auto a = shapes::regular_polygon<T>(3, 1.0);
+    const auto b = moved(a, rot({0, 0, 1}, std::numbers::pi), {0, 0, 0});
+    ManifoldOptions all;
+    all.reduce = false;
+    const auto m = contact_manifold(a, b, sat::gauss_map(a, b), all);
+    REQUIRE(m.kind == ContactKind::Face);
+    REQUIRE(m.size() == 6);
+    for (const auto& c : m.points) {
+      CHECK(c.depth() == Approx(0.0).margin(1e-6));
+      CHECK(c.id.a.kind == ShapeFeatureKind::Edge);
+      CHECK(c.id.b.kind == ShapeFeatureKind::Edge);
+    }
+    check_invariants(a, b, m);
+    CHECK(contact_manifold(a, b).size() == 4);
+  }
+  SECTION("a tilted triangle piercing another") {
+    const auto a = shapes::triangle<T>(vec_from_double<T>({-2, -2, 0}), vec_from_double<T>({2, -2, 0}),
+                                       vec_from_double<T>({0, 2, 0}));
+    const auto b = shapes::triangle<T>(vec_from_double<T>({-0.3, 0.1, -0.1}), vec_from_double<T>({0.4, -0.2, 0.8}),
+                                       vec_from_double<T>({0.1, 0.5, 0.9}));
+    const auto m = contact_manifold(a, b);
+    REQUIRE(m.kind != ContactKind::None);
+    REQUIRE(m.size() >= 1);
+    check_invariants(a, b, m);
+    const auto b2 = moved(b, Eigen::Matrix3d::Identity(), vec_to_double(m.resolving_translation()));
+    CHECK(sat::gauss_map(a, b2).separation_as_double() >= -1e-5);
+  }
+}
+
+namespace {
+// Configurations for the scale tests: (A, B) at scale s.
+template <Number T>
+std::pair<ConvexPolyhedron<T>, ConvexPolyhedron<T>> config(int which, double s) {
+  const double r2 = std::sqrt(2.0);
+  switch (which) {
+    case 0:
+      return {shapes::cube<T>(s), moved(shapes::cube<T>(0.5 * s), Eigen::Matrix3d::Identity(), s * Vec3<double>(0.1, -0.2, 1.375))};
+    case 1:
+      return {shapes::cube<T>(s), moved(shapes::box<T>(0.9 * s, 0.9 * s, 0.5 * s), rot({0, 0, 1}, std::numbers::pi / 4), s * Vec3<double>(0, 0, 1.4))};
+    case 2:
+      return {moved(shapes::cube<T>(s), rot({1, 0, 0}, std::numbers::pi / 4), {0, 0, 0}),
+              moved(shapes::cube<T>(s), rot({0, 1, 0}, std::numbers::pi / 4), s * Vec3<double>(0.1, -0.2, 2 * r2 - 0.1))};
+    case 3:
+      return {shapes::prism<T>(7, s, s), moved(shapes::prism<T>(5, 0.8 * s, 0.5 * s), rot({1, 1, 0}, 0.3), s * Vec3<double>(0.2, 0.1, 1.3))};
+    default:
+      return {moved(shapes::tetrahedron<T>(s), rot({0, 1, 1}, 0.7), {0, 0, 0}),
+              moved(shapes::cube<T>(0.6 * s), rot({1, 0, 1}, 1.1), s * Vec3<double>(0.9, 0.4, 0.5))};
+  }
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE("scale invariance: 1e-3 and 1e3 give the same manifold up to scale", "[contact][scale]", float, double) {
+  using T = TestType;
+  for (int which = 0; which < 5; ++which) {
+    const auto [a1, b1] = config<T>(which, 1.0);
+    const auto m1 = contact_manifold(a1, b1);
+    REQUIRE(m1.kind != ContactKind::None);
+    for (double s : {1e-3, 1e3}) {
+      INFO("config " << which << " scale " << s);
+      const auto [as, bs] = config<T>(which, s);
+      const auto ms = contact_manifold(as, bs);
+      CHECK(ms.kind == m1.kind);
+      CHECK(ms.feature == m1.feature);
+      REQUIRE(ms.size() == m1.size());
+      CHECK(ids_of(ms) == ids_of(m1));
+      const double tol = std::is_same_v<T, float> ? 1e-4 : 1e-9;
+      for (int i = 0; i < ms.size(); ++i) {
+        CHECK(ms.points[i].depth() / s == Approx(m1.points[i].depth()).margin(tol));
+        CHECK((vec_to_double(ms.points[i].position) / s - vec_to_double(m1.points[i].position)).norm() <= tol);
+      }
+      check_invariants(as, bs, ms);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("speculative margin", "[contact][margin]", float, double) {
+  using T = TestType;
+  const auto a = shapes::cube<T>(1.0);
+  const auto b = moved(shapes::cube<T>(0.5), Eigen::Matrix3d::Identity(), {0, 0, 1.5625});  // gap 0.0625
+  CHECK(contact_manifold(a, b).empty());
+  ManifoldOptions opt;
+  opt.margin = 0.125;
+  const auto m = contact_manifold(a, b, sat::gauss_map(a, b), opt);
+  REQUIRE(m.size() == 4);
+  for (const auto& c : m.points) CHECK(to_double(c.separation) == Approx(0.0625));
+  opt.margin = 0.03125;
+  CHECK(contact_manifold(a, b, sat::gauss_map(a, b), opt).empty());
+  // a tilted box: only the corners within the margin are kept
+  const auto t = moved(shapes::cube<T>(0.5), rot({1, 0, 0}, 0.1), {0, 0, 1.6});
+  opt.margin = 0.2;
+  const auto mt = contact_manifold(a, t, sat::gauss_map(a, t), opt);
+  REQUIRE(mt.kind == ContactKind::Face);
+  opt.margin = 0.1;
+  const auto mt2 = contact_manifold(a, t, sat::gauss_map(a, t), opt);
+  CHECK(mt2.size() < mt.size());
+  for (const auto& c : mt2.points) CHECK(to_double(c.separation) <= 0.1 + 1e-6);
+}
+
+TEST_CASE("bad input to contact_manifold", "[contact][errors]") {
+  const auto a = shapes::cube<double>(1.0);
+  const auto b = moved(shapes::cube<double>(1.0), Eigen::Matrix3d::Identity(), {0, 0, 1.5});
+  auto sat = sat::gauss_map(a, b);
+  ManifoldOptions opt;
+  opt.margin = -1;
+  CHECK_THROWS_AS(contact_manifold(a, b, sat, opt), InvalidInput);
+  opt.margin = std::nan("");
+  CHECK_THROWS_AS(contact_manifold(a, b, sat, opt), InvalidInput);
+  sat.feature = Feature::face_a(17, 0);
+  try {
+    (void)contact_manifold(a, b, sat);
+    FAIL("expected InvalidInput");
+  } catch (const InvalidInput& e) {
+    CHECK(e.code() == ErrorCode::BadIndex);
+    CHECK(std::string(e.what()).find("face of A 17") != std::string::npos);
+  }
+  sat.feature = Feature::edges(0, 99);
+  CHECK_THROWS_AS(contact_manifold(a, b, sat), InvalidInput);
+  // a face feature without support vertex: found by a scan
+  sat = sat::gauss_map(a, b);
+  sat.feature.b = -1;
+  CHECK(contact_manifold(a, b, sat).size() == 4);
+}
+
+TEST_CASE("random overlapping pairs: brute force and Gauss map agree, moving B by the depth separates", "[contact][random]") {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int overlapping = 0;
+  for (int iter = 0; iter < 300; ++iter) {
+    auto shape = [&](int k) {
+      switch (k % 4) {
+        case 0: return shapes::box<double>(0.5 + 0.5 * std::abs(u(rng)), 0.5 + 0.5 * std::abs(u(rng)), 0.3 + 0.5 * std::abs(u(rng)));
+        case 1: return shapes::prism<double>(3 + iter % 6, 0.8, 0.6);
+        case 2: return shapes::tetrahedron<double>(0.9);
+        default: return shapes::regular_polygon<double>(3 + iter % 5, 1.0);
+      }
+    };
+    const auto a = moved(shape(iter), rot({u(rng), u(rng), u(rng)}, 3 * u(rng)), {0, 0, 0});
+    const auto b = moved(shape(iter / 4 + 1), rot({u(rng), u(rng), u(rng)}, 3 * u(rng)), {u(rng), u(rng), u(rng)});
+    const auto sg = sat::gauss_map(a, b);
+    if (!sg.overlap) continue;
+    ++overlapping;
+    INFO("iteration " << iter);
+    const auto m = contact_manifold(a, b, sg);
+    const auto mb = contact_manifold(a, b, sat::brute_force(a, b));
+    REQUIRE(m.kind != ContactKind::None);
+    CHECK(m.size() >= 1);
+    CHECK(m.size() <= 4);
+    check_invariants(a, b, m);
+    CHECK(ids_of(m) == ids_of(mb));
+    const auto b2 = moved(b, Eigen::Matrix3d::Identity(), vec_to_double(m.resolving_translation()));
+    CHECK(sat::gauss_map(a, b2).separation_as_double() >= -1e-9 * std::max(a.extent(), b.extent()));
+  }
+  CHECK(overlapping > 50);
+}
