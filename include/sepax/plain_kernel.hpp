@@ -143,12 +143,21 @@ class PlainKernel {
     return normalized(cross(a_.edge_direction(ea), b_.edge_direction(eb)));
   }
 
-  // eA x eB oriented away from A's centroid at edge eA (Gregorius' rule: for a
-  // Minkowski edge pair the axis points out of A there, for any interior point).
+  // eA x eB oriented from A to B (Gregorius' rule: for a Minkowski edge pair
+  // the axis points out of A at eA and into B at eB, for any interior points).
+  // Both tests are summed: n.(pA - cA) > 0 and n.(cB - pB) > 0 for a
+  // Minkowski pair, so the sum has the same sign, and it stays well
+  // conditioned when one shape is flat and n is (nearly) its plane normal --
+  // there n.(p - c) is 0 up to rounding, and the float arc test can accept
+  // such a pair by rounding; orienting by that shape alone then flipped the
+  // separation's sign.  For exact T and solid shapes the result is unchanged.
   Vec3<T> edge_axis(int ea, int eb) const {
     Vec3<T> n = unoriented_axis(ea, eb);
     const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
-    if (dot(n, Vec3<T>(pa - a_.centroid())) < T(0)) n = Vec3<T>(-n);
+    const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
+    const T out_a = dot(n, Vec3<T>(pa - a_.centroid()));
+    const T in_b = dot(n, Vec3<T>(b_.centroid() - pb));
+    if (T(out_a + in_b) < T(0)) n = Vec3<T>(-n);
     return n;
   }
 
