@@ -1,0 +1,61 @@
+// sepax/robust/exact_float.hpp
+//
+// ExactFloat: the exact number type the robust predicates fall back to.
+//
+// Every exact fallback in sepax/robust evaluates a *polynomial* (sums,
+// differences and products, never a quotient) of input coordinates, which are
+// floats or doubles.  The sign of such a polynomial only needs exact
+// multi-precision binary floating point, not rationals: CGAL::Mpzf (a GMP
+// mantissa with a binary exponent, stack storage for small values, no gcd
+// normalisation) is several times faster than mpq_class for this and is what
+// CGAL's own Epick predicates use.  When CGAL was built without Mpzf support
+// (CGAL_HAS_MPZF undefined) ExactFloat is mpq_class, which is exact too.
+//
+// Both conversions from float and double are exact (a float is a double, a
+// double is a dyadic rational).  Nothing here ever converts back to double.
+#pragma once
+
+#include <array>
+
+#include <gmpxx.h>
+
+#include <CGAL/Mpzf.h>
+
+#include <sepax/vec3.hpp>
+
+namespace sepax::robust {
+
+#if defined(CGAL_HAS_MPZF)
+using ExactFloat = CGAL::Mpzf;
+inline int exact_sign(const ExactFloat& x) { return x.sign(); }
+/// A double near x, for reporting only (never fed back into a decision).
+inline double approx_double(const ExactFloat& x) { return CGAL::to_double(x); }
+#else
+using ExactFloat = mpq_class;
+inline int exact_sign(const ExactFloat& x) { return sgn(x); }
+inline double approx_double(const ExactFloat& x) { return x.get_d(); }
+#endif
+
+/// The exact value of a float or double.
+inline ExactFloat exact(double d) { return ExactFloat(d); }
+
+/// Exact b - a for float/double points.
+template <class F>
+inline std::array<ExactFloat, 3> exact_diff(const Vec3<F>& b, const Vec3<F>& a) {
+  return {exact(static_cast<double>(b[0])) - exact(static_cast<double>(a[0])),
+          exact(static_cast<double>(b[1])) - exact(static_cast<double>(a[1])),
+          exact(static_cast<double>(b[2])) - exact(static_cast<double>(a[2]))};
+}
+
+/// Exact cross product of two exact vectors.
+inline std::array<ExactFloat, 3> exact_cross(const std::array<ExactFloat, 3>& a,
+                                             const std::array<ExactFloat, 3>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+/// Exact dot product of two exact vectors.
+inline ExactFloat exact_dot(const std::array<ExactFloat, 3>& a, const std::array<ExactFloat, 3>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+}  // namespace sepax::robust

@@ -1,0 +1,567 @@
+// sepax/robust/robust_kernel.hpp
+//
+// policy::Robust and RobustKernel<T> (T = float or double): the SAT kernel whose
+// VALUES are the plain float/double values of PlainKernel<T> and whose every
+// DECISION is exact.
+//
+// Contract.  For float/double polyhedra A, B, a SAT run with policy::Robust
+// makes exactly the decisions that PlainKernel<mpq_class> makes on the exact
+// images ConvexPolyhedron<mpq_class>::convert_from(A), convert_from(B):
+// the same support vertices (lowest index among the exactly deepest), arc
+// signs, parallel edges, edge-axis orientations, brute-force support checks,
+// comparisons and signs.  Hence the same feature, the same overlap verdict and
+// the same sign of separation.  The separation VALUE and the axis are the
+// float/double numbers PlainKernel<T> computes for that feature.
+//
+// How.  Each decision first compares the plain value with an error bound
+// derived from per-query constants (below), and falls back to an exact
+// evaluation from the vertex coordinates (orientation.hpp, parallel.hpp,
+// separation_compare.hpp) only when |value| <= bound.  Argmin/argmax keep the
+// few candidates within the bound and resolve them exactly.
+//
+// ---- Error bounds -------------------------------------------------------------
+// u = unit roundoff of T, γ_k = k u / (1 - k u), η_T = smallest subnormal of T.
+// Per query (O(F + V), no allocation):
+//   M_P   max |coordinate| of P (exact);  D_P  bbox diagonal of P;
+//   D     bbox diagonal of A ∪ B  (|p - q| <= D for any two vertices);
+//   δ_P   bound on |n_f - N_f/|N_f|| over faces f of P, where n_f is the stored
+//         unit normal and N_f the exact cross product of the plane triple.
+// The stored normal is n = fl(Ñ / fl(sqrt(fl(Ñ.Ñ)))), Ñ = fl(ẽ1 x ẽ2), ẽ the
+// rounded triple differences.  Each component of Ñ meets 4 roundings per term
+// (2 differences, product, subtraction): |Ñ - N| <= γ_4 |Q| <= γ_4 √2 |e1||e2|
+// (Q_x = |e1_y e2_z| + |e1_z e2_y|, Σ Q_x^2 <= 2 |e1|^2 |e2|^2), plus √3 η_T for
+// products that underflow.  Normalising: sqrt of a dot of squares has relative
+// error <= γ_3/2 + u, the division u, so |n - Ñ/|Ñ|| <= γ_4; and
+// |x/|x| - y/|y|| <= 2|x - y|/|y|.  With q = γ_4 √2 |ẽ1||ẽ2|/(1-u)^2 + √3 η_T:
+//   δ_f = γ_4 + 2 q / (|Ñ| - q)      (2.5, i.e. "always exact", if |Ñ| <= 2q)
+// and δ_P = max_f δ_f, computed from ρ_f = |ẽ1||ẽ2| / |Ñ| (max ρ, one sqrt).
+// The same formula bounds the unit edge axis n = fl(normalize(dA x dB)) of an
+// edge pair (δ_e, computed per pair).
+//
+// (face value)   h̃ = fl(fl(n.v) - fl(n.a)) vs h = N.(v - a)/|N|:
+//   |fl(n.v) - n.v| <= γ_3 |n||v| <= γ_3 (1+γ_4) √3 M_Q, the same for n.a with M_P,
+//   |(n - N/|N|).(v - a)| <= δ_P D, the final subtraction <= u |h̃ + ...|:
+//   E_face(P) = δ_P D + γ_5 √3 (M_P + M_Q)                         (+ 4 η_T)
+// (support)      two vertices v, w of Q along face f of P, compared through
+//   g = fl(n.v): |(g_v - g_w) - (N/|N|).(v - w)| <= 2 γ_3 (1+γ_4) √3 M_Q + δ_P D_Q = W_P.
+//   One pass keeps the minimum and the second minimum; if they are more than
+//   W_P apart the float argmin is the exact unique argmin, else the vertices
+//   within W_P of the minimum are compared exactly (lowest index wins ties).
+// (arc sign)     fl(n_f . fl(head - tail)) vs (N/|N|).e:
+//   (δ_P + γ_5) |e| <= (δ_P + γ_5) D_Q = E_arc(P)                   (+ 2 η_T)
+// (edge value)   both the O(1) form fl(n.fl(pB - pA)) and the projection form
+//   fl(min_B fl(n.w) - max_A fl(n.v)) differ from σ (eA x eB).(pB - pA)/|eA x eB|
+//   by at most δ_e D + γ_8 (D + √3 (M_A + M_B)) (for the projection form, shift
+//   every projection by the common (n - n*).o, o the centre of the union bbox:
+//   the shift cancels in min - max, what remains is <= δ_e D/2 per side).
+// (centroid side) fl(n.fl(p - c̃)) vs n*.(p - c) with c the exact mean:
+//   the stored centroid c̃ is a sequential sum and a division, |c̃ - c| <=
+//   √3 γ_{V+1} M_P =: C_P; the error is <= (δ_e + γ_5)(D_P + C_P) + C_P.
+// (parallel)     parallel.hpp's own filter.
+// Every bound is computed in double and multiplied by (1 + 1e-6), which covers
+// the rounding of the bound computation itself (relative 1e-15) and the
+// (1 + γ_4) factors for float (relative 3e-7).  FMA contraction only removes
+// roundings, so every bound holds with and without it.
+//
+// Centroid.  PlainKernel<mpq_class> orients an edge-pair axis away from A's
+// exact vertex mean.  For a Minkowski edge pair the sign is the same for any
+// point strictly inside A, but the float centroid need not be strictly inside
+// (sliver shapes, and it is off the plane of a flat A), so the exact fallback
+// here uses the exact mean: sign Σ_v n*.(p - v) = sign (V n*.p - n*.Σ v).
+//
+// Edge-pair orientation in compare()/sign().  A separation value does not say
+// which orientation its SAT chose, so the kernel recomputes it from the
+// feature: the O(1) form (edge_separation, Gauss map, traversal) uses the sign
+// s_A of n*.(pA - centroid(A)), no flip when zero; the projection form
+// (edge_separation_full, brute force) uses s_A if non-zero, else the sign of
+// n*.(centroid(B) - pB), else the sign of n*.(pB - pA) (+1 when zero), which is
+// exactly the orientation its exact support checks select.  A kernel serves one
+// SAT run; it remembers which of the two forms that run used.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <type_traits>
+
+#include <sepax/plain_kernel.hpp>
+#include <sepax/robust/exact_float.hpp>
+#include <sepax/robust/orientation.hpp>
+#include <sepax/robust/parallel.hpp>
+#include <sepax/robust/separation_compare.hpp>
+#include <sepax/sat_kernel.hpp>
+
+namespace sepax {
+
+namespace policy {
+/// float/double values, every decision by a filtered exact predicate.
+struct Robust {};
+}  // namespace policy
+
+template <class T>
+concept RobustFloat = std::is_same_v<T, float> || std::is_same_v<T, double>;
+
+template <RobustFloat T>
+class RobustKernel {
+ public:
+  using FT = T;
+
+  RobustKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) : a_(a), b_(b) {
+    const double ma = a.max_abs_coordinate(), mb = b.max_abs_coordinate();
+    const double da = padded_extent(a), db = padded_extent(b);
+    double d2 = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double lo = std::min<double>(a.bounds_min()[c], b.bounds_min()[c]);
+      const double hi = std::max<double>(a.bounds_max()[c], b.bounds_max()[c]);
+      d2 += (hi - lo) * (hi - lo);
+    }
+    d_ = std::sqrt(d2) * kMargin;
+    const double da_n = normal_error(a), db_n = normal_error(b);
+    const double s3 = std::sqrt(3.0) * kMargin;
+    face_err_a_ = (da_n * d_ + gamma(5) * s3 * (ma + mb)) * kMargin + 4 * kEta;
+    face_err_b_ = (db_n * d_ + gamma(5) * s3 * (ma + mb)) * kMargin + 4 * kEta;
+    support_err_a_ = (2 * gamma(3) * s3 * mb + da_n * db) * kMargin + 4 * kEta;  // B's vertices, A's faces
+    support_err_b_ = (2 * gamma(3) * s3 * ma + db_n * da) * kMargin + 4 * kEta;
+    arc_err_a_ = (da_n + gamma(5)) * db * kMargin + 2 * kEta;  // A's normals . B's edges
+    arc_err_b_ = (db_n + gamma(5)) * da * kMargin + 2 * kEta;
+    edge_abs_ = gamma(8) * (d_ + s3 * (ma + mb)) * kMargin + 8 * kEta;
+    proj_abs_a_ = 2 * gamma(3) * s3 * ma * kMargin + 4 * kEta;
+    proj_abs_b_ = 2 * gamma(3) * s3 * mb * kMargin + 4 * kEta;
+    centroid_err_a_ = centroid_error(a);
+    centroid_err_b_ = centroid_error(b);
+    extent_a_ = da;
+    extent_b_ = db;
+  }
+
+  const ConvexPolyhedron<T>& a() const { return a_; }
+  const ConvexPolyhedron<T>& b() const { return b_; }
+
+  FaceQuery<T> face_query_a(int f) const { return face_query(a_, f, b_, support_err_a_); }
+  FaceQuery<T> face_query_b(int f) const { return face_query(b_, f, a_, support_err_b_); }
+
+  Separation<T> face_separation_a(int f, int vb) const { return height(a_.plane(f), b_.vertex(vb)); }
+  Separation<T> face_separation_b(int f, int va) const { return height(b_.plane(f), a_.vertex(va)); }
+
+  ArcSigns arc_signs(int ea, int eb) const {
+    const Vec3<T> da = a_.edge_direction(ea);
+    const Vec3<T> db = b_.edge_direction(eb);
+    ArcSigns s;
+    s.cba = normal_dot_sign(b_, b_.edge_face(eb, 0), da, a_, ea, arc_err_b_);
+    s.dba = normal_dot_sign(b_, b_.edge_face(eb, 1), da, a_, ea, arc_err_b_);
+    s.adc = -normal_dot_sign(a_, a_.edge_face(ea, 0), db, b_, eb, arc_err_a_);
+    s.bdc = -normal_dot_sign(a_, a_.edge_face(ea, 1), db, b_, eb, arc_err_a_);
+    return s;
+  }
+
+  bool edges_parallel(int ea, int eb) const {
+    return robust::parallel(a_.vertex(a_.edge_tail(ea)), a_.vertex(a_.edge_head(ea)),
+                            b_.vertex(b_.edge_tail(eb)), b_.vertex(b_.edge_head(eb)), &fallbacks_);
+  }
+
+  Separation<T> edge_separation(int ea, int eb) const {
+    projection_rule_ = false;
+    const EdgeAxis ax = edge_axis(ea, eb);
+    Vec3<T> n = ax.n;
+    if (centroid_side(a_, a_.edge_tail(ea), ax, centroid_err_a_, extent_a_, ea, eb) < 0) n = Vec3<T>(-n);
+    const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
+    const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
+    return Separation<T>{dot(n, Vec3<T>(pb - pa)), T(1)};
+  }
+
+  std::optional<Separation<T>> edge_separation_full(int ea, int eb) const {
+    projection_rule_ = true;
+    const EdgeAxis ax = edge_axis(ea, eb);
+    const Vec3<T>& n = ax.n;
+    Extremes ea_x = extremes(a_, n, a_.edge_tail(ea), a_.edge_head(ea));
+    const double wa = proj_abs_a_ + ax.delta * extent_a_ * kMargin;
+    const bool a_max = all_on_side(a_, ea_x, n, wa, +1, ea, eb);
+    const bool a_min = all_on_side(a_, ea_x, n, wa, -1, ea, eb);
+    if (!a_max && !a_min) return std::nullopt;
+    Extremes eb_x = extremes(b_, n, b_.edge_tail(eb), b_.edge_head(eb));
+    const double wb = proj_abs_b_ + ax.delta * extent_b_ * kMargin;
+    const bool b_min = a_max && all_on_side(b_, eb_x, n, wb, -1, ea, eb);
+    const bool b_max = a_min && all_on_side(b_, eb_x, n, wb, +1, ea, eb);
+    const bool plus = a_max && b_min;    // +n from A to B
+    const bool minus = a_min && b_max;   // -n from A to B
+    if (!plus && !minus) return std::nullopt;
+    const Separation<T> sp{T(eb_x.lo - ea_x.hi), T(1)};
+    const Separation<T> sm{T(ea_x.lo - eb_x.hi), T(1)};
+    if (plus && minus) {
+      // Both shapes project to single values: sp* = -sm*, so sp >= sm iff
+      // n*.(pB - pA) >= 0.
+      const double e = edge_value_error(ax.delta);
+      int s;
+      if (static_cast<double>(sp.num) > e) s = 1;
+      else if (static_cast<double>(sp.num) < -e) s = -1;
+      else s = edge_pair_sign(ea, eb);
+      return s >= 0 ? sp : sm;
+    }
+    return plus ? sp : sm;
+  }
+
+  int compare(const Separation<T>& x, const Feature& fx, const Separation<T>& y, const Feature& fy) const {
+    if (fx == fy) return 0;
+    const double bound = (value_error(fx) + value_error(fy)) * kMargin;
+    const double d = static_cast<double>(x.num) - static_cast<double>(y.num);
+    if (d > bound) return 1;
+    if (d < -bound) return -1;
+    ++fallbacks_;
+    return robust::compare_exact(exact_separation(fx), exact_separation(fy));
+  }
+
+  int sign(const Separation<T>& x, const Feature& f) const {
+    const double v = static_cast<double>(x.num);
+    const double e = value_error(f);
+    if (v > e) return 1;
+    if (v < -e) return -1;
+    switch (f.type) {
+      case FeatureType::FaceA: return face_sign(a_, f.a, b_.vertex(f.b));
+      case FeatureType::FaceB: return face_sign(b_, f.b, a_.vertex(f.a));
+      case FeatureType::EdgePair: return edge_sigma(f.a, f.b) * edge_pair_sign(f.a, f.b);
+    }
+    return 0;
+  }
+
+  Vec3<T> axis(const Feature& f) const {
+    switch (f.type) {
+      case FeatureType::FaceA: return a_.plane(f.a).normal;
+      case FeatureType::FaceB: return Vec3<T>(-b_.plane(f.b).normal);
+      case FeatureType::EdgePair: {
+        const EdgeAxis ax = edge_axis(f.a, f.b);
+        return edge_sigma(f.a, f.b) < 0 ? Vec3<T>(-ax.n) : ax.n;
+      }
+    }
+    return Vec3<T>(T(0), T(0), T(0));
+  }
+
+  /// Decisions that needed the exact stage (ExactFloat evaluations).
+  std::int64_t exact_fallbacks() const { return fallbacks_; }
+
+ private:
+  using P = ConvexPolyhedron<T>;
+  static constexpr double kU = number_traits<T>::unit_roundoff;
+  static constexpr double kEta = static_cast<double>(std::numeric_limits<T>::denorm_min());
+  static constexpr double kMargin = 1.0 + 1e-6;
+  static constexpr double kNoBound = 2.5;  // |n - n*| <= 2 (1 + γ_4) always
+
+  static constexpr double gamma(int k) { return k * kU / (1.0 - k * kU); }
+
+  struct EdgeAxis {
+    Vec3<T> n;      // fl(normalize(dA x dB)), unoriented (as PlainKernel)
+    double delta;   // bound on |n - n*/|n*||
+  };
+
+  struct Extremes {
+    T lo, hi;               // over all vertices (the values PlainKernel computes)
+    T lo_other, hi_other;   // over all vertices except the edge's endpoints
+    T ref;                  // projection of the edge's tail
+  };
+
+  static double padded_extent(const P& p) { return p.extent() * (1.0 + 4 * kU) * kMargin; }
+
+  // Bound on |n - N/|N|| for n = fl(normalize(fl(e1 x e2))), see the header.
+  static double unit_error_from_ratio(double rho) {
+    // rho >= |ẽ1||ẽ2|/|Ñ| (already padded); q/|Ñ| = c rho.
+    const double c = gamma(4) * std::sqrt(2.0) / ((1 - kU) * (1 - kU));
+    const double qr = c * rho * kMargin;
+    if (!(qr < 0.5)) return kNoBound;
+    return (gamma(4) + 2 * qr / (1 - qr)) * kMargin;
+  }
+
+  // Norms below this (squared, in T units) risk underflow in the normalisation.
+  static constexpr double kTinySquared =
+      static_cast<double>(std::numeric_limits<T>::min()) * 0x1p40;
+
+  static double squared_norm_d(const Vec3<T>& v) {
+    const double x = v[0], y = v[1], z = v[2];
+    return x * x + y * y + z * z;
+  }
+
+  static double cross_ratio_squared(const Vec3<T>& e1, const Vec3<T>& e2, const Vec3<T>& c) {
+    const double nc2 = squared_norm_d(c);
+    if (!(nc2 > kTinySquared) || !std::isfinite(nc2)) return std::numeric_limits<double>::infinity();
+    return squared_norm_d(e1) * squared_norm_d(e2) / nc2;
+  }
+
+  static double normal_error(const P& p) {
+    double worst = 0;
+    for (int f = 0; f < p.face_count(); ++f) {
+      const auto& t = p.face(f).plane_vertices;
+      const Vec3<T>& v0 = p.vertex(t[0]);
+      const Vec3<T> e1(p.vertex(t[1]) - v0);
+      const Vec3<T> e2(p.vertex(t[2]) - v0);
+      const double r2 = cross_ratio_squared(e1, e2, cross(e1, e2));
+      if (r2 > worst) worst = r2;
+    }
+    return unit_error_from_ratio(std::sqrt(worst) * kMargin);
+  }
+
+  static double centroid_error(const P& p) {
+    const double k = static_cast<double>(p.vertex_count()) + 1.0;
+    if (!(k * kU < 0.25)) return std::numeric_limits<double>::infinity();
+    return std::sqrt(3.0) * gamma(static_cast<int>(k)) * p.max_abs_coordinate() * kMargin * kMargin +
+           4 * kEta;
+  }
+
+  static Separation<T> height(const Plane<T>& pl, const Vec3<T>& p) {
+    return Separation<T>{T(dot(pl.normal, p) - pl.offset), T(1)};
+  }
+
+  // The unit axis of an edge pair, exactly as PlainKernel<T>::unoriented_axis,
+  // with its error bound.  If the T cross product is zero or not finite (edges
+  // parallel in T but not exactly), the axis is computed from the exact cross
+  // product rounded to double (a value for reporting; every decision about it
+  // then goes exact because delta is kNoBound).
+  EdgeAxis edge_axis(int ea, int eb) const {
+    const Vec3<T> da = a_.edge_direction(ea);
+    const Vec3<T> db = b_.edge_direction(eb);
+    const Vec3<T> c = cross(da, db);
+    const double r2 = cross_ratio_squared(da, db, c);
+    EdgeAxis ax;
+    if (std::isfinite(r2)) {
+      const T len = std::sqrt(squared_norm(c));
+      ax.n = Vec3<T>(c[0] / len, c[1] / len, c[2] / len);
+      ax.delta = unit_error_from_ratio(std::sqrt(r2) * kMargin);
+    } else {
+      const auto ce = robust::exact_cross(
+          robust::exact_diff(a_.vertex(a_.edge_head(ea)), a_.vertex(a_.edge_tail(ea))),
+          robust::exact_diff(b_.vertex(b_.edge_head(eb)), b_.vertex(b_.edge_tail(eb))));
+      Vec3<double> cd(robust::approx_double(ce[0]), robust::approx_double(ce[1]),
+                      robust::approx_double(ce[2]));
+      const double m = std::max({std::fabs(cd[0]), std::fabs(cd[1]), std::fabs(cd[2])});
+      if (m > 0) cd /= m;
+      const double len = cd.norm();
+      ax.n = len > 0 ? Vec3<T>(static_cast<T>(cd[0] / len), static_cast<T>(cd[1] / len),
+                               static_cast<T>(cd[2] / len))
+                     : Vec3<T>(T(0), T(0), T(0));
+      ax.delta = kNoBound;
+    }
+    return ax;
+  }
+
+  double edge_value_error(double delta) const { return delta * d_ * kMargin + edge_abs_; }
+
+  double value_error(const Feature& f) const {
+    switch (f.type) {
+      case FeatureType::FaceA: return face_err_a_;
+      case FeatureType::FaceB: return face_err_b_;
+      case FeatureType::EdgePair: return edge_value_error(edge_axis(f.a, f.b).delta);
+    }
+    return std::numeric_limits<double>::infinity();
+  }
+
+  // ---- exact helpers (each call counts as a fallback when it runs exactly) ----
+
+  // sign of N_f . (p - v_i), N_f the plane triple's cross product.
+  int face_sign(const P& p, int f, const Vec3<T>& q) const {
+    const auto& t = p.face(f).plane_vertices;
+    const Vec3<T>& v0 = p.vertex(t[0]);
+    return robust::orient_sign(v0, p.vertex(t[1]), v0, p.vertex(t[2]), v0, q, &fallbacks_);
+  }
+
+  // sign of (eA x eB) . (pB - pA), pA, pB the edges' tails.
+  int edge_pair_sign(int ea, int eb) const {
+    return robust::orient_sign(a_.vertex(a_.edge_tail(ea)), a_.vertex(a_.edge_head(ea)),
+                               b_.vertex(b_.edge_tail(eb)), b_.vertex(b_.edge_head(eb)),
+                               a_.vertex(a_.edge_tail(ea)), b_.vertex(b_.edge_tail(eb)), &fallbacks_);
+  }
+
+  // sign of (eA x eB) . (q - p0) for a vertex q of either shape.
+  int pair_axis_side(int ea, int eb, const Vec3<T>& p0, const Vec3<T>& q) const {
+    return robust::orient_sign(a_.vertex(a_.edge_tail(ea)), a_.vertex(a_.edge_head(ea)),
+                               b_.vertex(b_.edge_tail(eb)), b_.vertex(b_.edge_head(eb)), p0, q,
+                               &fallbacks_);
+  }
+
+  // sign of n* . (p.vertex(v) - exact mean of p's vertices), n* = eA x eB.
+  int centroid_side(const P& p, int v, const EdgeAxis& ax, double cerr, double extent, int ea,
+                    int eb) const {
+    const T o = dot(ax.n, Vec3<T>(p.vertex(v) - p.centroid()));
+    const double e = ((ax.delta + gamma(5)) * (extent + cerr) + cerr) * kMargin + 4 * kEta;
+    if (static_cast<double>(o) > e) return 1;
+    if (static_cast<double>(o) < -e) return -1;
+    ++fallbacks_;
+    using robust::ExactFloat;
+    const auto n = robust::exact_cross(
+        robust::exact_diff(a_.vertex(a_.edge_head(ea)), a_.vertex(a_.edge_tail(ea))),
+        robust::exact_diff(b_.vertex(b_.edge_head(eb)), b_.vertex(b_.edge_tail(eb))));
+    std::array<ExactFloat, 3> sum{ExactFloat(0), ExactFloat(0), ExactFloat(0)};
+    for (const auto& w : p.vertices()) {
+      for (int c = 0; c < 3; ++c) sum[c] = sum[c] + robust::exact(static_cast<double>(w[c]));
+    }
+    const std::array<ExactFloat, 3> pv{robust::exact(static_cast<double>(p.vertex(v)[0])),
+                                       robust::exact(static_cast<double>(p.vertex(v)[1])),
+                                       robust::exact(static_cast<double>(p.vertex(v)[2]))};
+    const ExactFloat val = ExactFloat(p.vertex_count()) * robust::exact_dot(n, pv) - robust::exact_dot(n, sum);
+    return robust::exact_sign(val);
+  }
+
+  // The orientation (+1/-1) of the edge pair's axis that the current SAT's
+  // exact counterpart uses (see the header).
+  int edge_sigma(int ea, int eb) const {
+    const EdgeAxis ax = edge_axis(ea, eb);
+    const int sa = centroid_side(a_, a_.edge_tail(ea), ax, centroid_err_a_, extent_a_, ea, eb);
+    if (sa != 0 || !projection_rule_) return sa < 0 ? -1 : 1;
+    const int sb = -centroid_side(b_, b_.edge_tail(eb), ax, centroid_err_b_, extent_b_, ea, eb);
+    if (sb != 0) return sb;
+    return edge_pair_sign(ea, eb) < 0 ? -1 : 1;
+  }
+
+  robust::ExactSeparation exact_separation(const Feature& f) const {
+    switch (f.type) {
+      case FeatureType::FaceA: {
+        const auto pts = a_.plane_points(f.a);
+        return robust::face_separation_exact(pts[0], pts[1], pts[2], b_.vertex(f.b));
+      }
+      case FeatureType::FaceB: {
+        const auto pts = b_.plane_points(f.b);
+        return robust::face_separation_exact(pts[0], pts[1], pts[2], a_.vertex(f.a));
+      }
+      case FeatureType::EdgePair:
+      default: {
+        const int ea = f.a, eb = f.b;
+        return robust::edge_separation_exact(
+            a_.vertex(a_.edge_tail(ea)), a_.vertex(a_.edge_head(ea)), b_.vertex(b_.edge_tail(eb)),
+            b_.vertex(b_.edge_head(eb)), a_.vertex(a_.edge_tail(ea)), b_.vertex(b_.edge_tail(eb)),
+            edge_sigma(ea, eb));
+      }
+    }
+  }
+
+  // ---- decisions ----
+
+  // Exact sign of N_f . e for face f of p and edge ei of q (e = fl(head - tail)
+  // is the plain value; the exact fallback uses the vertices).
+  int normal_dot_sign(const P& p, int f, const Vec3<T>& e, const P& q, int ei, double bound) const {
+    const T d = dot(p.plane(f).normal, e);
+    if (static_cast<double>(d) > bound) return 1;
+    if (static_cast<double>(d) < -bound) return -1;
+    const auto& t = p.face(f).plane_vertices;
+    const Vec3<T>& v0 = p.vertex(t[0]);
+    // N.e = ((v1 - v0) x (v2 - v0)) . e = det[e, v1 - v0, v2 - v0]
+    return robust::orient_sign(q.vertex(q.edge_tail(ei)), q.vertex(q.edge_head(ei)), v0, p.vertex(t[1]),
+                               v0, p.vertex(t[2]), &fallbacks_);
+  }
+
+  // Support vertex of q along the inward normal of face f of p: the lowest
+  // index among the vertices with exactly minimal N_f . v.
+  FaceQuery<T> face_query(const P& p, int f, const P& q, double w) const {
+    const Plane<T>& pl = p.plane(f);
+    const auto& vs = q.vertices();
+    const int nv = static_cast<int>(vs.size());
+    int best = 0;
+    T m = dot(pl.normal, vs[0]);
+    T second = std::numeric_limits<T>::infinity();
+    for (int i = 1; i < nv; ++i) {
+      const T h = dot(pl.normal, vs[static_cast<std::size_t>(i)]);
+      if (h < m) {
+        second = m;
+        m = h;
+        best = i;
+      } else if (h < second) {
+        second = h;
+      }
+    }
+    if (!(static_cast<double>(second) - static_cast<double>(m) > w)) best = resolve_support(p, f, q, m, w);
+    const T hb = dot(pl.normal, vs[static_cast<std::size_t>(best)]);
+    return FaceQuery<T>{Separation<T>{T(hb - pl.offset), T(1)}, best};
+  }
+
+  int resolve_support(const P& p, int f, const P& q, T m, double w) const {
+    const Plane<T>& pl = p.plane(f);
+    const auto& t = p.face(f).plane_vertices;
+    const Vec3<T>& v0 = p.vertex(t[0]);
+    const Vec3<T>& v1 = p.vertex(t[1]);
+    const Vec3<T>& v2 = p.vertex(t[2]);
+    int cur = -1;
+    T gcur = T(0);
+    for (int i = 0; i < q.vertex_count(); ++i) {
+      const T g = dot(pl.normal, q.vertex(i));
+      if (static_cast<double>(g) - static_cast<double>(m) > w) continue;  // exactly above the minimum
+      if (cur < 0) {
+        cur = i;
+        gcur = g;
+        continue;
+      }
+      const double d = static_cast<double>(g) - static_cast<double>(gcur);
+      int s;
+      if (d > w) s = 1;
+      else if (d < -w) s = -1;
+      else s = robust::orient_sign(v0, v1, v0, v2, q.vertex(cur), q.vertex(i), &fallbacks_);
+      if (s < 0) {
+        cur = i;
+        gcur = g;
+      }
+    }
+    return cur;
+  }
+
+  Extremes extremes(const P& p, const Vec3<T>& n, int tail, int head) const {
+    Extremes x;
+    x.ref = dot(n, p.vertex(tail));
+    x.lo = x.hi = dot(n, p.vertex(0));
+    x.lo_other = std::numeric_limits<T>::infinity();
+    x.hi_other = -std::numeric_limits<T>::infinity();
+    for (int i = 0; i < p.vertex_count(); ++i) {
+      const T h = dot(n, p.vertex(i));
+      if (h < x.lo) x.lo = h;
+      if (h > x.hi) x.hi = h;
+      if (i != tail && i != head) {
+        if (h < x.lo_other) x.lo_other = h;
+        if (h > x.hi_other) x.hi_other = h;
+      }
+    }
+    return x;
+  }
+
+  // dir = +1: every vertex v of p satisfies n*.(v - ref) <= 0 (the edge is at
+  // p's maximum along n*); dir = -1: >= 0 (at its minimum).  The edge's own
+  // endpoints are exactly at 0 (n* is orthogonal to both edges).
+  bool all_on_side(const P& p, const Extremes& x, const Vec3<T>& n, double w, int dir, int ea,
+                   int eb) const {
+    const double ext = static_cast<double>(dir > 0 ? x.hi_other : x.lo_other);
+    const double dx = (ext - static_cast<double>(x.ref)) * dir;  // > 0: some vertex beyond
+    if (dx < -w) return true;
+    if (dx > w) return false;
+    const bool is_a = &p == &a_;
+    const int tail = is_a ? a_.edge_tail(ea) : b_.edge_tail(eb);
+    const int head = is_a ? a_.edge_head(ea) : b_.edge_head(eb);
+    const Vec3<T>& ref = p.vertex(tail);
+    for (int i = 0; i < p.vertex_count(); ++i) {
+      if (i == tail || i == head) continue;
+      const double d = (static_cast<double>(dot(n, p.vertex(i))) - static_cast<double>(x.ref)) * dir;
+      if (d > w) return false;
+      if (d < -w) continue;
+      if (pair_axis_side(ea, eb, ref, p.vertex(i)) * dir > 0) return false;
+    }
+    return true;
+  }
+
+  const P& a_;
+  const P& b_;
+  double d_ = 0;
+  double extent_a_ = 0, extent_b_ = 0;
+  double face_err_a_ = 0, face_err_b_ = 0;
+  double support_err_a_ = 0, support_err_b_ = 0;
+  double arc_err_a_ = 0, arc_err_b_ = 0;
+  double edge_abs_ = 0;
+  double proj_abs_a_ = 0, proj_abs_b_ = 0;
+  double centroid_err_a_ = 0, centroid_err_b_ = 0;
+  mutable std::int64_t fallbacks_ = 0;
+  mutable bool projection_rule_ = false;
+};
+
+template <RobustFloat T>
+struct kernel_for<policy::Robust, T> {
+  using type = RobustKernel<T>;
+};
+
+/// For exact number types every decision is already exact: Robust is Plain.
+template <ExactNumber T>
+struct kernel_for<policy::Robust, T> {
+  using type = PlainKernel<T>;
+};
+
+}  // namespace sepax
