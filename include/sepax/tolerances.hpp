@@ -56,7 +56,7 @@ template <>
 struct Tolerances<float> {
   static constexpr double weld = 1e-5;
   static constexpr double coplanar = 1e-5;
-  static constexpr double flat = 1e-5;
+  static constexpr double flat = 2e-5;
   static constexpr double planarity = 4e-5;
   static constexpr double convexity = 4e-5;
   static constexpr double support = 1e-5;
@@ -69,7 +69,7 @@ template <>
 struct Tolerances<double> {
   static constexpr double weld = 1e-10;
   static constexpr double coplanar = 1e-10;
-  static constexpr double flat = 1e-10;
+  static constexpr double flat = 2e-10;
   static constexpr double planarity = 4e-10;
   static constexpr double convexity = 4e-10;
   static constexpr double support = 1e-10;
