@@ -35,6 +35,10 @@
 #include <sepax/sat_traversal.hpp>
 #define SEPAX_BENCH_TRAVERSAL 1
 #endif
+#if __has_include(<sepax/contact_manifold.hpp>)
+#include <sepax/contact_manifold.hpp>
+#define SEPAX_BENCH_CONTACTS 1
+#endif
 #if __has_include(<sepax/robust/robust_kernel.hpp>)
 #include <sepax/robust/robust_kernel.hpp>
 #define SEPAX_BENCH_ROBUST 1
@@ -278,6 +282,9 @@ struct Pool {
   std::vector<Shape> shapes;
   std::vector<ConvexPolyhedron<double>> d;
   std::vector<ConvexPolyhedron<Q>> q;
+#if SEPAX_BENCH_TRAVERSAL
+  std::vector<GaussMapWalk> walk;  // topology only: valid for posed and converted copies
+#endif
 #if SEPAX_BENCH_BULLET
   std::vector<std::unique_ptr<BulletShape>> bullet;
 #endif
@@ -332,6 +339,9 @@ void build_pool(Pool& pool, const std::string& kind, int n, Rng& rng, int count)
   for (const auto& s : pool.shapes) {
     pool.d.push_back(ConvexPolyhedron<double>::convert_from(s.f));
     pool.q.push_back(ConvexPolyhedron<Q>::convert_from(s.f));
+#if SEPAX_BENCH_TRAVERSAL
+    pool.walk.emplace_back(s.f);
+#endif
 #if SEPAX_BENCH_BULLET
     pool.bullet.push_back(std::make_unique<BulletShape>(s.f.vertices()));
 #endif
@@ -388,7 +398,8 @@ void compute_reference(Cell& c) {
     auto& p = c.pairs[i];
     const auto& a = c.pool->q[static_cast<std::size_t>(p.a)];
 #if SEPAX_BENCH_TRAVERSAL
-    const auto r = sat::traversal(a, c.bq[i]);
+    const auto r = sat::traversal(a, c.pool->walk[static_cast<std::size_t>(p.a)], c.bq[i],
+                                  c.pool->walk[static_cast<std::size_t>(p.b)]);
 #else
     const auto r = sat::gauss_map(a, c.bq[i]);
 #endif
@@ -408,6 +419,7 @@ struct Row {
   std::string name;
   std::string group;  // "sepax" or "peer"
   std::function<Out(std::size_t)> run;
+  std::size_t max_pairs = static_cast<std::size_t>(-1);  // slow rows run on a prefix of the pairs
 };
 
 template <class R>
@@ -424,6 +436,18 @@ const ConvexPolyhedron<double>& ad(const Cell& c, std::size_t i) {
 const ConvexPolyhedron<Q>& aq(const Cell& c, std::size_t i) {
   return c.pool->q[static_cast<std::size_t>(c.pairs[i].a)];
 }
+#if SEPAX_BENCH_TRAVERSAL
+const GaussMapWalk& wa(const Cell& c, std::size_t i) {
+  return c.pool->walk[static_cast<std::size_t>(c.pairs[i].a)];
+}
+const GaussMapWalk& wb(const Cell& c, std::size_t i) {
+  return c.pool->walk[static_cast<std::size_t>(c.pairs[i].b)];
+}
+#endif
+
+constexpr std::size_t kExactPairs = 16;
+constexpr std::size_t kMinPairs = 16;
+std::size_t g_contact_points = 0;
 
 // Every row's closure holds only the Cell pointer (rows outlive make_rows).
 std::vector<Row> make_rows(Cell& c) {
@@ -441,13 +465,26 @@ std::vector<Row> make_rows(Cell& c) {
   if (small) add("brute float", [cp](std::size_t i) { return from_sat(sat::brute_force(af(*cp, i), cp->pairs[i].bf)); });
   add("gauss float", [cp](std::size_t i) { return from_sat(sat::gauss_map(af(*cp, i), cp->pairs[i].bf)); });
 #if SEPAX_BENCH_TRAVERSAL
-  add("traversal float", [cp](std::size_t i) { return from_sat(sat::traversal(af(*cp, i), cp->pairs[i].bf)); });
+  add("traversal float", [cp](std::size_t i) {
+    return from_sat(sat::traversal(af(*cp, i), wa(*cp, i), cp->pairs[i].bf, wb(*cp, i)));
+  });
   // posing included: B's local shape, transformed and rebuilt inside the query
   add("traversal float +pose", [cp](std::size_t i) {
     const auto& lb = cp->pool->shapes[static_cast<std::size_t>(cp->pairs[i].b)].f;
     const auto posed = lb.with_vertices(pose_vertices(lb, cp->pairs[i].pose));
-    return from_sat(sat::traversal(af(*cp, i), posed));
+    return from_sat(sat::traversal(af(*cp, i), wa(*cp, i), posed, wb(*cp, i)));
   });
+#if SEPAX_BENCH_CONTACTS
+  add("traversal+manifold float", [cp](std::size_t i) {
+    const auto& a = af(*cp, i);
+    const auto& b = cp->pairs[i].bf;
+    const auto r = sat::traversal(a, wa(*cp, i), b, wb(*cp, i));
+    const auto m = contact_manifold(a, b, r);
+    Out o = from_sat(r);
+    g_contact_points += m.points.size();  // a global side effect: the manifold cannot be elided
+    return o;
+  });
+#endif
 #endif
 #if SEPAX_BENCH_ROBUST
   if (small)
@@ -457,23 +494,36 @@ std::vector<Row> make_rows(Cell& c) {
       [cp](std::size_t i) { return from_sat(sat::gauss_map<policy::Robust>(af(*cp, i), cp->pairs[i].bf)); });
 #if SEPAX_BENCH_TRAVERSAL
   add("traversal float robust",
-      [cp](std::size_t i) { return from_sat(sat::traversal<policy::Robust>(af(*cp, i), cp->pairs[i].bf)); });
+      [cp](std::size_t i) {
+        return from_sat(sat::traversal<policy::Robust>(af(*cp, i), wa(*cp, i), cp->pairs[i].bf, wb(*cp, i)));
+      });
 #endif
 #endif
   // double plain
   if (small) add("brute double", [cp](std::size_t i) { return from_sat(sat::brute_force(ad(*cp, i), cp->pairs[i].bd)); });
   add("gauss double", [cp](std::size_t i) { return from_sat(sat::gauss_map(ad(*cp, i), cp->pairs[i].bd)); });
 #if SEPAX_BENCH_TRAVERSAL
-  add("traversal double", [cp](std::size_t i) { return from_sat(sat::traversal(ad(*cp, i), cp->pairs[i].bd)); });
+  add("traversal double", [cp](std::size_t i) {
+    return from_sat(sat::traversal(ad(*cp, i), wa(*cp, i), cp->pairs[i].bd, wb(*cp, i)));
+  });
 #endif
-  // exact (mpq_class): small shapes only, they are slow
-  if (n == 0 || n <= 8)
+  // exact (mpq_class): small shapes only and the first kExactPairs pairs; they are slow
+  const bool cyl = c.workload.rfind("cylinder", 0) == 0;
+  if ((n == 0 && !cyl) || (n > 0 && n <= 8)) {
     add("brute mpq", [cp](std::size_t i) { return from_sat(sat::brute_force(aq(*cp, i), cp->bq[i])); });
-  if (n == 0 || n <= 32)
+    rows.back().max_pairs = kExactPairs;
+  }
+  if (n == 0 || n <= 16) {
     add("gauss mpq", [cp](std::size_t i) { return from_sat(sat::gauss_map(aq(*cp, i), cp->bq[i])); });
+    rows.back().max_pairs = kExactPairs;
+  }
 #if SEPAX_BENCH_TRAVERSAL
-  if (n == 0 || n <= 64)
-    add("traversal mpq", [cp](std::size_t i) { return from_sat(sat::traversal(aq(*cp, i), cp->bq[i])); });
+  if (n == 0 || n <= 64) {
+    add("traversal mpq", [cp](std::size_t i) {
+      return from_sat(sat::traversal(aq(*cp, i), wa(*cp, i), cp->bq[i], wb(*cp, i)));
+    });
+    rows.back().max_pairs = kExactPairs;
+  }
 #endif
 
   // ---- peers (pre-posed vertices, identity transforms) ----
@@ -588,12 +638,20 @@ Measured measure(Cell& c, Row& row, double min_time, std::vector<Out>& outs) {
   m.row = row.name;
   m.group = row.group;
   m.n = c.n;
-  const std::size_t np = c.pairs.size();
-  m.queries = static_cast<int>(np);
+  std::size_t np = std::min(c.pairs.size(), row.max_pairs);
   outs.assign(np, Out{});
-  // first pass: answers (also the warm-up)
+  // first pass: answers (also the warm-up).  A slow row stops after min_time
+  // and at least kMinPairs pairs: it is then measured on that prefix.
   double t0 = now_s();
-  for (std::size_t i = 0; i < np; ++i) outs[i] = row.run(i);
+  for (std::size_t i = 0; i < np; ++i) {
+    outs[i] = row.run(i);
+    if (i + 1 >= kMinPairs && now_s() - t0 > min_time) {
+      np = i + 1;
+      outs.resize(np);
+      break;
+    }
+  }
+  m.queries = static_cast<int>(np);
   const double first = now_s() - t0;
   double best = first;
   // batches of passes, each at least min_time/5, until min_time is used up
@@ -636,6 +694,37 @@ Measured measure(Cell& c, Row& row, double min_time, std::vector<Out>& outs) {
   }
   return m;
 }
+
+#if SEPAX_BENCH_TRAVERSAL
+// Mean walk counters of the float traversal over a cell's pairs (diagnostics).
+std::string traversal_counters(const Cell& c) {
+  sat::TraversalStats sum;
+  std::int64_t edge_pairs = 0;
+  for (std::size_t i = 0; i < c.pairs.size(); ++i) {
+    sat::TraversalStats ts;
+    kernel_t<policy::Plain, float> k(af(c, i), c.pairs[i].bf);
+    const auto r = sat::traversal_with(k, wa(c, i), wb(c, i), SatOptions{}, &ts);
+    edge_pairs += r.stats.edge_pairs;
+    sum.support_scans += ts.support_scans;
+    sum.climb_steps += ts.climb_steps;
+    sum.height_evals += ts.height_evals;
+    sum.arc_tests += ts.arc_tests;
+    sum.corner_passes += ts.corner_passes;
+    sum.fallback_arcs += ts.fallback_arcs;
+  }
+  const double np = double(c.pairs.size());
+  const auto& a0 = af(c, 0);
+  char buf[400];
+  std::snprintf(buf, sizeof buf, "  %-11s %-11s E_A=%-4d arc tests %9.1f  (E_A*E_B %d)  height evals %8.1f  climb %7.1f  "
+              "fallback arcs %6.2f  corner passes %5.2f\n",
+              c.workload.c_str(), c.poses.c_str(), a0.edge_count(), double(sum.arc_tests) / np,
+              a0.edge_count() * c.pairs[0].bf.edge_count(), double(sum.height_evals) / np,
+              double(sum.climb_steps) / np, double(sum.fallback_arcs) / np,
+              double(sum.corner_passes) / np);
+  (void)edge_pairs;
+  return buf;
+}
+#endif
 
 // ------------------------------------------------------------------ main ----
 struct Options {
@@ -831,6 +920,7 @@ int main(int argc, char** argv) {
   );
   print_header();
   std::vector<Measured> all;
+  std::vector<std::string> counters;
   for (const auto& spec : workloads(o)) {
     Rng rng(0x5e9a7 + static_cast<std::uint64_t>(spec.n) * 7919 + spec.kind.size());
     Pool pool;
@@ -839,7 +929,13 @@ int main(int argc, char** argv) {
       Cell c{spec.name, spec.n, poses, &pool, {}, {}};
       Rng prng(poses == "overlapping" ? 1001u : 2002u);
       build_pairs(c, prng, o.pairs);
+      const double tr = now_s();
       compute_reference(c);
+      std::fprintf(stderr, "[%s %s: exact reference %.1f s]\n", c.workload.c_str(), c.poses.c_str(),
+                   now_s() - tr);
+#if SEPAX_BENCH_TRAVERSAL
+      counters.push_back(traversal_counters(c));
+#endif
       std::vector<Measured> cell;
       std::vector<Out> outs;
       for (auto& row : make_rows(c)) {
@@ -860,6 +956,10 @@ int main(int argc, char** argv) {
     }
   }
   print_targets(all);
+  if (!counters.empty()) {
+    std::printf("\nTraversal walk counters (float, plain; mean per query):\n");
+    for (const auto& l : counters) std::printf("%s", l.c_str());
+  }
   if (!o.json.empty()) write_json(o.json, all);
   return 0;
 }
