@@ -138,11 +138,23 @@ class RobustKernel {
   const ConvexPolyhedron<T>& a() const { return a_; }
   const ConvexPolyhedron<T>& b() const { return b_; }
 
-  FaceQuery<T> face_query_a(int f) const { return face_query(a_, f, b_, support_err_a_); }
-  FaceQuery<T> face_query_b(int f) const { return face_query(b_, f, a_, support_err_b_); }
+  FaceQuery<T> face_query_a(int f) const {
+    FaceQuery<T> q = face_query(a_, f, b_, support_err_a_);
+    q.separation = snap(q.separation.num, face_err_a_, Feature::face_a(f, q.support_vertex));
+    return q;
+  }
+  FaceQuery<T> face_query_b(int f) const {
+    FaceQuery<T> q = face_query(b_, f, a_, support_err_b_);
+    q.separation = snap(q.separation.num, face_err_b_, Feature::face_b(q.support_vertex, f));
+    return q;
+  }
 
-  Separation<T> face_separation_a(int f, int vb) const { return height(a_.plane(f), b_.vertex(vb)); }
-  Separation<T> face_separation_b(int f, int va) const { return height(b_.plane(f), a_.vertex(va)); }
+  Separation<T> face_separation_a(int f, int vb) const {
+    return snap(height(a_.plane(f), b_.vertex(vb)).num, face_err_a_, Feature::face_a(f, vb));
+  }
+  Separation<T> face_separation_b(int f, int va) const {
+    return snap(height(b_.plane(f), a_.vertex(va)).num, face_err_b_, Feature::face_b(va, f));
+  }
 
   ArcSigns arc_signs(int ea, int eb) const {
     const Vec3<T> da = a_.edge_direction(ea);
@@ -167,7 +179,7 @@ class RobustKernel {
     if (centroid_side(a_, a_.edge_tail(ea), ax, centroid_err_a_, extent_a_, ea, eb) < 0) n = Vec3<T>(-n);
     const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
     const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
-    return Separation<T>{dot(n, Vec3<T>(pb - pa)), T(1)};
+    return snap(dot(n, Vec3<T>(pb - pa)), edge_value_error(ax.delta), Feature::edges(ea, eb));
   }
 
   std::optional<Separation<T>> edge_separation_full(int ea, int eb) const {
@@ -196,9 +208,9 @@ class RobustKernel {
       if (static_cast<double>(sp.num) > e) s = 1;
       else if (static_cast<double>(sp.num) < -e) s = -1;
       else s = edge_pair_sign(ea, eb);
-      return s >= 0 ? sp : sm;
+      return snap((s >= 0 ? sp : sm).num, edge_value_error(ax.delta), Feature::edges(ea, eb));
     }
-    return plus ? sp : sm;
+    return snap((plus ? sp : sm).num, edge_value_error(ax.delta), Feature::edges(ea, eb));
   }
 
   int compare(const Separation<T>& x, const Feature& fx, const Separation<T>& y, const Feature& fy) const {
@@ -216,12 +228,7 @@ class RobustKernel {
     const double e = value_error(f);
     if (v > e) return 1;
     if (v < -e) return -1;
-    switch (f.type) {
-      case FeatureType::FaceA: return face_sign(a_, f.a, b_.vertex(f.b));
-      case FeatureType::FaceB: return face_sign(b_, f.b, a_.vertex(f.a));
-      case FeatureType::EdgePair: return edge_sigma(f.a, f.b) * edge_pair_sign(f.a, f.b);
-    }
-    return 0;
+    return exact_value_sign(f);
   }
 
   Vec3<T> axis(const Feature& f) const {
@@ -428,6 +435,34 @@ class RobustKernel {
             edge_sigma(ea, eb));
       }
     }
+  }
+
+  // The exact sign of a feature's separation.
+  int exact_value_sign(const Feature& f) const {
+    switch (f.type) {
+      case FeatureType::FaceA: return face_sign(a_, f.a, b_.vertex(f.b));
+      case FeatureType::FaceB: return face_sign(b_, f.b, a_.vertex(f.a));
+      case FeatureType::EdgePair: return edge_sigma(f.a, f.b) * edge_pair_sign(f.a, f.b);
+    }
+    return 0;
+  }
+
+  // A returned value always has the exact sign.  When |v| <= bound the sign is
+  // decided exactly; on a mismatch the value becomes 0 (exact zero) or the
+  // exact separation rounded to T (±denorm_min if that underflows).  The new
+  // value is still within `bound` of the exact one: with opposite signs,
+  // |exact| <= bound - |v|.
+  Separation<T> snap(T v, double bound, const Feature& f) const {
+    if (std::fabs(static_cast<double>(v)) > bound) return Separation<T>{v, T(1)};
+    const int s = exact_value_sign(f);
+    if (s == sign_of(v)) return Separation<T>{v, T(1)};
+    if (s == 0) return Separation<T>{T(0), T(1)};
+    const robust::ExactSeparation ex = exact_separation(f);
+    const double num = robust::approx_double(ex.num), n2 = robust::approx_double(ex.norm2);
+    T r = T(0);
+    if (std::isfinite(num) && std::isfinite(n2) && n2 > 0) r = static_cast<T>(num / std::sqrt(n2));
+    if (sign_of(r) != s) r = s > 0 ? std::numeric_limits<T>::denorm_min() : -std::numeric_limits<T>::denorm_min();
+    return Separation<T>{r, T(1)};
   }
 
   // ---- decisions ----
