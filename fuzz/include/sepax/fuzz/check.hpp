@@ -1,0 +1,99 @@
+// sepax/fuzz/check.hpp
+//
+// The checking core shared by every driver (standalone campaign, corpus replay,
+// libFuzzer target, ctest): run one FuzzCase through every configuration and
+// classify every disagreement with the exact reference.
+//
+// Configurations (identical inputs, see case.hpp):
+//   float_plain, double_plain     PlainKernel<float/double>
+//   float_robust, double_robust   policy::Robust (when robust_kernel.hpp exists)
+//   mpq, gmpq, epeck              PlainKernel over exact types
+// SATs: brute_force, gauss_map, traversal (when sat_traversal.hpp exists).
+// The reference is mpq + gauss_map.
+//
+// Comparisons (the keys of the report):
+//   arc_sign        each of the four triple-product signs of the arc test, for
+//                   every edge pair (kernel level, so shared by all SATs)
+//   minkowski_face  the arc test's verdict for every edge pair
+//   overlap         the SAT's overlap verdict
+//   feature         the minimum-penetration (maximum-separation) feature
+//   separation      the reported separation against the exact optimum
+//   exact           exact configurations and exact SATs among themselves
+//
+// Classes of a comparison:
+//   agree        identical (separation: the float value equals the exact one)
+//   exact_zero   differs, and the exact quantity is exactly zero
+//   explained    differs, and the exact value lies within the forward error
+//                bound of the float computation (error_bounds.hpp)
+//   tie          different features whose exact separations are equal, or
+//                equal within the two features' bounds
+//   unexplained  anything else: a bug (or a bound that is wrong) -- the
+//                drivers write a reproducer and exit non-zero
+// Robust configurations decide every sign exactly, so for them any difference
+// in a sign, verdict or feature is unexplained; only their separation *values*
+// may be "explained" (they are float numbers).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <sepax/fuzz/case.hpp>
+
+namespace sepax::fuzz {
+
+enum class Klass : int { agree = 0, exact_zero = 1, explained = 2, tie = 3, unexplained = 4 };
+inline constexpr int kKlassCount = 5;
+const char* klass_name(Klass k);
+
+struct Counts {
+  std::array<std::int64_t, kKlassCount> n{};
+  void add(Klass k, std::int64_t times = 1) { n[static_cast<std::size_t>(k)] += times; }
+  std::int64_t operator[](Klass k) const { return n[static_cast<std::size_t>(k)]; }
+  std::int64_t total() const {
+    std::int64_t t = 0;
+    for (auto x : n) t += x;
+    return t;
+  }
+  Counts& operator+=(const Counts& o) {
+    for (std::size_t i = 0; i < n.size(); ++i) n[i] += o.n[i];
+    return *this;
+  }
+};
+
+struct Finding {
+  std::string comparison;  // arc_sign, minkowski_face, overlap, feature, separation, exact
+  std::string config;      // float_plain, ..., epeck
+  std::string sat;         // brute_force, gauss_map, traversal, or "kernel" for arc tests
+  std::string detail;      // human-readable: what differed, exact vs float values, the bound
+};
+
+struct CaseReport {
+  bool valid = false;            // false: the shapes were rejected (InvalidInput)
+  std::string reject_reason;
+  std::map<std::string, Counts> by_comparison;
+  std::map<std::string, Counts> by_config;  // "comparison/config"
+  std::vector<Finding> unexplained;         // at most a few per comparison
+  std::int64_t unexplained_count = 0;
+  std::vector<std::string> configs_run;     // "config/sat"
+};
+
+struct CheckOptions {
+  /// Exact brute force / gmpq runs only when E_A*E_B*(V_A+V_B) is at most this
+  /// (they are O(n^3) in rational arithmetic).
+  std::int64_t exact_brute_budget = 4'000'000;
+  /// gmpq (a second rational type) only when E_A*E_B is at most this.
+  std::int64_t gmpq_pair_budget = 40'000;
+  /// Keep at most this many Finding records per comparison (all are counted).
+  int max_findings = 8;
+};
+
+/// Robust policy and traversal SAT availability (compiled in or not).
+bool has_robust_policy();
+bool has_traversal_sat();
+
+CaseReport check_case(const FuzzCase& c, const CheckOptions& opt = {});
+
+}  // namespace sepax::fuzz

@@ -1,0 +1,140 @@
+// sepax/fuzz/error_bounds.hpp
+//
+// Forward error bounds of the plain float/double kernel (plain_kernel.hpp), used
+// by the fuzzer to classify a float/exact disagreement as "explained": the
+// exact value lies within the bound of the float computation.
+//
+// Notation.  F is float or double, u = number_traits<F>::unit_roundoff (2^-24,
+// 2^-53), gamma_k = k u / (1 - k u).  All inputs (vertex coordinates) are exact
+// F values; the exact quantity is what PlainKernel<mpq> computes from the same
+// vertices.  Every bound below holds with or without FMA contraction: an FMA
+// rounds once where the separate multiply-add rounds twice, and every step
+// below is charged for the separate roundings (e.g. a 3-term dot product is
+// charged gamma_3 on sum |x_i y_i|, which also covers fma(x2,y2,fma(x1,y1,x0 y0))).
+//
+// (1) Unit face normal.  Plane triple p0, p1, p2 (exact F values).
+//       a = fl(p1 - p0), b = fl(p2 - p0):   |a - a_e| <= u |a_e|  (componentwise)
+//       N = fl(a x b), per component fl(a1 b2 - a2 b1):
+//         |N_x - (a x b)_x| <= gamma_2 (|a1 b2| + |a2 b1|)
+//         |(a x b)_x - (a_e x b_e)_x| <= (2u + u^2)(|a1e b2e| + |a2e b1e|)
+//       With C_x = |a1||b2| + |a2||b1| (from the rounded a, b; |a_e| <= |a|/(1-u)):
+//         ||N - N_e|| <= gamma_5 ||C||                                        (eN)
+//       n = fl(N / fl(sqrt(fl(N.N)))): fl(N.N) = N.N (1 + th_3), the sqrt and the
+//       division add one rounding each, so ||n - N/|N| || <= gamma_4.
+//       ||N/|N| - N_e/|N_e| || <= 2 ||N - N_e|| / |N_e|.
+//     => delta_n = ||n - n_e|| <= gamma_4 + 2 gamma_5 ||C|| / |N_e|.
+//       ||C|| / |N_e| >= 1 is the conditioning of the triangle (1/sin of its angle at p0).
+//
+// (2) Triple product of the arc test: t = fl(n . d), d = fl(head - tail) an edge of
+//     the other shape; exact value t_e = n_e . d_e (sign = sign(N_e . d_e)).
+//       |fl(n.d) - n.d| <= gamma_3 sum|n_i||d_i|
+//       |n.d - n_e.d_e| <= ||n - n_e|| ||d|| + ||n_e|| ||d - d_e|| <= (delta_n + gamma_1) ||d||
+//     => B_arc = gamma_3 sum|n_i||d_i| + (delta_n + gamma_1) ||d||.
+//
+// (3) Face separation (height of a vertex v above face f): s = fl(fl(n.v) - fl(n.p0))
+//     (offset = n.p0 is stored by plane_through); exact s_e = n_e . (v - p0).
+//       |fl(n.v) - n.v| <= gamma_3 sum|n_i||v_i|, same for p0; the subtraction
+//       rounds once: <= u (|fl(n.v)| + |fl(n.p0)|);  |n.(v-p0) - n_e.(v-p0)| <= delta_n ||v - p0||.
+//     => B_face(v) = gamma_3 (1+u) (sum|n||v| + sum|n||p0|) + u (|n.v| + |n.p0|) + delta_n ||v - p0||.
+//     The face query is a minimum over v: |min fl - min exact| <= max_v B_face(v).
+//     Far from the origin this grows with |v| and |p0|: the kernel really does
+//     compute the offset in absolute coordinates.
+//
+// (4) Edge separation of the Gauss map (O(1)): dA = fl(hA - tA), dB = fl(hB - tB),
+//     N = fl(dA x dB), n = N/|N| rounded as in (1) (same derivation, with C from
+//     |dA|, |dB|: here ||C|| / |N_e| is 1/sin of the angle between the edges),
+//     w = fl(pB - pA), s = fl(n . w);  exact s_e = n_e . (pB - pA).
+//     => B_edge = gamma_3 sum|n_i||w_i| + (delta_n + gamma_1) ||w||.
+//     (The orientation of the axis is a sign decided on the centroid; a flipped
+//     orientation is not covered by this bound and shows up as a disagreement.)
+//
+// (5) Edge separation of the brute force (projection): s = fl(min_B fl(n.v) -
+//     max_A fl(n.v)); every projection is off by at most
+//     gamma_3 sum|n||v| + delta_n ||v|| (n as in (4)), the subtraction rounds once:
+//     => B_proj = 2 max_v (gamma_3 sum|n||v| + delta_n ||v||) + u (|min_B| + |max_A|) (1 + gamma_1).
+//
+// The bounds are evaluated in double.  Their own rounding is covered by the
+// final factor (1 + 2^-30), far above the ~10 double roundings involved.  The
+// exact length |N_e| enters only as a lower bound (a slightly shrunk double).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include <sepax/number_traits.hpp>
+#include <sepax/vec3.hpp>
+
+namespace sepax::fuzz::bounds {
+
+inline double gamma(int k, double u) { return k * u / (1.0 - k * u); }
+
+inline constexpr double kSlack = 1.0 + 0x1p-30;
+
+template <class F>
+inline double u_of() {
+  return number_traits<F>::unit_roundoff;
+}
+
+template <class F>
+inline Vec3<double> d(const Vec3<F>& v) {
+  return Vec3<double>(double(v[0]), double(v[1]), double(v[2]));
+}
+
+inline double norm(const Vec3<double>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+inline double abs_dot(const Vec3<double>& a, const Vec3<double>& b) {
+  return std::abs(a[0] * b[0]) + std::abs(a[1] * b[1]) + std::abs(a[2] * b[2]);
+}
+inline Vec3<double> abs_cross(const Vec3<double>& a, const Vec3<double>& b) {
+  const Vec3<double> x = a.cwiseAbs(), y = b.cwiseAbs();
+  return Vec3<double>(x[1] * y[2] + x[2] * y[1], x[2] * y[0] + x[0] * y[2], x[0] * y[1] + x[1] * y[0]);
+}
+
+/// (1)/(4): bound on ||n - n_e|| for the normalised rounded cross product of
+/// the rounded vectors a, b (as F computed them); exact_len_lo <= |N_e|.
+template <class F>
+inline double delta_normal(const Vec3<F>& a, const Vec3<F>& b, double exact_len_lo) {
+  if (!(exact_len_lo > 0)) return std::numeric_limits<double>::infinity();
+  const double u = u_of<F>();
+  const double c = norm(abs_cross(d(a), d(b)));
+  return (gamma(4, u) + 2.0 * gamma(5, u) * c / exact_len_lo) * kSlack;
+}
+
+/// (2) arc triple product n . d.
+template <class F>
+inline double arc_bound(const Vec3<F>& n, const Vec3<F>& dir, double delta_n) {
+  const double u = u_of<F>();
+  const Vec3<double> nd = d(n), dd = d(dir);
+  return (gamma(3, u) * abs_dot(nd, dd) + (delta_n + gamma(1, u)) * norm(dd)) * kSlack;
+}
+
+/// (3) height of v above the face with rounded unit normal n and plane point p0.
+template <class F>
+inline double face_bound(const Vec3<F>& n, const Vec3<F>& p0, const Vec3<F>& v, double delta_n) {
+  const double u = u_of<F>();
+  const Vec3<double> nd = d(n), pd = d(p0), vd = d(v);
+  const double dots = abs_dot(nd, vd) + abs_dot(nd, pd);
+  return (gamma(3, u) * (1 + u) * dots + u * (1 + gamma(3, u)) * dots + delta_n * norm(vd - pd)) * kSlack;
+}
+
+/// (4) O(1) edge separation: n the rounded unit axis, w = fl(pB - pA).
+template <class F>
+inline double edge_bound(const Vec3<F>& n, const Vec3<F>& w, double delta_n) {
+  return arc_bound<F>(n, w, delta_n);
+}
+
+/// (5) one projection n . v of the brute force.
+template <class F>
+inline double projection_bound(const Vec3<F>& n, const Vec3<F>& v, double delta_n) {
+  const double u = u_of<F>();
+  const Vec3<double> nd = d(n), vd = d(v);
+  return (gamma(3, u) * abs_dot(nd, vd) + delta_n * norm(vd)) * kSlack;
+}
+
+/// A lower bound on sqrt(x) for a double x that approximates an exact value to
+/// within a relative 2^-52 (to_double of an exact square length).
+inline double sqrt_lower(double x) {
+  if (!(x > 0)) return 0;
+  return std::sqrt(x * (1 - 0x1p-50)) * (1 - 0x1p-50);
+}
+
+}  // namespace sepax::fuzz::bounds

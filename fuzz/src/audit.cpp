@@ -1,0 +1,332 @@
+// `sepax audit`: everything the SAT decides for one pair, in float (or double)
+// against exact arithmetic, with plain notes on what is degenerate.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <sepax/error.hpp>
+#include <sepax/fuzz/campaign.hpp>
+#include <sepax/fuzz/cli.hpp>
+#include <sepax/fuzz/error_bounds.hpp>
+#include <sepax/fuzz/generators.hpp>
+#include <sepax/fuzz/sat_list.hpp>
+#include <sepax/robust/number_types.hpp>
+
+namespace sepax::fuzz {
+
+namespace {
+
+using Q = mpq_class;
+
+int sgn(double x) { return (x > 0) - (x < 0); }
+
+std::string g(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.9g", x);
+  return b;
+}
+
+double sep_d(const Separation<Q>& s) { return sepax::to_double(s); }
+
+template <class F>
+ConvexPolyhedron<F> build(const ShapeSpec& s) {
+  std::vector<Vec3<F>> v;
+  for (const auto& p : s.vertices) v.push_back(vec_from_double<F>(p));
+  return ConvexPolyhedron<F>::from_faces(std::move(v), s.faces);
+}
+
+template <class F>
+void audit_as(const FuzzCase& c, std::ostream& out) {
+  const std::string fname(number_traits<F>::name);
+  // Identical inputs: F polyhedra validated from the float coordinates, exact
+  // images through the same plane triples.
+  const auto Af0 = build<float>(c.a);
+  const auto Bf0 = build<float>(c.b);
+  const auto A = ConvexPolyhedron<F>::convert_from(Af0);
+  const auto B = ConvexPolyhedron<F>::convert_from(Bf0);
+  const auto Ae = ConvexPolyhedron<Q>::convert_from(Af0);
+  const auto Be = ConvexPolyhedron<Q>::convert_from(Bf0);
+  PlainKernel<F> k(A, B);
+  PlainKernel<Q> ke(Ae, Be);
+  std::vector<std::string> notes;
+
+  auto describe = [&](const char* name, const ConvexPolyhedron<F>& p) {
+    out << name << ": " << p.vertex_count() << " vertices, " << p.edge_count() << " edges, " << p.face_count()
+        << " faces" << (p.is_flat() ? " (double-sided polygon: faces 0 and 1 are its two sides)" : "")
+        << ", extent " << g(p.extent()) << "\n";
+    if (p.is_flat())
+      notes.push_back(std::string(name) + " is a double-sided polygon: its two face normals are exactly opposite, "
+                      "its edges' arcs are half great circles, and every edge of it has both faces");
+  };
+  out << "sepax audit (" << fname << " against exact mpq)\n";
+  describe("A", A);
+  describe("B", B);
+
+  // ---- edge pairs ----
+  std::vector<double> dA, dB;
+  for (int f = 0; f < A.face_count(); ++f) {
+    const auto p = A.plane_points(f);
+    dA.push_back(bounds::delta_normal<F>(Vec3<F>(p[1] - p[0]), Vec3<F>(p[2] - p[0]),
+                                         bounds::sqrt_lower(squared_norm(Ae.plane(f).normal).get_d())));
+  }
+  for (int f = 0; f < B.face_count(); ++f) {
+    const auto p = B.plane_points(f);
+    dB.push_back(bounds::delta_normal<F>(Vec3<F>(p[1] - p[0]), Vec3<F>(p[2] - p[0]),
+                                         bounds::sqrt_lower(squared_norm(Be.plane(f).normal).get_d())));
+  }
+  out << "\nEdge pairs: the four triple products of the arc test in " << fname
+      << " (value, then the exact sign in brackets; '!' marks a sign that differs,\n"
+         "'0' an exact zero), the Minkowski-face verdict in "
+      << fname << " and exact, and parallel flags.\n";
+  out << "  eA  eB |        cba        |        dba        |        adc        |        bdc        | mink "
+      << fname << "/exact | parallel " << fname << "/exact\n";
+  int exact_zeros = 0, sign_diffs = 0, parallel_exact = 0, parallel_tol = 0, verdict_diffs = 0;
+  std::set<std::pair<int, int>> zero_pairs;
+  for (int ea = 0; ea < A.edge_count(); ++ea) {
+    for (int eb = 0; eb < B.edge_count(); ++eb) {
+      const ArcSigns se = ke.arc_signs(ea, eb);
+      const ArcSigns sf = k.arc_signs(ea, eb);
+      const Vec3<F> da = A.edge_direction(ea), db = B.edge_direction(eb);
+      const double v[4] = {double(dot(B.plane(B.edge_face(eb, 0)).normal, da)),
+                           double(dot(B.plane(B.edge_face(eb, 1)).normal, da)),
+                           -double(dot(A.plane(A.edge_face(ea, 0)).normal, db)),
+                           -double(dot(A.plane(A.edge_face(ea, 1)).normal, db))};
+      const int e4[4] = {se.cba, se.dba, se.adc, se.bdc};
+      const int f4[4] = {sf.cba, sf.dba, sf.adc, sf.bdc};
+      char line[400];
+      std::snprintf(line, sizeof line, "  %3d %3d |", ea, eb);
+      out << line;
+      for (int i = 0; i < 4; ++i) {
+        const char mark = f4[i] != e4[i] ? '!' : (e4[i] == 0 ? '0' : ' ');
+        std::snprintf(line, sizeof line, " %13.6g [%+d]%c|", v[i], e4[i], mark);
+        out << line;
+        if (e4[i] == 0) {
+          ++exact_zeros;
+          zero_pairs.insert({ea, eb});
+        }
+        if (f4[i] != e4[i]) ++sign_diffs;
+        (void)sgn;
+      }
+      const bool pe = ke.edges_parallel(ea, eb), pf = k.edges_parallel(ea, eb);
+      parallel_exact += pe;
+      parallel_tol += pf && !pe;
+      verdict_diffs += sf.minkowski_face() != se.minkowski_face();
+      std::snprintf(line, sizeof line, "  %3s/%-3s%s |  %3s/%-3s\n", sf.minkowski_face() ? "yes" : "no",
+                    se.minkowski_face() ? "yes" : "no", sf.minkowski_face() != se.minkowski_face() ? " !" : "  ",
+                    pf ? "yes" : "no", pe ? "yes" : "no");
+      out << line;
+    }
+  }
+
+  // ---- candidate axes ----
+  out << "\nCandidate axes: separation in " << fname << " against exact (positive: separated along it).\n";
+  out << "  axis                     " << fname << " separation     exact separation        difference    "
+      << fname << " error bound\n";
+  struct Cand {
+    Feature f;
+    Separation<Q> se;
+  };
+  std::vector<Cand> cands;
+  auto row = [&](const std::string& name, double vf, const Separation<Q>& se, double bnd) {
+    char line[300];
+    const double ed = sep_d(se);
+    std::snprintf(line, sizeof line, "  %-22s %18.10g %20.12g %17.3g %16.3g%s\n", name.c_str(), vf, ed, vf - ed, bnd,
+                  sign(se) == 0 ? "  exact zero" : "");
+    out << line;
+  };
+  for (int f = 0; f < A.face_count(); ++f) {
+    const auto q = k.face_query_a(f);
+    const auto qe = ke.face_query_a(f);
+    double bnd = 0;
+    for (const auto& v : B.vertices())
+      bnd = std::max(bnd, bounds::face_bound<F>(A.plane(f).normal, A.plane_points(f)[0], v, dA[static_cast<std::size_t>(f)]));
+    row("faceA " + std::to_string(f) + " (vB " + std::to_string(qe.support_vertex) + ")", double(q.separation.num),
+        qe.separation, bnd);
+    cands.push_back({Feature::face_a(f, qe.support_vertex), qe.separation});
+  }
+  for (int f = 0; f < B.face_count(); ++f) {
+    const auto q = k.face_query_b(f);
+    const auto qe = ke.face_query_b(f);
+    double bnd = 0;
+    for (const auto& v : A.vertices())
+      bnd = std::max(bnd, bounds::face_bound<F>(B.plane(f).normal, B.plane_points(f)[0], v, dB[static_cast<std::size_t>(f)]));
+    row("faceB " + std::to_string(f) + " (vA " + std::to_string(qe.support_vertex) + ")", double(q.separation.num),
+        qe.separation, bnd);
+    cands.push_back({Feature::face_b(qe.support_vertex, f), qe.separation});
+  }
+  for (int ea = 0; ea < A.edge_count(); ++ea) {
+    for (int eb = 0; eb < B.edge_count(); ++eb) {
+      const bool me = ke.arc_signs(ea, eb).minkowski_face() && !ke.edges_parallel(ea, eb);
+      const bool mf = k.arc_signs(ea, eb).minkowski_face() && !k.edges_parallel(ea, eb);
+      if (!me && !mf) continue;
+      const Separation<Q> se = ke.edge_separation(ea, eb);
+      const Vec3<F> da = A.edge_direction(ea), db = B.edge_direction(eb);
+      const Vec3<Q> ne = cross(Ae.edge_direction(ea), Be.edge_direction(eb));
+      Vec3<F> n = cross(da, db);
+      const F len = std::sqrt(squared_norm(n));
+      n = Vec3<F>(n[0] / len, n[1] / len, n[2] / len);
+      const double dn = bounds::delta_normal<F>(da, db, bounds::sqrt_lower(squared_norm(ne).get_d()));
+      const double bnd = bounds::edge_bound<F>(n, Vec3<F>(B.vertex(B.edge_tail(eb)) - A.vertex(A.edge_tail(ea))), dn);
+      std::string name = "edges " + std::to_string(ea) + " x " + std::to_string(eb);
+      if (me != mf) name += me ? " (exact only)" : " (" + fname + " only)";
+      row(name, double(k.edge_separation(ea, eb).num), se, bnd);
+      if (me) cands.push_back({Feature::edges(ea, eb), se});
+    }
+  }
+
+  // ---- chosen features ----
+  out << "\nChosen features (maximum separation; ties broken faceA < faceB < edges by index):\n";
+  auto show = [&](const std::string& cfg, const std::string& sat, bool overlap, const Feature& f, double s) {
+    char line[300];
+    std::snprintf(line, sizeof line, "  %-14s %-12s %-9s %-16s separation %.12g\n", cfg.c_str(), sat.c_str(),
+                  overlap ? "overlap" : "separated", to_string(f).c_str(), s);
+    out << line;
+  };
+  SatResult<Q> ref;
+  for (Sat sat : all_sats()) {
+    const auto r = run_sat<policy::Plain>(sat, Ae, Be);
+    if (sat == Sat::gauss_map) ref = r;
+    show("mpq", sat_name(sat), r.overlap, r.feature, r.separation_as_double());
+  }
+  {
+    const auto Ep = ConvexPolyhedron<CGAL::Epeck::FT>::convert_from(Af0);
+    const auto Eq = ConvexPolyhedron<CGAL::Epeck::FT>::convert_from(Bf0);
+    for (Sat sat : all_sats()) {
+      const auto r = run_sat<policy::Plain>(sat, Ep, Eq);
+      show("epeck", sat_name(sat), r.overlap, r.feature, r.separation_as_double());
+    }
+  }
+  for (Sat sat : all_sats()) {
+    const auto r = run_sat<policy::Plain>(sat, A, B);
+    show(fname + "_plain", sat_name(sat), r.overlap, r.feature, r.separation_as_double());
+  }
+#if SEPAX_FUZZ_HAS_ROBUST
+  for (Sat sat : all_sats()) {
+    const auto r = run_sat<policy::Robust>(sat, A, B);
+    show(fname + "_robust", sat_name(sat), r.overlap, r.feature, r.separation_as_double());
+  }
+#endif
+
+  // ---- notes ----
+  if (parallel_exact)
+    notes.push_back(std::to_string(parallel_exact) + " edge pair(s) are exactly parallel (no edge axis; skipped by every SAT)");
+  if (parallel_tol)
+    notes.push_back(std::to_string(parallel_tol) + " edge pair(s) are not exactly parallel but within the " + fname +
+                    " 'parallel' tolerance (" + g(Tolerances<F>::parallel) + "): plain " + fname + " skips them");
+  if (exact_zeros) {
+    std::string s = std::to_string(exact_zeros) + " triple product(s) are exactly zero (an arc endpoint exactly on the other arc's plane: a face normal exactly perpendicular to the other edge), in pairs";
+    int shown = 0;
+    for (const auto& [a, b] : zero_pairs) {
+      if (shown++ == 12) {
+        s += " ...";
+        break;
+      }
+      s += " (" + std::to_string(a) + "," + std::to_string(b) + ")";
+    }
+    notes.push_back(s);
+  }
+  if (sign_diffs)
+    notes.push_back(std::to_string(sign_diffs) + " triple-product sign(s) differ between " + fname + " and exact (marked '!')");
+  if (verdict_diffs)
+    notes.push_back(std::to_string(verdict_diffs) + " Minkowski-face verdict(s) differ between " + fname + " and exact");
+  {
+    int ties = 0;
+    std::string s;
+    for (const auto& cnd : cands) {
+      if (cnd.f == ref.feature || sepax::compare(cnd.se, ref.separation) != 0) continue;
+      if (ties++ < 8) s += " " + to_string(cnd.f);
+    }
+    if (ties)
+      notes.push_back(std::to_string(ties) + " other candidate(s) tie exactly with the chosen " + to_string(ref.feature) +
+                      ":" + s + (ties > 8 ? " ..." : "") + " (the tie-break picks the first in feature order)");
+  }
+  if (sign(ref.separation) == 0) notes.push_back("the shapes touch exactly (maximum separation is exactly 0): reported as overlap");
+  out << "\nNotes:\n";
+  if (notes.empty()) out << "  nothing degenerate\n";
+  for (const auto& n : notes) out << "  - " << n << "\n";
+}
+
+int audit_usage(const std::string& msg) {
+  std::cerr << "sepax audit: " << msg << "\n"
+            << "usage: sepax audit A B [--pose tx ty tz [qw qx qy qz]] [--type float|double]\n"
+            << "       sepax audit --case FILE [--type float|double]\n"
+            << "shapes: cube, box:HX,HY,HZ, tetra, prism:N, polygon:N, triangle (the pose applies to B)\n";
+  return 2;
+}
+
+}  // namespace
+
+int audit_main(int argc, char** argv) {
+  std::vector<std::string> shapes_args;
+  std::string case_file, type = "float";
+  double t[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto number = [&](double& x) {
+      if (i + 1 >= argc) return false;
+      char* end = nullptr;
+      x = std::strtod(argv[i + 1], &end);
+      if (end == argv[i + 1] || *end != '\0' || !std::isfinite(x)) return false;
+      ++i;
+      return true;
+    };
+    if (a == "--pose") {
+      if (!number(t[0]) || !number(t[1]) || !number(t[2])) return audit_usage("--pose needs tx ty tz");
+      auto is_number = [](const char* s) {
+        char* end = nullptr;
+        std::strtod(s, &end);
+        return end != s && *end == '\0';
+      };
+      if (i + 1 < argc && is_number(argv[i + 1])) {
+        if (!number(q[0]) || !number(q[1]) || !number(q[2]) || !number(q[3]))
+          return audit_usage("--pose: the rotation is a quaternion qw qx qy qz (four numbers)");
+      }
+    } else if (a == "--case") {
+      if (i + 1 >= argc) return audit_usage("--case needs a file");
+      case_file = argv[++i];
+    } else if (a == "--type") {
+      if (i + 1 >= argc) return audit_usage("--type needs float or double");
+      type = argv[++i];
+      if (type != "float" && type != "double") return audit_usage("--type must be float or double");
+    } else if (a == "--help" || a == "-h") {
+      audit_usage("help");
+      return 0;
+    } else if (!a.empty() && a[0] == '-') {
+      return audit_usage("unknown option '" + a + "'");
+    } else {
+      shapes_args.push_back(a);
+    }
+  }
+  FuzzCase c;
+  try {
+    if (!case_file.empty()) {
+      if (!shapes_args.empty()) return audit_usage("give either --case FILE or two shapes, not both");
+      c = read_case_file(case_file);
+    } else {
+      if (shapes_args.size() != 2) return audit_usage("needs two shapes A and B");
+      c.a = builtin_shape(shapes_args[0]);
+      c.b = posed(builtin_shape(shapes_args[1]), t, q);
+      c.family = "audit";
+    }
+    if (type == "float") audit_as<float>(c, std::cout);
+    else audit_as<double>(c, std::cout);
+  } catch (const InvalidInput& e) {
+    std::cerr << "sepax audit: " << e.what() << "\n";
+    return 2;
+  }
+  const CaseReport r = check_case(c);
+  std::cout << "\nDifferential check of this case (all configurations): ";
+  if (r.unexplained_count == 0) {
+    std::cout << "no unexplained disagreement\n";
+    return 0;
+  }
+  std::cout << r.unexplained_count << " UNEXPLAINED disagreement(s)\n";
+  for (const auto& f : r.unexplained) std::cout << "  [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
+  return 1;
+}
+
+}  // namespace sepax::fuzz

@@ -1,0 +1,313 @@
+// `sepax fuzz`: the standalone campaign and corpus replay (see sepax/fuzz/cli.hpp).
+#include <sepax/fuzz/campaign.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <sepax/error.hpp>
+#include <sepax/fuzz/cli.hpp>
+#include <sepax/fuzz/generators.hpp>
+
+namespace sepax::fuzz {
+
+std::int64_t Report::unexplained() const {
+  std::int64_t n = 0;
+  for (const auto& [k, c] : comparisons) n += c[Klass::unexplained];
+  return n;
+}
+
+void Report::add(const std::string& family, const CaseReport& r) {
+  auto& f = families[family];
+  if (!r.valid) {
+    ++f.rejected;
+    ++rejected;
+    return;
+  }
+  ++f.cases;
+  ++cases;
+  f.unexplained += r.unexplained_count;
+  for (const auto& [k, c] : r.by_comparison) comparisons[k] += c;
+  for (const auto& [k, c] : r.by_config) by_config[k] += c;
+  for (const auto& x : r.unexplained)
+    if (findings.size() < 20) findings.push_back(x);
+}
+
+std::string write_reproducer(const std::string& dir, const FuzzCase& c, const CaseReport& r) {
+  std::filesystem::create_directories(dir);
+  std::string path;
+  for (int k = 0;; ++k) {
+    path = dir + "/unexplained-" + c.family + "-" + std::to_string(c.seed) + (k ? "-" + std::to_string(k) : "") + ".case";
+    if (!std::filesystem::exists(path)) break;
+  }
+  std::ostringstream s;
+  s << "sepax fuzz reproducer: " << r.unexplained_count << " unexplained disagreement(s)\n";
+  for (const auto& f : r.unexplained) s << "[" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
+  s << "replay: sepax fuzz --replay " << path << "\n";
+  s << "audit:  sepax audit --case " << path;
+  write_case_file(path, c, s.str());
+  return path;
+}
+
+namespace {
+
+std::string jstr(const std::string& s) {
+  std::string o = "\"";
+  for (char ch : s) {
+    if (ch == '"' || ch == '\\') o += '\\', o += ch;
+    else if (static_cast<unsigned char>(ch) < 0x20) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\u%04x", ch);
+      o += b;
+    } else o += ch;
+  }
+  return o + "\"";
+}
+
+std::string jcounts(const Counts& c) {
+  std::string o = "{";
+  for (int k = 0; k < kKlassCount; ++k) {
+    if (k) o += ",";
+    o += jstr(klass_name(static_cast<Klass>(k))) + ":" + std::to_string(c.n[static_cast<std::size_t>(k)]);
+  }
+  return o + "}";
+}
+
+}  // namespace
+
+void print_json(std::ostream& out, const Report& r) {
+  out << "{\"cases\":" << r.cases << ",\"rejected\":" << r.rejected << ",\"seconds\":" << r.seconds
+      << ",\"cases_per_second\":" << (r.seconds > 0 ? static_cast<double>(r.cases) / r.seconds : 0.0)
+      << ",\"seed\":" << r.seed << ",\"unexplained\":" << r.unexplained()
+      << ",\"robust_policy\":" << (has_robust_policy() ? "true" : "false")
+      << ",\"traversal_sat\":" << (has_traversal_sat() ? "true" : "false") << ",\"families\":{";
+  bool first = true;
+  for (const auto& [name, f] : r.families) {
+    out << (first ? "" : ",") << jstr(name) << ":{\"cases\":" << f.cases << ",\"rejected\":" << f.rejected
+        << ",\"unexplained\":" << f.unexplained << "}";
+    first = false;
+  }
+  out << "},\"comparisons\":{";
+  first = true;
+  for (const auto& [name, c] : r.comparisons) {
+    out << (first ? "" : ",") << jstr(name) << ":" << jcounts(c);
+    first = false;
+  }
+  out << "},\"by_config\":{";
+  first = true;
+  for (const auto& [name, c] : r.by_config) {
+    out << (first ? "" : ",") << jstr(name) << ":" << jcounts(c);
+    first = false;
+  }
+  out << "},\"reproducers\":[";
+  for (std::size_t i = 0; i < r.reproducers.size(); ++i) out << (i ? "," : "") << jstr(r.reproducers[i]);
+  out << "],\"findings\":[";
+  for (std::size_t i = 0; i < r.findings.size(); ++i) {
+    const auto& f = r.findings[i];
+    out << (i ? "," : "") << "{\"comparison\":" << jstr(f.comparison) << ",\"config\":" << jstr(f.config)
+        << ",\"sat\":" << jstr(f.sat) << ",\"detail\":" << jstr(f.detail) << "}";
+  }
+  out << "]}\n";
+}
+
+void print_text(std::ostream& out, const Report& r) {
+  char line[256];
+  out << "sepax differential fuzz report\n";
+  std::snprintf(line, sizeof line, "  %lld cases checked (+%lld rejected by validation) in %.1f s: %.1f cases/s, seed %llu\n",
+                static_cast<long long>(r.cases), static_cast<long long>(r.rejected), r.seconds,
+                r.seconds > 0 ? static_cast<double>(r.cases) / r.seconds : 0.0,
+                static_cast<unsigned long long>(r.seed));
+  out << line;
+  out << "  configurations: float_plain double_plain" << (has_robust_policy() ? " float_robust double_robust" : "")
+      << " mpq gmpq epeck; SATs: brute_force gauss_map" << (has_traversal_sat() ? " traversal" : "") << "\n";
+  if (!has_robust_policy()) out << "  (robust policy not built in: robust_kernel.hpp not found)\n";
+  if (!has_traversal_sat()) out << "  (traversal SAT not built in: sat_traversal.hpp not found)\n";
+  out << "\n  family       cases  rejected  unexplained\n";
+  for (const auto& [name, f] : r.families) {
+    std::snprintf(line, sizeof line, "  %-10s %7lld  %8lld  %11lld\n", name.c_str(), static_cast<long long>(f.cases),
+                  static_cast<long long>(f.rejected), static_cast<long long>(f.unexplained));
+    out << line;
+  }
+  auto table = [&](const std::map<std::string, Counts>& m, const char* title) {
+    std::snprintf(line, sizeof line, "\n  %-30s %12s %10s %10s %8s %11s\n", title, "agree", "exact_zero", "explained",
+                  "tie", "unexplained");
+    out << line;
+    for (const auto& [name, c] : m) {
+      std::snprintf(line, sizeof line, "  %-30s %12lld %10lld %10lld %8lld %11lld\n", name.c_str(),
+                    static_cast<long long>(c[Klass::agree]), static_cast<long long>(c[Klass::exact_zero]),
+                    static_cast<long long>(c[Klass::explained]), static_cast<long long>(c[Klass::tie]),
+                    static_cast<long long>(c[Klass::unexplained]));
+      out << line;
+    }
+  };
+  table(r.comparisons, "comparison");
+  table(r.by_config, "comparison/configuration");
+  out << "\n  unexplained disagreements: " << r.unexplained() << "\n";
+  for (const auto& f : r.findings) out << "    [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
+  if (!r.reproducers.empty()) {
+    out << "  reproducers written:\n";
+    for (const auto& p : r.reproducers) out << "    " << p << "\n";
+  } else {
+    out << "  reproducers written: none\n";
+  }
+}
+
+namespace {
+
+int usage(const char* msg) {
+  std::cerr << "sepax fuzz: " << msg << "\n"
+            << "usage: sepax fuzz [--seconds S] [--cases N] [--seed K] [--families a,b,...] [--out DIR] [--json] [--quiet]\n"
+            << "       sepax fuzz --replay FILE_OR_DIR... [--json]\n"
+            << "families:";
+  for (const auto& f : family_names()) std::cerr << " " << f;
+  std::cerr << "\n";
+  return 2;
+}
+
+bool parse_number(const char* s, double& out) {
+  char* end = nullptr;
+  out = std::strtod(s, &end);
+  return end != s && *end == '\0' && std::isfinite(out) && out >= 0;
+}
+
+}  // namespace
+
+int fuzz_main(int argc, char** argv) {
+  double seconds = 30, max_cases = 0, seed_d = 1;
+  bool json = false, quiet = false, replay = false;
+  std::string out_dir = "fuzz-reproducers";
+  std::vector<std::string> families = family_names(), files;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&](double& x) {
+      if (i + 1 >= argc || !parse_number(argv[i + 1], x)) return false;
+      ++i;
+      return true;
+    };
+    if (a == "--seconds") {
+      if (!value(seconds)) return usage("--seconds needs a non-negative number");
+    } else if (a == "--cases") {
+      if (!value(max_cases)) return usage("--cases needs a non-negative number");
+    } else if (a == "--seed") {
+      if (!value(seed_d)) return usage("--seed needs a non-negative integer");
+    } else if (a == "--families") {
+      if (i + 1 >= argc) return usage("--families needs a comma-separated list");
+      families.clear();
+      std::stringstream ss(argv[++i]);
+      for (std::string f; std::getline(ss, f, ',');) {
+        if (std::find(family_names().begin(), family_names().end(), f) == family_names().end())
+          return usage(("unknown family '" + f + "'").c_str());
+        families.push_back(f);
+      }
+      if (families.empty()) return usage("--families is empty");
+    } else if (a == "--out") {
+      if (i + 1 >= argc) return usage("--out needs a directory");
+      out_dir = argv[++i];
+    } else if (a == "--json") {
+      json = true;
+    } else if (a == "--quiet") {
+      quiet = true;
+    } else if (a == "--replay") {
+      replay = true;
+    } else if (a == "--help" || a == "-h") {
+      usage("help");
+      return 0;
+    } else if (replay && !a.empty() && a[0] != '-') {
+      files.push_back(a);
+    } else {
+      return usage(("unknown argument '" + a + "'").c_str());
+    }
+  }
+  Report rep;
+  rep.seed = static_cast<std::uint64_t>(seed_d);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+
+  if (replay) {
+    if (files.empty()) return usage("--replay needs at least one case file or directory");
+    std::vector<std::string> paths;
+    for (const auto& f : files) {
+      if (std::filesystem::is_directory(f)) {
+        std::vector<std::string> in_dir;
+        for (const auto& e : std::filesystem::directory_iterator(f))
+          if (e.path().extension() == ".case") in_dir.push_back(e.path().string());
+        std::sort(in_dir.begin(), in_dir.end());
+        paths.insert(paths.end(), in_dir.begin(), in_dir.end());
+      } else {
+        paths.push_back(f);
+      }
+    }
+    int status = 0;
+    for (const auto& p : paths) {
+      FuzzCase c;
+      try {
+        c = read_case_file(p);
+      } catch (const InvalidInput& e) {
+        std::cerr << "sepax fuzz: " << e.what() << "\n";
+        status = 2;
+        continue;
+      }
+      const CaseReport r = check_case(c);
+      rep.add(c.family, r);
+      if (!quiet) {
+        std::cerr << p << ": " << (r.valid ? (r.unexplained_count ? "UNEXPLAINED" : "ok") : "rejected: " + r.reject_reason)
+                  << "\n";
+      }
+      if (r.unexplained_count) {
+        for (const auto& f : r.unexplained) std::cerr << "  [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
+        if (status == 0) status = 1;
+      }
+    }
+    rep.seconds = elapsed();
+    if (json) print_json(std::cout, rep);
+    else print_text(std::cout, rep);
+    return status != 0 ? status : (rep.unexplained() ? 1 : 0);
+  }
+
+  double last_progress = 0;
+  std::uint64_t index = 0;
+  while (true) {
+    const double now = elapsed();
+    if (max_cases > 0 && static_cast<double>(rep.cases + rep.rejected) >= max_cases) break;
+    if (max_cases == 0 && now >= seconds) break;
+    const std::string& fam = families[index % families.size()];
+    const std::uint64_t case_seed = rep.seed * 1000003ull + index;
+    ++index;
+    FuzzCase c;
+    CaseReport r;
+    try {
+      c = generate(fam, case_seed);
+      r = check_case(c);
+    } catch (const InvalidInput& e) {
+      r.valid = false;
+      r.reject_reason = e.what();
+    }
+    rep.add(fam, r);
+    if (r.unexplained_count) {
+      try {
+        rep.reproducers.push_back(write_reproducer(out_dir, c, r));
+      } catch (const std::exception& e) {
+        std::cerr << "sepax fuzz: could not write a reproducer: " << e.what() << "\n";
+      }
+    }
+    if (!quiet && now - last_progress >= 1.0) {
+      last_progress = now;
+      std::fprintf(stderr, "\r[sepax fuzz] %6.1f s  %8lld cases  %7.1f cases/s  unexplained %lld   ", now,
+                   static_cast<long long>(rep.cases), now > 0 ? static_cast<double>(rep.cases) / now : 0.0,
+                   static_cast<long long>(rep.unexplained()));
+      std::fflush(stderr);
+    }
+  }
+  rep.seconds = elapsed();
+  if (!quiet) std::fprintf(stderr, "\n");
+  if (json) print_json(std::cout, rep);
+  else print_text(std::cout, rep);
+  return rep.unexplained() ? 1 : 0;
+}
+
+}  // namespace sepax::fuzz

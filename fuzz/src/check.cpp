@@ -1,0 +1,423 @@
+// The checking core: see sepax/fuzz/check.hpp.
+#include <sepax/fuzz/check.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <sepax/robust/number_types.hpp>
+#include <sepax/sat_brute_force.hpp>
+#include <sepax/sat_gauss_map.hpp>
+#include <sepax/fuzz/error_bounds.hpp>
+#include <sepax/fuzz/sat_list.hpp>
+
+namespace sepax::fuzz {
+
+const char* klass_name(Klass k) {
+  switch (k) {
+    case Klass::agree: return "agree";
+    case Klass::exact_zero: return "exact_zero";
+    case Klass::explained: return "explained";
+    case Klass::tie: return "tie";
+    case Klass::unexplained: return "unexplained";
+  }
+  return "?";
+}
+
+bool has_robust_policy() { return SEPAX_FUZZ_HAS_ROBUST != 0; }
+bool has_traversal_sat() { return SEPAX_FUZZ_HAS_TRAVERSAL != 0; }
+
+namespace {
+
+using Q = mpq_class;
+using CPQ = ConvexPolyhedron<Q>;
+
+std::string num(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+// ---- exact comparisons of a rational against a separation num/sqrt(norm2) ----
+
+// sign(r - num/sqrt(n2)), exactly.
+int cmp_rational_sep(const Q& r, const Separation<Q>& s) {
+  const int sr = sign_of(r), sv = sign_of(s.num);
+  if (sr != sv) return sr < sv ? -1 : 1;
+  if (sr == 0) return 0;
+  const Q lhs = r * r * s.norm2, rhs = s.num * s.num;
+  const int mag = (lhs > rhs) - (lhs < rhs);
+  return sr > 0 ? mag : -mag;
+}
+
+// |x - value(s)| <= bound, exactly (bound as the rational value of a double).
+bool within(double x, const Separation<Q>& s, double bound) {
+  if (!std::isfinite(bound)) return true;
+  const Q qx(x), qb(bound);
+  return cmp_rational_sep(Q(qx - qb), s) <= 0 && cmp_rational_sep(Q(qx + qb), s) >= 0;
+}
+
+// |value(s)| <= bound, exactly.
+bool small(const Separation<Q>& s, double bound) { return within(0.0, s, bound); }
+
+// |value(x) - value(y)| <= bound for two exact separations with different axis
+// norms.  Evaluated on the doubles nearest to each value: each is within a
+// relative 3*2^-53 of the exact value (num and norm2 rounded, one sqrt, one
+// division), and the subtraction rounds once; the bound is widened by exactly
+// those amounts.  This is classification (tie or not), not a SAT decision.
+bool close(const Separation<Q>& x, const Separation<Q>& y, double bound) {
+  if (!std::isfinite(bound)) return true;
+  if (sepax::compare(x, y) == 0) return true;
+  const double a = sepax::to_double(x), b = sepax::to_double(y);
+  const double slack = 0x1p-50 * (std::abs(a) + std::abs(b));
+  return std::abs(a - b) <= bound + slack;
+}
+
+// ---- the exact reference ----
+struct Exact {
+  CPQ A, B;
+  std::unique_ptr<PlainKernel<Q>> k;
+  SatResult<Q> ref;
+  std::vector<FaceQuery<Q>> fqA, fqB;
+  std::vector<ArcSigns> arcs;  // ea * EB + eb
+  std::vector<double> nlenA, nlenB;  // lower bounds on |N_e| per face
+};
+
+Separation<Q> exact_edge_projection(const Exact& E, int ea, int eb) {
+  const Vec3<Q> n = cross(E.A.edge_direction(ea), E.B.edge_direction(eb));
+  auto proj = [&](const CPQ& p, Q& lo, Q& hi) {
+    lo = hi = dot(n, p.vertex(0));
+    for (int i = 1; i < p.vertex_count(); ++i) {
+      const Q h = dot(n, p.vertex(i));
+      if (h < lo) lo = h;
+      if (h > hi) hi = h;
+    }
+  };
+  Q la, ha, lb, hb;
+  proj(E.A, la, ha);
+  proj(E.B, lb, hb);
+  const Q n2 = squared_norm(n);
+  const Separation<Q> sp{Q(lb - ha), n2}, sm{Q(la - hb), n2};
+  return sepax::compare(sp, sm) >= 0 ? sp : sm;
+}
+
+// The exact separation of a feature as the given SAT defines it.
+Separation<Q> exact_value(const Exact& E, Sat sat, const Feature& f) {
+  switch (f.type) {
+    case FeatureType::FaceA: return E.fqA[static_cast<std::size_t>(f.a)].separation;
+    case FeatureType::FaceB: return E.fqB[static_cast<std::size_t>(f.b)].separation;
+    case FeatureType::EdgePair:
+      return sat == Sat::brute_force ? exact_edge_projection(E, f.a, f.b) : E.k->edge_separation(f.a, f.b);
+  }
+  return {};
+}
+
+bool same_axis(const Feature& x, const Feature& y) {
+  return x.type == y.type && x.primary() == y.primary() && x.secondary() == y.secondary();
+}
+
+// ---- per-configuration bookkeeping ----
+struct Recorder {
+  CaseReport& rep;
+  const CheckOptions& opt;
+  std::map<std::string, int> kept;
+  void add(const std::string& cmp, const std::string& cfg, const std::string& sat, Klass k,
+           const std::function<std::string()>& detail, std::int64_t times = 1) {
+    rep.by_comparison[cmp].add(k, times);
+    rep.by_config[cmp + "/" + cfg].add(k, times);
+    if (k == Klass::unexplained) {
+      rep.unexplained_count += times;
+      if (kept[cmp]++ < opt.max_findings) rep.unexplained.push_back({cmp, cfg, sat, detail()});
+    }
+  }
+};
+
+template <class F>
+Vec3<F> unit_axis(const Vec3<F>& da, const Vec3<F>& db) {
+  Vec3<F> n = cross(da, db);
+  const F len = std::sqrt(squared_norm(n));
+  return Vec3<F>(n[0] / len, n[1] / len, n[2] / len);
+}
+
+template <class F>
+struct FloatSide {
+  const ConvexPolyhedron<F>& A;
+  const ConvexPolyhedron<F>& B;
+  const Exact& E;
+  std::vector<double> deltaA, deltaB;  // (1) per face
+
+  FloatSide(const ConvexPolyhedron<F>& a, const ConvexPolyhedron<F>& b, const Exact& e) : A(a), B(b), E(e) {
+    auto fill = [](const ConvexPolyhedron<F>& p, const std::vector<double>& nlen, std::vector<double>& out) {
+      for (int f = 0; f < p.face_count(); ++f) {
+        const auto pts = p.plane_points(f);
+        out.push_back(bounds::delta_normal<F>(Vec3<F>(pts[1] - pts[0]), Vec3<F>(pts[2] - pts[0]),
+                                              nlen[static_cast<std::size_t>(f)]));
+      }
+    };
+    fill(A, E.nlenA, deltaA);
+    fill(B, E.nlenB, deltaB);
+  }
+
+  double face_bound(const ConvexPolyhedron<F>& p, const std::vector<double>& delta, int f,
+                    const ConvexPolyhedron<F>& q) const {
+    double m = 0;
+    const auto& n = p.plane(f).normal;
+    const auto p0 = p.plane_points(f)[0];
+    for (const auto& v : q.vertices())
+      m = std::max(m, bounds::face_bound<F>(n, p0, v, delta[static_cast<std::size_t>(f)]));
+    return m;
+  }
+
+  double edge_delta(int ea, int eb) const {
+    const Vec3<Q> ne = cross(E.A.edge_direction(ea), E.B.edge_direction(eb));
+    return bounds::delta_normal<F>(A.edge_direction(ea), B.edge_direction(eb),
+                                   bounds::sqrt_lower(squared_norm(ne).get_d()));
+  }
+
+  // Forward error bound of the separation the given SAT reports for feature f.
+  double bound(Sat sat, const Feature& f) const {
+    switch (f.type) {
+      case FeatureType::FaceA: return face_bound(A, deltaA, f.a, B);
+      case FeatureType::FaceB: return face_bound(B, deltaB, f.b, A);
+      case FeatureType::EdgePair: {
+        const Vec3<F> da = A.edge_direction(f.a), db = B.edge_direction(f.b);
+        const double dn = edge_delta(f.a, f.b);
+        const Vec3<F> n = unit_axis(da, db);
+        if (sat != Sat::brute_force) {
+          const Vec3<F> w(B.vertex(B.edge_tail(f.b)) - A.vertex(A.edge_tail(f.a)));
+          return bounds::edge_bound<F>(n, w, dn);
+        }
+        double m = 0, mag = 0;
+        for (const auto* p : {&A, &B})
+          for (const auto& v : p->vertices()) {
+            m = std::max(m, bounds::projection_bound<F>(n, v, dn));
+            mag = std::max(mag, std::abs(double(dot(n, v))));
+          }
+        const double u = bounds::u_of<F>();
+        return (2 * m + 2 * u * mag * (1 + bounds::gamma(1, u))) * bounds::kSlack;
+      }
+    }
+    return 0;
+  }
+};
+
+const char* side_name(int i) {
+  static const char* names[] = {"cba = sign(nB0.eA)", "dba = sign(nB1.eA)", "adc = -sign(nA0.eB)",
+                                "bdc = -sign(nA1.eB)"};
+  return names[i];
+}
+
+template <class F, class Policy>
+void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B,
+                 const std::string& cfg, bool exact_decisions, Recorder& rec) {
+  const FloatSide<F> S(A, B, E);
+  const int EA = A.edge_count(), EB = B.edge_count();
+  // ---- arc signs and Minkowski-face verdicts, every edge pair ----
+  {
+    kernel_t<Policy, F> k(A, B);
+    std::int64_t agree_signs = 0, agree_verdicts = 0;
+    for (int ea = 0; ea < EA; ++ea) {
+      for (int eb = 0; eb < EB; ++eb) {
+        const ArcSigns fs = k.arc_signs(ea, eb);
+        const ArcSigns& es = E.arcs[static_cast<std::size_t>(ea * EB + eb)];
+        const int f4[4] = {fs.cba, fs.dba, fs.adc, fs.bdc};
+        const int e4[4] = {es.cba, es.dba, es.adc, es.bdc};
+        Klass worst = Klass::agree;
+        for (int i = 0; i < 4; ++i) {
+          if (f4[i] == e4[i]) {
+            ++agree_signs;
+            continue;
+          }
+          // which normal and which edge direction
+          const bool b_normal = i < 2;
+          const int side = i % 2;
+          const int face = b_normal ? B.edge_face(eb, side) : A.edge_face(ea, side);
+          const Vec3<Q> Ne = b_normal ? E.B.plane(face).normal : E.A.plane(face).normal;
+          const Vec3<Q> de = b_normal ? E.A.edge_direction(ea) : E.B.edge_direction(eb);
+          const Q te = dot(Ne, de);
+          const Vec3<F> nf = b_normal ? B.plane(face).normal : A.plane(face).normal;
+          const Vec3<F> df = b_normal ? A.edge_direction(ea) : B.edge_direction(eb);
+          const double bnd = bounds::arc_bound<F>(nf, df, (b_normal ? S.deltaB : S.deltaA)[static_cast<std::size_t>(face)]);
+          Klass k2;
+          if (sign_of(te) == 0) k2 = exact_decisions ? Klass::unexplained : Klass::exact_zero;
+          else if (!exact_decisions && small(Separation<Q>{te, squared_norm(Ne)}, bnd)) k2 = Klass::explained;
+          else k2 = Klass::unexplained;
+          worst = std::max(worst, k2);
+          rec.add("arc_sign", cfg, "kernel", k2, [&] {
+            std::ostringstream s;
+            s << "edge pair (" << ea << "," << eb << ") " << side_name(i) << ": " << cfg << " sign " << f4[i]
+              << " (value " << num(double(dot(nf, df))) << "), exact sign " << e4[i] << " (value "
+              << num(te.get_d() / std::sqrt(squared_norm(Ne).get_d())) << "), forward error bound "
+              << num(bnd);
+            return s.str();
+          });
+        }
+        if (fs.minkowski_face() == es.minkowski_face()) {
+          ++agree_verdicts;
+        } else {
+          if (worst == Klass::agree) worst = Klass::unexplained;  // cannot happen: verdict is a function of the signs
+          rec.add("minkowski_face", cfg, "kernel", worst, [&] {
+            std::ostringstream s;
+            s << "edge pair (" << ea << "," << eb << "): " << cfg << " says "
+              << (fs.minkowski_face() ? "Minkowski face" : "not a Minkowski face") << ", exact says "
+              << (es.minkowski_face() ? "Minkowski face" : "not a Minkowski face");
+            return s.str();
+          });
+        }
+      }
+    }
+    rec.add("arc_sign", cfg, "kernel", Klass::agree, nullptr, agree_signs);
+    rec.add("minkowski_face", cfg, "kernel", Klass::agree, nullptr, agree_verdicts);
+  }
+  // ---- every SAT ----
+  const Feature& fe = E.ref.feature;
+  const Separation<Q>& se = E.ref.separation;
+  for (Sat sat : all_sats()) {
+    if (sat == Sat::brute_force &&
+        static_cast<double>(EA) * EB * (A.vertex_count() + B.vertex_count()) > 2e8)
+      continue;
+    const SatResult<F> r = run_sat<Policy>(sat, A, B);
+    rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
+    const Feature& ff = r.feature;
+    const double sf = r.separation_as_double();
+    const double bf = S.bound(sat, ff), be = S.bound(sat, fe);
+    const Separation<Q> xf = exact_value(E, sat, ff);
+    auto describe = [&](const char* what) {
+      return [&, what] {
+        std::ostringstream s;
+        s << what << ": " << cfg << " " << sat_name(sat) << " reports overlap=" << r.overlap << " feature "
+          << to_string(ff) << " separation " << num(sf) << " (exact value of that feature "
+          << num(sepax::to_double(xf)) << ", bound " << num(bf) << "); exact: overlap=" << E.ref.overlap
+          << " feature " << to_string(fe) << " separation " << num(sepax::to_double(se)) << " (" << cfg
+          << " bound for it " << num(be) << ")";
+        return s.str();
+      };
+    };
+    // overlap verdict
+    Klass ko = Klass::agree;
+    if (r.overlap != E.ref.overlap) {
+      if (exact_decisions) ko = Klass::unexplained;
+      else if (sign(se) == 0) ko = Klass::exact_zero;
+      else if (small(se, bf + be)) ko = Klass::explained;
+      else ko = Klass::unexplained;
+    }
+    rec.add("overlap", cfg, sat_name(sat), ko, describe("overlap verdict differs"));
+    // feature
+    Klass kf = Klass::agree;
+    if (!(ff == fe)) {
+      if (exact_decisions) {
+        kf = Klass::unexplained;
+      } else if (same_axis(ff, fe)) {
+        // same face, different support vertex: compare the two vertices' exact heights
+        const bool on_a = ff.type == FeatureType::FaceA;
+        const Separation<Q> h1 = on_a ? E.k->face_separation_a(ff.a, ff.b) : E.k->face_separation_b(ff.b, ff.a);
+        const Separation<Q> h2 = on_a ? E.k->face_separation_a(fe.a, fe.b) : E.k->face_separation_b(fe.b, fe.a);
+        kf = close(h1, h2, 2 * bf) ? Klass::tie : Klass::unexplained;
+      } else {
+        kf = close(xf, se, bf + be) ? Klass::tie : Klass::unexplained;
+      }
+    }
+    rec.add("feature", cfg, sat_name(sat), kf, describe("feature differs"));
+    // separation value
+    Klass ks;
+    if (cmp_rational_sep(Q(sf), se) == 0) ks = Klass::agree;
+    else if (same_axis(ff, fe) && within(sf, se, bf)) ks = sign(se) == 0 ? Klass::exact_zero : Klass::explained;
+    else if (!same_axis(ff, fe) && !exact_decisions && within(sf, se, bf + be)) ks = Klass::tie;
+    else ks = Klass::unexplained;
+    rec.add("separation", cfg, sat_name(sat), ks, describe("separation outside its bound"));
+  }
+}
+
+template <class T>
+void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, const Exact& E,
+                      const std::string& cfg, bool skip_reference, const CheckOptions& opt, Recorder& rec) {
+  const auto A = ConvexPolyhedron<T>::convert_from(Af);
+  const auto B = ConvexPolyhedron<T>::convert_from(Bf);
+  const double cost = static_cast<double>(A.edge_count()) * B.edge_count() * (A.vertex_count() + B.vertex_count());
+  for (Sat sat : all_sats()) {
+    if (skip_reference && sat == Sat::gauss_map) continue;
+    if (sat == Sat::brute_force && cost > static_cast<double>(opt.exact_brute_budget)) continue;
+    const SatResult<T> r = run_sat<policy::Plain>(sat, A, B);
+    rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
+    bool same = r.overlap == E.ref.overlap && r.feature == E.ref.feature;
+    if constexpr (std::is_same_v<T, Q>) same = same && sepax::compare(r.separation, E.ref.separation) == 0;
+    rec.add("exact", cfg, sat_name(sat), same ? Klass::agree : Klass::unexplained, [&] {
+      std::ostringstream s;
+      s << cfg << " " << sat_name(sat) << ": overlap=" << r.overlap << " feature " << to_string(r.feature)
+        << " separation " << num(sepax::to_double(r.separation)) << "; reference mpq gauss_map: overlap="
+        << E.ref.overlap << " feature " << to_string(E.ref.feature) << " separation "
+        << num(sepax::to_double(E.ref.separation));
+      return s.str();
+    });
+  }
+}
+
+}  // namespace
+
+CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
+  CaseReport rep;
+  ConvexPolyhedron<float> Af, Bf;
+  auto build = [](const ShapeSpec& s) {
+    std::vector<Vec3<float>> v;
+    for (const auto& p : s.vertices)
+      v.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]));
+    return ConvexPolyhedron<float>::from_faces(std::move(v), s.faces);
+  };
+  try {
+    Af = build(c.a);
+  } catch (const InvalidInput& e) {
+    rep.reject_reason = std::string("shape A: ") + e.what();
+    return rep;
+  }
+  try {
+    Bf = build(c.b);
+  } catch (const InvalidInput& e) {
+    rep.reject_reason = std::string("shape B: ") + e.what();
+    return rep;
+  }
+  rep.valid = true;
+  Recorder rec{rep, opt, {}};
+
+  // exact reference
+  Exact E;
+  E.A = CPQ::convert_from(Af);
+  E.B = CPQ::convert_from(Bf);
+  E.k = std::make_unique<PlainKernel<Q>>(E.A, E.B);
+  for (int f = 0; f < E.A.face_count(); ++f) {
+    E.fqA.push_back(E.k->face_query_a(f));
+    E.nlenA.push_back(bounds::sqrt_lower(squared_norm(E.A.plane(f).normal).get_d()));
+  }
+  for (int f = 0; f < E.B.face_count(); ++f) {
+    E.fqB.push_back(E.k->face_query_b(f));
+    E.nlenB.push_back(bounds::sqrt_lower(squared_norm(E.B.plane(f).normal).get_d()));
+  }
+  E.arcs.reserve(static_cast<std::size_t>(E.A.edge_count()) * static_cast<std::size_t>(E.B.edge_count()));
+  for (int ea = 0; ea < E.A.edge_count(); ++ea)
+    for (int eb = 0; eb < E.B.edge_count(); ++eb) E.arcs.push_back(E.k->arc_signs(ea, eb));
+  E.ref = run_sat<policy::Plain>(Sat::gauss_map, E.A, E.B);
+  rep.configs_run.push_back("mpq/gauss_map");
+
+  // exact types among themselves
+  check_exact_type<Q>(Af, Bf, E, "mpq", true, opt, rec);
+  if (static_cast<std::int64_t>(E.A.edge_count()) * E.B.edge_count() <= opt.gmpq_pair_budget)
+    check_exact_type<CGAL::Gmpq>(Af, Bf, E, "gmpq", false, opt, rec);
+  check_exact_type<CGAL::Epeck::FT>(Af, Bf, E, "epeck", false, opt, rec);
+
+  // float configurations on identical inputs
+  const auto Ad = ConvexPolyhedron<double>::convert_from(Af);
+  const auto Bd = ConvexPolyhedron<double>::convert_from(Bf);
+  check_float<float, policy::Plain>(E, Af, Bf, "float_plain", false, rec);
+  check_float<double, policy::Plain>(E, Ad, Bd, "double_plain", false, rec);
+#if SEPAX_FUZZ_HAS_ROBUST
+  check_float<float, policy::Robust>(E, Af, Bf, "float_robust", true, rec);
+  check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, rec);
+#endif
+  return rep;
+}
+
+}  // namespace sepax::fuzz
