@@ -376,3 +376,58 @@ TEST_CASE("random overlapping pairs: brute force and Gauss map agree, moving B b
   }
   CHECK(overlapping > 50);
 }
+
+TEMPLATE_TEST_CASE("feature ids are stable across frames while the same features touch", "[contact][frames]", float, double) {
+  using T = TestType;
+  const auto a = shapes::box<T>(2.0, 2.0, 1.0);
+  std::vector<ContactFeatureId> first;
+  for (int frame = 0; frame < 20; ++frame) {
+    const double x = -0.5 + 0.05 * frame;
+    const auto b = moved(shapes::cube<T>(0.5), rot({0, 0, 1}, 0.2 + 0.01 * frame), {x, 0.3, 1.45});
+    const auto m = contact_manifold(a, b);
+    REQUIRE(m.size() == 4);
+    INFO("frame " << frame);
+    if (frame == 0) first = ids_of(m);
+    else CHECK(ids_of(m) == first);
+  }
+}
+
+#if __has_include(<sepax/sat_cache.hpp>) && __has_include(<sepax/sat_traversal.hpp>)
+#include <sepax/sat_cache.hpp>
+#include <sepax/sat_traversal.hpp>
+
+TEMPLATE_TEST_CASE("a cached query gives the same manifold as a fresh one", "[contact][cache]", float, double) {
+  using T = TestType;
+  const auto a = shapes::prism<T>(9, 1.0, 0.8);
+  SatCache<T> cache;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int overlapping = 0;
+  for (int frame = 0; frame < 60; ++frame) {
+    const double t = 0.1 * frame;
+    const auto b = moved(shapes::box<T>(0.5, 0.4, 0.3), rot({std::sin(t), 1, 0.3}, t), {0.8 * std::cos(t), 0.5 * std::sin(t), 0.9 + 0.4 * std::sin(2 * t)});
+    for (bool early : {false, true}) {
+      SatOptions o;
+      o.early_out = early;
+      const auto rc = sat::cached(cache, a, b, [](auto& k, const SatOptions& oo) { return sat::gauss_map_with(k, oo); }, o);
+      const auto rf = sat::traversal(a, b);
+      if (!rf.overlap) {
+        CHECK_FALSE(rc.overlap);
+        continue;
+      }
+      ++overlapping;
+      const auto mc = contact_manifold(a, b, rc);
+      const auto mf = contact_manifold(a, b, rf);
+      INFO("frame " << frame);
+      CHECK(mc.feature == mf.feature);
+      REQUIRE(mc.size() == mf.size());
+      CHECK(ids_of(mc) == ids_of(mf));
+      for (int i = 0; i < mc.size(); ++i) {
+        CHECK(mc.points[i].position == mf.points[i].position);
+        CHECK(mc.points[i].separation.num == mf.points[i].separation.num);
+      }
+    }
+  }
+  CHECK(overlapping > 20);
+}
+#endif
