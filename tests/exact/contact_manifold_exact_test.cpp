@@ -258,7 +258,6 @@ double spanned_area(const ContactManifold<T>& m) {
 }  // namespace
 
 TEST_CASE("exact: random exactly-rotated overlapping pairs: exact points, depth resolves exactly", "[contact][exact][random]") {
-  using Q = mpq_class;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-0.8, 0.8);
   int checked = 0;
