@@ -7,6 +7,8 @@
 #include <random>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include <sepax/convex_polyhedron.hpp>
 #include <sepax/robust/orientation.hpp>
 

@@ -1,0 +1,265 @@
+// The contract of policy::Robust: for float and double shapes, the brute-force
+// and Gauss-map SATs under RobustKernel make exactly the decisions
+// PlainKernel<mpq_class> makes on the exact images (convert_from): the same
+// feature, the same overlap verdict and the same sign of separation.  Checked
+// on random posed hulls at several scales and on degenerate configurations
+// built to produce exact ties, exact zeros and exactly parallel edges.
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <sstream>
+
+#include <sepax/robust/number_types.hpp>
+#include <sepax/robust/robust_kernel.hpp>
+#include <sepax/sat_brute_force.hpp>
+#include <sepax/sat_gauss_map.hpp>
+#include <sepax/shapes.hpp>
+
+#include "random_shapes.hpp"
+
+using namespace sepax;
+using sepax::testing::posed;
+using sepax::testing::random_rotation;
+using sepax::testing::random_sphere_hull;
+using sepax::testing::translated;
+
+namespace {
+
+struct Tally {
+  int runs = 0;
+  int plain_differs = 0;  // plain float SAT disagreed with exact (not an error)
+  std::int64_t fallbacks = 0;
+  int touching = 0, overlapping = 0, separated = 0;
+};
+
+template <class T>
+std::string describe(const ConvexPolyhedron<T>& p) {
+  std::ostringstream s;
+  s.precision(std::numeric_limits<T>::max_digits10);
+  for (const auto& v : p.vertices()) s << "(" << v[0] << "," << v[1] << "," << v[2] << ") ";
+  return s.str();
+}
+
+enum class Algo { Brute, Gauss };
+
+template <class T>
+bool agrees_with_exact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, Algo algo, Tally& t) {
+  const auto ae = ConvexPolyhedron<mpq_class>::convert_from(a);
+  const auto be = ConvexPolyhedron<mpq_class>::convert_from(b);
+  const bool brute = algo == Algo::Brute;
+  const auto r = brute ? sat::brute_force<policy::Robust>(a, b) : sat::gauss_map<policy::Robust>(a, b);
+  const auto e = brute ? sat::brute_force(ae, be) : sat::gauss_map(ae, be);
+  const auto p = brute ? sat::brute_force(a, b) : sat::gauss_map(a, b);
+  ++t.runs;
+  t.fallbacks += r.stats.exact_fallbacks;
+  const int es = sign(e.separation);
+  (es == 0 ? t.touching : es < 0 ? t.overlapping : t.separated) += 1;
+  if (!(p.feature == e.feature) || p.overlap != e.overlap || sign_of(p.separation.num) != es) ++t.plain_differs;
+  const bool ok = r.feature == e.feature && r.overlap == e.overlap && sign_of(r.separation.num) == es &&
+                  r.stats.minkowski_faces == e.stats.minkowski_faces;
+  if (!ok) {
+    INFO("T = " << number_traits<T>::name << (brute ? " brute_force" : " gauss_map"));
+    INFO("A: " << describe(a));
+    INFO("B: " << describe(b));
+    INFO("robust " << to_string(r.feature) << " overlap " << r.overlap << " sep " << r.separation_as_double()
+                   << " minkowski " << r.stats.minkowski_faces);
+    INFO("exact  " << to_string(e.feature) << " overlap " << e.overlap << " sep " << e.separation_as_double()
+                   << " minkowski " << e.stats.minkowski_faces);
+    CHECK(ok);
+  }
+  return ok;
+}
+
+template <class T>
+bool both_agree(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, Tally& t) {
+  const bool g = agrees_with_exact(a, b, Algo::Gauss, t);
+  const bool f = agrees_with_exact(a, b, Algo::Brute, t);
+  return g && f;
+}
+
+template <class T>
+Vec3<T> v3(double x, double y, double z) {
+  return Vec3<T>(static_cast<T>(x), static_cast<T>(y), static_cast<T>(z));
+}
+
+// Rotation by 90 degrees about z, exactly: (x, y, z) -> (-y, x, z).
+template <class T>
+ConvexPolyhedron<T> quarter_turn(const ConvexPolyhedron<T>& p) {
+  std::vector<Vec3<T>> v;
+  for (const auto& x : p.vertices()) v.push_back(Vec3<T>(-x[1], x[0], x[2]));
+  return p.with_vertices(std::move(v));
+}
+
+// (x, y, z) -> (x, z, -y): a quarter turn about x, exactly.
+template <class T>
+ConvexPolyhedron<T> quarter_turn_x(const ConvexPolyhedron<T>& p) {
+  std::vector<Vec3<T>> v;
+  for (const auto& x : p.vertices()) v.push_back(Vec3<T>(x[0], x[2], -x[1]));
+  return p.with_vertices(std::move(v));
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("robust = exact on random posed hulls", "[robust][kernel]", float, double) {
+  using T = TestType;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<ConvexPolyhedron<T>> hulls;
+  for (int n : {4, 5, 6, 8, 10, 12}) hulls.push_back(random_sphere_hull<T>(rng, n));
+  Tally t;
+  int failures = 0;
+  // scale 1 at the origin, tiny, huge, and far from the origin
+  const std::vector<std::pair<double, double>> frames{{1.0, 0.0}, {1e-4, 0.0}, {1e4, 0.0}, {1.0, 1e3}};
+  for (const auto& [scale, offset] : frames) {
+    for (int i = 0; i < 300 && failures < 3; ++i) {
+      const auto& ha = hulls[static_cast<std::size_t>(i) % hulls.size()];
+      const auto& hb = hulls[static_cast<std::size_t>(i / 6) % hulls.size()];
+      const Vec3<double> o(offset, -offset, 0.5 * offset);
+      const double dist = 2.2 * (0.5 + 0.5 * u(rng));  // overlapping to separated
+      Vec3<double> dir(u(rng), u(rng), u(rng));
+      dir.normalize();
+      const auto a = posed(ha, random_rotation(rng), o, scale);
+      const auto b = posed(hb, random_rotation(rng), Vec3<double>(o + dir * dist * scale), scale);
+      if (!both_agree(a, b, t)) ++failures;
+    }
+  }
+  CHECK(failures == 0);
+  CHECK(t.overlapping > 0);
+  CHECK(t.separated > 0);
+  WARN(number_traits<T>::name << ": " << t.runs << " runs, exact fallbacks " << t.fallbacks
+                              << ", plain differed from exact in " << t.plain_differs);
+}
+
+TEMPLATE_TEST_CASE("robust = exact: boxes against boxes (ties, touching, parallel edges)", "[robust][kernel]",
+                   float, double) {
+  using T = TestType;
+  Tally t;
+  int failures = 0;
+  for (double s : {1.0, 1e-4, 1e4}) {
+    for (double far : {0.0, 1e3}) {
+      const Vec3<T> o = v3<T>(far * s, -far * s, 0.5 * far * s);
+      const auto a = translated(shapes::box<T>(1.0 * s, 1.0 * s, 1.0 * s), o);
+      const auto b0 = shapes::box<T>(0.5 * s, 1.0 * s, 0.75 * s);
+      const double steps[] = {0.0, 0.5, 1.5, 1.75, 2.0, 2.5};
+      for (double x : steps) {
+        for (double y : steps) {
+          for (double z : steps) {
+            if (failures > 2) break;
+            const Vec3<T> off(Vec3<T>(o + v3<T>(x * s, -y * s, z * s)));
+            if (!both_agree(a, translated(b0, off), t)) ++failures;
+            if (!both_agree(a, translated(quarter_turn(b0), off), t)) ++failures;
+          }
+        }
+      }
+    }
+  }
+  CHECK(failures == 0);
+  CHECK(t.touching > 0);
+  WARN(number_traits<T>::name << ": " << t.runs << " runs (" << t.touching << " exactly touching), exact fallbacks "
+                              << t.fallbacks << ", plain differed in " << t.plain_differs);
+}
+
+TEMPLATE_TEST_CASE("robust = exact: polygons on box faces, across edges, coplanar", "[robust][kernel]", float,
+                   double) {
+  using T = TestType;
+  Tally t;
+  int failures = 0;
+  const auto box = shapes::cube<T>(1.0);
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> q(-12, 12);  // multiples of 1/8: exact
+  auto c = [&] { return q(rng) / 8.0; };
+  for (int i = 0; i < 400 && failures < 3; ++i) {
+    // a triangle and a quad in the plane of a box face (z = 1), or of the
+    // plane x + z = 2 through the box edge x = z = 1, or of x = 1.
+    const int plane = i % 3;
+    auto on_plane = [&](double p, double r) {
+      if (plane == 0) return v3<T>(p, r, 1.0);
+      if (plane == 1) return v3<T>(p, r, 2.0 - p);
+      return v3<T>(1.0, p, r);
+    };
+    const double x0 = c(), y0 = c(), w = 0.125 + std::abs(c()), h = 0.125 + std::abs(c());
+    try {
+      const auto tri = shapes::triangle<T>(on_plane(x0, y0), on_plane(x0 + w, y0), on_plane(x0, y0 + h));
+      const auto quad = ConvexPolyhedron<T>::polygon(
+          {on_plane(x0, y0), on_plane(x0 + w, y0), on_plane(x0 + w, y0 + h), on_plane(x0, y0 + h)});
+      if (!both_agree(box, tri, t)) ++failures;
+      if (!both_agree(quad, box, t)) ++failures;
+      if (!both_agree(tri, quad, t)) ++failures;  // coplanar polygons
+      // a triangle standing across the face: one vertex below the plane
+      const auto cross_tri = shapes::triangle<T>(on_plane(x0, y0), on_plane(x0 + w, y0 + h),
+                                                 Vec3<T>(on_plane(x0, y0 + h) - v3<T>(0, 0, 0.5)));
+      if (!both_agree(box, cross_tri, t)) ++failures;
+    } catch (const InvalidInput&) {
+      // degenerate polygon drawn: skip
+    }
+  }
+  // coplanar faces: equal boxes sharing top and bottom planes
+  const auto b2 = shapes::box<T>(0.5, 0.5, 1.0);
+  for (double x : {0.0, 0.5, 1.5, 2.0}) {
+    if (!both_agree(box, translated(b2, v3<T>(x, 0.25, 0.0)), t)) ++failures;
+  }
+  CHECK(failures == 0);
+  CHECK(t.touching > 0);
+  WARN(number_traits<T>::name << ": " << t.runs << " runs (" << t.touching << " exactly touching), exact fallbacks "
+                              << t.fallbacks << ", plain differed in " << t.plain_differs);
+}
+
+TEMPLATE_TEST_CASE("robust = exact: prisms with many parallel edges", "[robust][kernel]", float, double) {
+  using T = TestType;
+  Tally t;
+  int failures = 0;
+  for (int n : {3, 6, 8, 12}) {
+    const auto p = shapes::prism<T>(n, 1.0, 1.0);
+    for (double x : {0.0, 0.5, 1.0, 2.0}) {
+      for (double z : {0.0, 1.0, 2.0, 2.5}) {
+        if (!both_agree(p, translated(p, v3<T>(x, 0.25 * x, z)), t)) ++failures;
+        if (!both_agree(p, translated(quarter_turn_x(p), v3<T>(x, 0.0, z)), t)) ++failures;
+        if (!both_agree(translated(quarter_turn(p), v3<T>(0.0, x, z)), p, t)) ++failures;
+      }
+    }
+  }
+  CHECK(failures == 0);
+  WARN(number_traits<T>::name << ": " << t.runs << " runs, exact fallbacks " << t.fallbacks
+                              << ", plain differed in " << t.plain_differs);
+}
+
+TEMPLATE_TEST_CASE("robust is needed: plain float differs from exact where robust does not", "[robust][kernel]",
+                   float, double) {
+  // A random tetrahedron A and B = -A + t (point reflection, exact).  Along
+  // the inward normal of each face of A, the three vertices of B's copy of
+  // that face are exactly tied: the exact support vertex is the lowest index
+  // of them.  The rounded float normal breaks the tie at random, so the plain
+  // SAT reports other support vertices (other features); robust must not.
+  using T = TestType;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Tally t;
+  int failures = 0;
+  for (int i = 0; i < 200 && failures < 3; ++i) {
+    ConvexPolyhedron<T> a;
+    try {
+      std::vector<Vec3<T>> v;
+      for (int k = 0; k < 4; ++k) v.push_back(v3<T>(u(rng), u(rng), u(rng)));
+      if (robust::orient3d(v[0], v[1], v[2], v[3]) > 0) std::swap(v[1], v[2]);
+      a = ConvexPolyhedron<T>::from_faces(v, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
+    } catch (const InvalidInput&) {
+      continue;
+    }
+    std::vector<Vec3<T>> w;
+    const Vec3<T> shift = v3<T>(std::round(u(rng) * 8) / 4, std::round(u(rng) * 8) / 4, std::round(u(rng) * 8) / 4);
+    for (const auto& x : a.vertices()) w.push_back(Vec3<T>(shift - x));
+    // point reflection reverses orientation: list the faces the other way round
+    const auto b = ConvexPolyhedron<T>::from_faces(w, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+    if (!both_agree(a, b, t)) ++failures;
+  }
+  CHECK(failures == 0);
+  CHECK(t.plain_differs > 0);
+  WARN(number_traits<T>::name << ": plain differed from exact in " << t.plain_differs << " of " << t.runs
+                              << " runs; robust in none");
+}
+
+TEST_CASE("policy::Robust for exact types is the plain exact kernel", "[robust][kernel]") {
+  STATIC_REQUIRE(std::is_same_v<kernel_t<policy::Robust, mpq_class>, PlainKernel<mpq_class>>);
+  STATIC_REQUIRE(SatKernel<RobustKernel<float>>);
+  STATIC_REQUIRE(SatKernel<RobustKernel<double>>);
+}
