@@ -1,0 +1,142 @@
+// sepax/gauss_map_walk.hpp
+//
+// GaussMapWalk: the per-hull data the traversal SAT (sat_traversal.hpp) walks
+// on, precomputed once per hull.  It depends only on the combinatorics of the
+// polyhedron (never on coordinates or on T), so one GaussMapWalk serves every
+// pose of a hull: a with_vertices() copy, or the exact image made by
+// convert_from(), has the same walk data.
+//
+// Contents (structure of arrays, all int):
+//   * vertex adjacency in CSR form: for vertex v, entries
+//     [adj_begin(v), adj_end(v)) hold one outgoing half-edge h of v each, the
+//     neighbour origin(h ^ 1) and the undirected edge h >> 1 -- the fan the
+//     hill climbs and the arc walk scan;
+//   * half-edge origin / face / next / prev (the face loops, for walking the
+//     vertices of one face);
+//   * a breadth-first order of the faces over face adjacency, with each face's
+//     parent in that tree (-1 for the root): the traversal computes a face's
+//     support vertex by hill-climbing from its parent's support vertex.
+#pragma once
+
+#include <vector>
+
+#include "convex_polyhedron.hpp"
+#include "error.hpp"
+
+namespace sepax {
+
+class GaussMapWalk {
+ public:
+  GaussMapWalk() = default;
+
+  template <Number T>
+  explicit GaussMapWalk(const ConvexPolyhedron<T>& p) {
+    nv_ = p.vertex_count();
+    ne_ = p.edge_count();
+    nf_ = p.face_count();
+    flat_ = p.is_flat();
+    const auto& hes = p.half_edges();
+    const auto nh = hes.size();
+    origin_.resize(nh);
+    face_.resize(nh);
+    next_.resize(nh);
+    prev_.resize(nh);
+    for (std::size_t h = 0; h < nh; ++h) {
+      origin_[h] = hes[h].origin;
+      face_[h] = hes[h].face;
+      next_[h] = hes[h].next;
+      prev_[h] = hes[h].prev;
+    }
+    adj_start_.assign(static_cast<std::size_t>(nv_) + 1, 0);
+    adj_half_.clear();
+    adj_vertex_.clear();
+    adj_edge_.clear();
+    for (int v = 0; v < nv_; ++v) {
+      for (int h : p.vertex_half_edges(v)) {
+        adj_half_.push_back(h);
+        adj_vertex_.push_back(hes[static_cast<std::size_t>(h ^ 1)].origin);
+        adj_edge_.push_back(h >> 1);
+      }
+      adj_start_[static_cast<std::size_t>(v) + 1] = static_cast<int>(adj_half_.size());
+    }
+    // BFS over faces (faces adjacent across an edge).
+    face_order_.clear();
+    face_parent_.clear();
+    std::vector<int> parent(static_cast<std::size_t>(nf_), -2);
+    if (nf_ > 0) {
+      parent[0] = -1;
+      face_order_.push_back(0);
+      for (std::size_t i = 0; i < face_order_.size(); ++i) {
+        const int f = face_order_[i];
+        const int first = p.face(f).edge;
+        int h = first;
+        do {
+          const int g = face_[static_cast<std::size_t>(h ^ 1)];
+          if (parent[static_cast<std::size_t>(g)] == -2) {
+            parent[static_cast<std::size_t>(g)] = f;
+            face_order_.push_back(g);
+          }
+          h = next_[static_cast<std::size_t>(h)];
+        } while (h != first);
+      }
+    }
+    for (int f : face_order_) face_parent_.push_back(parent[static_cast<std::size_t>(f)]);
+  }
+
+  int vertex_count() const { return nv_; }
+  int edge_count() const { return ne_; }
+  int face_count() const { return nf_; }
+  bool is_flat() const { return flat_; }
+
+  /// True when this data was built for p's combinatorics (checked by counts:
+  /// build the walk data from the hull itself or a with_vertices/convert_from
+  /// copy of it).
+  template <Number T>
+  bool fits(const ConvexPolyhedron<T>& p) const {
+    return p.vertex_count() == nv_ && p.edge_count() == ne_ && p.face_count() == nf_ &&
+           p.is_flat() == flat_;
+  }
+
+  /// Throws InvalidInput (BadIndex) when the data does not fit p.
+  template <Number T>
+  void check_fits(const ConvexPolyhedron<T>& p, const char* which) const {
+    if (!fits(p)) {
+      throw InvalidInput(ErrorCode::BadIndex,
+                         std::string("traversal: the GaussMapWalk passed for shape ") + which +
+                             " was built for a different polyhedron (V/E/F " + std::to_string(nv_) +
+                             "/" + std::to_string(ne_) + "/" + std::to_string(nf_) + ", shape has " +
+                             std::to_string(p.vertex_count()) + "/" + std::to_string(p.edge_count()) +
+                             "/" + std::to_string(p.face_count()) + ")");
+    }
+  }
+
+  // ---- vertex adjacency (CSR) ----
+  int adj_begin(int v) const { return adj_start_[static_cast<std::size_t>(v)]; }
+  int adj_end(int v) const { return adj_start_[static_cast<std::size_t>(v) + 1]; }
+  int adj_half_edge(int i) const { return adj_half_[static_cast<std::size_t>(i)]; }
+  int adj_vertex(int i) const { return adj_vertex_[static_cast<std::size_t>(i)]; }
+  int adj_edge(int i) const { return adj_edge_[static_cast<std::size_t>(i)]; }
+
+  // ---- half-edges ----
+  int origin(int h) const { return origin_[static_cast<std::size_t>(h)]; }
+  int face(int h) const { return face_[static_cast<std::size_t>(h)]; }
+  int next(int h) const { return next_[static_cast<std::size_t>(h)]; }
+  int prev(int h) const { return prev_[static_cast<std::size_t>(h)]; }
+  int edge_tail(int e) const { return origin_[static_cast<std::size_t>(2 * e)]; }
+  int edge_head(int e) const { return origin_[static_cast<std::size_t>(2 * e + 1)]; }
+  int edge_face(int e, int side) const { return face_[static_cast<std::size_t>(2 * e + side)]; }
+
+  // ---- faces in breadth-first order ----
+  const std::vector<int>& face_order() const { return face_order_; }
+  /// Parent (in the BFS tree) of face_order()[i]; -1 for the root.
+  const std::vector<int>& face_parent() const { return face_parent_; }
+
+ private:
+  int nv_ = 0, ne_ = 0, nf_ = 0;
+  bool flat_ = false;
+  std::vector<int> adj_start_, adj_half_, adj_vertex_, adj_edge_;
+  std::vector<int> origin_, face_, next_, prev_;
+  std::vector<int> face_order_, face_parent_;
+};
+
+}  // namespace sepax

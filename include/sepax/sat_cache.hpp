@@ -1,0 +1,120 @@
+// sepax/sat_cache.hpp
+//
+// SatCache<T>: temporal coherence for repeated SAT queries of one pair of
+// shapes at nearby poses.  The cache holds the feature and separation of the
+// last result; a cached query re-checks that feature first.
+//
+// Guarantee (every SAT, every policy, every T):
+//   * opt.early_out == false: a cached query returns exactly what the SAT
+//     returns on its own (it runs the SAT; the cache only records the
+//     result).  There is no speed-up for full queries: the axis of maximum
+//     separation cannot be certified without looking at every candidate.
+//   * opt.early_out == true: the cached feature is re-evaluated at the current
+//     pose with the same kernel predicates every SAT uses for that feature:
+//       FaceA(f, _)   k.face_query_a(f)  (support vertex re-found, lowest
+//                                         index among the exactly deepest)
+//       FaceB(_, g)   k.face_query_b(g)
+//       EdgePair      still a Minkowski face (k.arc_signs strict) and not
+//                     parallel (k.edges_parallel), then k.edge_separation
+//     If it still separates (k.sign > 0) the query returns at once (a hit):
+//       overlap = false, early_out = true, feature = the re-evaluated feature,
+//       separation = exactly the separation the SATs compute for that
+//       feature at this pose, axis = k.axis(feature).
+//     This is the early_out contract of SatOptions: a separating axis, not
+//     necessarily the one of maximum separation.  The verdict (overlap) is
+//     always the one a fresh query gives.  If the feature no longer
+//     separates, the SAT runs with early_out and its result is returned
+//     unchanged (so for overlapping shapes the result is exactly the fresh
+//     one, feature and separation included).
+//   * The cache's content never changes a verdict: a stale, foreign or
+//     out-of-range feature only costs one re-evaluation (out-of-range indices
+//     are ignored).
+#pragma once
+
+#include <cstdint>
+#include <utility>
+
+#include "plain_kernel.hpp"
+
+namespace sepax {
+
+template <class T>
+struct SatCache {
+  bool valid = false;
+  Feature feature;
+  Separation<T> separation;
+  std::int64_t hits = 0;    // early-out queries answered by the cached feature
+  std::int64_t misses = 0;  // queries that ran the SAT
+
+  void reset() { *this = SatCache{}; }
+};
+
+namespace sat {
+
+/// The cached feature re-evaluated at the current pose (see the header
+/// comment); nullopt if its indices are out of range or an edge pair is no
+/// longer a non-parallel Minkowski face.
+template <SatKernel K>
+std::optional<std::pair<Feature, Separation<typename K::FT>>> reevaluate(K& k, const Feature& f) {
+  using T = typename K::FT;
+  switch (f.type) {
+    case FeatureType::FaceA: {
+      if (f.a < 0 || f.a >= k.a().face_count()) return std::nullopt;
+      const auto q = k.face_query_a(f.a);
+      return std::pair<Feature, Separation<T>>{Feature::face_a(f.a, q.support_vertex), q.separation};
+    }
+    case FeatureType::FaceB: {
+      if (f.b < 0 || f.b >= k.b().face_count()) return std::nullopt;
+      const auto q = k.face_query_b(f.b);
+      return std::pair<Feature, Separation<T>>{Feature::face_b(q.support_vertex, f.b), q.separation};
+    }
+    case FeatureType::EdgePair: {
+      if (f.a < 0 || f.a >= k.a().edge_count() || f.b < 0 || f.b >= k.b().edge_count()) return std::nullopt;
+      if (!k.arc_signs(f.a, f.b).minkowski_face() || k.edges_parallel(f.a, f.b)) return std::nullopt;
+      return std::pair<Feature, Separation<T>>{f, k.edge_separation(f.a, f.b)};
+    }
+  }
+  return std::nullopt;
+}
+
+/// Cached query with a kernel built for (A, B).  run(k, opt) runs the SAT,
+/// e.g. [](auto& k, const SatOptions& o) { return sat::gauss_map_with(k, o); }.
+template <SatKernel K, class Run>
+SatResult<typename K::FT> cached_with(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt, Run&& run) {
+  using T = typename K::FT;
+  if (opt.early_out && cache.valid) {
+    if (const auto ev = reevaluate(k, cache.feature); ev && k.sign(ev->second, ev->first) > 0) {
+      SatResult<T> r;
+      r.overlap = false;
+      r.feature = ev->first;
+      r.separation = ev->second;
+      r.axis = k.axis(ev->first);
+      r.early_out = true;
+      r.stats.face_axes = ev->first.type == FeatureType::EdgePair ? 0 : 1;
+      r.stats.edge_pairs = ev->first.type == FeatureType::EdgePair ? 1 : 0;
+      r.stats.minkowski_faces = r.stats.edge_pairs;
+      r.stats.exact_fallbacks = k.exact_fallbacks();
+      cache.feature = r.feature;
+      cache.separation = r.separation;
+      ++cache.hits;
+      return r;
+    }
+  }
+  SatResult<T> r = run(k, opt);
+  cache.valid = true;
+  cache.feature = r.feature;
+  cache.separation = r.separation;
+  ++cache.misses;
+  return r;
+}
+
+/// Cached query of A and B under a policy; run as for cached_with.
+template <class Policy = policy::Plain, Number T, class Run>
+SatResult<T> cached(SatCache<T>& cache, const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, Run&& run,
+                    const SatOptions& opt = {}) {
+  kernel_t<Policy, T> k(a, b);
+  return cached_with(k, cache, opt, std::forward<Run>(run));
+}
+
+}  // namespace sat
+}  // namespace sepax
