@@ -423,7 +423,11 @@ void check_known(const SatCase<T>& c, const SatResult<T>& r) {
   CHECK(r.overlap == c.overlap);
   CHECK(r.feature == c.feature);
   CHECK(sign(r.separation) == sign_of(c.separation.num));
-  if constexpr (number_traits<T>::is_exact) {
+  if constexpr (number_traits<T>::is_exact && number_traits<T>::normalizes) {
+    // exact sqrt (CORE::Expr): the separation itself, norm2 == 1
+    CHECK(r.separation.norm2 == T(1));
+    CHECK(r.separation.num == T(c.separation.num / number_traits<T>::sqrt(c.separation.norm2)));
+  } else if constexpr (number_traits<T>::is_exact) {
     CHECK(compare(r.separation, c.separation) == 0);
   } else if (c.dyadic) {
     CHECK(r.separation_as_double() == c.value());
