@@ -193,15 +193,19 @@ int most_antiparallel_face(const ConvexPolyhedron<T>& p, const Vec3<T>& n, int s
     }
   }
   for (;;) {
+    // Neighbours: the faces around each vertex of the current face.
     const int cur = best;
     int h = p.face(cur).edge;
     for (int i = 0; i < p.face(cur).count; ++i, h = p.half_edge(h).next) {
-      const int g = p.half_edge(ConvexPolyhedron<T>::twin(h)).face;
-      const auto s = score(g);
-      ++visited;
-      if (better(g, s, best, best_s)) {
-        best = g;
-        best_s = s;
+      for (int hv : p.vertex_half_edges(p.half_edge(h).origin)) {
+        const int g = p.half_edge(hv).face;
+        if (g == cur) continue;
+        const auto s = score(g);
+        ++visited;
+        if (better(g, s, best, best_s)) {
+          best = g;
+          best_s = s;
+        }
       }
     }
     if (best == cur) return best;

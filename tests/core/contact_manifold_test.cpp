@@ -371,6 +371,16 @@ TEST_CASE("random overlapping pairs: brute force and Gauss map agree, moving B b
     CHECK(m.size() <= 4);
     check_invariants(a, b, m);
     CHECK(ids_of(m) == ids_of(mb));
+    if (m.kind == ContactKind::Face) {
+      // the local search found the globally most anti-parallel face
+      const auto& R = m.reference_shape == 0 ? a : b;
+      const auto& I = m.reference_shape == 0 ? b : a;
+      const Vec3<double> n = R.plane(m.reference_face).normal;
+      int best = 0;
+      for (int f = 1; f < I.face_count(); ++f)
+        if (-n.dot(I.plane(f).normal) > -n.dot(I.plane(best).normal)) best = f;
+      CHECK(m.incident_face == best);
+    }
     const auto b2 = moved(b, Eigen::Matrix3d::Identity(), vec_to_double(m.resolving_translation()));
     CHECK(sat::gauss_map(a, b2).separation_as_double() >= -1e-9 * std::max(a.extent(), b.extent()));
   }
