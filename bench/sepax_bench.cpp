@@ -19,8 +19,10 @@
 //   * the time of a row is the minimum over several batches of passes over
 //     the pairs (the machine is shared; the minimum is the least disturbed).
 //
-// Usage: sepax_bench [--quick] [--min-time S] [--pairs P] [--filter SUBSTR]
-//                    [--json FILE]
+// Usage: sepax_bench [--quick] [--min-time S] [--max-pass S] [--pairs P] [--filter SUBSTR]
+//                    [--workload W] [--json FILE]
+//   --filter keeps the rows whose name contains SUBSTR (and the baseline);
+//   --workload keeps one workload (sphere4 .. sphere256, box, cylinder32).
 //        sepax_bench --callgrind --row NAME --workload W --poses P [--passes K]
 //          runs one row only, K passes over the pairs, inside callgrind client
 //          requests (use bench/callgrind_ratios.sh).
@@ -35,6 +37,14 @@
 #include <sepax/sat_traversal.hpp>
 #define SEPAX_BENCH_TRAVERSAL 1
 #endif
+#if __has_include(<sepax/sat_cache.hpp>) && SEPAX_BENCH_TRAVERSAL
+#include <sepax/sat_cache.hpp>
+#define SEPAX_BENCH_CACHE 1
+#endif
+#if __has_include(<sepax/convex_hull.hpp>)
+#include <sepax/convex_hull.hpp>
+#define SEPAX_BENCH_HULL 1
+#endif
 #if __has_include(<sepax/contact_manifold.hpp>)
 #include <sepax/contact_manifold.hpp>
 #define SEPAX_BENCH_CONTACTS 1
@@ -44,9 +54,11 @@
 #define SEPAX_BENCH_ROBUST 1
 #endif
 
+#if !SEPAX_BENCH_HULL
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
+#endif
 
 #if SEPAX_BENCH_BULLET
 #include <btBulletCollisionCommon.h>
@@ -165,6 +177,24 @@ std::vector<std::vector<int>> faces_of(const ConvexPolyhedron<float>& p) {
 // (triangulated; random points on a sphere have no four coplanar points, and
 // the validation of from_faces would reject near-coplanar neighbours).
 std::optional<Shape> sphere_hull(Rng& rng, int n) {
+#if SEPAX_BENCH_HULL
+  // sepax's own hull builder (exact decisions in double on float-valued points;
+  // the output vertices are the input points), re-validated in float.
+  std::vector<V3d> pts;
+  for (int i = 0; i < n; ++i) pts.push_back(to_d(to_f(rng.unit())));
+  try {
+    const auto h = convex_hull<double>(pts);
+    std::vector<V3f> verts;
+    for (const auto& v : h.vertices()) verts.push_back(to_f(v));
+    std::vector<std::vector<int>> faces;
+    for (int f = 0; f < h.face_count(); ++f) faces.push_back(h.face_vertices(f));
+    Shape s{ConvexPolyhedron<float>::from_faces(verts, faces), {}};
+    s.faces = faces_of(s.f);
+    return s;
+  } catch (const InvalidInput&) {
+    return std::nullopt;
+  }
+#else
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   std::vector<K::Point_3> pts;
   std::vector<V3f> fp;
@@ -199,6 +229,7 @@ std::optional<Shape> sphere_hull(Rng& rng, int n) {
   } catch (const InvalidInput&) {
     return std::nullopt;  // resample (has not happened with the fixed seeds)
   }
+#endif
 }
 
 // -------------------------------------------------------------- peers ----
@@ -303,6 +334,10 @@ struct Cell {
   Pool* pool = nullptr;
   std::vector<PairData> pairs;
   std::vector<ConvexPolyhedron<Q>> bq;  // exact images of B (built on demand)
+  int frames = 0;  // "moving": pairs are trajectories of `frames` consecutive poses
+#if SEPAX_BENCH_CACHE
+  std::vector<SatCache<float>> cache;  // one per trajectory
+#endif
 };
 
 CcdShape make_ccd(const std::vector<V3f>& v) {
@@ -386,6 +421,48 @@ void build_pairs(Cell& c, Rng& rng, int count) {
   }
 }
 
+// "moving": trajectories of slowly moving poses.  Each starts at a random pose
+// with centres 1.0 to 2.5 apart and moves B, per frame, by 0.005 towards A and
+// rotates it by 0.01 rad about a fixed random axis (so some trajectories end
+// overlapping).  Frames are consecutive pairs; every row sees them in order.
+void build_trajectories(Cell& c, Rng& rng, int count, int frames) {
+  const int m = static_cast<int>(c.pool->shapes.size());
+  c.frames = frames;
+  for (int t = 0; t < count; ++t) {
+    const int a = static_cast<int>(rng.next() % static_cast<std::uint64_t>(m));
+    const int b = static_cast<int>(rng.next() % static_cast<std::uint64_t>(m));
+    Pose pose = random_pose(rng, 1.0, 2.5);
+    const V3d axis = rng.unit();
+    const Eigen::Matrix3d step = Eigen::AngleAxisd(0.01, axis).toRotationMatrix();
+    for (int f = 0; f < frames; ++f) {
+      PairData p;
+      p.a = a;
+      p.b = b;
+      p.pose = pose;
+      const auto& lb = c.pool->shapes[static_cast<std::size_t>(b)];
+      p.bverts = pose_vertices(lb.f, p.pose);
+      p.bf = lb.f.with_vertices(p.bverts);
+      p.bd = ConvexPolyhedron<double>::convert_from(p.bf);
+#if SEPAX_BENCH_BULLET
+      p.bullet_b = std::make_unique<BulletShape>(p.bverts);
+#endif
+#if SEPAX_BENCH_CCD
+      p.ccd_b = make_ccd(p.bverts);
+#endif
+#if SEPAX_BENCH_FCL
+      p.fcl_b = std::make_unique<FclShape>(p.bverts, lb.faces);
+#endif
+      c.pairs.push_back(std::move(p));
+      pose.r = step * pose.r;
+      const double d = pose.t.norm();
+      if (d > 0.005) pose.t *= (d - 0.005) / d;
+    }
+  }
+#if SEPAX_BENCH_CACHE
+  c.cache.assign(static_cast<std::size_t>(count), SatCache<float>{});
+#endif
+}
+
 void build_exact(Cell& c) {
   if (!c.bq.empty()) return;
   for (const auto& p : c.pairs) c.bq.push_back(ConvexPolyhedron<Q>::convert_from(p.bf));
@@ -461,8 +538,34 @@ std::vector<Row> make_rows(Cell& c) {
   auto addp = [&](std::string name, std::function<Out(std::size_t)> f) {
     rows.push_back(Row{std::move(name), "peer", std::move(f)});
   };
+  if (c.frames > 0) {  // moving poses: early-out and cached traversal (+ the rows kept below)
+#if SEPAX_BENCH_TRAVERSAL
+    add("traversal float early-out", [cp](std::size_t i) {
+      SatOptions opt;
+      opt.early_out = true;
+      return from_sat(sat::traversal(af(*cp, i), wa(*cp, i), cp->pairs[i].bf, wb(*cp, i), opt));
+    });
+#if SEPAX_BENCH_CACHE
+    // the cache of trajectory t is reset at its first frame, so every pass
+    // replays the trajectories from a cold cache
+    add("traversal float cached", [cp](std::size_t i) {
+      auto& cache = cp->cache[i / static_cast<std::size_t>(cp->frames)];
+      if (i % static_cast<std::size_t>(cp->frames) == 0) cache.reset();
+      SatOptions opt;
+      opt.early_out = true;
+      const auto& A = af(*cp, i);
+      const auto& B = cp->pairs[i].bf;
+      const GaussMapWalk& WA = wa(*cp, i);
+      const GaussMapWalk& WB = wb(*cp, i);
+      return from_sat(sat::cached(cache, A, B, [&](auto& k, const SatOptions& o) {
+        return sat::traversal_with(k, WA, WB, o);
+      }, opt));
+    });
+#endif
+#endif
+  }
   // float plain
-  if (small) add("brute float", [cp](std::size_t i) { return from_sat(sat::brute_force(af(*cp, i), cp->pairs[i].bf)); });
+  if (small && c.frames == 0) add("brute float", [cp](std::size_t i) { return from_sat(sat::brute_force(af(*cp, i), cp->pairs[i].bf)); });
   add("gauss float", [cp](std::size_t i) { return from_sat(sat::gauss_map(af(*cp, i), cp->pairs[i].bf)); });
 #if SEPAX_BENCH_TRAVERSAL
   add("traversal float", [cp](std::size_t i) {
@@ -607,6 +710,12 @@ std::vector<Row> make_rows(Cell& c) {
     return Out{true, -res.getContact(0).penetration_depth, false};
   });
 #endif
+  if (c.frames > 0) {  // moving poses: only these rows
+    std::erase_if(rows, [](const Row& r) {
+      return !(r.name.rfind("traversal float", 0) == 0 || r.name == "bullet gjk+epa (float)") ||
+             r.name == "traversal float +pose";
+    });
+  }
   return rows;
 }
 
@@ -631,7 +740,7 @@ double now_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-Measured measure(Cell& c, Row& row, double min_time, std::vector<Out>& outs) {
+Measured measure(Cell& c, Row& row, double min_time, double max_pass, std::vector<Out>& outs) {
   Measured m;
   m.workload = c.workload;
   m.poses = c.poses;
@@ -640,12 +749,13 @@ Measured measure(Cell& c, Row& row, double min_time, std::vector<Out>& outs) {
   m.n = c.n;
   std::size_t np = std::min(c.pairs.size(), row.max_pairs);
   outs.assign(np, Out{});
-  // first pass: answers (also the warm-up).  A slow row stops after min_time
-  // and at least kMinPairs pairs: it is then measured on that prefix.
+  // first pass: answers (also the warm-up).  A slow row stops after max_pass
+  // seconds and at least kMinPairs pairs: it is then measured on that prefix
+  // (its "verdict" column shows how many pairs it ran).
   double t0 = now_s();
   for (std::size_t i = 0; i < np; ++i) {
     outs[i] = row.run(i);
-    if (i + 1 >= kMinPairs && now_s() - t0 > min_time) {
+    if (i + 1 >= kMinPairs && now_s() - t0 > max_pass) {
       np = i + 1;
       outs.resize(np);
       break;
@@ -730,6 +840,7 @@ std::string traversal_counters(const Cell& c) {
 struct Options {
   bool quick = false;
   double min_time = 0.3;
+  double max_pass = 2.0;
   int pairs = 128;
   std::string filter;
   std::string json;
@@ -751,6 +862,8 @@ std::vector<WorkloadSpec> workloads(const Options& o) {
   }
   w.push_back({"box", "box", 0});
   w.push_back({"cylinder32", "cylinder", 0});
+  w.push_back({"moving16", "sphere", 16});
+  w.push_back({"moving64", "sphere", 64});
   return w;
 }
 
@@ -830,6 +943,20 @@ void print_targets(const std::vector<Measured>& all) {
                   m.depth_max, 0x1.0p-24);
 }
 
+void setup_cell(Cell& c, const WorkloadSpec& spec, const std::string& poses, Pool& pool, int pairs) {
+  c.workload = spec.name;
+  c.n = spec.n;
+  c.poses = poses;
+  c.pool = &pool;
+  if (poses == "moving") {
+    Rng prng(3003u);
+    build_trajectories(c, prng, std::max(2, pairs / 16), 32);
+  } else {
+    Rng prng(poses == "overlapping" ? 1001u : 2002u);
+    build_pairs(c, prng, pairs);
+  }
+}
+
 int run_callgrind(const Options& o) {
 #if SEPAX_BENCH_CALLGRIND
   for (const auto& spec : workloads(Options{})) {
@@ -837,9 +964,8 @@ int run_callgrind(const Options& o) {
     Rng rng(0x5e9a7 + static_cast<std::uint64_t>(spec.n) * 7919 + spec.kind.size());
     Pool pool;
     build_pool(pool, spec.kind, spec.n, rng, 8);
-    Cell c{spec.name, spec.n, o.cg_poses, &pool, {}, {}};
-    Rng prng(o.cg_poses == "overlapping" ? 1001u : 2002u);
-    build_pairs(c, prng, o.pairs);
+    Cell c;
+    setup_cell(c, spec, spec.name.rfind("moving", 0) == 0 ? "moving" : o.cg_poses, pool, o.pairs);
     for (auto& row : make_rows(c)) {
       if (row.name != o.cg_row) continue;
       if (needs_exact(row)) build_exact(c);
@@ -878,6 +1004,7 @@ int main(int argc, char** argv) {
     };
     if (a == "--quick") o.quick = true;
     else if (a == "--min-time") o.min_time = std::stod(val());
+    else if (a == "--max-pass") o.max_pass = std::stod(val());
     else if (a == "--pairs") o.pairs = std::stoi(val());
     else if (a == "--filter") o.filter = val();
     else if (a == "--json") o.json = val();
@@ -888,7 +1015,7 @@ int main(int argc, char** argv) {
     else if (a == "--passes") o.cg_passes = std::stoi(val());
     else {
       std::fprintf(stderr,
-                   "usage: %s [--quick] [--min-time S] [--pairs P] [--filter SUBSTR] [--json FILE]\n"
+                   "usage: %s [--quick] [--min-time S] [--max-pass S] [--pairs P] [--filter SUBSTR] [--workload W] [--json FILE]\n"
                    "       %s --callgrind --row NAME --workload W [--poses P] [--passes K]\n",
                    argv[0], argv[0]);
       return 2;
@@ -922,13 +1049,15 @@ int main(int argc, char** argv) {
   std::vector<Measured> all;
   std::vector<std::string> counters;
   for (const auto& spec : workloads(o)) {
+    if (!o.cg_workload.empty() && spec.name != o.cg_workload) continue;
     Rng rng(0x5e9a7 + static_cast<std::uint64_t>(spec.n) * 7919 + spec.kind.size());
     Pool pool;
     build_pool(pool, spec.kind, spec.n, rng, 8);
-    for (const std::string poses : {"overlapping", "separated"}) {
-      Cell c{spec.name, spec.n, poses, &pool, {}, {}};
-      Rng prng(poses == "overlapping" ? 1001u : 2002u);
-      build_pairs(c, prng, o.pairs);
+    const bool moving = spec.name.rfind("moving", 0) == 0;
+    for (const std::string poses : {"overlapping", "separated", "moving"}) {
+      if (moving != (poses == "moving")) continue;
+      Cell c;
+      setup_cell(c, spec, poses, pool, o.pairs);
       const double tr = now_s();
       compute_reference(c);
       std::fprintf(stderr, "[%s %s: exact reference %.1f s]\n", c.workload.c_str(), c.poses.c_str(),
@@ -942,7 +1071,7 @@ int main(int argc, char** argv) {
         if (!o.filter.empty() && row.name.find(o.filter) == std::string::npos && row.name != baseline)
           continue;
         if (needs_exact(row)) build_exact(c);
-        cell.push_back(measure(c, row, o.min_time, outs));
+        cell.push_back(measure(c, row, o.min_time, o.max_pass, outs));
       }
       double base = 0;
       for (const auto& m : cell)
