@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <sepax/robust/number_types.hpp>
+#include <sepax/robust/robust_kernel.hpp>
 #include <sepax/sat_brute_force.hpp>
 #include <sepax/sat_cache.hpp>
 #include <sepax/sat_gauss_map.hpp>
@@ -206,5 +207,52 @@ TEMPLATE_TEST_CASE("exact cache replay along rigid paths equals fresh queries", 
       }
     }
     CHECK(eo_cache.hits > 0);
+  }
+}
+
+// policy::Robust decides exactly what PlainKernel<mpq_class> decides on the
+// exact images, so the robust float traversal must report the exact feature.
+TEST_CASE("robust float traversal reports the exact brute-force feature", "[traversal][robust]") {
+  using Q = mpq_class;
+  std::mt19937_64 rng(271828);
+  std::uniform_int_distribution<int> nd(4, 14);
+  std::uniform_real_distribution<double> off(-1.8, 1.8);
+  auto check = [](const ConvexPolyhedron<double>& a, const ConvexPolyhedron<double>& b, const char* what) {
+    const auto qa = ConvexPolyhedron<Q>::convert_from(a);
+    const auto qb = ConvexPolyhedron<Q>::convert_from(b);
+    const auto exact = sat::brute_force(qa, qb);
+    const auto rt = sat::traversal<policy::Robust>(a, b);
+    const auto rg = sat::gauss_map<policy::Robust>(a, b);
+    INFO(what << ": robust traversal " << to_string(rt.feature) << ", exact brute force " << to_string(exact.feature));
+    CHECK(rt.feature == exact.feature);
+    CHECK(rt.overlap == exact.overlap);
+    CHECK(rt.feature == rg.feature);
+    CHECK(compare(rt.separation, rg.separation) == 0);
+    const auto ft = sat::traversal<policy::Robust>(ConvexPolyhedron<float>::convert_from(a),
+                                                   ConvexPolyhedron<float>::convert_from(b));
+    const auto fe = sat::traversal(ConvexPolyhedron<Q>::convert_from(ConvexPolyhedron<float>::convert_from(a)),
+                                   ConvexPolyhedron<Q>::convert_from(ConvexPolyhedron<float>::convert_from(b)));
+    CHECK(ft.feature == fe.feature);
+  };
+  for (int it = 0; it < 40; ++it) {
+    const auto a = test::sphere_hull(rng, nd(rng));
+    const auto b = test::moved(test::sphere_hull(rng, nd(rng), 0.8), test::random_rotation(rng),
+                               test::V3(off(rng), off(rng), off(rng)));
+    check(a, b, "random pair");
+  }
+  // exact ties in double: boxes, polygons and the constructed corner case
+  const auto cube = shapes::cube<double>(1.0);
+  const auto small = shapes::box<double>(0.5, 0.25, 1.0);
+  const auto poly = shapes::regular_polygon<double>(4, 1.0);
+  for (const auto& t : {test::V3(0, 0, 0), test::V3(1.5, 0, 0), test::V3(1.5, 1.25, 0), test::V3(1.5, 1.25, 2.0),
+                        test::V3(0.25, 0.5, 0.75)}) {
+    for (int q = 0; q < 6; ++q) {
+      const auto b = test::rotated_exact(small, kQuats[q][0], kQuats[q][1], kQuats[q][2], kQuats[q][3],
+                                         Vec3<double>(t));
+      check(cube, b, "boxes");
+      check(b, cube, "boxes swapped");
+      check(poly, b, "polygon");
+      check(b, poly, "polygon swapped");
+    }
   }
 }
