@@ -11,10 +11,16 @@
 // | name        | used by                         | meaning                                                     |
 // |-------------|---------------------------------|-------------------------------------------------------------|
 // | weld        | hull builder                    | points closer than weld*extent are one point                |
-// | coplanar    | hull builder                    | a point within coplanar*extent of a face plane is on it;    |
-// |             |                                 | adjacent faces whose vertices lie within it of one plane    |
-// |             |                                 | are merged into one face (no slivers, no near-duplicates)   |
-// | flat        | hull builder                    | a point set within flat*extent of a plane is a flat polygon |
+// | coplanar    | hull builder                    | a point within coplanar*extent above a face plane is on it  |
+// |             | (and validation: adjacent faces | (dropped); two adjacent faces are merged into one when      |
+// |             | within coplanar/4 are refused)  | either sees every vertex of the other less than             |
+// |             |                                 | coplanar*extent below its plane; a face corner closer than  |
+// |             |                                 | coplanar*extent to the line through its neighbours is       |
+// |             |                                 | removed (every output face strictly convex)                 |
+// | flat        | hull builder                    | a point set within flat*extent of a plane is a flat polygon;|
+// |             |                                 | within flat*extent of a line it is Collinear.  flat =       |
+// |             |                                 | 2*coplanar so that a solid is never thinner than twice the  |
+// |             |                                 | merge tolerance (its sides cannot merge into its top)       |
 // | planarity   | ConvexPolyhedron validation     | face vertices within planarity*extent of the face's plane   |
 // | convexity   | ConvexPolyhedron validation     | no vertex more than convexity*extent above any face plane   |
 // | support     | brute-force SAT, float only     | an edge endpoint within support*extent of the extreme       |
@@ -31,7 +37,13 @@
 // |             |                                 | distances / areas within it of the largest are ties         |
 //
 // The validation tolerances are looser than the hull builder's so that every
-// hull the builder produces validates.
+// hull the builder produces validates (planarity, convexity = 4*coplanar; the
+// builder also checks its output against half of them before returning it).
+// The hull builder computes its decisions on coordinates relative to the
+// centre of the bounding box; float cannot resolve a shape whose coordinates
+// exceed planarity*extent/(16u) (about 40 extents from the origin for float,
+// 2e5 for double), and the builder reports BadScale for such inputs when
+// validation would be at risk.
 #pragma once
 
 #include "number_traits.hpp"

@@ -1,0 +1,978 @@
+// sepax/convex_hull.hpp
+//
+// convex_hull(points): the convex hull of a point set as a validated
+// ConvexPolyhedron<T>, for every number type T (one template, no copies).
+//
+// Algorithm (quickhull with a clean-up pass):
+//   1. Reject NaN/Inf (NonFinite, naming the point).  Weld points closer than
+//      Tolerances<T>::weld * extent (exact T: remove exact duplicates only).
+//      Fewer than 3 distinct points -> TooFewPoints.
+//   2. Initial simplex from extreme points: the farthest pair (a, b), the point
+//      c farthest from line ab (all within flat*extent of it -> Collinear), the
+//      point d farthest from plane abc.  If every point is within
+//      flat*extent of plane abc (exactly on it for exact T) the result is a
+//      flat double-sided polygon: the 2D convex hull in that plane.
+//   3. Quickhull on triangles: every face keeps a conflict list of the points
+//      more than coplanar*extent above it (exact T: strictly above); the
+//      farthest point of a face is added, the faces it sees are removed and
+//      the horizon is coned to it.  A point that is above no face by more than
+//      the tolerance is dropped (it is inside or within tolerance of the hull).
+//   4. Merge: adjacent triangles are grouped into faces.  Exact T: a group is a
+//      maximal set of exactly coplanar triangles.  Float T: two groups merge
+//      when a vertex of one (not shared with the other) is less than
+//      coplanar*extent below the other's area-weighted plane (nearly coplanar,
+//      or concave through rounding).  Zero-area triangles join the neighbour
+//      across their longest edge.
+//   5. Extract each group's boundary loop; remove vertices left on only two
+//      faces (the middle of an edge); check that every loop is simple and
+//      strictly convex (float T: every corner more than coplanar*extent away
+//      from the line through its neighbours).  A corner that fails is a point
+//      (nearly, or for exact T exactly) on the segment between two other hull
+//      points: it is removed from the point set and the hull is rebuilt
+//      (each rebuild removes at least one point, so this terminates).
+//   6. Build through ConvexPolyhedron<T>::from_faces, so the result is
+//      validated.  A builder output failing validation is a builder bug and is
+//      reported as std::logic_error, not as InvalidInput.
+//
+// Float T computes every decision on the points translated by the centre of
+// their bounding box (so an offset from the origin does not cost precision);
+// the output vertices are the original input points (never moved or rounded).
+// Exact T makes every decision exactly; tolerances are zero.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <span>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "convex_polyhedron.hpp"
+#include "error.hpp"
+#include "number_traits.hpp"
+#include "tolerances.hpp"
+#include "vec3.hpp"
+
+
+namespace sepax {
+
+namespace hull_detail {
+
+inline std::size_t sz(int i) { return static_cast<std::size_t>(i); }
+
+template <Number T>
+class Builder {
+ public:
+  explicit Builder(std::span<const Vec3<T>> input) : in_(input) {}
+
+  ConvexPolyhedron<T> run() {
+    check_input();
+    weld();
+    // Build, and rebuild without the points the clean-up pass rejects.
+    std::vector<char> removed(pts_.size(), 0);
+    for (;;) {
+      std::vector<int> active;
+      for (std::size_t i = 0; i < pts_.size(); ++i)
+        if (!removed[i]) active.push_back(static_cast<int>(i));
+      std::vector<int> reject;
+      auto result = build(active, reject);
+      if (result) return std::move(*result);
+      if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
+      for (int r : reject) removed[sz(r)] = 1;
+    }
+  }
+
+ private:
+  // ---- input, tolerances, welding -------------------------------------------------
+
+  static constexpr bool exact = number_traits<T>::is_exact;
+
+  void check_input() {
+    for (std::size_t i = 0; i < in_.size(); ++i) {
+      for (int c = 0; c < 3; ++c) {
+        if (!number_traits<T>::is_finite(in_[i][c])) {
+          std::ostringstream s;
+          s << "convex_hull: point " << i << " has a non-finite coordinate (NaN or infinity)";
+          throw InvalidInput(ErrorCode::NonFinite, s.str());
+        }
+      }
+    }
+    if (in_.size() < 3) {
+      throw InvalidInput(ErrorCode::TooFewPoints,
+                         "convex_hull: needs at least 3 distinct points, got " +
+                             std::to_string(in_.size()) + " points");
+    }
+    Vec3<T> lo = in_[0], hi = in_[0];
+    for (const auto& p : in_) {
+      for (int c = 0; c < 3; ++c) {
+        if (p[c] < lo[c]) lo[c] = p[c];
+        if (p[c] > hi[c]) hi[c] = p[c];
+      }
+    }
+    double d2 = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double w = to_double(T(hi[c] - lo[c]));
+      d2 += w * w;
+    }
+    extent_ = std::sqrt(d2);
+    if constexpr (!exact) {
+      if (!std::isfinite(extent_) || !std::isfinite(extent_ * extent_ * extent_ * 8.0) ||
+          !number_traits<T>::is_finite(static_cast<T>(extent_ * extent_ * 4.0))) {
+        throw InvalidInput(ErrorCode::BadScale,
+                           "convex_hull: the point set's extent " + std::to_string(extent_) +
+                               " overflows " + std::string(number_traits<T>::name) +
+                               " in plane computations");
+      }
+      // Decisions are made on coordinates relative to the box centre.
+      const T two(2);
+      centre_ = Vec3<T>((lo[0] + hi[0]) / two, (lo[1] + hi[1]) / two, (lo[2] + hi[2]) / two);
+      eps_ = static_cast<T>(Tolerances<T>::coplanar * extent_);
+      flat_ = static_cast<T>(Tolerances<T>::flat * extent_);
+      weld_ = static_cast<T>(Tolerances<T>::weld * extent_);
+    } else {
+      centre_ = Vec3<T>(T(0), T(0), T(0));
+      eps_ = flat_ = weld_ = T(0);
+    }
+  }
+
+  Vec3<T> local(const Vec3<T>& p) const {
+    if constexpr (exact) {
+      return p;
+    } else {
+      return Vec3<T>(p - centre_);
+    }
+  }
+
+  void weld() {
+    std::vector<Vec3<T>> loc;
+    loc.reserve(in_.size());
+    for (const auto& p : in_) loc.push_back(local(p));
+    std::vector<int> order(in_.size());
+    std::iota(order.begin(), order.end(), 0);
+    auto lex = [&](int i, int j) {
+      const auto& a = loc[sz(i)];
+      const auto& b = loc[sz(j)];
+      if (a[0] != b[0]) return a[0] < b[0];
+      if (a[1] != b[1]) return a[1] < b[1];
+      if (a[2] != b[2]) return a[2] < b[2];
+      return i < j;
+    };
+    std::sort(order.begin(), order.end(), lex);
+    if constexpr (exact) {
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        if (k > 0 && loc[sz(order[k])] == loc[sz(order[k - 1])]) continue;
+        add_point(order[k], loc[sz(order[k])]);
+      }
+    } else {
+      // Sweep in x: a point is welded to an earlier representative within weld.
+      const T w2 = weld_ * weld_;
+      std::size_t window = 0;  // first representative with x >= current x - weld
+      for (int i : order) {
+        const Vec3<T>& p = loc[sz(i)];
+        while (window < q_.size() && q_[window][0] < p[0] - weld_) ++window;
+        bool dup = false;
+        for (std::size_t r = window; r < q_.size() && !dup; ++r) {
+          const Vec3<T> d(q_[r] - p);
+          dup = squared_norm(d) <= w2;
+        }
+        if (!dup) add_point(i, p);
+      }
+    }
+    if (pts_.size() < 3) {
+      throw InvalidInput(ErrorCode::TooFewPoints,
+                         "convex_hull: needs at least 3 distinct points, got " +
+                             std::to_string(pts_.size()) + " after merging duplicates" +
+                             (exact ? "" : " (points closer than the weld tolerance)"));
+    }
+  }
+
+  void add_point(int input_index, const Vec3<T>& loc) {
+    pts_.push_back(input_index);
+    q_.push_back(loc);
+  }
+
+  // ---- geometry on local coordinates --------------------------------------------
+
+  struct Tri {
+    std::array<int, 3> v{};   // welded point indices, counter-clockwise from outside
+    std::array<int, 3> nb{};  // triangle across edge v[i] -> v[i+1]
+    Plane<T> pl;
+    bool alive = true;
+    std::vector<int> conflict;
+  };
+
+  const Vec3<T>& Q(int i) const { return q_[sz(i)]; }
+
+  T height(const Plane<T>& pl, int p) const { return T(dot(pl.normal, Q(p)) - pl.offset); }
+
+  // Length of a vector as T for float types (not used for exact T).
+  static T length(const Vec3<T>& v) {
+    if constexpr (exact) {
+      (void)v;
+      return T(0);
+    } else {
+      return number_traits<T>::sqrt(squared_norm(v));
+    }
+  }
+
+  // ---- the build ---------------------------------------------------------------
+
+  std::optional<ConvexPolyhedron<T>> build(const std::vector<int>& active, std::vector<int>& reject) {
+    if (active.size() < 3) {
+      throw InvalidInput(ErrorCode::TooFewPoints,
+                         "convex_hull: fewer than 3 distinct points remain");
+    }
+    // Farthest pair among the extreme points of each axis.
+    std::array<int, 6> ext{};
+    for (int c = 0; c < 3; ++c) {
+      int lo = active[0], hi = active[0];
+      for (int i : active) {
+        if (Q(i)[c] < Q(lo)[c]) lo = i;
+        if (Q(i)[c] > Q(hi)[c]) hi = i;
+      }
+      ext[sz(2 * c)] = lo;
+      ext[sz(2 * c + 1)] = hi;
+    }
+    int a = ext[0], b = ext[1];
+    T best = squared_norm(Vec3<T>(Q(b) - Q(a)));
+    for (int i = 0; i < 6; ++i)
+      for (int j = i + 1; j < 6; ++j) {
+        const T d = squared_norm(Vec3<T>(Q(ext[sz(j)]) - Q(ext[sz(i)])));
+        if (d > best) {
+          best = d;
+          a = ext[sz(i)];
+          b = ext[sz(j)];
+        }
+      }
+    // Point farthest from line ab.
+    const Vec3<T> ab(Q(b) - Q(a));
+    int c = -1;
+    T best_c(0);
+    for (int i : active) {
+      const T d = squared_norm(cross(ab, Vec3<T>(Q(i) - Q(a))));
+      if (d > best_c) {
+        best_c = d;
+        c = i;
+      }
+    }
+    bool collinear = c < 0;
+    if constexpr (!exact) {
+      // distance of c from the line = |ab x ac| / |ab|
+      if (!collinear) collinear = number_traits<T>::sqrt(best_c) <= flat_ * length(ab);
+    }
+    if (collinear) {
+      throw InvalidInput(ErrorCode::Collinear,
+                         "convex_hull: all points lie on one line" +
+                             std::string(exact ? "" : " (within the flat tolerance)"));
+    }
+    // Point farthest from plane abc.
+    const Plane<T> base = plane_through(Q(a), Q(b), Q(c));
+    int d = -1;
+    T best_d(0);
+    for (int i : active) {
+      const T h = abs_of(height(base, i));
+      if (h > best_d) {
+        best_d = h;
+        d = i;
+      }
+    }
+    if (d < 0 || best_d <= flat_) return polygon(active, base.normal, reject);
+    active_ = active;
+    base_normal_ = base.normal;
+    return solid(active, a, b, c, d, reject);
+  }
+
+  // ---- flat point sets: 2D hull (Andrew's monotone chain) -----------------------
+
+  std::optional<ConvexPolyhedron<T>> polygon(const std::vector<int>& active, const Vec3<T>& n,
+                                             std::vector<int>& reject) {
+    // Sort on the two coordinates other than n's largest component (exact
+    // for exact T); decide turns in 3D against n.
+    int k = 0;
+    for (int i = 1; i < 3; ++i)
+      if (abs_of(n[i]) > abs_of(n[k])) k = i;
+    const int u = (k + 1) % 3, w = (k + 2) % 3;
+    std::vector<int> pts = active;
+    std::sort(pts.begin(), pts.end(), [&](int i, int j) {
+      if (Q(i)[u] != Q(j)[u]) return Q(i)[u] < Q(j)[u];
+      return Q(i)[w] < Q(j)[w];
+    });
+    const bool flip = n[k] < T(0);
+    const T nlen = length(n);
+    auto left = [&](int p0, int p1, int p2) {
+      const Vec3<T> e1(Q(p1) - Q(p0));
+      T t = dot(n, cross(e1, Vec3<T>(Q(p2) - Q(p1))));
+      if (flip) t = -t;
+      if constexpr (exact) {
+        return t > T(0);
+      } else {
+        // distance of p2 from the line p0 p1 (and of p0 from p1 p2) > eps
+        const T len = std::max(length(e1), length(Vec3<T>(Q(p2) - Q(p1))));
+        return t > eps_ * nlen * len;
+      }
+    };
+    std::vector<int> hull;
+    for (int pass = 0; pass < 2; ++pass) {
+      const std::size_t base = hull.size();
+      for (std::size_t idx = 0; idx < pts.size(); ++idx) {
+        const int p = pass == 0 ? pts[idx] : pts[pts.size() - 1 - idx];
+        while (hull.size() >= base + 2 && !left(hull[hull.size() - 2], hull.back(), p)) hull.pop_back();
+        hull.push_back(p);
+      }
+      hull.pop_back();  // last point of this chain is the first of the next
+    }
+    if (hull.size() < 3) {
+      throw InvalidInput(ErrorCode::Collinear, "convex_hull: all points lie on one line" +
+                                                   std::string(exact ? "" : " (within tolerance)"));
+    }
+    if constexpr (!exact) {
+      start_at_best_apex(hull);
+      std::vector<int> back(hull.rbegin(), hull.rend());
+      prevalidate({hull, back}, reject, true);
+      if (!reject.empty()) return std::nullopt;
+    }
+    std::vector<Vec3<T>> loop;
+    for (int i : hull) loop.push_back(in_[sz(pts_[sz(i)])]);
+    return finish([&] { return ConvexPolyhedron<T>::polygon(std::move(loop)); });
+  }
+
+  // ---- solids: quickhull ---------------------------------------------------------
+
+  int new_tri(int p0, int p1, int p2) {
+    Tri t;
+    t.v = {p0, p1, p2};
+    t.nb = {-1, -1, -1};
+    if constexpr (exact) {
+      t.pl = plane_through(Q(p0), Q(p1), Q(p2));
+    } else {
+      // apex at the largest angle (opposite the longest edge): the cross
+      // product of the two edges from there loses the least accuracy
+      const T l0 = squared_norm(Vec3<T>(Q(p1) - Q(p0)));  // opposite p2
+      const T l1 = squared_norm(Vec3<T>(Q(p2) - Q(p1)));  // opposite p0
+      const T l2 = squared_norm(Vec3<T>(Q(p0) - Q(p2)));  // opposite p1
+      if (l1 >= l0 && l1 >= l2) {
+        t.pl = plane_through(Q(p0), Q(p1), Q(p2));
+      } else if (l2 >= l0) {
+        t.pl = plane_through(Q(p1), Q(p2), Q(p0));
+      } else {
+        t.pl = plane_through(Q(p2), Q(p0), Q(p1));
+      }
+    }
+    tris_.push_back(std::move(t));
+    return static_cast<int>(tris_.size()) - 1;
+  }
+
+  // Assign p to the first of faces [first, end) it is above by more than eps.
+  void assign(int p, int first) {
+    for (std::size_t f = sz(first); f < tris_.size(); ++f) {
+      if (tris_[f].alive && height(tris_[f].pl, p) > eps_) {
+        tris_[f].conflict.push_back(p);
+        return;
+      }
+    }
+  }
+
+  static int edge_index(const Tri& t, int from) {
+    for (int i = 0; i < 3; ++i)
+      if (t.v[sz(i)] == from) return i;
+    return -1;
+  }
+
+  std::optional<ConvexPolyhedron<T>> solid(const std::vector<int>& active, int a, int b, int c,
+                                           int d, std::vector<int>& reject) {
+    tris_.clear();
+    // Orient the tetrahedron so that its faces point outward.
+    if (height(plane_through(Q(a), Q(b), Q(c)), d) > T(0)) std::swap(b, c);
+    const int t0 = new_tri(a, b, c);  // d below
+    const int t1 = new_tri(a, d, b);
+    const int t2 = new_tri(b, d, c);
+    const int t3 = new_tri(c, d, a);
+    tris_[sz(t0)].nb = {t1, t2, t3};
+    tris_[sz(t1)].nb = {t3, t2, t0};
+    tris_[sz(t2)].nb = {t1, t3, t0};
+    tris_[sz(t3)].nb = {t2, t1, t0};
+    for (int p : active)
+      if (p != a && p != b && p != c && p != d) assign(p, 0);
+
+    std::vector<int> visible, stack, mark, touched;
+    for (std::size_t fi = 0; fi < tris_.size(); ++fi) {
+      if (!tris_[fi].alive || tris_[fi].conflict.empty()) continue;
+      // eye: the conflict point farthest above this face
+      auto& cf = tris_[fi].conflict;
+      std::size_t best = 0;
+      T bh = height(tris_[fi].pl, cf[0]);
+      for (std::size_t i = 1; i < cf.size(); ++i) {
+        const T h = height(tris_[fi].pl, cf[i]);
+        if (h > bh) {
+          bh = h;
+          best = i;
+        }
+      }
+      const int eye = cf[best];
+      cf.erase(cf.begin() + static_cast<std::ptrdiff_t>(best));
+      // visible region: connected faces the eye is strictly above
+      for (int t : touched) mark[sz(t)] = 0;  // 0 unknown, 1 visible, 2 not visible
+      mark.resize(tris_.size(), 0);
+      touched.assign(1, static_cast<int>(fi));
+      visible.clear();
+      stack.assign(1, static_cast<int>(fi));
+      mark[fi] = 1;
+      for (;;) {
+        while (!stack.empty()) {
+          const int f = stack.back();
+          stack.pop_back();
+          visible.push_back(f);
+          for (int nbf : tris_[sz(f)].nb) {
+            if (mark[sz(nbf)] != 0) continue;
+            touched.push_back(nbf);
+            const Tri& nt = tris_[sz(nbf)];
+            const bool vis = !is_zero(nt.pl.normal) && height(nt.pl, eye) > T(0);
+            mark[sz(nbf)] = vis ? 1 : 2;
+            if (vis) stack.push_back(nbf);
+          }
+        }
+        // A zero-area triangle has no plane: it joins the visible region when
+        // two of its neighbours are visible (so it never becomes an island).
+        for (int f : touched) {
+          if (mark[sz(f)] != 2 || !is_zero(tris_[sz(f)].pl.normal)) continue;
+          int nvis = 0;
+          for (int nbf : tris_[sz(f)].nb) nvis += mark[sz(nbf)] == 1;
+          if (nvis >= 2) {
+            mark[sz(f)] = 1;
+            stack.push_back(f);
+          }
+        }
+        if (stack.empty()) break;
+      }
+      // horizon: directed edges from visible to non-visible faces, as a cycle
+      std::unordered_map<int, std::pair<int, int>> next;  // from -> (to, outside face)
+      bool simple = true;
+      for (int f : visible) {
+        const Tri& t = tris_[sz(f)];
+        for (int i = 0; i < 3; ++i) {
+          if (mark[sz(t.nb[sz(i)])] == 1) continue;
+          if (!next.emplace(t.v[sz(i)], std::make_pair(t.v[sz((i + 1) % 3)], t.nb[sz(i)])).second)
+            simple = false;
+        }
+      }
+      std::vector<std::array<int, 3>> horizon;  // (from, to, outside)
+      if (simple && !next.empty()) {
+        const int start = next.begin()->first;
+        int cur = start;
+        do {
+          const auto it = next.find(cur);
+          if (it == next.end()) {
+            simple = false;
+            break;
+          }
+          horizon.push_back({cur, it->second.first, it->second.second});
+          cur = it->second.first;
+        } while (cur != start && horizon.size() <= next.size());
+        if (horizon.size() != next.size()) simple = false;
+      }
+      if (!simple) {
+        if constexpr (exact) throw std::logic_error("convex_hull: non-simple horizon (a bug)");
+        // Float only: rounding made the visible region not a disk.  The eye
+        // is then nearly on the hull; drop it (it is re-checked at the end).
+        continue;
+      }
+      // cone the horizon to the eye
+      const int first_new = static_cast<int>(tris_.size());
+      const int nh = static_cast<int>(horizon.size());
+      for (int j = 0; j < nh; ++j) new_tri(horizon[sz(j)][0], horizon[sz(j)][1], eye);
+      for (int j = 0; j < nh; ++j) {
+        Tri& t = tris_[sz(first_new + j)];
+        const int out = horizon[sz(j)][2];
+        t.nb[0] = out;
+        t.nb[1] = first_new + (j + 1) % nh;
+        t.nb[2] = first_new + (j + nh - 1) % nh;
+        Tri& o = tris_[sz(out)];
+        o.nb[sz(edge_index(o, horizon[sz(j)][1]))] = first_new + j;
+      }
+      // re-distribute the visible faces' conflict points
+      for (int f : visible) {
+        Tri& t = tris_[sz(f)];
+        t.alive = false;
+        std::vector<int> pts = std::move(t.conflict);
+        t.conflict.clear();
+        for (int p : pts) assign(p, first_new);
+      }
+    }
+    return merge_and_build(reject);
+  }
+
+  // ---- merging triangles into faces -------------------------------------------
+
+  struct Group {
+    std::vector<int> verts;  // sorted welded point indices
+    Vec3<T> area;            // float: sum of triangle cross products
+    Plane<T> pl;
+    bool degenerate = false;  // a single zero-area triangle
+  };
+
+  // |(v1 - v0) x (v2 - v0)|^2 / 4, from the edge lengths (Heron), accurate
+  // for thin triangles where the cross product is not.
+  T tri_area2(const Tri& t) const {
+    T a = length(Vec3<T>(Q(t.v[1]) - Q(t.v[0])));
+    T b = length(Vec3<T>(Q(t.v[2]) - Q(t.v[1])));
+    T c = length(Vec3<T>(Q(t.v[0]) - Q(t.v[2])));
+    if (a < b) std::swap(a, b);
+    if (b < c) std::swap(b, c);
+    if (a < b) std::swap(a, b);
+    // a >= b >= c: Kahan's stable form of Heron's formula
+    const T p = (a + (b + c)) * (c - (a - b)) * (c + (a - b)) * (a + (b - c));
+    return p > T(0) ? T(p / T(16)) : T(0);
+  }
+
+  int find(int x) {
+    while (parent_[sz(x)] != x) {
+      parent_[sz(x)] = parent_[sz(parent_[sz(x)])];
+      x = parent_[sz(x)];
+    }
+    return x;
+  }
+
+  void refit(Group& g) {
+    if constexpr (!exact) {
+      Vec3<T> n = g.area;
+      const T len = length(n);
+      if (len > T(0)) n = Vec3<T>(n[0] / len, n[1] / len, n[2] / len);
+      T off(0);
+      for (int v : g.verts) off = off + dot(n, Q(v));
+      off = off / static_cast<T>(g.verts.size());
+      g.pl = Plane<T>{n, off};
+    }
+  }
+
+  // Should groups ga and gb (adjacent, non-degenerate) be one face?
+  bool coplanar(const Group& ga, const Group& gb) const {
+    if constexpr (exact) {
+      return is_zero(cross(ga.pl.normal, gb.pl.normal)) && dot(ga.pl.normal, gb.pl.normal) > T(0);
+    } else {
+      // Either face sees every vertex of the other (not shared with it) less
+      // than eps below its plane.  (Either: a thin face's own plane is poorly
+      // determined, so the other face's plane may be the one that tells.)
+      auto close = [&](const Group& g, const Group& h) {
+        for (int v : h.verts) {
+          if (std::binary_search(g.verts.begin(), g.verts.end(), v)) continue;
+          if (!(height(g.pl, v) > -eps_)) return false;
+        }
+        return true;
+      };
+      return close(ga, gb) || close(gb, ga);
+    }
+  }
+
+  void unite(int x, int y) {
+    x = find(x);
+    y = find(y);
+    if (x == y) return;
+    Group& gx = groups_[sz(x)];
+    Group& gy = groups_[sz(y)];
+    std::vector<int> vs;
+    std::set_union(gx.verts.begin(), gx.verts.end(), gy.verts.begin(), gy.verts.end(),
+                   std::back_inserter(vs));
+    gx.verts = std::move(vs);
+    if constexpr (!exact) gx.area = Vec3<T>(gx.area + gy.area);
+    if (gx.degenerate && !gy.degenerate) gx.pl = gy.pl;
+    gx.degenerate = gx.degenerate && gy.degenerate;
+    parent_[sz(y)] = x;
+    refit(gx);
+  }
+
+  std::optional<ConvexPolyhedron<T>> merge_and_build(std::vector<int>& reject) {
+    std::vector<int> live;
+    for (std::size_t f = 0; f < tris_.size(); ++f)
+      if (tris_[f].alive) live.push_back(static_cast<int>(f));
+    parent_.assign(tris_.size(), 0);
+    std::iota(parent_.begin(), parent_.end(), 0);
+    groups_.assign(tris_.size(), Group{});
+    for (int f : live) {
+      const Tri& t = tris_[sz(f)];
+      Group& g = groups_[sz(f)];
+      g.verts = {t.v[0], t.v[1], t.v[2]};
+      std::sort(g.verts.begin(), g.verts.end());
+      g.pl = t.pl;
+      g.degenerate = is_zero(t.pl.normal);
+      if constexpr (!exact) g.area = T(2) * number_traits<T>::sqrt(tri_area2(t)) * t.pl.normal;
+    }
+    // Plane merges until nothing changes.
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (int f : live) {
+        for (int i = 0; i < 3; ++i) {
+          const int x = find(f), y = find(tris_[sz(f)].nb[sz(i)]);
+          if (x == y || groups_[sz(x)].degenerate || groups_[sz(y)].degenerate) continue;
+          if (coplanar(groups_[sz(x)], groups_[sz(y)])) {
+            unite(x, y);
+            changed = true;
+          }
+        }
+      }
+    }
+    // Zero-area triangles join the face across their longest edge.
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (int f : live) {
+        if (!groups_[sz(find(f))].degenerate) continue;
+        const Tri& t = tris_[sz(f)];
+        int li = 0;
+        T ll(-1);
+        for (int i = 0; i < 3; ++i) {
+          const T l = squared_norm(Vec3<T>(Q(t.v[sz((i + 1) % 3)]) - Q(t.v[sz(i)])));
+          if (l > ll) {
+            ll = l;
+            li = i;
+          }
+        }
+        int target = find(t.nb[sz(li)]);
+        if (groups_[sz(target)].degenerate) {
+          for (int i = 0; i < 3; ++i)
+            if (!groups_[sz(find(t.nb[sz(i)]))].degenerate) target = find(t.nb[sz(i)]);
+        }
+        if (!groups_[sz(target)].degenerate) {
+          unite(target, find(f));
+          changed = true;
+        }
+      }
+    }
+    for (int f : live) {
+      if (groups_[sz(find(f))].degenerate)
+        throw std::logic_error("convex_hull: a zero-area face could not be merged (a bug)");
+    }
+    return extract(live, reject);
+  }
+
+  // ---- loops, clean-up, output ---------------------------------------------------
+
+  std::optional<ConvexPolyhedron<T>> extract(const std::vector<int>& live, std::vector<int>& reject) {
+    // boundary edges of each group
+    std::unordered_map<int, std::vector<std::pair<int, int>>> bnd;  // group -> (from, to)
+    std::vector<int> roots;
+    for (int f : live) {
+      const int g = find(f);
+      auto [it, fresh] = bnd.try_emplace(g);
+      if (fresh) roots.push_back(g);
+      const Tri& t = tris_[sz(f)];
+      for (int i = 0; i < 3; ++i)
+        if (find(t.nb[sz(i)]) != g) it->second.emplace_back(t.v[sz(i)], t.v[sz((i + 1) % 3)]);
+    }
+    std::sort(roots.begin(), roots.end());
+    bool collapsed = roots.size() < 4;
+    for (int g : roots) collapsed = collapsed || bnd[g].empty();
+    if (collapsed) {
+      // Float only: everything merged into fewer than 4 faces, so the set is
+      // flat within the merge tolerance although the simplex test did not
+      // see it: build the flat polygon instead.
+      if constexpr (exact) throw std::logic_error("convex_hull: exact hull collapsed (a bug)");
+      return polygon(active_, base_normal_, reject);
+    }
+    std::vector<std::vector<int>> loops;
+    std::vector<int> loop_group;
+    for (int g : roots) {
+      const auto& edges = bnd[g];
+      std::unordered_map<int, int> next;
+      for (const auto& [u, v] : edges) {
+        if (!next.emplace(u, v).second) reject.push_back(u);  // pinched loop
+      }
+      if (!reject.empty()) continue;
+      // the loop through the first edge; any other edges form extra loops
+      std::vector<int> loop;
+      const int start = edges.front().first;
+      int cur = start;
+      do {
+        loop.push_back(cur);
+        cur = next.at(cur);
+      } while (cur != start && loop.size() <= edges.size());
+      if (loop.size() != edges.size()) {
+        // a face with a hole: reject the vertices of the other loops
+        std::vector<int> sorted = loop;
+        std::sort(sorted.begin(), sorted.end());
+        for (const auto& e : edges)
+          if (!std::binary_search(sorted.begin(), sorted.end(), e.first)) reject.push_back(e.first);
+        continue;
+      }
+      loops.push_back(std::move(loop));
+      loop_group.push_back(g);
+    }
+    if (!reject.empty()) {
+      if constexpr (exact) throw std::logic_error("convex_hull: a merged face is not a disk (a bug)");
+      return std::nullopt;
+    }
+    // Vertices on only two faces lie in the middle of an edge: drop them.
+    std::unordered_map<int, int> degree;
+    for (const auto& l : loops)
+      for (int v : l) ++degree[v];
+    for (auto& l : loops) {
+      std::vector<int> kept;
+      for (int v : l)
+        if (degree[v] >= 3) kept.push_back(v);
+      l = std::move(kept);
+    }
+    // Every corner strictly convex; otherwise reject the middle of the three
+    // points (it is within tolerance of the segment of the other two).
+    for (std::size_t li = 0; li < loops.size(); ++li) {
+      const auto& l = loops[li];
+      const Group& g = groups_[sz(loop_group[li])];
+      const std::size_t n = l.size();
+      if (n < 3) {
+        for (int v : l) reject.push_back(v);
+        if (reject.empty()) throw std::logic_error("convex_hull: empty face (a bug)");
+        continue;
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        const int pa = l[(i + n - 1) % n], pb = l[i], pc = l[(i + 1) % n];
+        const Vec3<T> e1(Q(pb) - Q(pa)), e2(Q(pc) - Q(pb));
+        const T turn = dot(g.pl.normal, cross(e1, e2));
+        bool ok;
+        if constexpr (exact) {
+          ok = turn > T(0);
+          if (turn < T(0) && !is_zero(cross(e1, e2)))
+            throw std::logic_error("convex_hull: reflex corner in an exact hull (a bug)");
+        } else {
+          ok = turn > eps_ * std::max(length(e1), length(e2));
+        }
+        if (ok) continue;
+        // the point opposite the longest side of triangle (pa, pb, pc)
+        const T lab = squared_norm(e1), lbc = squared_norm(e2),
+                lca = squared_norm(Vec3<T>(Q(pa) - Q(pc)));
+        int mid = pb;
+        if (lab >= lbc && lab >= lca) mid = pc;
+        if (lbc >= lab && lbc >= lca) mid = pa;
+        if (lca >= lab && lca >= lbc) mid = pb;
+        reject.push_back(mid);
+      }
+    }
+    if (!reject.empty()) {
+      std::sort(reject.begin(), reject.end());
+      reject.erase(std::unique(reject.begin(), reject.end()), reject.end());
+      return std::nullopt;
+    }
+    if constexpr (!exact) {
+      for (auto& l : loops) start_at_best_apex(l);
+      prevalidate(loops, reject);
+      if (!reject.empty()) return std::nullopt;
+    }
+    // Output: compact vertex numbering, original input coordinates.
+    std::unordered_map<int, int> index;
+    std::vector<Vec3<T>> verts;
+    std::vector<std::vector<int>> faces;
+    for (const auto& l : loops) {
+      std::vector<int> face;
+      for (int v : l) {
+        auto [it, fresh] = index.try_emplace(v, static_cast<int>(verts.size()));
+        if (fresh) verts.push_back(in_[sz(pts_[sz(v)])]);
+        face.push_back(it->second);
+      }
+      faces.push_back(std::move(face));
+    }
+    return finish([&] { return ConvexPolyhedron<T>::from_faces(std::move(verts), faces); });
+  }
+
+  // ---- float only: check what ConvexPolyhedron validation will check ----------
+  //
+  // Validation defines each face's plane by a vertex triple (the largest
+  // triangle (0, j, k) of the loop, see convex_polyhedron.hpp) on the original
+  // coordinates.  A face that is small or thin has a poorly determined plane,
+  // and rounding can then put a far vertex above it.  Such faces are found
+  // here, with half the validation tolerances, and the face's least
+  // significant vertex (the one nearest the line through its neighbours) is
+  // rejected, so the builder never hands validation a hull it would refuse.
+
+  const Vec3<T>& X(int v) const { return in_[sz(pts_[sz(v)])]; }
+
+  static std::array<int, 3> plane_triple(const std::vector<Vec3<T>>& pts) {
+    const int n = static_cast<int>(pts.size());
+    std::array<int, 3> best{0, 1, 2};
+    if (n <= 16) {
+      T best_area(-1);
+      for (int j = 1; j + 1 < n; ++j)
+        for (int k = j + 1; k < n; ++k) {
+          const T a = squared_norm(cross(Vec3<T>(pts[sz(j)] - pts[0]), Vec3<T>(pts[sz(k)] - pts[0])));
+          if (a > best_area) {
+            best_area = a;
+            best = {0, j, k};
+          }
+        }
+    } else {
+      best = {0, n / 3, (2 * n) / 3};
+    }
+    return best;
+  }
+
+  // ConvexPolyhedron takes each face's plane from a triangle with apex at
+  // the loop's first vertex, as (v_j - v_0) x (v_k - v_0).  In floating point
+  // that cross product loses relative accuracy u / sin(angle at v_0), which
+  // is catastrophic for a thin face whose first vertex is at a sharp corner.
+  // Start each loop at its corner with the largest sine.
+  void start_at_best_apex(std::vector<int>& l) const {
+    const std::size_t n = l.size();
+    std::size_t best = 0;
+    T best_s(-1);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3<T> e1(X(l[(i + n - 1) % n]) - X(l[i])), e2(X(l[(i + 1) % n]) - X(l[i]));
+      const T d = length(e1) * length(e2);
+      const T sine = d > T(0) ? T(length(cross(e1, e2)) / d) : T(0);
+      if (sine > best_s) {
+        best_s = sine;
+        best = i;
+      }
+    }
+    std::rotate(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(best), l.end());
+  }
+
+  int least_significant(const std::vector<int>& l) const {
+    const std::size_t n = l.size();
+    int best = l[0];
+    T best_d(-1);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3<T> e(Q(l[(i + 1) % n]) - Q(l[(i + n - 1) % n]));
+      const Vec3<T> c = cross(e, Vec3<T>(Q(l[i]) - Q(l[(i + n - 1) % n])));
+      const T el = length(e);
+      const T d = el > T(0) ? T(length(c) / el) : T(0);
+      if (best_d < T(0) || d < best_d) {
+        best_d = d;
+        best = l[i];
+      }
+    }
+    return best;
+  }
+
+  void prevalidate(const std::vector<std::vector<int>>& loops, std::vector<int>& reject,
+                   bool flat = false) {
+    std::vector<int> used;
+    for (const auto& l : loops) used.insert(used.end(), l.begin(), l.end());
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    Vec3<T> lo = X(used[0]), hi = X(used[0]);
+    double max_abs = 0;
+    for (int v : used)
+      for (int c = 0; c < 3; ++c) {
+        if (X(v)[c] < lo[c]) lo[c] = X(v)[c];
+        if (X(v)[c] > hi[c]) hi[c] = X(v)[c];
+        max_abs = std::max(max_abs, std::abs(to_double(X(v)[c])));
+      }
+    double d2 = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double w = to_double(T(hi[c] - lo[c]));
+      d2 += w * w;
+    }
+    const double ext = std::sqrt(d2);
+    const T plan_tol = static_cast<T>(0.5 * Tolerances<T>::planarity * ext);
+    const T conv_tol = static_cast<T>(0.5 * Tolerances<T>::convexity * ext);
+    const T copl_tol = static_cast<T>(2.0 * Tolerances<T>::coplanar / 4 * ext);
+    std::vector<Plane<T>> planes;
+    std::map<std::pair<int, int>, int> edge_face;
+    for (std::size_t f = 0; f < loops.size(); ++f) {
+      const auto& l = loops[f];
+      for (std::size_t i = 0; i < l.size(); ++i) edge_face[{l[i], l[(i + 1) % l.size()]}] = static_cast<int>(f);
+    }
+    std::vector<char> bad(loops.size(), 0);
+    for (std::size_t f = 0; f < loops.size(); ++f) {
+      const auto& l = loops[f];
+      std::vector<Vec3<T>> pts;
+      for (int v : l) pts.push_back(X(v));
+      auto t = plane_triple(pts);
+      if (flat && f == 1) {  // the back face reuses the front triple, reversed
+        std::vector<Vec3<T>> front;
+        for (int v : loops[0]) front.push_back(X(v));
+        const auto t0 = plane_triple(front);
+        const std::size_t n = l.size();
+        // loops[1] is loops[0] reversed: position i there is n-1-i here
+        t = {static_cast<int>(n - 1 - sz(t0[0])), static_cast<int>(n - 1 - sz(t0[2])),
+             static_cast<int>(n - 1 - sz(t0[1]))};
+      }
+      const Plane<T> pl = plane_through(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]);
+      planes.push_back(pl);
+      auto h = [&](int v) { return T(dot(pl.normal, X(v)) - pl.offset); };
+      bool ok = !is_zero(pl.normal);
+      for (int v : l) ok = ok && abs_of(h(v)) <= plan_tol;
+      for (int v : used) ok = ok && h(v) <= conv_tol;
+      // corners as validation sees them: no reflex turn about this normal
+      const std::size_t n = l.size();
+      for (std::size_t i = 0; i < n && ok; ++i) {
+        const Vec3<T> ab(X(l[i]) - X(l[(i + n - 1) % n]));
+        const Vec3<T> bc(X(l[(i + 1) % n]) - X(l[i]));
+        const T lab = length(ab);
+        ok = lab > T(0) && !(dot(pl.normal, cross(ab, bc)) < -(conv_tol * lab));
+      }
+      if (!ok) bad[f] = 1;
+    }
+    for (std::size_t f = 0; f < loops.size() && !flat; ++f) {
+      if (bad[f]) continue;
+      const auto& l = loops[f];
+      for (std::size_t i = 0; i < l.size() && !bad[f]; ++i) {
+        const int g = edge_face[{l[(i + 1) % l.size()], l[i]}];
+        bool coplanar = true;
+        for (int v : loops[sz(g)])
+          coplanar = coplanar && abs_of(T(dot(planes[f].normal, X(v)) - planes[f].offset)) <= copl_tol;
+        if (coplanar) bad[loops[f].size() <= loops[sz(g)].size() ? f : sz(g)] = 1;
+      }
+    }
+    bool any = false;
+    for (std::size_t f = 0; f < loops.size(); ++f) {
+      if (!bad[f]) continue;
+      any = true;
+      reject.push_back(least_significant(loops[f]));
+    }
+    if (any && 16.0 * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::planarity * ext) {
+      throw InvalidInput(
+          ErrorCode::BadScale,
+          "convex_hull: the points are up to " + std::to_string(max_abs) +
+              " from the origin, too far for " + std::string(number_traits<T>::name) +
+              " to resolve a shape of extent " + std::to_string(ext) +
+              " within the validation tolerance; build the hull near the origin and move it "
+              "with a RigidTransform, or use double");
+    }
+    std::sort(reject.begin(), reject.end());
+    reject.erase(std::unique(reject.begin(), reject.end()), reject.end());
+  }
+
+  template <class F>
+  static std::optional<ConvexPolyhedron<T>> finish(F&& make) {
+    try {
+      return make();
+    } catch (const InvalidInput& e) {
+      throw std::logic_error(std::string("convex_hull: the hull failed validation (a bug): ") +
+                             e.what());
+    }
+  }
+
+  std::span<const Vec3<T>> in_;
+  double extent_ = 0;
+  Vec3<T> centre_;
+  T eps_, flat_, weld_;
+  std::vector<int> pts_;    // welded point -> input index
+  std::vector<Vec3<T>> q_;  // welded point, local coordinates
+  std::vector<Tri> tris_;
+  std::vector<int> parent_;
+  std::vector<int> active_;  // the points of the current build
+  Vec3<T> base_normal_;      // normal of its initial triangle
+  std::vector<Group> groups_;
+};
+
+}  // namespace hull_detail
+
+/// The convex hull of points (see the header comment for the guarantees).
+/// Throws InvalidInput: NonFinite (naming the point), TooFewPoints (< 3
+/// distinct points), Collinear, BadScale (float extent overflow).
+template <Number T>
+ConvexPolyhedron<T> convex_hull(std::span<const Vec3<T>> points) {
+  return hull_detail::Builder<T>(points).run();
+}
+
+template <Number T>
+ConvexPolyhedron<T> convex_hull(const std::vector<Vec3<T>>& points) {
+  return convex_hull<T>(std::span<const Vec3<T>>(points.data(), points.size()));
+}
+
+}  // namespace sepax
