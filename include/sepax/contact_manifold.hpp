@@ -8,9 +8,9 @@
 //   * reference face: the face that realises the axis (A's face for FaceA,
 //     B's face for FaceB);
 //   * incident face: the face of the other shape most anti-parallel to the
-//     reference normal, found by a local search that starts at the faces
-//     around the SAT's support vertex and walks to more anti-parallel
-//     neighbours (a few faces, not all of them);
+//     reference normal among the faces around the SAT's support vertex (the
+//     deepest vertex): a few faces, not all of them, and the deepest vertex
+//     is always a vertex of the incident face;
 //   * the incident face is clipped against the side planes of the reference
 //     face (Sutherland-Hodgman, clip_polygon.hpp), never against the reference
 //     face itself; the points below the reference face (separation <= margin)
@@ -119,6 +119,9 @@ struct ContactManifold {
   int incident_faces_visited = 0;
   /// Points below the reference face before the reduction.
   int candidate_points = 0;
+  /// Face contact whose clipped incident face was empty: the manifold is the
+  /// support vertex alone (a safety net; see docs/contacts.md).
+  bool support_fallback = false;
   std::vector<ContactPoint<T>> points;
   /// Filled when ManifoldOptions::record_steps is set.
   std::vector<ClipStep> clip_steps;
@@ -168,9 +171,12 @@ inline void check_index(int i, int count, const char* what) {
   }
 }
 
-/// The face of p most anti-parallel to n: maximum of -n.m/|m| over face
-/// normals m (exact comparison in squared form for rationals; ties to the
-/// lower face index).  Local search from the faces around `start_vertex`.
+/// The face of p around `start_vertex` (the support vertex) most anti-parallel
+/// to n: maximum of -n.m/|m| over those faces' normals m (exact comparison in
+/// squared form for rationals; ties to the lower face index).  Restricting the
+/// choice to the faces of the deepest vertex keeps that vertex on the incident
+/// face; the globally most anti-parallel face can lie elsewhere and miss the
+/// overlap region entirely.
 template <Number T>
 int most_antiparallel_face(const ConvexPolyhedron<T>& p, const Vec3<T>& n, int start_vertex, int& visited) {
   auto score = [&](int f) {
@@ -192,24 +198,7 @@ int most_antiparallel_face(const ConvexPolyhedron<T>& p, const Vec3<T>& n, int s
       best_s = s;
     }
   }
-  for (;;) {
-    // Neighbours: the faces around each vertex of the current face.
-    const int cur = best;
-    int h = p.face(cur).edge;
-    for (int i = 0; i < p.face(cur).count; ++i, h = p.half_edge(h).next) {
-      for (int hv : p.vertex_half_edges(p.half_edge(h).origin)) {
-        const int g = p.half_edge(hv).face;
-        if (g == cur) continue;
-        const auto s = score(g);
-        ++visited;
-        if (better(g, s, best, best_s)) {
-          best = g;
-          best_s = s;
-        }
-      }
-    }
-    if (best == cur) return best;
-  }
+  return best;
 }
 
 /// The lowest-index vertex of p deepest along -n (a support vertex), for SAT
@@ -294,26 +283,40 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   const T n2 = norm2_of(nr);
   std::vector<ContactPoint<T>> pts;
   pts.reserve(poly.size());
-  for (const auto& v : poly) {
-    const Separation<T> s{T(dot(nr, v.point) - rp.offset), n2};
-    if (!within_margin(s, margin)) continue;
-    const T k = s.num / n2;
-    const Vec3<T> proj(v.point[0] - nr[0] * k, v.point[1] - nr[1] * k, v.point[2] - nr[2] * k);
-    ContactPoint<T> c;
-    c.separation = s;
-    if (ref_is_a) {
-      c.point_a = proj;
-      c.point_b = v.point;
-      c.id = v.id;
-    } else {
-      c.point_a = v.point;
-      c.point_b = proj;
-      c.id = v.id.swapped();
+  auto keep_points = [&] {
+    for (const auto& v : poly) {
+      const Separation<T> s{T(dot(nr, v.point) - rp.offset), n2};
+      if (!within_margin(s, margin)) continue;
+      const T k = s.num / n2;
+      const Vec3<T> proj(v.point[0] - nr[0] * k, v.point[1] - nr[1] * k, v.point[2] - nr[2] * k);
+      ContactPoint<T> c;
+      c.separation = s;
+      if (ref_is_a) {
+        c.point_a = proj;
+        c.point_b = v.point;
+        c.id = v.id;
+      } else {
+        c.point_a = v.point;
+        c.point_b = proj;
+        c.id = v.id.swapped();
+      }
+      const T half = T(1) / T(2);
+      c.position = Vec3<T>((c.point_a[0] + c.point_b[0]) * half, (c.point_a[1] + c.point_b[1]) * half,
+                           (c.point_a[2] + c.point_b[2]) * half);
+      pts.push_back(c);
     }
-    const T half = T(1) / T(2);
-    c.position = Vec3<T>((c.point_a[0] + c.point_b[0]) * half, (c.point_a[1] + c.point_b[1]) * half,
-                         (c.point_a[2] + c.point_b[2]) * half);
-    pts.push_back(c);
+  };
+  keep_points();
+  if (pts.empty()) {
+    // Safety net (not seen in tests): no point of the clipped incident face is
+    // within the margin.  Report the support vertex itself, whose separation
+    // is the SAT's.
+    ClipVertex<T> v;
+    v.point = I.vertex(support);
+    v.id = ContactFeatureId{ShapeFeature::face(ref_face), ShapeFeature::vertex(support)};
+    poly.assign(1, v);
+    m.support_fallback = true;
+    keep_points();
   }
   m.candidate_points = static_cast<int>(pts.size());
   if (!opt.reduce || pts.size() <= 4) {

@@ -372,14 +372,24 @@ TEST_CASE("random overlapping pairs: brute force and Gauss map agree, moving B b
     check_invariants(a, b, m);
     CHECK(ids_of(m) == ids_of(mb));
     if (m.kind == ContactKind::Face) {
-      // the local search found the globally most anti-parallel face
+      // the incident face is the most anti-parallel of the faces around the
+      // support vertex, and the deepest point is as deep as the SAT says
       const auto& R = m.reference_shape == 0 ? a : b;
       const auto& I = m.reference_shape == 0 ? b : a;
+      const int sv = m.reference_shape == 0 ? sg.feature.b : sg.feature.a;
       const Vec3<double> n = R.plane(m.reference_face).normal;
-      int best = 0;
-      for (int f = 1; f < I.face_count(); ++f)
-        if (-n.dot(I.plane(f).normal) > -n.dot(I.plane(best).normal)) best = f;
+      int best = -1;
+      for (int h : I.vertex_half_edges(sv)) {
+        const int f = I.half_edge(h).face;
+        if (best < 0 || -n.dot(I.plane(f).normal) > -n.dot(I.plane(best).normal) ||
+            (-n.dot(I.plane(f).normal) == -n.dot(I.plane(best).normal) && f < best))
+          best = f;
+      }
       CHECK(m.incident_face == best);
+      CHECK_FALSE(m.support_fallback);
+      double deepest = 1e300;
+      for (const auto& c : m.points) deepest = std::min(deepest, to_double(c.separation));
+      CHECK(deepest == Approx(to_double(m.separation)).margin(1e-12));
     }
     const auto b2 = moved(b, Eigen::Matrix3d::Identity(), vec_to_double(m.resolving_translation()));
     CHECK(sat::gauss_map(a, b2).separation_as_double() >= -1e-9 * std::max(a.extent(), b.extent()));

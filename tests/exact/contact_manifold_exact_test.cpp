@@ -282,6 +282,10 @@ TEST_CASE("exact: random exactly-rotated overlapping pairs: exact points, depth 
     for (const auto& c : r.points)
       if (compare(c.separation, deepest->separation) < 0) deepest = &c;
     for (const auto& c : m.points) CHECK(compare(deepest->separation, c.separation) <= 0);
+    // ... and it is exactly as deep as the SAT says (the deepest vertex is on
+    // the incident face and over the reference face)
+    CHECK_FALSE(r.support_fallback);
+    CHECK(compare(deepest->separation, s.separation) == 0);
   }
   CHECK(checked >= 30);
 }
