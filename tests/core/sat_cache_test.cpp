@@ -66,8 +66,9 @@ void replay(const ConvexPolyhedron<double>& a, const ConvexPolyhedron<double>& b
         CHECK(ev->first == eo.feature);
         CHECK(compare(ev->second, eo.separation) == 0);
       }
-      // and never more than the maximum separation
-      CHECK(compare(eo.separation, fresh.separation) <= 0);
+      // and never more than the maximum separation (up to rounding: the brute
+      // force measures edge axes by projection, the O(1) form rounds differently)
+      CHECK(eo.separation_as_double() <= fresh.separation_as_double() + 1e-12);
     }
   }
   hits += eo_cache.hits;
