@@ -318,7 +318,7 @@ int audit_main(int argc, char** argv) {
     std::cerr << "sepax audit: " << e.what() << "\n";
     return 2;
   }
-  const CaseReport r = check_case(c);
+  const CaseReport r = check_case_guarded(c);
   std::cout << "\nDifferential check of this case (all configurations): ";
   if (r.unexplained_count == 0) {
     std::cout << "no unexplained disagreement\n";

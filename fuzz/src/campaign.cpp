@@ -252,7 +252,7 @@ int fuzz_main(int argc, char** argv) {
         status = 2;
         continue;
       }
-      const CaseReport r = check_case(c);
+      const CaseReport r = check_case_guarded(c);
       rep.add(c.family, r);
       if (!quiet) {
         std::cerr << p << ": " << (r.valid ? (r.unexplained_count ? "UNEXPLAINED" : "ok") : "rejected: " + r.reject_reason)
@@ -282,10 +282,19 @@ int fuzz_main(int argc, char** argv) {
     CaseReport r;
     try {
       c = generate(fam, case_seed);
-      r = check_case(c);
+      r = check_case_guarded(c);
     } catch (const InvalidInput& e) {
       r.valid = false;
       r.reject_reason = e.what();
+    } catch (const std::exception& e) {
+      // Not bad input: a library component failed (e.g. the hull builder's
+      // logic_error).  A finding, like an unexplained disagreement.
+      r = CaseReport{};
+      r.valid = true;
+      r.by_comparison["internal_error"].add(Klass::unexplained);
+      r.by_config["internal_error/" + fam].add(Klass::unexplained);
+      r.unexplained.push_back({"internal_error", fam, "-", e.what()});
+      r.unexplained_count = 1;
     }
     rep.add(fam, r);
     if (r.unexplained_count) {

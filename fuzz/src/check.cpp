@@ -15,6 +15,7 @@
 #include <sepax/sat_gauss_map.hpp>
 #include <sepax/fuzz/error_bounds.hpp>
 #include <sepax/fuzz/sat_list.hpp>
+#include <sepax/fuzz/classify.hpp>
 
 namespace sepax::fuzz {
 
@@ -32,16 +33,7 @@ const char* klass_name(Klass k) {
 bool has_robust_policy() { return SEPAX_FUZZ_HAS_ROBUST != 0; }
 bool has_traversal_sat() { return SEPAX_FUZZ_HAS_TRAVERSAL != 0; }
 
-namespace {
-
 using Q = mpq_class;
-using CPQ = ConvexPolyhedron<Q>;
-
-std::string num(double x) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", x);
-  return b;
-}
 
 // ---- exact comparisons of a rational against a separation num/sqrt(norm2) ----
 
@@ -63,7 +55,6 @@ bool within(double x, const Separation<Q>& s, double bound) {
 }
 
 // |value(s)| <= bound, exactly.
-bool small(const Separation<Q>& s, double bound) { return within(0.0, s, bound); }
 
 // |value(x) - value(y)| <= bound for two exact separations with different axis
 // norms.  Evaluated on the doubles nearest to each value: each is within a
@@ -76,6 +67,44 @@ bool close(const Separation<Q>& x, const Separation<Q>& y, double bound) {
   const double a = sepax::to_double(x), b = sepax::to_double(y);
   const double slack = 0x1p-50 * (std::abs(a) + std::abs(b));
   return std::abs(a - b) <= bound + slack;
+}
+
+
+Klass classify_sign(int float_sign, const ExactSep& exact, double bound, bool exact_decisions) {
+  const int es = sign(exact);
+  if (float_sign == es) return Klass::agree;
+  if (exact_decisions) return Klass::unexplained;
+  if (es == 0) return Klass::exact_zero;
+  return within(0.0, exact, bound) ? Klass::explained : Klass::unexplained;
+}
+
+Klass classify_overlap(bool float_overlap, bool exact_overlap, const ExactSep& exact_max, double bound,
+                       bool exact_decisions) {
+  if (float_overlap == exact_overlap) return Klass::agree;
+  if (exact_decisions) return Klass::unexplained;
+  if (sign(exact_max) == 0) return Klass::exact_zero;
+  return within(0.0, exact_max, bound) ? Klass::explained : Klass::unexplained;
+}
+
+Klass classify_separation(double sf, const ExactSep& exact_max, bool same_axis, double bf, double be,
+                          bool exact_decisions) {
+  if (cmp_rational_sep(mpq_class(sf), exact_max) == 0) return Klass::agree;
+  if (same_axis) {
+    if (!within(sf, exact_max, bf)) return Klass::unexplained;
+    return sign(exact_max) == 0 ? Klass::exact_zero : Klass::explained;
+  }
+  if (exact_decisions) return Klass::unexplained;
+  return within(sf, exact_max, bf + be) ? Klass::tie : Klass::unexplained;
+}
+
+namespace {
+
+using CPQ = ConvexPolyhedron<Q>;
+
+std::string num(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
 }
 
 // ---- the exact reference ----
@@ -243,16 +272,15 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
           const Vec3<F> nf = b_normal ? B.plane(face).normal : A.plane(face).normal;
           const Vec3<F> df = b_normal ? A.edge_direction(ea) : B.edge_direction(eb);
           const double bnd = bounds::arc_bound<F>(nf, df, (b_normal ? S.deltaB : S.deltaA)[static_cast<std::size_t>(face)]);
-          Klass k2;
-          if (sign_of(te) == 0) k2 = exact_decisions ? Klass::unexplained : Klass::exact_zero;
-          else if (!exact_decisions && small(Separation<Q>{te, squared_norm(Ne)}, bnd)) k2 = Klass::explained;
-          else k2 = Klass::unexplained;
+          // adc and bdc are negated dot products (sat_kernel.hpp)
+          const Q signed_te = b_normal ? te : Q(-te);
+          const Klass k2 = classify_sign(f4[i], Separation<Q>{signed_te, squared_norm(Ne)}, bnd, exact_decisions);
           worst = std::max(worst, k2);
           rec.add("arc_sign", cfg, "kernel", k2, [&] {
             std::ostringstream s;
             s << "edge pair (" << ea << "," << eb << ") " << side_name(i) << ": " << cfg << " sign " << f4[i]
-              << " (value " << num(double(dot(nf, df))) << "), exact sign " << e4[i] << " (value "
-              << num(te.get_d() / std::sqrt(squared_norm(Ne).get_d())) << "), forward error bound "
+              << " (value " << num((b_normal ? 1.0 : -1.0) * double(dot(nf, df))) << "), exact sign " << e4[i] << " (value "
+              << num(signed_te.get_d() / std::sqrt(squared_norm(Ne).get_d())) << "), forward error bound "
               << num(bnd);
             return s.str();
           });
@@ -279,7 +307,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
   const Separation<Q>& se = E.ref.separation;
   for (Sat sat : all_sats()) {
     if (sat == Sat::brute_force &&
-        static_cast<double>(EA) * EB * (A.vertex_count() + B.vertex_count()) > 2e8)
+        static_cast<double>(EA) * EB * (A.vertex_count() + B.vertex_count()) > 2e7)
       continue;
     const SatResult<F> r = run_sat<Policy>(sat, A, B);
     rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
@@ -299,13 +327,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
       };
     };
     // overlap verdict
-    Klass ko = Klass::agree;
-    if (r.overlap != E.ref.overlap) {
-      if (exact_decisions) ko = Klass::unexplained;
-      else if (sign(se) == 0) ko = Klass::exact_zero;
-      else if (small(se, bf + be)) ko = Klass::explained;
-      else ko = Klass::unexplained;
-    }
+    const Klass ko = classify_overlap(r.overlap, E.ref.overlap, se, bf + be, exact_decisions);
     rec.add("overlap", cfg, sat_name(sat), ko, describe("overlap verdict differs"));
     // feature
     Klass kf = Klass::agree;
@@ -324,11 +346,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     }
     rec.add("feature", cfg, sat_name(sat), kf, describe("feature differs"));
     // separation value
-    Klass ks;
-    if (cmp_rational_sep(Q(sf), se) == 0) ks = Klass::agree;
-    else if (same_axis(ff, fe) && within(sf, se, bf)) ks = sign(se) == 0 ? Klass::exact_zero : Klass::explained;
-    else if (!same_axis(ff, fe) && !exact_decisions && within(sf, se, bf + be)) ks = Klass::tie;
-    else ks = Klass::unexplained;
+    const Klass ks = classify_separation(sf, se, same_axis(ff, fe), bf, be, exact_decisions);
     rec.add("separation", cfg, sat_name(sat), ks, describe("separation outside its bound"));
   }
 }
@@ -342,6 +360,9 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
   for (Sat sat : all_sats()) {
     if (skip_reference && sat == Sat::gauss_map) continue;
     if (sat == Sat::brute_force && cost > static_cast<double>(opt.exact_brute_budget)) continue;
+    if (sat == Sat::gauss_map && static_cast<double>(A.edge_count()) * B.edge_count() >
+                                     static_cast<double>(opt.exact_gauss_pair_budget))
+      continue;
     const SatResult<T> r = run_sat<policy::Plain>(sat, A, B);
     rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
     bool same = r.overlap == E.ref.overlap && r.feature == E.ref.feature;
@@ -358,6 +379,75 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
 }
 
 }  // namespace
+
+std::vector<ArcSigns> exact_arc_signs(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B) {
+  // Every float is an integer times 2^-S for a common S: scale both shapes by
+  // 2^S (exact, a power of two) and evaluate the four triple products in
+  // integers.  Signs are invariant under the positive scaling, so these are
+  // the signs PlainKernel<mpq>::arc_signs computes, without rational
+  // normalisation (gcds) -- the exact reference is the cost of the fuzzer.
+  int S = 0;
+  for (const auto* p : {&A, &B})
+    for (const auto& v : p->vertices())
+      for (int c = 0; c < 3; ++c)
+        if (v[c] != 0.0f) {
+          int e;
+          std::frexp(double(v[c]), &e);
+          S = std::max(S, 24 - e);
+        }
+  using Z = mpz_class;
+  using VZ = std::array<Z, 3>;
+  auto to_z = [&](const ConvexPolyhedron<float>& p) {
+    std::vector<VZ> out;
+    for (const auto& v : p.vertices())
+      out.push_back({Z(std::ldexp(double(v[0]), S)), Z(std::ldexp(double(v[1]), S)), Z(std::ldexp(double(v[2]), S))});
+    return out;
+  };
+  auto sub = [](const VZ& a, const VZ& b) { return VZ{Z(a[0] - b[0]), Z(a[1] - b[1]), Z(a[2] - b[2])}; };
+  auto crs = [](const VZ& a, const VZ& b) {
+    return VZ{Z(a[1] * b[2] - a[2] * b[1]), Z(a[2] * b[0] - a[0] * b[2]), Z(a[0] * b[1] - a[1] * b[0])};
+  };
+  auto normals = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
+    std::vector<VZ> out;
+    for (int f = 0; f < p.face_count(); ++f) {
+      const auto& t = p.face(f).plane_vertices;
+      out.push_back(crs(sub(v[static_cast<std::size_t>(t[1])], v[static_cast<std::size_t>(t[0])]),
+                        sub(v[static_cast<std::size_t>(t[2])], v[static_cast<std::size_t>(t[0])])));
+    }
+    return out;
+  };
+  auto dirs = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
+    std::vector<VZ> out;
+    for (int e = 0; e < p.edge_count(); ++e)
+      out.push_back(sub(v[static_cast<std::size_t>(p.edge_head(e))], v[static_cast<std::size_t>(p.edge_tail(e))]));
+    return out;
+  };
+  const auto va = to_z(A), vb = to_z(B);
+  const auto na = normals(A, va), nb = normals(B, vb);
+  const auto da = dirs(A, va), db = dirs(B, vb);
+  Z acc;
+  auto dsign = [&](const VZ& n, const VZ& d) {
+    mpz_mul(acc.get_mpz_t(), n[0].get_mpz_t(), d[0].get_mpz_t());
+    mpz_addmul(acc.get_mpz_t(), n[1].get_mpz_t(), d[1].get_mpz_t());
+    mpz_addmul(acc.get_mpz_t(), n[2].get_mpz_t(), d[2].get_mpz_t());
+    return mpz_sgn(acc.get_mpz_t());
+  };
+  std::vector<ArcSigns> out;
+  out.reserve(static_cast<std::size_t>(A.edge_count()) * static_cast<std::size_t>(B.edge_count()));
+  for (int ea = 0; ea < A.edge_count(); ++ea) {
+    const VZ& a0 = na[static_cast<std::size_t>(A.edge_face(ea, 0))];
+    const VZ& a1 = na[static_cast<std::size_t>(A.edge_face(ea, 1))];
+    for (int eb = 0; eb < B.edge_count(); ++eb) {
+      ArcSigns s;
+      s.cba = dsign(nb[static_cast<std::size_t>(B.edge_face(eb, 0))], da[static_cast<std::size_t>(ea)]);
+      s.dba = dsign(nb[static_cast<std::size_t>(B.edge_face(eb, 1))], da[static_cast<std::size_t>(ea)]);
+      s.adc = -dsign(a0, db[static_cast<std::size_t>(eb)]);
+      s.bdc = -dsign(a1, db[static_cast<std::size_t>(eb)]);
+      out.push_back(s);
+    }
+  }
+  return out;
+}
 
 CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   CaseReport rep;
@@ -396,9 +486,7 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
     E.fqB.push_back(E.k->face_query_b(f));
     E.nlenB.push_back(bounds::sqrt_lower(squared_norm(E.B.plane(f).normal).get_d()));
   }
-  E.arcs.reserve(static_cast<std::size_t>(E.A.edge_count()) * static_cast<std::size_t>(E.B.edge_count()));
-  for (int ea = 0; ea < E.A.edge_count(); ++ea)
-    for (int eb = 0; eb < E.B.edge_count(); ++eb) E.arcs.push_back(E.k->arc_signs(ea, eb));
+  E.arcs = exact_arc_signs(Af, Bf);
   E.ref = run_sat<policy::Plain>(Sat::gauss_map, E.A, E.B);
   rep.configs_run.push_back("mpq/gauss_map");
 
@@ -418,6 +506,22 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, rec);
 #endif
   return rep;
+}
+
+CaseReport check_case_guarded(const FuzzCase& c, const CheckOptions& opt) {
+  try {
+    return check_case(c, opt);
+  } catch (const std::exception& e) {
+    // A library component threw on valid input (InvalidInput is caught inside
+    // check_case as a rejection): a finding like an unexplained disagreement.
+    CaseReport r;
+    r.valid = true;
+    r.by_comparison["internal_error"].add(Klass::unexplained);
+    r.by_config["internal_error/-"].add(Klass::unexplained);
+    r.unexplained.push_back({"internal_error", "-", "-", std::string("exception: ") + e.what()});
+    r.unexplained_count = 1;
+    return r;
+  }
 }
 
 }  // namespace sepax::fuzz

@@ -40,7 +40,9 @@
 #include <string>
 #include <vector>
 
+#include <sepax/convex_polyhedron.hpp>
 #include <sepax/fuzz/case.hpp>
+#include <sepax/sat_kernel.hpp>
 
 namespace sepax::fuzz {
 
@@ -83,17 +85,28 @@ struct CaseReport {
 struct CheckOptions {
   /// Exact brute force / gmpq runs only when E_A*E_B*(V_A+V_B) is at most this
   /// (they are O(n^3) in rational arithmetic).
-  std::int64_t exact_brute_budget = 4'000'000;
-  /// gmpq (a second rational type) only when E_A*E_B is at most this.
-  std::int64_t gmpq_pair_budget = 40'000;
+  std::int64_t exact_brute_budget = 100'000;
+  /// Exact Gauss maps other than the mpq reference (epeck) only when E_A*E_B
+  /// is at most this; gmpq only when E_A*E_B is at most gmpq_pair_budget.
+  std::int64_t exact_gauss_pair_budget = 60'000;
+  std::int64_t gmpq_pair_budget = 10'000;
   /// Keep at most this many Finding records per comparison (all are counted).
   int max_findings = 8;
 };
+
+/// The four arc-test signs of every edge pair (index ea * E_B + eb), exactly,
+/// from the float coordinates scaled to integers (the fuzzer's reference for
+/// the arc_sign comparison; equal to PlainKernel<mpq>::arc_signs).
+std::vector<ArcSigns> exact_arc_signs(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B);
 
 /// Robust policy and traversal SAT availability (compiled in or not).
 bool has_robust_policy();
 bool has_traversal_sat();
 
 CaseReport check_case(const FuzzCase& c, const CheckOptions& opt = {});
+
+/// check_case, with any exception other than the rejection of invalid shapes
+/// (e.g. a library logic_error) turned into an "internal_error" finding.
+CaseReport check_case_guarded(const FuzzCase& c, const CheckOptions& opt = {});
 
 }  // namespace sepax::fuzz

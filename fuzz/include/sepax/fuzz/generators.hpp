@@ -47,9 +47,8 @@ ShapeSpec builtin_shape(const std::string& name);
 /// round to float.
 ShapeSpec posed(const ShapeSpec& s, const double t[3], const double q[4]);
 
-/// Hull of a point set (CGAL, exact), as a triangulated ShapeSpec; the points
-/// are rounded to float first.  Throws InvalidInput when the points are
-/// coplanar or fewer than 4.
+/// Hull of a point set (sepax::convex_hull<float> on the points rounded to
+/// float).  Throws InvalidInput for degenerate point sets.
 ShapeSpec hull_of(std::vector<Vec3<double>> points);
 
 }  // namespace sepax::fuzz

@@ -1,0 +1,45 @@
+// sepax/fuzz/classify.hpp
+//
+// The classification rules of the checking core (check.hpp), exposed so they
+// can be tested on synthetic disagreements.  Exact values are Separation<mpq>
+// (num / sqrt(norm2), see separation.hpp); float values are doubles (a float
+// converts exactly); bounds come from error_bounds.hpp.
+#pragma once
+
+#include <gmpxx.h>
+
+#include <sepax/fuzz/check.hpp>
+#include <sepax/robust/number_types.hpp>
+#include <sepax/separation.hpp>
+
+namespace sepax::fuzz {
+
+using ExactSep = Separation<mpq_class>;
+
+/// sign(r - value(s)), exactly.
+int cmp_rational_sep(const mpq_class& r, const ExactSep& s);
+/// |x - value(s)| <= bound, exactly (bound as the rational value of a double;
+/// an infinite bound always holds).
+bool within(double x, const ExactSep& s, double bound);
+/// |value(x) - value(y)| <= bound; equal values always hold.  Decided on the
+/// nearest doubles widened by their conversion error (classification only).
+bool close(const ExactSep& x, const ExactSep& y, double bound);
+
+/// One sign a float configuration decided (float_sign) against the exact
+/// quantity: agree / exact_zero / explained (|exact| <= bound) / unexplained.
+/// exact_decisions: the configuration claims exact signs (robust policy): any
+/// difference is unexplained.
+Klass classify_sign(int float_sign, const ExactSep& exact, double bound, bool exact_decisions);
+
+/// Overlap verdicts: a difference is exact_zero when the exact maximum
+/// separation is exactly 0, explained when it is within `bound` of 0.
+Klass classify_overlap(bool float_overlap, bool exact_overlap, const ExactSep& exact_max, double bound,
+                       bool exact_decisions);
+
+/// The reported separation sf against the exact optimum.  same_axis: the float
+/// chose the exact optimum's axis (its bound is bf); otherwise a different
+/// feature, and the combined bound bf + be applies (classified as a tie).
+Klass classify_separation(double sf, const ExactSep& exact_max, bool same_axis, double bf, double be,
+                          bool exact_decisions);
+
+}  // namespace sepax::fuzz
