@@ -6,6 +6,7 @@
 #include <random>
 
 #include <sepax/contact_manifold.hpp>
+#include <sepax/manifold_compare.hpp>
 #include <sepax/sat_brute_force.hpp>
 #include <sepax/sat_gauss_map.hpp>
 #include <sepax/shapes.hpp>
@@ -89,7 +90,7 @@ ConvexPolyhedron<T> wedge() {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("exact: box resting on a box", "[contact][exact]", mpq_class, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("exact: box resting on a box", "[contact][exact]", mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
   using T = TestType;
   const auto a = shapes::cube<T>(1.0);
   const auto b = translated(shapes::cube<T>(0.5), Vec3<T>(q<T>(1, 10), q<T>(-1, 5), q<T>(7, 5)));
@@ -321,8 +322,13 @@ TEST_CASE("exact vs double on the same random overlapping pairs", "[contact][exa
     CHECK(md.incident_face == mq.incident_face);
     CHECK(md.candidate_points == mq.candidate_points);
     REQUIRE(md.size() == mq.size());
-    const double ext = std::max(a.extent(), b.extent());
     // the deepest point is the same, with the same depth
+    const double ext = std::max(a.extent(), b.extent());
+    const auto diff = compare_manifolds(md, mq);
+    CHECK(diff.same_kind);
+    CHECK(diff.same_faces);
+    CHECK(diff.same_deepest);
+    CHECK(diff.deepest_depth_error <= 1e-12 * ext);
     CHECK(md.points[0].id == mq.points[0].id);
     CHECK(std::abs(to_double(md.points[0].separation) - to_double(mq.points[0].separation)) <= 1e-12 * ext);
     bool same = true;
