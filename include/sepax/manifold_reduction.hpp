@@ -52,22 +52,25 @@ std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const
   auto pick = [&](auto&& value, auto&& admissible, const T& floor, const T& tol) {
     bool any = false;
     T best(0);
-    std::vector<T> vals(static_cast<std::size_t>(n), T(0));
+    int best_i = -1;
     for (int i = 0; i < n; ++i) {
       if (!admissible(i)) continue;
-      vals[static_cast<std::size_t>(i)] = value(i);
-      const T& v = vals[static_cast<std::size_t>(i)];
+      const T v = value(i);
       if (v > floor && (!any || v > best)) {
         best = v;
+        best_i = i;
         any = true;
       }
     }
     if (!any) return -1;
-    for (int i = 0; i < n; ++i) {
-      if (admissible(i) && vals[static_cast<std::size_t>(i)] > floor && vals[static_cast<std::size_t>(i)] >= best - tol)
-        return i;
+    if (!(tol > T(0))) return best_i;  // exact: the first maximum
+    // the lowest index within tol of the maximum (recomputed: no allocation)
+    for (int i = 0; i < best_i; ++i) {
+      if (!admissible(i)) continue;
+      const T v = value(i);
+      if (v > floor && v >= best - tol) return i;
     }
-    return -1;
+    return best_i;
   };
   // 1. deepest (largest -key)
   const T no_floor = [&] {
