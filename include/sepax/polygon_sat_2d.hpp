@@ -17,6 +17,8 @@
 //                   separation, with feature and separation; overlap iff it
 //                   is <= 0 (touching polygons overlap).
 //   sat2::overlap(A, B)       early-out verdict only.
+//   sat2::coplanar_sat(A, B)  two flat ConvexPolyhedra in one plane, decided
+//                   in the plane (the case the 3D SATs report as touching).
 //
 // The candidate axes of two convex polygons are the edge normals of A and of B
 // (the edge normals of A - B), so this test is complete in 2D.  Results reuse
@@ -35,10 +37,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "convex_polyhedron.hpp"
 #include "error.hpp"
 #include "feature.hpp"
 #include "number_traits.hpp"
@@ -277,6 +281,64 @@ template <Number T>
 bool overlap(const Polygon2<T>& a, const Polygon2<T>& b) {
   if (sign(face_query(a, b).separation) > 0) return false;
   return sign(face_query(b, a).separation) <= 0;
+}
+
+// ---- coplanar flat shapes ---------------------------------------------------
+//
+// The 3D SATs cannot separate two double-sided polygons lying in one plane
+// with a gap between them (their Minkowski difference is flat; see
+// docs/sat.md).  coplanar_sat decides that case in the plane: both polygons
+// are projected by dropping the coordinate in which A's normal is largest
+// (an affine bijection of the plane, exact for exact T), and the 2D SAT runs
+// there.  The verdict is exact for exact T; the separation's SIGN is
+// meaningful, its value is measured in the projected coordinates (not a 3D
+// distance).  Features use the 3D indices: face_a(a, b) means "the in-plane
+// normal of A's (undirected) edge a, support vertex b of B"; face_b likewise.
+
+/// Face 0 of a flat shape as a CCW polygon in the projection dropping
+/// coordinate `drop`; loop[i] is the 3D vertex index of polygon vertex i.
+template <Number T>
+Polygon2<T> project_flat(const ConvexPolyhedron<T>& p, int drop, std::vector<int>* loop = nullptr) {
+  std::vector<int> l = p.face_vertices(0);
+  if (!(p.plane(0).normal[drop] > T(0))) std::reverse(l.begin(), l.end());
+  const int u = (drop + 1) % 3, w = (drop + 2) % 3;
+  std::vector<Vec2<T>> v;
+  for (int i : l) v.push_back(Vec2<T>(p.vertex(i)[u], p.vertex(i)[w]));
+  if (loop) *loop = l;
+  return Polygon2<T>::from_vertices(std::move(v));
+}
+
+/// 2D SAT of two flat shapes in one plane (throws std::invalid_argument if
+/// either is not flat or they are not coplanar: exactly for exact T, within
+/// Tolerances<T>::coplanar of the extent for float T).
+template <Number T>
+Sat2Result<T> coplanar_sat(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) {
+  if (!a.is_flat() || !b.is_flat()) throw std::invalid_argument("coplanar_sat: both shapes must be flat polygons");
+  const Plane<T>& pl = a.plane(0);
+  T tol(0);
+  if constexpr (!number_traits<T>::is_exact) tol = static_cast<T>(Tolerances<T>::coplanar * std::max(a.extent(), b.extent()));
+  for (const auto& v : b.vertices())
+    if (abs_of(T(dot(pl.normal, v) - pl.offset)) > tol)
+      throw std::invalid_argument("coplanar_sat: the two polygons are not in one plane");
+  int drop = 0;
+  for (int c = 1; c < 3; ++c)
+    if (abs_of(pl.normal[c]) > abs_of(pl.normal[drop])) drop = c;
+  std::vector<int> la, lb;
+  const Polygon2<T> pa = project_flat(a, drop, &la);
+  const Polygon2<T> pb = project_flat(b, drop, &lb);
+  Sat2Result<T> r = polygon_sat(pa, pb);
+  const auto edge3 = [](const ConvexPolyhedron<T>& p, const std::vector<int>& l, int i) {
+    const int x = l[static_cast<std::size_t>(i)], y = l[static_cast<std::size_t>((i + 1) % static_cast<int>(l.size()))];
+    for (int e = 0; e < p.edge_count(); ++e)
+      if ((p.edge_tail(e) == x && p.edge_head(e) == y) || (p.edge_tail(e) == y && p.edge_head(e) == x)) return e;
+    return -1;
+  };
+  if (r.feature.type == FeatureType::FaceA) {
+    r.feature = Feature::face_a(edge3(a, la, r.feature.a), lb[static_cast<std::size_t>(r.feature.b)]);
+  } else {
+    r.feature = Feature::face_b(la[static_cast<std::size_t>(r.feature.a)], edge3(b, lb, r.feature.b));
+  }
+  return r;
 }
 
 }  // namespace sat2

@@ -2,6 +2,9 @@
 // configurations, and the projection/geometry oracles on random polygons.
 #include <catch2/catch.hpp>
 
+#include <sepax/sat_gauss_map.hpp>
+#include <sepax/shapes.hpp>
+
 #include "polygon_cases.hpp"
 
 using namespace sepax;
@@ -127,4 +130,35 @@ TEMPLATE_TEST_CASE("polygon2: SAT agrees with the projection and geometry oracle
   }
   CHECK(overlaps > n / 10);
   CHECK(overlaps < n - n / 10);
+}
+
+// The case the 3D SATs cannot decide (docs/sat.md): coplanar flat shapes.
+TEMPLATE_TEST_CASE("coplanar_sat decides coplanar polygons in their plane", "[sat2d][coplanar]", float, double) {
+  using T = TestType;
+  const auto v = [](double x, double y, double z) { return vec_from_double<T>(Vec3<double>(x, y, z)); };
+  // a tilted plane x + y + 2z = 2 (exactly representable points)
+  const auto t1 = ConvexPolyhedron<T>::polygon({v(2, 0, 0), v(0, 2, 0), v(0, 0, 1)});
+  const auto far = ConvexPolyhedron<T>::polygon({v(4, 2, -2), v(6, 0, -2), v(6, 2, -3)});  // same plane, apart
+  const auto near = ConvexPolyhedron<T>::polygon({v(1, 1, 0), v(3, 1, -1), v(1, 3, -1)});  // shares (1,1,0)
+  const auto inside = ConvexPolyhedron<T>::polygon({v(0.5, 0.5, 0.5), v(1, 0.5, 0.25), v(0.5, 1, 0.25)});
+  // (the 3D SAT says "touching" here in exact arithmetic; in float it depends on rounding)
+  const auto r = sat2::coplanar_sat(t1, far);
+  CHECK_FALSE(r.overlap);
+  CHECK(r.separation_as_double() > 0);
+  CHECK(sat2::coplanar_sat(t1, near).overlap);
+  CHECK(sat2::coplanar_sat(t1, near).separation_as_double() == 0.0);  // touching at a vertex
+  CHECK(sat2::coplanar_sat(t1, inside).overlap);
+  CHECK(sat2::coplanar_sat(inside, t1).overlap);
+  // features use 3D indices: an edge of A (or B) and a vertex of the other
+  const auto f = r.feature;
+  if (f.type == FeatureType::FaceA) {
+    CHECK(f.a >= 0);
+    CHECK(f.a < t1.edge_count());
+  } else {
+    CHECK(f.b >= 0);
+    CHECK(f.b < far.edge_count());
+  }
+  CHECK_THROWS_AS(sat2::coplanar_sat(t1, ConvexPolyhedron<T>::polygon({v(0, 0, 0), v(1, 0, 0), v(0, 1, 0)})),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(sat2::coplanar_sat(shapes::cube<T>(1.0), t1), std::invalid_argument);
 }

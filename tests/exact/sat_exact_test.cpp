@@ -6,6 +6,8 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <sepax/robust/number_types.hpp>
 
+#include <sepax/polygon_sat_2d.hpp>
+
 #include "sat_cases.hpp"
 
 using namespace sepax;
@@ -107,4 +109,25 @@ TEMPLATE_TEST_CASE("exact: coplanar separated triangles", "[sat][exact][coplanar
     CHECK_FALSE(r.overlap);
     CHECK(sign(r.separation) > 0);
   }
+}
+
+// The workaround for that limitation: decide coplanar flat shapes in their plane.
+TEMPLATE_TEST_CASE("exact: coplanar_sat separates what the 3D SAT reports as touching", "[sat][exact][coplanar]",
+                   mpq_class, CGAL::Epeck::FT) {
+  using T = TestType;
+  const auto c = coplanar_separated_triangles<T>();
+  const auto r3 = sat::gauss_map(c.a, c.b);
+  CHECK(r3.overlap);
+  CHECK(sign(r3.separation) == 0);
+  const auto r2 = sat2::coplanar_sat(c.a, c.b);
+  CHECK_FALSE(r2.overlap);
+  CHECK(sign(r2.separation) > 0);
+  // tilted by an exact rotation: the same verdicts
+  const auto rot = quaternion_rotation<T>(1, 2, 3, 4);
+  const auto a = posed(c.a, rot, v3<T>(0.5, 0, 0)), b = posed(c.b, rot, v3<T>(0.5, 0, 0));
+  CHECK(sat::gauss_map(a, b).overlap);
+  CHECK_FALSE(sat2::coplanar_sat(a, b).overlap);
+  const auto touching = posed(translated(c.a, v3<T>(4, 0, 0)), rot, v3<T>(0.5, 0, 0));  // shares the vertex (2,-2,0)
+  CHECK(sat2::coplanar_sat(a, touching).overlap);
+  CHECK(sign(sat2::coplanar_sat(a, touching).separation) == 0);
 }
