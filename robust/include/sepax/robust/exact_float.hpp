@@ -23,6 +23,13 @@
 
 #include <sepax/vec3.hpp>
 
+/// Marks the exact (rare) paths so that they stay out of the inlined fast paths.
+#if defined(__GNUC__) || defined(__clang__)
+#define SEPAX_ROBUST_COLD [[gnu::noinline, gnu::cold]]
+#else
+#define SEPAX_ROBUST_COLD
+#endif
+
 namespace sepax::robust {
 
 #if defined(CGAL_HAS_MPZF)

@@ -106,7 +106,7 @@ inline int orient_filter(double a0x, double a0y, double a0z, double a1x, double 
 
 /// Stage 2 only: the exact sign, from the coordinates.
 template <class F>
-inline int orient_sign_exact(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0,
+SEPAX_ROBUST_COLD int orient_sign_exact(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0,
                              const Vec3<F>& b1, const Vec3<F>& c0, const Vec3<F>& c1) {
   const auto a = exact_diff(a1, a0);
   const auto b = exact_diff(b1, b0);

@@ -79,10 +79,14 @@ inline bool parallel_filter_maybe(const double a[3], const double b[3]) {
 
 /// Exact: (a1 - a0) x (b1 - b0) == 0, evaluated in ExactFloat only.
 template <class F>
-inline bool parallel_exact(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0, const Vec3<F>& b1) {
+SEPAX_ROBUST_COLD bool parallel_exact(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0, const Vec3<F>& b1) {
   const auto c = exact_cross(exact_diff(a1, a0), exact_diff(b1, b0));
   return exact_sign(c[0]) == 0 && exact_sign(c[1]) == 0 && exact_sign(c[2]) == 0;
 }
+
+template <class F>
+SEPAX_ROBUST_COLD bool parallel_stage2(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0,
+                                       const Vec3<F>& b1);
 
 /// Exact: (a1 - a0) x (b1 - b0) == 0 for float or double points.  `fallbacks`
 /// (if given) counts the calls the filter could not decide.
@@ -91,14 +95,25 @@ inline bool parallel(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0, co
                      std::int64_t* fallbacks = nullptr) {
   static_assert(std::is_same_v<F, float> || std::is_same_v<F, double>,
                 "parallel is for float and double coordinates");
+  const double a[3] = {static_cast<double>(a1[0]) - a0[0], static_cast<double>(a1[1]) - a0[1],
+                       static_cast<double>(a1[2]) - a0[2]};
+  const double b[3] = {static_cast<double>(b1[0]) - b0[0], static_cast<double>(b1[1]) - b0[1],
+                       static_cast<double>(b1[2]) - b0[2]};
+  if (!parallel_filter_maybe(a, b)) return false;
+  if (fallbacks) ++*fallbacks;
+  return parallel_stage2(a0, a1, b0, b1);
+}
+
+/// Stages 2 and 3 (exact).
+template <class F>
+SEPAX_ROBUST_COLD bool parallel_stage2(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0,
+                                       const Vec3<F>& b1) {
   double a[3], b[3];
   bool diffs_exact = true;
   for (int i = 0; i < 3; ++i) {
     diffs_exact &= detail::difference_is_exact(a1[i], a0[i], a[i]);
     diffs_exact &= detail::difference_is_exact(b1[i], b0[i], b[i]);
   }
-  if (!parallel_filter_maybe(a, b)) return false;
-  if (fallbacks) ++*fallbacks;
   if (diffs_exact) {
     // Stage 2: (A x B)_x = A_y B_z - A_z B_y is zero iff the two (exact)
     // products are equal; compared directly, so no rounding is involved.

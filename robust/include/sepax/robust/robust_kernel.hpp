@@ -126,6 +126,8 @@ class RobustKernel {
     support_err_b_ = (2 * gamma(3) * s3 * ma + db_n * da) * kMargin + 4 * kEta;
     arc_err_a_ = (da_n + gamma(5)) * db * kMargin + 2 * kEta;  // A's normals . B's edges
     arc_err_b_ = (db_n + gamma(5)) * da * kMargin + 2 * kEta;
+    arc_err_a_t_ = round_up(arc_err_a_);
+    arc_err_b_t_ = round_up(arc_err_b_);
     edge_abs_ = gamma(8) * (d_ + s3 * (ma + mb)) * kMargin + 8 * kEta;
     proj_abs_a_ = 2 * gamma(3) * s3 * ma * kMargin + 4 * kEta;
     proj_abs_b_ = 2 * gamma(3) * s3 * mb * kMargin + 4 * kEta;
@@ -157,13 +159,31 @@ class RobustKernel {
   }
 
   ArcSigns arc_signs(int ea, int eb) const {
-    const Vec3<T> da = a_.edge_direction(ea);
+    // A SAT loops over edges of B for one edge of A: A's edge direction and
+    // face normals are cached across calls (the same T values PlainKernel
+    // computes, loaded once).
+    if (ea != arc_cache_.ea) [[unlikely]] {
+      arc_cache_.ea = ea;
+      arc_cache_.da = a_.edge_direction(ea);
+      arc_cache_.n0 = a_.plane(a_.edge_face(ea, 0)).normal;
+      arc_cache_.n1 = a_.plane(a_.edge_face(ea, 1)).normal;
+    }
+    const Vec3<T>& da = arc_cache_.da;
     const Vec3<T> db = b_.edge_direction(eb);
+    // Branch-free like PlainKernel (the signs are unpredictable); one
+    // well-predicted branch for "some sign is within its error bound".
+    const T c = dot(b_.plane(b_.edge_face(eb, 0)).normal, da);
+    const T d = dot(b_.plane(b_.edge_face(eb, 1)).normal, da);
+    const T a = dot(arc_cache_.n0, db);
+    const T b = dot(arc_cache_.n1, db);
+    const T eb_ = arc_err_b_t_, ea_ = arc_err_a_t_;  // the bounds rounded up to T
     ArcSigns s;
-    s.cba = normal_dot_sign(b_, b_.edge_face(eb, 0), da, a_, ea, arc_err_b_);
-    s.dba = normal_dot_sign(b_, b_.edge_face(eb, 1), da, a_, ea, arc_err_b_);
-    s.adc = -normal_dot_sign(a_, a_.edge_face(ea, 0), db, b_, eb, arc_err_a_);
-    s.bdc = -normal_dot_sign(a_, a_.edge_face(ea, 1), db, b_, eb, arc_err_a_);
+    s.cba = (c > eb_) - (c < -eb_);
+    s.dba = (d > eb_) - (d < -eb_);
+    s.adc = (a < -ea_) - (a > ea_);
+    s.bdc = (b < -ea_) - (b > ea_);
+    const bool sure = (std::fabs(c) > eb_) & (std::fabs(d) > eb_) & (std::fabs(a) > ea_) & (std::fabs(b) > ea_);
+    if (!sure) [[unlikely]] resolve_arc_signs(s, ea, eb, c, d, a, b);
     return s;
   }
 
@@ -219,8 +239,7 @@ class RobustKernel {
     const double d = static_cast<double>(x.num) - static_cast<double>(y.num);
     if (d > bound) return 1;
     if (d < -bound) return -1;
-    ++fallbacks_;
-    return robust::compare_exact(exact_separation(fx), exact_separation(fy));
+    return compare_exact(fx, fy);
   }
 
   int sign(const Separation<T>& x, const Feature& f) const {
@@ -265,6 +284,13 @@ class RobustKernel {
     T lo_other, hi_other;   // over all vertices except the edge's endpoints
     T ref;                  // projection of the edge's tail
   };
+
+  // The smallest T >= x (comparisons in T against a double bound).
+  static T round_up(double x) {
+    T t = static_cast<T>(x);
+    if (static_cast<double>(t) < x) t = std::nextafter(t, std::numeric_limits<T>::infinity());
+    return t;
+  }
 
   static double padded_extent(const P& p) { return p.extent() * (1.0 + 4 * kU) * kMargin; }
 
@@ -322,6 +348,15 @@ class RobustKernel {
   // product rounded to double (a value for reporting; every decision about it
   // then goes exact because delta is kNoBound).
   EdgeAxis edge_axis(int ea, int eb) const {
+    // compare()/sign()/axis() of a feature follow its edge_separation call
+    if (ea == axis_cache_.ea && eb == axis_cache_.eb) return axis_cache_.axis;
+    axis_cache_.ea = ea;
+    axis_cache_.eb = eb;
+    axis_cache_.axis = compute_edge_axis(ea, eb);
+    return axis_cache_.axis;
+  }
+
+  EdgeAxis compute_edge_axis(int ea, int eb) const {
     const Vec3<T> da = a_.edge_direction(ea);
     const Vec3<T> db = b_.edge_direction(eb);
     const Vec3<T> c = cross(da, db);
@@ -361,6 +396,11 @@ class RobustKernel {
 
   // ---- exact helpers (each call counts as a fallback when it runs exactly) ----
 
+  SEPAX_ROBUST_COLD int compare_exact(const Feature& fx, const Feature& fy) const {
+    ++fallbacks_;
+    return robust::compare_exact(exact_separation(fx), exact_separation(fy));
+  }
+
   // sign of N_f . (p - v_i), N_f the plane triple's cross product.
   int face_sign(const P& p, int f, const Vec3<T>& q) const {
     const auto& t = p.face(f).plane_vertices;
@@ -389,6 +429,10 @@ class RobustKernel {
     const double e = ((ax.delta + gamma(5)) * (extent + cerr) + cerr) * kMargin + 4 * kEta;
     if (static_cast<double>(o) > e) return 1;
     if (static_cast<double>(o) < -e) return -1;
+    return centroid_side_exact(p, v, ea, eb);
+  }
+
+  SEPAX_ROBUST_COLD int centroid_side_exact(const P& p, int v, int ea, int eb) const {
     ++fallbacks_;
     using robust::ExactFloat;
     const auto n = robust::exact_cross(
@@ -454,6 +498,10 @@ class RobustKernel {
   // |exact| <= bound - |v|.
   Separation<T> snap(T v, double bound, const Feature& f) const {
     if (std::fabs(static_cast<double>(v)) > bound) return Separation<T>{v, T(1)};
+    return snap_exact(v, f);
+  }
+
+  SEPAX_ROBUST_COLD Separation<T> snap_exact(T v, const Feature& f) const {
     const int s = exact_value_sign(f);
     if (s == sign_of(v)) return Separation<T>{v, T(1)};
     if (s == 0) return Separation<T>{T(0), T(1)};
@@ -467,12 +515,15 @@ class RobustKernel {
 
   // ---- decisions ----
 
-  // Exact sign of N_f . e for face f of p and edge ei of q (e = fl(head - tail)
-  // is the plain value; the exact fallback uses the vertices).
-  int normal_dot_sign(const P& p, int f, const Vec3<T>& e, const P& q, int ei, double bound) const {
-    const T d = dot(p.plane(f).normal, e);
-    if (static_cast<double>(d) > bound) return 1;
-    if (static_cast<double>(d) < -bound) return -1;
+  // The arc signs whose value was within the bound (or NaN), decided exactly.
+  SEPAX_ROBUST_COLD void resolve_arc_signs(ArcSigns& s, int ea, int eb, T c, T d, T a, T b) const {
+    if (!(std::fabs(c) > arc_err_b_t_)) s.cba = normal_dot_sign_exact(b_, b_.edge_face(eb, 0), a_, ea);
+    if (!(std::fabs(d) > arc_err_b_t_)) s.dba = normal_dot_sign_exact(b_, b_.edge_face(eb, 1), a_, ea);
+    if (!(std::fabs(a) > arc_err_a_t_)) s.adc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 0), b_, eb);
+    if (!(std::fabs(b) > arc_err_a_t_)) s.bdc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 1), b_, eb);
+  }
+
+  SEPAX_ROBUST_COLD int normal_dot_sign_exact(const P& p, int f, const P& q, int ei) const {
     const auto& t = p.face(f).plane_vertices;
     const Vec3<T>& v0 = p.vertex(t[0]);
     // N.e = ((v1 - v0) x (v2 - v0)) . e = det[e, v1 - v0, v2 - v0]
@@ -490,21 +541,19 @@ class RobustKernel {
     T m = dot(pl.normal, vs[0]);
     T second = std::numeric_limits<T>::infinity();
     for (int i = 1; i < nv; ++i) {
+      // branch-free minimum and second minimum (selects, not jumps)
       const T h = dot(pl.normal, vs[static_cast<std::size_t>(i)]);
-      if (h < m) {
-        second = m;
-        m = h;
-        best = i;
-      } else if (h < second) {
-        second = h;
-      }
+      const bool lt = h < m;
+      second = lt ? m : (h < second ? h : second);
+      best = lt ? i : best;
+      m = lt ? h : m;
     }
     if (!(static_cast<double>(second) - static_cast<double>(m) > w)) best = resolve_support(p, f, q, m, w);
     const T hb = dot(pl.normal, vs[static_cast<std::size_t>(best)]);
     return FaceQuery<T>{Separation<T>{T(hb - pl.offset), T(1)}, best};
   }
 
-  int resolve_support(const P& p, int f, const P& q, T m, double w) const {
+  SEPAX_ROBUST_COLD int resolve_support(const P& p, int f, const P& q, T m, double w) const {
     const Plane<T>& pl = p.plane(f);
     const auto& t = p.face(f).plane_vertices;
     const Vec3<T>& v0 = p.vertex(t[0]);
@@ -560,6 +609,11 @@ class RobustKernel {
     const double dx = (ext - static_cast<double>(x.ref)) * dir;  // > 0: some vertex beyond
     if (dx < -w) return true;
     if (dx > w) return false;
+    return all_on_side_resolve(p, x, n, w, dir, ea, eb);
+  }
+
+  SEPAX_ROBUST_COLD bool all_on_side_resolve(const P& p, const Extremes& x, const Vec3<T>& n, double w,
+                                             int dir, int ea, int eb) const {
     const bool is_a = &p == &a_;
     const int tail = is_a ? a_.edge_tail(ea) : b_.edge_tail(eb);
     const int head = is_a ? a_.edge_head(ea) : b_.edge_head(eb);
@@ -581,9 +635,20 @@ class RobustKernel {
   double face_err_a_ = 0, face_err_b_ = 0;
   double support_err_a_ = 0, support_err_b_ = 0;
   double arc_err_a_ = 0, arc_err_b_ = 0;
+  T arc_err_a_t_ = 0, arc_err_b_t_ = 0;
   double edge_abs_ = 0;
   double proj_abs_a_ = 0, proj_abs_b_ = 0;
   double centroid_err_a_ = 0, centroid_err_b_ = 0;
+  struct ArcCache {
+    int ea = -1;
+    Vec3<T> da, n0, n1;
+  };
+  struct AxisCache {
+    int ea = -1, eb = -1;
+    EdgeAxis axis;
+  };
+  mutable ArcCache arc_cache_;
+  mutable AxisCache axis_cache_;
   mutable std::int64_t fallbacks_ = 0;
   mutable bool projection_rule_ = false;
 };
