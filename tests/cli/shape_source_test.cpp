@@ -1,0 +1,124 @@
+// Tests for src/io/shape_source.cpp: built-in shape names and file dispatch.
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include <sepax/convex_polyhedron.hpp>
+#include <sepax/error.hpp>
+#include <sepax/shapes.hpp>
+
+#include "io/shape_source.hpp"
+
+using namespace sepax;
+using namespace sepax::cli;
+
+namespace {
+
+ConvexPolyhedron<double> built(const io::ShapeData& d) {
+  return ConvexPolyhedron<double>::from_faces(d.vertices, d.faces);
+}
+
+struct TempDir {
+  std::filesystem::path path;
+  TempDir() {
+    path = std::filesystem::temp_directory_path() /
+           ("sepax_shape_source_test_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  std::string write(const std::string& name, const std::string& text) const {
+    const auto p = path / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p.string();
+  }
+};
+
+}  // namespace
+
+TEST_CASE("shape source: built-in names give the shapes of sepax/shapes.hpp", "[shapes]") {
+  const struct {
+    const char* spec;
+    ConvexPolyhedron<double> expected;
+  } cases[] = {
+      {"cube", shapes::cube<double>()},
+      {"tetra", shapes::tetrahedron<double>()},
+      {"box:0.5,2,3e1", shapes::box<double>(0.5, 2, 30)},
+      {"prism:7", shapes::prism<double>(7)},
+      {"polygon:5", shapes::regular_polygon<double>(5)},
+      {"triangle", shapes::triangle<double>(Vec3<double>(0, 0, 0), Vec3<double>(1, 0, 0), Vec3<double>(0, 1, 0))},
+  };
+  for (const auto& c : cases) {
+    INFO(c.spec);
+    CHECK(io::is_builtin_shape(c.spec));
+    const io::ShapeData d = io::load_shape(c.spec);
+    CHECK(d.kind == io::ShapeData::Kind::Faces);
+    CHECK(d.name == c.spec);
+    const auto p = built(d);
+    CHECK(p.vertices() == c.expected.vertices());
+    CHECK(p.face_count() == c.expected.face_count());
+    CHECK(p.edge_count() == c.expected.edge_count());
+    CHECK(p.is_flat() == c.expected.is_flat());
+  }
+}
+
+TEST_CASE("shape source: bad built-in parameters are clear errors", "[shapes]") {
+  const struct {
+    const char* spec;
+    const char* problem;
+  } cases[] = {
+      {"box:1,2", "expected box:HX,HY,HZ"},
+      {"box:1,2,3,4", "expected box:HX,HY,HZ"},
+      {"box:1,-2,3", "HY must be a positive finite number"},
+      {"box:1,0,3", "HY must be a positive finite number"},
+      {"box:1,x,3", "bad number 'x' for HY"},
+      {"box:", "expected box:HX,HY,HZ"},
+      {"box:1,2,inf", "HZ must be a positive finite number"},
+      {"prism:2", "between 3 and 100000, got 2"},
+      {"prism:", "bad side count ''"},
+      {"prism:4.5", "bad side count '4.5'"},
+      {"polygon:1000000", "between 3 and 100000"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.spec);
+    CHECK_THROWS_WITH(io::load_shape(c.spec), Catch::StartsWith(std::string("shape '") + c.spec + "': ") &&
+                                                  Catch::Contains(c.problem));
+  }
+}
+
+TEST_CASE("shape source: files are read by extension", "[shapes]") {
+  TempDir dir;
+  const std::string off = dir.write("c.OFF",
+                                    "OFF\n4 4 6\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n"
+                                    "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+  const std::string obj = dir.write("c.obj", "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
+  const std::string pts = dir.write("c.xyz", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n0 0 0\n");
+  const std::string txt = dir.write("c.txt", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");
+  const auto a = io::load_shape(off);
+  const auto b = io::load_shape(obj);
+  CHECK(a.kind == io::ShapeData::Kind::Faces);
+  CHECK(b.kind == io::ShapeData::Kind::Faces);
+  CHECK(a.vertices == b.vertices);
+  CHECK(a.faces == b.faces);
+  CHECK(built(a).vertices() == shapes::tetrahedron<double>().vertices());
+  CHECK(io::load_shape(pts).kind == io::ShapeData::Kind::Points);
+  CHECK(io::load_shape(pts).vertices.size() == 5);
+  CHECK(io::load_shape(txt).kind == io::ShapeData::Kind::Points);
+  CHECK(io::load_shape(dir.write("c.pts", "0 0 0\n")).vertices.size() == 1);
+
+  CHECK_THROWS_WITH(io::load_shape(dir.write("c.stl", "solid")), Catch::Contains("known extension"));
+  CHECK_THROWS_WITH(io::load_shape((dir.path / "missing.off").string()), Catch::Contains("missing.off: cannot open"));
+  CHECK_THROWS_WITH(io::load_shape(""), Catch::Contains("empty shape argument"));
+  // a built-in name wins over a file; ./name reads the file
+  CHECK_FALSE(io::is_builtin_shape("./cube"));
+  CHECK_THROWS_WITH(io::load_shape("./cube"), Catch::Contains("known extension"));
+  CHECK_FALSE(io::is_builtin_shape("cubes"));
+  CHECK_FALSE(io::is_builtin_shape("boxes.off"));
+}
