@@ -845,9 +845,9 @@ std::string traversal_counters(const Cell& c) {
 // ------------------------------------------------------------------ main ----
 struct Options {
   bool quick = false;
-  double min_time = 0.3;
-  double max_pass = 2.0;
-  int pairs = 128;
+  double min_time = 0.2;
+  double max_pass = 1.0;
+  int pairs = 64;
   std::string filter;
   std::string json;
   bool callgrind = false;
