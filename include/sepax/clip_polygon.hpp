@@ -134,22 +134,27 @@ void clip_polygon(const std::vector<ClipVertex<T>>& in, const ClipPlane<T>& plan
 template <Number T>
 void weld_polygon(std::vector<ClipVertex<T>>& poly, const T& tol2) {
   if (poly.size() < 2) return;
-  std::vector<ClipVertex<T>> out;
-  out.reserve(poly.size());
-  for (const auto& v : poly) {
-    if (!out.empty() && !(squared_norm(Vec3<T>(v.point - out.back().point)) > tol2)) {
-      out.back().next_edge = v.next_edge;
-      out.back().next_on_side = v.next_on_side;
-      out.back().side_tail = v.side_tail;
-      out.back().side_head = v.side_head;
+  auto close = [&](const ClipVertex<T>& x, const ClipVertex<T>& y) {
+    return !(squared_norm(Vec3<T>(x.point - y.point)) > tol2);
+  };
+  auto take_label = [](ClipVertex<T>& to, const ClipVertex<T>& from) {
+    to.next_edge = from.next_edge;
+    to.next_on_side = from.next_on_side;
+    to.side_tail = from.side_tail;
+    to.side_head = from.side_head;
+  };
+  // In place (no allocation): w is the number of vertices kept so far.
+  std::size_t w = 1;
+  for (std::size_t i = 1; i < poly.size(); ++i) {
+    if (close(poly[i], poly[w - 1])) {
+      take_label(poly[w - 1], poly[i]);
       continue;
     }
-    out.push_back(v);
+    if (w != i) poly[w] = poly[i];
+    ++w;
   }
-  while (out.size() > 1 && !(squared_norm(Vec3<T>(out.front().point - out.back().point)) > tol2)) {
-    out.pop_back();
-  }
-  poly.swap(out);
+  while (w > 1 && close(poly[0], poly[w - 1])) --w;
+  poly.resize(w);
 }
 
 }  // namespace sepax
