@@ -350,3 +350,39 @@ TEST_CASE("exact vs double on the same random overlapping pairs", "[contact][exa
   CHECK(same_axis == compared);
   CHECK(same_manifold >= compared - 5);
 }
+
+TEMPLATE_TEST_CASE("exact: speculative margin, faces and edges", "[contact][exact][margin]", mpq_class, CGAL::Epeck::FT) {
+  using T = TestType;
+  const auto a = shapes::cube<T>(1.0);
+  // gap 1/16 between A's top face and B's bottom face
+  const auto b = translated(shapes::cube<T>(0.5), Vec3<T>(T(0), T(0), q<T>(25, 16)));
+  CHECK(contact_manifold(a, b).empty());
+  ManifoldOptions opt;
+  opt.margin = 0.125;
+  auto m = contact_manifold(a, b, sat::gauss_map(a, b), opt);
+  REQUIRE(m.size() == 4);
+  for (const auto& p : m.points) {
+    CHECK(p.separation.num > T(0));
+    CHECK(p.separation.num * p.separation.num * T(256) == p.separation.norm2);
+  }
+  check_exact_invariants(a, b, m);
+  opt.margin = 0.0625;  // exactly the gap: still in
+  CHECK(contact_manifold(a, b, sat::gauss_map(a, b), opt).size() == 4);
+  opt.margin = 0.0625 - 1.0 / 1024;
+  CHECK(contact_manifold(a, b, sat::gauss_map(a, b), opt).empty());
+  // crossed edges 1/8 apart
+  const auto w = wedge<T>();
+  const auto w2 = map_vertices(wedge<T>(), [&](const Vec3<T>& v) {
+    return Vec3<T>(v[1] + q<T>(1, 4), v[0], q<T>(17, 8) - v[2]);
+  });
+  opt.margin = 0.25;
+  const auto me = contact_manifold(w, w2, sat::gauss_map(w, w2), opt);
+  REQUIRE(me.kind == ContactKind::Edge);
+  REQUIRE(me.size() == 1);
+  CHECK(me.points[0].separation.num * me.points[0].separation.num * T(64) == me.points[0].separation.norm2);
+  CHECK(me.points[0].separation.num > T(0));
+  CHECK(same(me.points[0].position, Vec3<T>(q<T>(1, 4), T(0), q<T>(17, 16))));
+  check_exact_invariants(w, w2, me);
+  // the resolving translation brings them exactly into touch
+  check_resolves_exactly(w, w2, me);
+}
