@@ -1079,6 +1079,24 @@ int main(int argc, char** argv) {
         if (needs_exact(row)) build_exact(c);
         cell.push_back(measure(c, row, o.min_time, o.max_pass, outs));
       }
+      if (c.frames > 0) {
+        int ov = 0;
+        for (const auto& p : c.pairs) ov += p.ref_overlap ? 1 : 0;
+        char buf[300];
+        std::int64_t hits = 0, misses = 0;
+#if SEPAX_BENCH_CACHE
+        // counters of the last pass (each trajectory's cache is reset at its first frame)
+        for (const auto& k : c.cache) {
+          hits += k.hits;
+          misses += k.misses;
+        }
+#endif
+        std::snprintf(buf, sizeof buf,
+                      "  %-11s %-11s %zu frames, %d overlapping (exact); cache hits %lld, misses %lld\n",
+                      c.workload.c_str(), c.poses.c_str(), c.pairs.size(), ov,
+                      static_cast<long long>(hits), static_cast<long long>(misses));
+        counters.push_back(buf);
+      }
       double base = 0;
       for (const auto& m : cell)
         if (m.row == baseline) base = m.ns;
