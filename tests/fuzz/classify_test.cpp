@@ -1,0 +1,159 @@
+// Checking core: classification of synthetic disagreements, the forward error
+// bounds against exact arithmetic, and the integer arc signs against the
+// rational kernel.
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <sepax/fuzz/classify.hpp>
+#include <sepax/fuzz/error_bounds.hpp>
+#include <sepax/fuzz/generators.hpp>
+#include <sepax/plain_kernel.hpp>
+#include <sepax/robust/number_types.hpp>
+
+using namespace sepax;
+using namespace sepax::fuzz;
+using Q = mpq_class;
+
+TEST_CASE("classify_sign: agree, exact zero, explained, unexplained", "[fuzz][classify]") {
+  const ExactSep tiny{Q(-1, 1000000), Q(1)};  // -1e-6 on a unit axis
+  const ExactSep zero{Q(0), Q(4)};
+  const ExactSep big{Q(-1), Q(1)};
+  CHECK(classify_sign(-1, tiny, 1e-3, false) == Klass::agree);
+  CHECK(classify_sign(+1, tiny, 1e-3, false) == Klass::explained);
+  CHECK(classify_sign(+1, tiny, 1e-7, false) == Klass::unexplained);
+  CHECK(classify_sign(+1, zero, 0.0, false) == Klass::exact_zero);
+  CHECK(classify_sign(0, zero, 0.0, false) == Klass::agree);
+  CHECK(classify_sign(+1, big, 0.5, false) == Klass::unexplained);
+  // the robust policy claims exact signs: no excuse
+  CHECK(classify_sign(+1, tiny, 1e-3, true) == Klass::unexplained);
+  CHECK(classify_sign(+1, zero, 1e-3, true) == Klass::unexplained);
+  // unnormalised exact value: num / sqrt(norm2) = -3 / sqrt(9e12) = -1e-6
+  const ExactSep scaled{Q(-3), Q("9000000000000")};
+  CHECK(classify_sign(+1, scaled, 1.0000001e-6, false) == Klass::explained);
+  CHECK(classify_sign(+1, scaled, 0.9999999e-6, false) == Klass::unexplained);
+}
+
+TEST_CASE("within and cmp_rational_sep are exact at the boundary", "[fuzz][classify]") {
+  const ExactSep s{Q(1), Q(4)};  // 0.5
+  CHECK(cmp_rational_sep(Q(1, 2), s) == 0);
+  CHECK(cmp_rational_sep(Q(-1, 2), s) < 0);
+  CHECK(within(0.75, s, 0.25));
+  CHECK_FALSE(within(0.75, s, 0.2499999999));
+  CHECK(within(0.25, s, 0.25));
+  const ExactSep neg{Q(-1), Q(4)};  // -0.5
+  CHECK(cmp_rational_sep(Q(-1, 2), neg) == 0);
+  CHECK(cmp_rational_sep(Q(-1, 4), neg) > 0);
+  CHECK(within(-0.5, neg, 0.0));
+  // infinite bound (degenerate exact axis) always holds
+  CHECK(within(1e30, s, std::numeric_limits<double>::infinity()));
+}
+
+TEST_CASE("classify_overlap and classify_separation", "[fuzz][classify]") {
+  const ExactSep touching{Q(0), Q(1)};
+  const ExactSep near{Q(1, 1000000000), Q(1)};  // 1e-9: separated
+  const ExactSep far{Q(1, 10), Q(1)};
+  CHECK(classify_overlap(true, true, far, 0, false) == Klass::agree);
+  CHECK(classify_overlap(false, true, touching, 0, false) == Klass::exact_zero);
+  CHECK(classify_overlap(true, false, near, 1e-8, false) == Klass::explained);
+  CHECK(classify_overlap(true, false, far, 1e-8, false) == Klass::unexplained);
+  CHECK(classify_overlap(true, false, near, 1e-8, true) == Klass::unexplained);
+
+  CHECK(classify_separation(0.5, ExactSep{Q(1), Q(4)}, true, 0, 0, false) == Klass::agree);
+  CHECK(classify_separation(0.1 + 1e-12, far, true, 1e-11, 0, false) == Klass::explained);
+  CHECK(classify_separation(0.1 + 1e-12, far, true, 1e-13, 0, false) == Klass::unexplained);
+  CHECK(classify_separation(1e-12, touching, true, 1e-11, 0, false) == Klass::exact_zero);
+  // a different feature: tie within the two bounds
+  CHECK(classify_separation(0.1 + 1e-12, far, false, 6e-13, 6e-13, false) == Klass::tie);
+  CHECK(classify_separation(0.1 + 1e-12, far, false, 4e-13, 4e-13, false) == Klass::unexplained);
+  CHECK(classify_separation(0.1 + 1e-12, far, false, 1, 1, true) == Klass::unexplained);
+}
+
+TEST_CASE("close: ties between exact separations on different axes", "[fuzz][classify]") {
+  const ExactSep a{Q(1), Q(4)};    // 0.5
+  const ExactSep b{Q(2), Q(16)};   // 0.5, different representation
+  const ExactSep c{Q(3), Q(36)};   // 0.5
+  const ExactSep d{Q(51), Q(10000)};  // 0.51
+  CHECK(close(a, b, 0));
+  CHECK(close(a, c, 0));
+  CHECK_FALSE(close(a, d, 0.009));
+  CHECK(close(a, d, 0.011));
+}
+
+// The bounds of error_bounds.hpp, tested against exact arithmetic on the very
+// operation sequences of the plain kernel: they must never be exceeded.
+template <class F>
+void check_bounds_on_random_triangles(int trials) {
+  std::mt19937_64 rng(1234);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> ex(-12, 12);
+  int checked = 0;
+  for (int t = 0; t < trials; ++t) {
+    const double scale = std::ldexp(1.0, ex(rng));
+    const Vec3<double> off(u(rng) * 100, u(rng) * 100, u(rng) * 100);
+    auto pt = [&] {
+      return Vec3<F>(F((u(rng) + off[0]) * scale), F((u(rng) + off[1]) * scale), F((u(rng) + off[2]) * scale));
+    };
+    Vec3<F> p0 = pt(), p1 = pt(), p2 = pt();
+    if (t % 3 == 0) {  // sliver triangle: p2 nearly on the line p0 p1
+      const double w = u(rng);
+      for (int c = 0; c < 3; ++c) p2[c] = F(double(p0[c]) + w * (double(p1[c]) - double(p0[c])) + 1e-5 * u(rng) * scale);
+    }
+    const Plane<F> pl = plane_through(p0, p1, p2);
+    const Vec3<Q> q0 = vec_cast<Q>(p0), q1 = vec_cast<Q>(p1), q2 = vec_cast<Q>(p2);
+    const Vec3<Q> Ne = cross(Vec3<Q>(q1 - q0), Vec3<Q>(q2 - q0));
+    if (is_zero(Ne)) continue;
+    const double dn = bounds::delta_normal<F>(Vec3<F>(p1 - p0), Vec3<F>(p2 - p0),
+                                              bounds::sqrt_lower(squared_norm(Ne).get_d()));
+    // (2) arc triple product with a random edge d = head - tail
+    const Vec3<F> h = pt(), tl = pt();
+    const Vec3<F> d(h - tl);
+    const F tf = dot(pl.normal, d);
+    const Q te = dot(Ne, Vec3<Q>(vec_cast<Q>(h) - vec_cast<Q>(tl)));
+    REQUIRE(within(double(tf), ExactSep{te, squared_norm(Ne)}, bounds::arc_bound<F>(pl.normal, d, dn)));
+    // (3) face separation of a vertex v
+    const Vec3<F> v = pt();
+    const F sf = F(dot(pl.normal, v) - pl.offset);
+    const Q se = dot(Ne, Vec3<Q>(vec_cast<Q>(v) - q0));
+    REQUIRE(within(double(sf), ExactSep{se, squared_norm(Ne)}, bounds::face_bound<F>(pl.normal, p0, v, dn)));
+    ++checked;
+  }
+  CHECK(checked > trials / 2);
+}
+
+TEST_CASE("forward error bounds hold against exact arithmetic", "[fuzz][bounds]") {
+  check_bounds_on_random_triangles<float>(3000);
+  check_bounds_on_random_triangles<double>(3000);
+}
+
+TEST_CASE("integer arc signs equal the rational kernel's", "[fuzz][arcs]") {
+  for (const std::string fam : {"boxes", "flat", "tetra", "scales", "touching", "perturbed"}) {
+    for (std::uint64_t seed = 0; seed < 6; ++seed) {
+      const FuzzCase c = generate(fam, seed);
+      auto build = [](const ShapeSpec& s) {
+        std::vector<Vec3<float>> v;
+        for (const auto& p : s.vertices) v.push_back(vec_from_double<float>(p));
+        return ConvexPolyhedron<float>::from_faces(std::move(v), s.faces);
+      };
+      ConvexPolyhedron<float> a, b;
+      try {
+        a = build(c.a);
+        b = build(c.b);
+      } catch (const InvalidInput&) {
+        continue;
+      }
+      const auto ae = ConvexPolyhedron<Q>::convert_from(a), be = ConvexPolyhedron<Q>::convert_from(b);
+      PlainKernel<Q> k(ae, be);
+      const auto arcs = exact_arc_signs(a, b);
+      for (int ea = 0; ea < a.edge_count(); ++ea)
+        for (int eb = 0; eb < b.edge_count(); ++eb) {
+          const ArcSigns x = k.arc_signs(ea, eb), y = arcs[static_cast<std::size_t>(ea * b.edge_count() + eb)];
+          REQUIRE(x.cba == y.cba);
+          REQUIRE(x.dba == y.dba);
+          REQUIRE(x.adc == y.adc);
+          REQUIRE(x.bdc == y.bdc);
+        }
+    }
+  }
+}
