@@ -451,3 +451,40 @@ TEMPLATE_TEST_CASE("a cached query gives the same manifold as a fresh one", "[co
   CHECK(overlapping > 20);
 }
 #endif
+
+TEMPLATE_TEST_CASE("scale invariance on random overlapping pairs", "[contact][scale][random]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int checked = 0;
+  for (int iter = 0; iter < 200 && checked < 60; ++iter) {
+    const Eigen::Matrix3d ra = rot({u(rng), u(rng), u(rng)}, 3 * u(rng));
+    const Eigen::Matrix3d rb = rot({u(rng), u(rng), u(rng)}, 3 * u(rng));
+    const Vec3<double> t(u(rng), u(rng), u(rng));
+    const int ka = iter % 3, kb = (iter / 3) % 3;
+    auto make = [&](int k, double s) {
+      switch (k) {
+        case 0: return shapes::box<T>(0.7 * s, 0.5 * s, 0.4 * s);
+        case 1: return shapes::prism<T>(6, 0.8 * s, 0.5 * s);
+        default: return shapes::regular_polygon<T>(5, 0.9 * s);
+      }
+    };
+    const auto a1 = moved(make(ka, 1), ra, {0, 0, 0});
+    const auto b1 = moved(make(kb, 1), rb, t);
+    const auto m1 = contact_manifold(a1, b1);
+    if (m1.empty()) continue;
+    ++checked;
+    for (double s : {1e-3, 1e3}) {
+      INFO("iteration " << iter << " scale " << s);
+      const auto as = moved(make(ka, s), ra, {0, 0, 0});
+      const auto bs = moved(make(kb, s), rb, s * t);
+      const auto ms = contact_manifold(as, bs);
+      CHECK(ms.feature == m1.feature);
+      REQUIRE(ms.size() == m1.size());
+      CHECK(ids_of(ms) == ids_of(m1));
+      for (int i = 0; i < ms.size(); ++i)
+        CHECK(ms.points[i].depth() / s == Approx(m1.points[i].depth()).margin(std::is_same_v<T, float> ? 1e-4 : 1e-9));
+    }
+  }
+  CHECK(checked >= 40);
+}
