@@ -182,6 +182,25 @@ class Traversal {
         }
         if (c == 0) tie = true;
       }
+      if (!moved) {
+        // The far vertices of v's non-triangular faces (not neighbours of v):
+        // on an exactly convex polytope none is strictly lower, but a face
+        // that is planar only up to rounding (the exact image of a rotated
+        // float box) can dip below v at a far vertex.
+        for (int i = w.adj_begin(v); i < w.adj_end(v) && !moved; ++i) {
+          const int h = w.adj_half_edge(i);
+          for (int g = w.next(w.next(h)); w.next(g) != h; g = w.next(g)) {
+            const int x = w.origin(g);
+            const Separation<T> hx = height<OfA>(f, x);
+            if (cmp<OfA>(f, x, hx, v, hv) < 0) {
+              v = x;
+              hv = hx;
+              moved = true;
+              break;
+            }
+          }
+        }
+      }
       if (moved) {
         ++ts_.climb_steps;
         if (--budget < 0) return scan<OfA>(f);  // inconsistent rounding only
