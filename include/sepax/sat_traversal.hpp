@@ -456,6 +456,11 @@ class Traversal {
 template <SatKernel K>
 SatResult<typename K::FT> traversal_with(K& k, const GaussMapWalk& wa, const GaussMapWalk& wb,
                                          const SatOptions& opt = {}, TraversalStats* ts = nullptr) {
+  if (k.a().empty() || k.b().empty()) {
+    throw InvalidInput(ErrorCode::TooFewPoints,
+                       std::string("traversal: shape ") + (k.a().empty() ? "A" : "B") +
+                           " is empty (a default-constructed ConvexPolyhedron)");
+  }
   wa.check_fits(k.a(), "A");
   wb.check_fits(k.b(), "B");
   TraversalStats local;

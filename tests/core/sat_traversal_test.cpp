@@ -255,6 +255,9 @@ TEST_CASE("traversal rejects walk data of another hull", "[traversal]") {
   const GaussMapWalk wa(a), wb(b);
   CHECK_THROWS_AS(sat::traversal(a, wb, b, wa), InvalidInput);
   CHECK_NOTHROW(sat::traversal(a, wa, b, wb));
+  const ConvexPolyhedron<double> empty;
+  CHECK_THROWS_AS(sat::traversal(a, empty), InvalidInput);
+  CHECK_THROWS_AS(sat::traversal(empty, b), InvalidInput);
 }
 
 TEST_CASE("traversal with precomputed walk data does not allocate per query (float, double)", "[traversal]") {
