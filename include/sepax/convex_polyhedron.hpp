@@ -378,6 +378,15 @@ class ConvexPolyhedron {
     planes_.clear();
     planes_.reserve(faces_.size());
     for (int f = 0; f < face_count(); ++f) {
+      if (f == 1 && face_count() == 2) {
+        // Flat shape: the back face's plane is exactly the front one negated.
+        // That is what plane_through on the reversed triple gives in exact
+        // arithmetic and in plain IEEE arithmetic (a*b - c*d is antisymmetric);
+        // under FMA contraction (-march=native -ffp-contract=fast) it is not,
+        // and the "exactly opposite normals" invariant broke (tests/fma).
+        planes_.push_back(Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)});
+        continue;
+      }
       const auto pts = plane_points(f);
       planes_.push_back(plane_through(pts[0], pts[1], pts[2]));
     }
@@ -473,7 +482,9 @@ class ConvexPolyhedron {
       }
     }
     if (is_flat()) {
-      if (!(cross(plane(0).normal, plane(1).normal) == Vec3<T>(T(0), T(0), T(0))) ||
+      // (normals compared for exact opposition, not by a cross product: under
+      // FMA contraction cross(n, -n) need not be exactly 0)
+      if (!(plane(1).normal == Vec3<T>(-plane(0).normal)) ||
           !(dot(plane(0).normal, plane(1).normal) < T(0))) {
         fail(ErrorCode::NotConvex, "a two-face shape must be a polygon and its reverse");
       }
