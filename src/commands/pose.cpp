@@ -26,17 +26,10 @@ Pose Pose::make(const Vec3<double>& t, std::array<double, 4> q) {
     for (double& c : q) c /= n;
   }
   p.rotation = q;
+  p.transform = RigidTransform<double>::from_quaternion(q[0], q[1], q[2], q[3], t);
   return p;
 }
 
-Vec3<double> Pose::apply(const Vec3<double>& p) const {
-  const double w = rotation[0], x = rotation[1], y = rotation[2], z = rotation[3];
-  const double r00 = 1 - 2 * (y * y + z * z), r01 = 2 * (x * y - w * z), r02 = 2 * (x * z + w * y);
-  const double r10 = 2 * (x * y + w * z), r11 = 1 - 2 * (x * x + z * z), r12 = 2 * (y * z - w * x);
-  const double r20 = 2 * (x * z - w * y), r21 = 2 * (y * z + w * x), r22 = 1 - 2 * (x * x + y * y);
-  return Vec3<double>(r00 * p[0] + r01 * p[1] + r02 * p[2] + translation[0],
-                      r10 * p[0] + r11 * p[1] + r12 * p[2] + translation[1],
-                      r20 * p[0] + r21 * p[1] + r22 * p[2] + translation[2]);
-}
+Vec3<double> Pose::apply(const Vec3<double>& p) const { return transform.apply(p); }
 
 }  // namespace sepax::cli
