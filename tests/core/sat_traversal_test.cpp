@@ -281,3 +281,14 @@ TEST_CASE("traversal with precomputed walk data does not allocate per query (flo
   (void)sat::traversal(ad, bd);
   CHECK(g_allocations.load() > b2);
 }
+
+TEST_CASE("traversal beyond the inline scratch (more than 1024 faces in total)", "[traversal]") {
+  std::mt19937_64 rng(61);
+  const auto a = shapes::prism<double>(600, 1.0, 0.5);
+  for (int rep = 0; rep < 3; ++rep) {
+    const auto b = test::moved(shapes::prism<double>(600, 0.8, 0.6), test::random_rotation(rng), V3(0.5, 0.2 * rep, 0.9));
+    REQUIRE(a.face_count() + b.face_count() > sat::kTraversalInlineFaces);
+    const auto t = sat::traversal(a, b);
+    check_same(t, sat::gauss_map(a, b), "gauss_map");
+  }
+}
