@@ -39,7 +39,7 @@ def main(path):
                 if not m:
                     cells.append('–')
                     continue
-                s = fmt_ns(m['ns']) + ' (%.3gx)' % m['ratio_to_traversal']
+                s = fmt_ns(m['ns']) + (' (%.3gx)' % m['ratio_to_traversal'] if m['ratio_to_traversal'] is not None else '')
                 if m['queries'] < full[(w, poses)]:
                     s += ' [%d]' % m['queries']
                 cells.append(s)
@@ -58,7 +58,7 @@ def main(path):
         cells = []
         for w in W:
             m = runs.get((w, 'overlapping', r))
-            cells.append('%.1e / %.1e' % (m['depth_err_median'], m['depth_err_max']) if m else '–')
+            cells.append('%.1e / %.1e' % (m['depth_err_median'] or 0, m['depth_err_max'] or 0) if m else '–')
         print('| %s | ' % r + ' | '.join(cells) + ' |')
 
     bad = [(m['workload'], m['poses'], m['row'], m['verdict_disagreements'], m['failed'])
@@ -74,7 +74,8 @@ def main(path):
         cells = []
         for w in ['moving16', 'moving64']:
             m = runs.get((w, 'moving', r))
-            cells.append(fmt_ns(m['ns']) + ' (%.3gx)' % m['ratio_to_traversal'] if m else '–')
+            cells.append(fmt_ns(m['ns']) + (' (%.3gx)' % m['ratio_to_traversal'] if m['ratio_to_traversal'] is not None else '')
+                         if m else '–')
         print('| %s | ' % r + ' | '.join(cells) + ' |')
 
 

@@ -887,17 +887,26 @@ void print_row(const Measured& m) {
   std::fflush(stdout);
 }
 
+// JSON has no NaN: a number or null.
+std::string num(double v) {
+  if (!std::isfinite(v)) return "null";
+  std::ostringstream o;
+  o.precision(6);
+  o << v;
+  return o.str();
+}
+
 void write_json(const std::string& path, const std::vector<Measured>& all) {
   std::ofstream f(path);
   f << "[\n";
   for (std::size_t i = 0; i < all.size(); ++i) {
     const auto& m = all[i];
     f << "  {\"workload\": \"" << m.workload << "\", \"n\": " << m.n << ", \"poses\": \"" << m.poses
-      << "\", \"row\": \"" << m.row << "\", \"group\": \"" << m.group << "\", \"ns\": " << m.ns
-      << ", \"ratio_to_traversal\": " << m.ratio << ", \"queries\": " << m.queries
+      << "\", \"row\": \"" << m.row << "\", \"group\": \"" << m.group << "\", \"ns\": " << num(m.ns)
+      << ", \"ratio_to_traversal\": " << num(m.ratio) << ", \"queries\": " << m.queries
       << ", \"verdict_disagreements\": " << m.disagree << ", \"failed\": " << m.failed
-      << ", \"depth_pairs\": " << m.depth_count << ", \"depth_err_median\": " << m.depth_med
-      << ", \"depth_err_max\": " << m.depth_max << "}" << (i + 1 < all.size() ? "," : "") << "\n";
+      << ", \"depth_pairs\": " << m.depth_count << ", \"depth_err_median\": " << num(m.depth_med)
+      << ", \"depth_err_max\": " << num(m.depth_max) << "}" << (i + 1 < all.size() ? "," : "") << "\n";
   }
   f << "]\n";
 }
