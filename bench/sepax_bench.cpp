@@ -798,6 +798,10 @@ Measured measure(Cell& c, Row& row, double min_time, double max_pass, std::vecto
     }
     if (outs[i].overlap != p.ref_overlap) {
       ++m.disagree;
+      std::fprintf(stderr, "[%s %s] %s: pair %zu says %s, exact says %s (exact separation %.17g)\n",
+                   c.workload.c_str(), c.poses.c_str(), row.name.c_str(), i,
+                   outs[i].overlap ? "overlap" : "separated", p.ref_overlap ? "overlap" : "separated",
+                   p.ref_sep);
       continue;
     }
     if (p.ref_overlap && !std::isnan(outs[i].sep)) err.push_back(std::abs(outs[i].sep - p.ref_sep));
