@@ -11,7 +11,10 @@
 // signs, parallel edges, edge-axis orientations, brute-force support checks,
 // comparisons and signs.  Hence the same feature, the same overlap verdict and
 // the same sign of separation.  The separation VALUE and the axis are the
-// float/double numbers PlainKernel<T> computes for that feature.
+// float/double numbers PlainKernel<T> computes for that feature, except that a
+// value whose sign is wrong (|value| within its error bound, exact sign
+// different) is replaced by 0 (exact zero) or by the exact separation rounded
+// to T: a returned separation always has the exact sign.
 //
 // How.  Each decision first compares the plain value with an error bound
 // derived from per-query constants (below), and falls back to an exact
@@ -59,8 +62,12 @@
 //   √3 γ_{V+1} M_P =: C_P; the error is <= (δ_e + γ_5)(D_P + C_P) + C_P.
 // (parallel)     parallel.hpp's own filter.
 // Every bound is computed in double and multiplied by (1 + 1e-6), which covers
-// the rounding of the bound computation itself (relative 1e-15) and the
-// (1 + γ_4) factors for float (relative 3e-7).  FMA contraction only removes
+// the rounding of the bound computation itself (relative 1e-15), the
+// (1 + γ_4) factors for float (relative 3e-7) and the absolute underflow terms
+// of the normalisation (<= √3 η_T / |Ñ| with |Ñ|^2 >= 2^40 * FLT/DBL_MIN, far
+// below 1e-6 γ_4; smaller cross products get no bound: always exact).
+// Overflow or NaN anywhere in a bound makes it infinite or the comparison
+// false: the decision goes exact.  FMA contraction only removes
 // roundings, so every bound holds with and without it.
 //
 // Centroid.  PlainKernel<mpq_class> orients an edge-pair axis away from A's
@@ -182,7 +189,8 @@ class RobustKernel {
     s.dba = (d > eb_) - (d < -eb_);
     s.adc = (a < -ea_) - (a > ea_);
     s.bdc = (b < -ea_) - (b > ea_);
-    const bool sure = (std::fabs(c) > eb_) & (std::fabs(d) > eb_) & (std::fabs(a) > ea_) & (std::fabs(b) > ea_);
+    const int sure = static_cast<int>(std::fabs(c) > eb_) & static_cast<int>(std::fabs(d) > eb_) &
+                     static_cast<int>(std::fabs(a) > ea_) & static_cast<int>(std::fabs(b) > ea_);
     if (!sure) [[unlikely]] resolve_arc_signs(s, ea, eb, c, d, a, b);
     return s;
   }
@@ -315,7 +323,10 @@ class RobustKernel {
   static double cross_ratio_squared(const Vec3<T>& e1, const Vec3<T>& e2, const Vec3<T>& c) {
     const double nc2 = squared_norm_d(c);
     if (!(nc2 > kTinySquared) || !std::isfinite(nc2)) return std::numeric_limits<double>::infinity();
-    return squared_norm_d(e1) * squared_norm_d(e2) / nc2;
+    const double r2 = squared_norm_d(e1) / nc2 * squared_norm_d(e2);
+    // Overflow (huge coordinates) must not turn into NaN, which every
+    // comparison would silently ignore: it means "no useful bound".
+    return std::isfinite(r2) ? r2 : std::numeric_limits<double>::infinity();
   }
 
   static double normal_error(const P& p) {
