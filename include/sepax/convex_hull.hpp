@@ -19,17 +19,21 @@
 //      the tolerance is dropped (it is inside or within tolerance of the hull).
 //   4. Merge: adjacent triangles are grouped into faces.  Exact T: a group is a
 //      maximal set of exactly coplanar triangles.  Float T: two groups merge
-//      when a vertex of one (not shared with the other) is less than
-//      coplanar*extent below the other's area-weighted plane (nearly coplanar,
-//      or concave through rounding).  Zero-area triangles join the neighbour
-//      across their longest edge.
+//      when either one sees every vertex of the other (not shared with it)
+//      less than coplanar*extent below its area-weighted plane (nearly
+//      coplanar, or concave through rounding).  Zero-area triangles join the
+//      neighbour across their longest edge.
 //   5. Extract each group's boundary loop; remove vertices left on only two
 //      faces (the middle of an edge); check that every loop is simple and
 //      strictly convex (float T: every corner more than coplanar*extent away
 //      from the line through its neighbours).  A corner that fails is a point
 //      (nearly, or for exact T exactly) on the segment between two other hull
-//      points: it is removed from the point set and the hull is rebuilt
-//      (each rebuild removes at least one point, so this terminates).
+//      points: it is removed from the point set and the hull is rebuilt.
+//      Float T then checks the result the way ConvexPolyhedron validation
+//      will (same plane triples, half the tolerances) after starting each
+//      loop at its best-conditioned corner; a face that would fail loses its
+//      least significant vertex and the hull is rebuilt.  Every rebuild
+//      removes at least one point, so the builder terminates.
 //   6. Build through ConvexPolyhedron<T>::from_faces, so the result is
 //      validated.  A builder output failing validation is a builder bug and is
 //      reported as std::logic_error, not as InvalidInput.
@@ -482,7 +486,8 @@ class Builder {
       if (!simple) {
         if constexpr (exact) throw std::logic_error("convex_hull: non-simple horizon (a bug)");
         // Float only: rounding made the visible region not a disk.  The eye
-        // is then nearly on the hull; drop it (it is re-checked at the end).
+        // is then nearly on the hull; drop it (its distance outside counts in
+        // the measured bound of docs/hull.md).
         continue;
       }
       // cone the horizon to the eye
