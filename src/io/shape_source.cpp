@@ -47,7 +47,7 @@ int side_count(const std::string& spec, std::string_view s) {
   if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size()) {
     bad(spec, "bad side count '" + std::string(s) + "' (expected an integer)");
   }
-  if (n < 3 || n > 100000) bad(spec, "the side count must be between 3 and 100000, got " + std::to_string(n));
+  if (n < 3 || n > 1000) bad(spec, "the side count must be between 3 and 1000, got " + std::to_string(n));
   return n;
 }
 

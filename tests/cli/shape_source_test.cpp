@@ -81,10 +81,10 @@ TEST_CASE("shape source: bad built-in parameters are clear errors", "[shapes]") 
       {"box:1,x,3", "bad number 'x' for HY"},
       {"box:", "expected box:HX,HY,HZ"},
       {"box:1,2,inf", "HZ must be a positive finite number"},
-      {"prism:2", "between 3 and 100000, got 2"},
+      {"prism:2", "between 3 and 1000, got 2"},
       {"prism:", "bad side count ''"},
       {"prism:4.5", "bad side count '4.5'"},
-      {"polygon:1000000", "between 3 and 100000"},
+      {"polygon:1001", "between 3 and 1000"},
   };
   for (const auto& c : cases) {
     INFO(c.spec);
