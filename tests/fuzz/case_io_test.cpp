@@ -16,6 +16,7 @@ TEST_CASE("every family round-trips through the text format exactly", "[fuzz][io
   for (const auto& fam : family_names()) {
     for (std::uint64_t seed = 0; seed < 3; ++seed) {
       const FuzzCase c = generate(fam, seed);
+      INFO(fam << " seed " << seed);
       std::stringstream s;
       write_case(s, c, "a comment\nover two lines");
       const FuzzCase d = read_case(s);
@@ -34,6 +35,7 @@ TEST_CASE("every family round-trips through the text format exactly", "[fuzz][io
 TEST_CASE("generated coordinates are float values", "[fuzz][io]") {
   for (const auto& fam : family_names()) {
     const FuzzCase c = generate(fam, 11);
+    INFO(fam);
     for (const auto* s : {&c.a, &c.b})
       for (const auto& v : s->vertices)
         for (int k = 0; k < 3; ++k) REQUIRE(static_cast<double>(static_cast<float>(v[k])) == v[k]);
