@@ -345,6 +345,31 @@ class ConvexPolyhedron {
   // (largest |cross| in T) for faces of up to 16 vertices; (0, n/3, 2n/3) for
   // larger ones.  For the back face of a flat shape, the front face's triple
   // reversed, so the two normals are exactly opposite.
+  // |(b-a) x (c-a)|^2, for choosing plane triples.  For float T every product
+  // is rounded on its own (volatile stores), so no a*b+c can be fused into an
+  // FMA: the choice -- which the exact images inherit through convert_from --
+  // is then the same with and without -march=native -ffp-contract=fast (ties
+  // between equally good triangles are common in symmetric faces).  Without
+  // contraction the values are exactly those of cross() and squared_norm().
+  static T triangle_area2(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+    const Vec3<T> u(b - a), w(c - a);
+    if constexpr (number_traits<T>::is_exact) {
+      return squared_norm(cross(u, w));
+    } else {
+      const auto mul = [](T x, T y) {
+        volatile T r = x * y;
+        return static_cast<T>(r);
+      };
+      const T x = T(mul(u[1], w[2]) - mul(u[2], w[1]));
+      const T y = T(mul(u[2], w[0]) - mul(u[0], w[2]));
+      const T z = T(mul(u[0], w[1]) - mul(u[1], w[0]));
+      T s = mul(x, x);
+      s = s + mul(y, y);
+      s = s + mul(z, z);
+      return s;
+    }
+  }
+
   void choose_plane_triples() {
     for (int f = 0; f < face_count(); ++f) {
       const auto loop = face_vertices(f);
@@ -354,9 +379,7 @@ class ConvexPolyhedron {
         T best_area(-1);
         for (int j = 1; j + 1 < n; ++j) {
           for (int k = j + 1; k < n; ++k) {
-            const Vec3<T> c = cross(Vec3<T>(vertex(loop[j]) - vertex(loop[0])),
-                                    Vec3<T>(vertex(loop[k]) - vertex(loop[0])));
-            const T a = squared_norm(c);
+            const T a = triangle_area2(vertex(loop[0]), vertex(loop[j]), vertex(loop[k]));
             if (a > best_area) {
               best_area = a;
               best = {loop[0], loop[j], loop[k]};
