@@ -189,9 +189,8 @@ class RobustKernel {
     s.dba = (d > eb_) - (d < -eb_);
     s.adc = (a < -ea_) - (a > ea_);
     s.bdc = (b < -ea_) - (b > ea_);
-    const int sure = static_cast<int>(std::fabs(c) > eb_) & static_cast<int>(std::fabs(d) > eb_) &
-                     static_cast<int>(std::fabs(a) > ea_) & static_cast<int>(std::fabs(b) > ea_);
-    if (!sure) [[unlikely]] resolve_arc_signs(s, ea, eb, c, d, a, b);
+    // A sign is 0 exactly when |value| <= bound (or NaN): then decide exactly.
+    if (s.cba * s.dba * s.adc * s.bdc == 0) [[unlikely]] resolve_arc_signs(s, ea, eb, c, d, a, b);
     return s;
   }
 
