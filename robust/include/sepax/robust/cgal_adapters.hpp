@@ -74,6 +74,10 @@ mpq_class to_mpq(const X& x) {
     return to_mpq(CGAL::exact(x));
   } else if constexpr (detail::is_floating_v<X>) {
     return mpq_class(static_cast<double>(x));
+  } else if constexpr (requires { mpq_class(x.backend().data()); }) {
+    // boost::multiprecision::mpq_rational (Epeck's exact type when CGAL is
+    // configured without gmpxx)
+    return mpq_class(x.backend().data());
   } else {
     static_assert(detail::is_rational_v<X>, "to_mpq: not a rational number type");
   }
@@ -91,6 +95,10 @@ To from_mpq(const mpq_class& q) {
     return To(from_mpq<ET>(q));
   } else if constexpr (detail::is_floating_v<To>) {
     return static_cast<To>(q.get_d());  // rounds: exact -> float is documented as rounding
+  } else if constexpr (requires(To t) { mpq_set(t.backend().data(), q.get_mpq_t()); }) {
+    To t;  // boost::multiprecision::mpq_rational
+    mpq_set(t.backend().data(), q.get_mpq_t());
+    return t;
   } else {
     static_assert(detail::is_rational_v<To>, "from_mpq: not a supported number type");
   }
