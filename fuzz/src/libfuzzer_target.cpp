@@ -7,7 +7,7 @@
 // Run for 10 minutes, seeded with the corpus (libFuzzer writes new inputs to
 // the first directory, so give it a scratch copy):
 //   mkdir -p /tmp/lf-corpus && ./build-libfuzzer/fuzz/sepax_libfuzzer \
-//       -max_total_time=600 -timeout=30 -rss_limit_mb=4096 -max_len=256 /tmp/lf-corpus
+//       -max_total_time=600 -timeout=30 -rss_limit_mb=4096 -max_len=256 -len_control=0 /tmp/lf-corpus
 //
 // An unexplained disagreement aborts (so libFuzzer saves the crashing input);
 // ASan/UBSan report memory errors and undefined behaviour; -timeout catches hangs.
