@@ -177,6 +177,27 @@ class ConvexPolyhedron {
     return Vec3<T>(vertex(edge_head(e)) - vertex(edge_tail(e)));
   }
 
+  // ---- per-edge data for the Minkowski-face test (structure of arrays) ----
+  // Recomputed with the planes (from_faces, convert_from, with_vertices), one
+  // entry per undirected edge e, in edge order:
+  //   edge_directions()[e]   head - tail, the same value edge_direction(e)
+  //                          computes (one subtraction per coordinate in T);
+  //   edge_normals(s)[e]     plane(edge_face(e, s)).normal, copied.
+  // Contiguous arrays, so the Gauss map's edge-pair loop streams through B's
+  // edges without the half-edge and face indirections.  Vec3<T> for every T,
+  // exact types included: the values are exactly those of the accessors above.
+  std::span<const Vec3<T>> edge_directions() const { return edge_dirs_; }
+  /// Normals of the faces on side 0 (face of half-edge 2e) or side 1 (2e+1).
+  std::span<const Vec3<T>> edge_normals(int side) const {
+    return side == 0 ? std::span<const Vec3<T>>(edge_n0_) : std::span<const Vec3<T>>(edge_n1_);
+  }
+  /// edge_directions()[e].
+  const Vec3<T>& edge_dir(int e) const { return edge_dirs_[static_cast<std::size_t>(e)]; }
+  /// edge_normals(side)[e] == plane(edge_face(e, side)).normal.
+  const Vec3<T>& edge_normal(int e, int side) const {
+    return (side == 0 ? edge_n0_ : edge_n1_)[static_cast<std::size_t>(e)];
+  }
+
   // ---- faces ----
   const FaceLoop& face(int f) const { return faces_[static_cast<std::size_t>(f)]; }
   const std::vector<FaceLoop>& faces() const { return faces_; }
@@ -413,6 +434,19 @@ class ConvexPolyhedron {
       const auto pts = plane_points(f);
       planes_.push_back(plane_through(pts[0], pts[1], pts[2]));
     }
+    // per-edge arrays (after the planes: the normals are copies of theirs)
+    const auto ne = static_cast<std::size_t>(edge_count());
+    edge_dirs_.clear();
+    edge_n0_.clear();
+    edge_n1_.clear();
+    edge_dirs_.reserve(ne);
+    edge_n0_.reserve(ne);
+    edge_n1_.reserve(ne);
+    for (int e = 0; e < edge_count(); ++e) {
+      edge_dirs_.push_back(edge_direction(e));
+      edge_n0_.push_back(plane(edge_face(e, 0)).normal);
+      edge_n1_.push_back(plane(edge_face(e, 1)).normal);
+    }
     Vec3<T> sum(T(0), T(0), T(0));
     bmin_ = bmax_ = vertices_.empty() ? sum : vertices_[0];
     for (const auto& v : vertices_) {
@@ -578,6 +612,9 @@ class ConvexPolyhedron {
   std::vector<Plane<T>> planes_;
   std::vector<int> fan_start_;
   std::vector<int> fan_;
+  std::vector<Vec3<T>> edge_dirs_;  // per edge: head - tail
+  std::vector<Vec3<T>> edge_n0_;    // per edge: normal of edge_face(e, 0)
+  std::vector<Vec3<T>> edge_n1_;    // per edge: normal of edge_face(e, 1)
   Vec3<T> centroid_ = Vec3<T>(T(0), T(0), T(0));
   Vec3<T> bmin_ = Vec3<T>(T(0), T(0), T(0));
   Vec3<T> bmax_ = Vec3<T>(T(0), T(0), T(0));

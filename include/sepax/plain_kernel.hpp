@@ -34,20 +34,47 @@ class PlainKernel {
   Separation<T> face_separation_a(int f, int vb) const { return height(a_.plane(f), b_.vertex(vb)); }
   Separation<T> face_separation_b(int f, int va) const { return height(b_.plane(f), a_.vertex(va)); }
 
+  // The arc test reads the per-edge arrays of ConvexPolyhedron (edge_dir,
+  // edge_normal): the same T values as head - tail and the face planes'
+  // normals, without the half-edge and face indirections.
   ArcSigns arc_signs(int ea, int eb) const {
-    const Vec3<T> da = a_.edge_direction(ea);
-    const Vec3<T> db = b_.edge_direction(eb);
+    const Vec3<T>& da = a_.edge_dir(ea);
+    const Vec3<T>& db = b_.edge_dir(eb);
     ArcSigns s;
-    s.cba = sign_of(dot(b_.plane(b_.edge_face(eb, 0)).normal, da));
-    s.dba = sign_of(dot(b_.plane(b_.edge_face(eb, 1)).normal, da));
-    s.adc = -sign_of(dot(a_.plane(a_.edge_face(ea, 0)).normal, db));
-    s.bdc = -sign_of(dot(a_.plane(a_.edge_face(ea, 1)).normal, db));
+    s.cba = sign_of(dot(b_.edge_normal(eb, 0), da));
+    s.dba = sign_of(dot(b_.edge_normal(eb, 1), da));
+    s.adc = -sign_of(dot(a_.edge_normal(ea, 0), db));
+    s.bdc = -sign_of(dot(a_.edge_normal(ea, 1), db));
     return s;
   }
 
+  /// == arc_signs(ea, eb).minkowski_face(), same products in the same order
+  /// (bit-identical for float), stopping after cba, dba when they are not
+  /// strictly opposite (most pairs).
+  bool minkowski_face(int ea, int eb) const {
+    const Vec3<T>& da = a_.edge_dir(ea);
+    const T c = dot(b_.edge_normal(eb, 0), da);
+    const T d = dot(b_.edge_normal(eb, 1), da);
+    if constexpr (number_traits<T>::is_exact) {
+      if (!(sign_of(c) * sign_of(d) < 0)) return false;
+    } else {
+      // sign_of(c) * sign_of(d) < 0 as min < 0 < max: the same answer for
+      // every input (signed zeros give false, and so does a NaN in either
+      // place: it is never selected as both the min and the max), fewer ops.
+      const T lo = d < c ? d : c;
+      const T hi = c < d ? d : c;
+      if (!(lo < T(0) && T(0) < hi)) return false;
+    }
+    const int cba = sign_of(c);
+    const Vec3<T>& db = b_.edge_dir(eb);
+    const int adc = -sign_of(dot(a_.edge_normal(ea, 0), db));
+    const int bdc = -sign_of(dot(a_.edge_normal(ea, 1), db));
+    return adc * bdc < 0 && cba * bdc > 0;
+  }
+
   bool edges_parallel(int ea, int eb) const {
-    const Vec3<T> da = a_.edge_direction(ea);
-    const Vec3<T> db = b_.edge_direction(eb);
+    const Vec3<T>& da = a_.edge_dir(ea);
+    const Vec3<T>& db = b_.edge_dir(eb);
     const Vec3<T> n = cross(da, db);
     if constexpr (number_traits<T>::is_exact) {
       return is_zero(n);
@@ -140,7 +167,7 @@ class PlainKernel {
 
   // eA x eB, normalised when T normalises (not oriented).
   Vec3<T> unoriented_axis(int ea, int eb) const {
-    return normalized(cross(a_.edge_direction(ea), b_.edge_direction(eb)));
+    return normalized(cross(a_.edge_dir(ea), b_.edge_dir(eb)));
   }
 
   // eA x eB oriented from A to B (Gregorius' rule: for a Minkowski edge pair

@@ -6,7 +6,8 @@
 // pruned by the Minkowski-face test: edge eA is the arc between its two face
 // normals on A's Gauss map, edge eB the arc between the *negated* normals of
 // its faces on the Gauss map of -B; the pair is a face of A - B iff the arcs
-// cross (ArcSigns, sat_kernel.hpp).  A surviving, non-parallel pair is measured
+// cross (ArcSigns, sat_kernel.hpp; decided by the kernel's short-circuit
+// minkowski_face when it has one).  A surviving, non-parallel pair is measured
 // in O(1): the plane through eA with normal eA x eB, oriented away from A's
 // centroid, and the height of eB above it.  Same result and tie-break as
 // sat::brute_force.
@@ -22,17 +23,35 @@ SatResult<typename K::FT> gauss_map_with(K& k, const SatOptions& opt = {}) {
   detail::BestAxis<K> best;
   SatStats stats;
   if (detail::scan_face_axes(k, best, stats, opt)) return best.result(k, stats, true);
-  for (int ea = 0; ea < k.a().edge_count(); ++ea) {
-    for (int eb = 0; eb < k.b().edge_count(); ++eb) {
-      ++stats.edge_pairs;
-      if (!k.arc_signs(ea, eb).minkowski_face()) continue;
-      if (k.edges_parallel(ea, eb)) continue;
+  const int na = k.a().edge_count(), nb = k.b().edge_count();
+  for (int ea = 0; ea < na; ++ea) {
+    int eb = 0;
+    while (eb < nb) {
+      // Tight scan to the next pair whose arcs cross (the common pair is
+      // rejected here).  Written with the test first and the bound check
+      // last, so the test's loads of eA's data run on every iteration: with
+      // PlainKernel (no stores, no calls on this path) the compiler hoists
+      // them out of the scan.
+      if constexpr (HasMinkowskiFace<K>) {
+        while (!k.minkowski_face(ea, eb) && ++eb < nb) {
+        }
+      } else {
+        while (!k.arc_signs(ea, eb).minkowski_face() && ++eb < nb) {
+        }
+      }
+      if (eb == nb) break;
+      const int cur = eb++;
+      if (k.edges_parallel(ea, cur)) continue;
       ++stats.minkowski_faces;
-      const auto s = k.edge_separation(ea, eb);
-      const Feature feat = Feature::edges(ea, eb);
+      const auto s = k.edge_separation(ea, cur);
+      const Feature feat = Feature::edges(ea, cur);
       best.consider(k, s, feat);
-      if (opt.early_out && k.sign(s, feat) > 0) return best.result(k, stats, true);
+      if (opt.early_out && k.sign(s, feat) > 0) {
+        stats.edge_pairs += eb;  // this row's pairs looked at so far (earlier rows: below)
+        return best.result(k, stats, true);
+      }
     }
+    stats.edge_pairs += nb;
   }
   return best.result(k, stats, false);
 }

@@ -90,6 +90,21 @@ concept SatKernel = requires(K k, const K ck, int i, int j, const Separation<typ
   { ck.exact_fallbacks() } -> std::convertible_to<std::int64_t>;
 };
 
+/// Optional kernel member (not part of SatKernel):
+///   bool minkowski_face(int ea, int eb)
+/// must return exactly arc_signs(ea, eb).minkowski_face(), the same decision
+/// from the same values, but may stop early: most pairs of the Gauss map's
+/// O(E_A E_B) loop are rejected by cba and dba alone (the arc of eA does not
+/// straddle the plane of eB's arc), so a kernel decides sign(cba), sign(dba)
+/// first and returns false unless they are strictly opposite, and only then
+/// decides adc, bdc.  sat::gauss_map_with calls it when the kernel has it
+/// (`requires { k.minkowski_face(ea, eb); }`), arc_signs otherwise.
+/// arc_signs itself must keep returning all four signs (audits compare them).
+template <class K>
+concept HasMinkowskiFace = requires(K k, int i, int j) {
+  { k.minkowski_face(i, j) } -> std::same_as<bool>;
+};
+
 /// Maps (policy, T) to a kernel type.  Specialised by each policy.
 template <class Policy, class T>
 struct kernel_for;

@@ -100,6 +100,14 @@
 #include <sepax/robust/separation_compare.hpp>
 #include <sepax/sat_kernel.hpp>
 
+/// The SAT loops' per-pair fast paths: inlined into the loop even when the
+/// inliner's size heuristics would not (their exact stages are out of line).
+#if defined(__GNUC__) || defined(__clang__)
+#define SEPAX_ROBUST_INLINE [[gnu::always_inline]]
+#else
+#define SEPAX_ROBUST_INLINE
+#endif
+
 namespace sepax {
 
 namespace policy {
@@ -166,23 +174,16 @@ class RobustKernel {
   }
 
   ArcSigns arc_signs(int ea, int eb) const {
-    // A SAT loops over edges of B for one edge of A: A's edge direction and
-    // face normals are cached across calls (the same T values PlainKernel
-    // computes, loaded once).
-    if (ea != arc_cache_.ea) [[unlikely]] {
-      arc_cache_.ea = ea;
-      arc_cache_.da = a_.edge_direction(ea);
-      arc_cache_.n0 = a_.plane(a_.edge_face(ea, 0)).normal;
-      arc_cache_.n1 = a_.plane(a_.edge_face(ea, 1)).normal;
-    }
-    const Vec3<T>& da = arc_cache_.da;
-    const Vec3<T> db = b_.edge_direction(eb);
+    // The per-edge arrays of ConvexPolyhedron: the same T values PlainKernel
+    // computes (head - tail, the faces' normals), without indirections.
+    const Vec3<T>& da = a_.edge_dir(ea);
+    const Vec3<T>& db = b_.edge_dir(eb);
     // Branch-free like PlainKernel (the signs are unpredictable); one
     // well-predicted branch for "some sign is within its error bound".
-    const T c = dot(b_.plane(b_.edge_face(eb, 0)).normal, da);
-    const T d = dot(b_.plane(b_.edge_face(eb, 1)).normal, da);
-    const T a = dot(arc_cache_.n0, db);
-    const T b = dot(arc_cache_.n1, db);
+    const T c = dot(b_.edge_normal(eb, 0), da);
+    const T d = dot(b_.edge_normal(eb, 1), da);
+    const T a = dot(a_.edge_normal(ea, 0), db);
+    const T b = dot(a_.edge_normal(ea, 1), db);
     const T eb_ = arc_err_b_t_, ea_ = arc_err_a_t_;  // the bounds rounded up to T
     ArcSigns s;
     s.cba = (c > eb_) - (c < -eb_);
@@ -194,6 +195,59 @@ class RobustKernel {
     return s;
   }
 
+  /// == arc_signs(ea, eb).minkowski_face() (the same exact signs), deciding
+  /// sign(cba), sign(dba) first -- filter, exact only within the bound -- and
+  /// adc, bdc only when those two are strictly opposite.  Signs it does not
+  /// need are not decided, so exact_fallbacks() counts fewer arc fallbacks
+  /// than arc_signs would.  Inline when every needed sign is certain from the
+  /// filter; any uncertain sign goes to minkowski_face_resolve.
+  SEPAX_ROBUST_INLINE bool minkowski_face(int ea, int eb) const {
+    const Vec3<T>& da = a_.edge_dir(ea);
+    const T c = dot(b_.edge_normal(eb, 0), da);
+    const T d = dot(b_.edge_normal(eb, 1), da);
+    const T eb_ = arc_err_b_t_;
+    // certainly on the same side (filtered signs both +1 or both -1): the
+    // common case.  Comparisons with NaN are false, so NaN goes to the exact
+    // stage like any value within the bound.
+    if (((c > eb_) & (d > eb_)) | ((c < -eb_) & (d < -eb_))) return false;
+    if (!(((c > eb_) & (d < -eb_)) | ((c < -eb_) & (d > eb_)))) [[unlikely]]
+      return minkowski_face_resolve(ea, eb);
+    // cba = -dba, both certain
+    const Vec3<T>& db = b_.edge_dir(eb);
+    const T a = dot(a_.edge_normal(ea, 0), db);
+    const T b = dot(a_.edge_normal(ea, 1), db);
+    const T ea_ = arc_err_a_t_;
+    const int adc = (a < -ea_) - (a > ea_);
+    const int bdc = (b < -ea_) - (b > ea_);
+    if (adc * bdc == 0) [[unlikely]] return minkowski_face_resolve(ea, eb);
+    const int cba = c > eb_ ? 1 : -1;
+    return adc * bdc < 0 && cba * bdc > 0;
+  }
+
+ private:
+  // minkowski_face with some needed sign within its bound: the same sequence
+  // (cba, dba, then adc, bdc only if cba, dba are strictly opposite), each
+  // sign filtered and decided exactly when uncertain.
+  SEPAX_ROBUST_COLD bool minkowski_face_resolve(int ea, int eb) const {
+    const Vec3<T>& da = a_.edge_dir(ea);
+    const T c = dot(b_.edge_normal(eb, 0), da);
+    const T d = dot(b_.edge_normal(eb, 1), da);
+    const T eb_ = arc_err_b_t_;
+    int cba = (c > eb_) - (c < -eb_);
+    int dba = (d > eb_) - (d < -eb_);
+    if (cba * dba == 0) resolve_arc_signs_ba(cba, dba, ea, eb, c, d);
+    if (!(cba * dba < 0)) return false;
+    const Vec3<T>& db = b_.edge_dir(eb);
+    const T a = dot(a_.edge_normal(ea, 0), db);
+    const T b = dot(a_.edge_normal(ea, 1), db);
+    const T ea_ = arc_err_a_t_;
+    int adc = (a < -ea_) - (a > ea_);
+    int bdc = (b < -ea_) - (b > ea_);
+    if (adc * bdc == 0) resolve_arc_signs_dc(adc, bdc, ea, eb, a, b);
+    return adc * bdc < 0 && cba * bdc > 0;
+  }
+
+ public:
   bool edges_parallel(int ea, int eb) const {
     return robust::parallel(a_.vertex(a_.edge_tail(ea)), a_.vertex(a_.edge_head(ea)),
                             b_.vertex(b_.edge_tail(eb)), b_.vertex(b_.edge_head(eb)), &fallbacks_);
@@ -367,8 +421,8 @@ class RobustKernel {
   }
 
   EdgeAxis compute_edge_axis(int ea, int eb) const {
-    const Vec3<T> da = a_.edge_direction(ea);
-    const Vec3<T> db = b_.edge_direction(eb);
+    const Vec3<T>& da = a_.edge_dir(ea);
+    const Vec3<T>& db = b_.edge_dir(eb);
     const Vec3<T> c = cross(da, db);
     const double r2 = cross_ratio_squared(da, db, c);
     EdgeAxis ax;
@@ -533,6 +587,17 @@ class RobustKernel {
     if (!(std::fabs(b) > arc_err_a_t_)) s.bdc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 1), b_, eb);
   }
 
+  // minkowski_face's halves of resolve_arc_signs (same exact predicates).
+  SEPAX_ROBUST_COLD void resolve_arc_signs_ba(int& cba, int& dba, int ea, int eb, T c, T d) const {
+    if (!(std::fabs(c) > arc_err_b_t_)) cba = normal_dot_sign_exact(b_, b_.edge_face(eb, 0), a_, ea);
+    if (!(std::fabs(d) > arc_err_b_t_)) dba = normal_dot_sign_exact(b_, b_.edge_face(eb, 1), a_, ea);
+  }
+
+  SEPAX_ROBUST_COLD void resolve_arc_signs_dc(int& adc, int& bdc, int ea, int eb, T a, T b) const {
+    if (!(std::fabs(a) > arc_err_a_t_)) adc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 0), b_, eb);
+    if (!(std::fabs(b) > arc_err_a_t_)) bdc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 1), b_, eb);
+  }
+
   SEPAX_ROBUST_COLD int normal_dot_sign_exact(const P& p, int f, const P& q, int ei) const {
     const auto& t = p.face(f).plane_vertices;
     const Vec3<T>& v0 = p.vertex(t[0]);
@@ -649,15 +714,10 @@ class RobustKernel {
   double edge_abs_ = 0;
   double proj_abs_a_ = 0, proj_abs_b_ = 0;
   double centroid_err_a_ = 0, centroid_err_b_ = 0;
-  struct ArcCache {
-    int ea = -1;
-    Vec3<T> da, n0, n1;
-  };
   struct AxisCache {
     int ea = -1, eb = -1;
     EdgeAxis axis;
   };
-  mutable ArcCache arc_cache_;
   mutable AxisCache axis_cache_;
   mutable std::int64_t fallbacks_ = 0;
   mutable bool projection_rule_ = false;
