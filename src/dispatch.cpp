@@ -24,6 +24,7 @@ int help_main(int, char**) {
 constexpr Verb kVerbs[] = {
     {"query", &query_main, "separating axis test of two shapes, or a batch of JSON lines"},
     {"info", &info_main, "build a shape and print its vertex, edge and face counts"},
+    {"render", &render_main, "draw two shapes, their contacts and overlaid Gauss maps as SVG"},
 #ifdef SEPAX_HAVE_FUZZ
     {"fuzz", &sepax::fuzz::fuzz_main, "random differential testing of the SATs (see 'sepax fuzz --help')"},
     {"audit", &sepax::fuzz::audit_main, "audit float results against exact arithmetic (see 'sepax audit --help')"},

@@ -55,3 +55,15 @@ add_test(NAME cli/install_and_consume
     -D WITH_ROBUST=${SEPAX_BUILD_ROBUST}
     -P ${CMAKE_CURRENT_SOURCE_DIR}/consumer/run_install_test.cmake)
 set_tests_properties(cli/install_and_consume PROPERTIES TIMEOUT 1200 RUN_SERIAL TRUE)
+
+# Contact manifolds in the query output (text and JSON) and the render verb.
+sepax_cli_test(query_manifold_box_on_box
+  "manifold: +face contact, 4 points \\(reference face 1 of A, incident face 0 of B"
+  query cube cube --pose 0 0 1.5)
+sepax_cli_test(query_manifold_crossed_edges_exact_json
+  "\"manifold\":\\{\"kind\":\"edge\",\"points\":\\[\\{\"position\":\\[0,0,0\\.95\\],\"separation\":-0\\.1[0-9]*,\"id\":\"A:edge 3/B:edge 1\"\\}\\]\\}"
+  query tetra tetra --pose 0 0 1.9 --number exact --json)
+sepax_cli_test(render_svg_stdout "^<svg .*Gauss maps.*</svg>"
+  render cube polygon:3 --pose 0.1 0 1 --svg -)
+sepax_cli_test(render_needs_svg "--svg FILE is required"
+  render cube cube)

@@ -13,6 +13,7 @@
 
 #include "commands/batch.hpp"
 #include "commands/query_output.hpp"
+#include "commands/render_command.hpp"
 #include "commands/sat_runner.hpp"
 #include "io/open_file.hpp"
 #include "io/shape_source.hpp"
@@ -33,6 +34,15 @@ const char* const query_usage =
     "  --robust                        float/double with every decision made exactly\n"
     "  --json                          print one JSON object\n"
     "  --batch FILE|-                  JSON lines in (FILE or stdin), JSON lines out\n"
+    "\n"
+    "shapes:\n";
+
+const char* const render_usage =
+    "usage: sepax render A B --svg FILE|- [--pose ...] [--algorithm brute|gauss|traversal] [--robust]\n"
+    "\n"
+    "Draw A, B (B moved by --pose), their contact manifold and the overlaid Gauss maps of\n"
+    "A and -B (arcs, Minkowski edge-edge faces, the chosen axis) as an SVG picture.\n"
+    "The case is computed in double (robust policy with --robust).\n"
     "\n"
     "shapes:\n";
 
@@ -63,9 +73,10 @@ struct Options {
   bool json = false;
   bool help = false;
   std::optional<std::string> batch;
+  std::optional<std::string> svg;
 };
 
-Options parse_options(const std::vector<std::string>& args, bool allow_batch) {
+Options parse_options(const std::vector<std::string>& args, bool allow_batch, bool allow_svg = false) {
   Options o;
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::string a = args[i];
@@ -95,6 +106,8 @@ Options parse_options(const std::vector<std::string>& args, bool allow_batch) {
       const auto k = parse_algorithm_kind(v);
       if (!k) throw UsageError("--algorithm: unknown algorithm '" + v + "' (brute, gauss or traversal)");
       o.cfg.algorithm = *k;
+    } else if (a == "--svg" && allow_svg) {
+      o.svg = value("a file name (or - for standard output)");
     } else if (a == "--batch" && allow_batch) {
       o.batch = value("a file name (or - for standard input)");
     } else if (a == "--pose") {
@@ -241,6 +254,39 @@ int run_info(const std::vector<std::string>& args, std::ostream& out, std::ostre
   }
 }
 
+int run_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  Options o;
+  try {
+    o = parse_options(args, /*allow_batch=*/false, /*allow_svg=*/true);
+  } catch (const UsageError& e) {
+    return usage_error(err, "render", e.what());
+  }
+  if (o.help) {
+    out << render_usage << io::builtin_shapes_help();
+    return 0;
+  }
+  if (o.positional.size() != 2) {
+    return usage_error(err, "render", "expected two shapes A and B, got " + std::to_string(o.positional.size()));
+  }
+  if (!o.svg) return usage_error(err, "render", "--svg FILE is required (- for standard output)");
+  if (o.json) return usage_error(err, "render", "--json does not apply to render");
+  try {
+    const io::ShapeData a = io::load_shape(o.positional[0]);
+    const io::ShapeData b = io::load_shape(o.positional[1]);
+    const std::string svg = render_case_svg(a, b, o.pose ? &*o.pose : nullptr, o.cfg, a.name + "  vs  " + b.name);
+    if (*o.svg == "-") {
+      out << svg;
+    } else {
+      std::ofstream f(*o.svg, std::ios::binary);
+      if (!(f << svg) || !f.flush()) return input_error(out, err, false, "cannot write " + *o.svg);
+      err << "sepax render: wrote " << *o.svg << "\n";
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    return input_error(out, err, false, e.what());
+  }
+}
+
 namespace {
 std::vector<std::string> rest(int argc, char** argv) {
   std::vector<std::string> v;
@@ -251,5 +297,6 @@ std::vector<std::string> rest(int argc, char** argv) {
 
 int query_main(int argc, char** argv) { return run_query(rest(argc, argv), std::cin, std::cout, std::cerr); }
 int info_main(int argc, char** argv) { return run_info(rest(argc, argv), std::cout, std::cerr); }
+int render_main(int argc, char** argv) { return run_render(rest(argc, argv), std::cout, std::cerr); }
 
 }  // namespace sepax::cli

@@ -21,12 +21,15 @@ namespace sepax::cli {
 /// args excludes the verb.  in is read by --batch -.
 int run_query(const std::vector<std::string>& args, std::istream& in, std::ostream& out, std::ostream& err);
 int run_info(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int run_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 /// Entry points for the verb table: argv[0] is the verb.
 int query_main(int argc, char** argv);
 int info_main(int argc, char** argv);
+int render_main(int argc, char** argv);
 
 extern const char* const query_usage;
 extern const char* const info_usage;
+extern const char* const render_usage;
 
 }  // namespace sepax::cli

@@ -35,6 +35,22 @@ std::string feature_text(const Feature& f) {
   return "?";
 }
 
+json::Value manifold_json(const ManifoldOut& m) {
+  json::Array points;
+  for (const auto& p : m.points) {
+    points.push_back(json::Value(
+        json::Object{{"position", vector_json(p.position)}, {"separation", p.separation}, {"id", p.id}}));
+  }
+  json::Object o{{"kind", m.kind}};
+  if (m.kind == "face") {
+    o.emplace_back("reference", m.reference_shape == 0 ? "A" : "B");
+    o.emplace_back("reference_face", m.reference_face);
+    o.emplace_back("incident_face", m.incident_face);
+  }
+  o.emplace_back("points", json::Value(std::move(points)));
+  return json::Value(std::move(o));
+}
+
 }  // namespace
 
 json::Value query_json(const RunOutcome& r, const RunConfig& cfg) {
@@ -45,7 +61,8 @@ json::Value query_json(const RunOutcome& r, const RunConfig& cfg) {
                                   {"number", name(cfg.number)},
                                   {"algorithm", name(cfg.algorithm)},
                                   {"policy", cfg.robust ? "robust" : "plain"},
-                                  {"stats", stats_json(r.stats)}});
+                                  {"stats", stats_json(r.stats)},
+                                  {"manifold", manifold_json(r.manifold)}});
 }
 
 json::Value batch_result_json(const json::Value& id, const RunOutcome& r) {
@@ -69,6 +86,19 @@ void print_query_text(std::ostream& out, const RunOutcome& r, const RunConfig& c
       << (cfg.robust ? "robust" : "plain") << " policy\n"
       << "stats:      " << r.stats.face_axes << " face axes, " << r.stats.edge_pairs << " edge pairs, "
       << r.stats.minkowski_faces << " Minkowski faces, " << r.stats.exact_fallbacks << " exact fallbacks\n";
+  const ManifoldOut& m = r.manifold;
+  out << "manifold:   " << m.kind << " contact, " << m.points.size() << " point" << (m.points.size() == 1 ? "" : "s");
+  if (m.kind == "face") {
+    out << " (reference face " << m.reference_face << " of " << (m.reference_shape == 0 ? "A" : "B")
+        << ", incident face " << m.incident_face << " of " << (m.reference_shape == 0 ? "B" : "A") << ", "
+        << m.candidate_points << " clipped points before reduction)";
+  }
+  out << "\n";
+  for (const auto& p : m.points) {
+    out << "  point " << json::number_text(p.position[0]) << " " << json::number_text(p.position[1]) << " "
+        << json::number_text(p.position[2]) << "  separation " << json::number_text(p.separation) << "  " << p.id
+        << "\n";
+  }
 }
 
 }  // namespace sepax::cli

@@ -6,6 +6,7 @@
 
 #include <gmpxx.h>
 
+#include <sepax/contact_manifold.hpp>
 #include <sepax/robust/number_types.hpp>
 #include <sepax/sat_brute_force.hpp>
 #include <sepax/sat_gauss_map.hpp>
@@ -84,6 +85,20 @@ ShapeCounts counts_of(const ConvexPolyhedron<T>& p) {
   return ShapeCounts{p.vertex_count(), p.edge_count(), p.face_count(), p.is_flat()};
 }
 
+template <Number T>
+ManifoldOut manifold_out(const ContactManifold<T>& m) {
+  ManifoldOut out;
+  out.kind = to_string(m.kind);
+  out.reference_shape = m.reference_shape;
+  out.reference_face = m.reference_face;
+  out.incident_face = m.incident_face;
+  out.candidate_points = m.candidate_points;
+  for (const auto& p : m.points) {
+    out.points.push_back(ContactOut{vec_to_double(p.position), sepax::to_double(p.separation), to_string(p.id)});
+  }
+  return out;
+}
+
 template <class Policy, Number T>
 SatResult<T> run_algorithm(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, AlgorithmKind alg) {
   switch (alg) {
@@ -131,6 +146,7 @@ RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pos
   out.normal = n;
   out.a = counts_of(a);
   out.b = counts_of(b);
+  out.manifold = manifold_out(contact_manifold(a, b, r));
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <sepax/feature.hpp>
 #include <sepax/sat_result.hpp>
@@ -39,6 +40,23 @@ struct ShapeCounts {
   bool flat = false;
 };
 
+/// One contact point of the manifold, in doubles (reporting).
+struct ContactOut {
+  Vec3<double> position = Vec3<double>(0, 0, 0);  // midway between the points on A and B
+  double separation = 0;                          // < 0 penetrating
+  std::string id;                                 // "A:<feature>/B:<feature>" (contact_feature.hpp)
+};
+
+/// The contact manifold built from the SAT result (sepax/contact_manifold.hpp).
+struct ManifoldOut {
+  std::string kind = "none";  // none | face | edge
+  int reference_shape = -1;   // face contacts: 0 = A, 1 = B
+  int reference_face = -1;
+  int incident_face = -1;
+  int candidate_points = 0;   // points below the reference face before the reduction
+  std::vector<ContactOut> points;
+};
+
 struct RunOutcome {
   bool overlap = false;
   double separation = 0;                  // signed, along the unit axis
@@ -47,6 +65,7 @@ struct RunOutcome {
   SatStats stats;
   bool early_out = false;
   ShapeCounts a, b;
+  ManifoldOut manifold;
 };
 
 const char* name(NumberKind k);

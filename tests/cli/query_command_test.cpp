@@ -77,7 +77,8 @@ TEST_CASE("query: --json prints one object whose values match run_sat", "[query]
     const json::Value v = json::parse(r.out);
     std::vector<std::string> keys;
     for (const auto& kv : v.as_object()) keys.push_back(kv.first);
-    CHECK(keys == std::vector<std::string>{"overlap", "separation", "feature", "normal", "number", "algorithm", "policy", "stats"});
+    CHECK(keys == std::vector<std::string>{"overlap", "separation", "feature", "normal", "number", "algorithm", "policy",
+                                           "stats", "manifold"});
     // recompute with the library entry point
     RunConfig cfg;
     std::optional<Pose> pose;
@@ -98,6 +99,16 @@ TEST_CASE("query: --json prints one object whose values match run_sat", "[query]
     CHECK(v.find("overlap")->as_bool() == ref.overlap);
     CHECK(v.find("separation")->as_double() == ref.separation);
     CHECK(v.find("feature")->find("type")->as_string() == type_name(ref.feature.type));
+    // the contact manifold: same kind and the same points, ids and separations
+    const json::Value& m = *v.find("manifold");
+    CHECK(m.find("kind")->as_string() == ref.manifold.kind);
+    REQUIRE(m.find("points")->as_array().size() == ref.manifold.points.size());
+    for (std::size_t k = 0; k < ref.manifold.points.size(); ++k) {
+      const json::Value& p = m.find("points")->as_array()[k];
+      CHECK(p.find("id")->as_string() == ref.manifold.points[k].id);
+      CHECK(p.find("separation")->as_double() == ref.manifold.points[k].separation);
+      CHECK(p.find("position")->as_array()[2].as_double() == ref.manifold.points[k].position[2]);
+    }
     CHECK(v.find("feature")->find("a")->as_double() == ref.feature.a);
     CHECK(v.find("feature")->find("b")->as_double() == ref.feature.b);
     const auto& n = v.find("normal")->as_array();
