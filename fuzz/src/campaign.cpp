@@ -134,14 +134,14 @@ void print_text(std::ostream& out, const Report& r) {
     out << line;
   }
   auto table = [&](const std::map<std::string, Counts>& m, const char* title) {
-    std::snprintf(line, sizeof line, "\n  %-30s %12s %10s %10s %8s %11s\n", title, "agree", "exact_zero", "explained",
-                  "tie", "unexplained");
+    std::snprintf(line, sizeof line, "\n  %-30s %12s %10s %10s %8s %11s %9s\n", title, "agree", "exact_zero",
+                  "explained", "tie", "unexplained", "nonconvex");
     out << line;
     for (const auto& [name, c] : m) {
-      std::snprintf(line, sizeof line, "  %-30s %12lld %10lld %10lld %8lld %11lld\n", name.c_str(),
+      std::snprintf(line, sizeof line, "  %-30s %12lld %10lld %10lld %8lld %11lld %9lld\n", name.c_str(),
                     static_cast<long long>(c[Klass::agree]), static_cast<long long>(c[Klass::exact_zero]),
                     static_cast<long long>(c[Klass::explained]), static_cast<long long>(c[Klass::tie]),
-                    static_cast<long long>(c[Klass::unexplained]));
+                    static_cast<long long>(c[Klass::unexplained]), static_cast<long long>(c[Klass::nonconvex]));
       out << line;
     }
   };

@@ -26,6 +26,7 @@ const char* klass_name(Klass k) {
     case Klass::explained: return "explained";
     case Klass::tie: return "tie";
     case Klass::unexplained: return "unexplained";
+    case Klass::nonconvex: return "nonconvex";
   }
   return "?";
 }
@@ -115,7 +116,34 @@ struct Exact {
   std::vector<FaceQuery<Q>> fqA, fqB;
   std::vector<ArcSigns> arcs;  // ea * EB + eb
   std::vector<double> nlenA, nlenB;  // lower bounds on |N_e| per face
+  // Is the exact image exactly convex (every face's vertices exactly on the
+  // plane through its plane triple, every vertex on or below every face)?
+  // When it is not, each SAT is checked against the exact run of the same
+  // SAT (ref_by_sat, filled by the mpq pass), and cross-SAT differences are
+  // classified Klass::nonconvex (see check.hpp).
+  bool convex = true;
+  std::array<std::optional<SatResult<Q>>, 3> ref_by_sat;
+
+  const SatResult<Q>& ref_for(Sat sat) const {
+    const auto& r = ref_by_sat[static_cast<std::size_t>(sat)];
+    return (!convex && r) ? *r : ref;
+  }
+  /// The comparison with ref_for(sat) crosses SATs on a non-convex input.
+  bool cross_sat(Sat sat) const {
+    return !convex && sat != Sat::gauss_map && !ref_by_sat[static_cast<std::size_t>(sat)];
+  }
 };
+
+bool exactly_convex(const CPQ& p) {
+  for (int f = 0; f < p.face_count(); ++f) {
+    const Plane<Q>& pl = p.plane(f);
+    for (int v : p.face_vertices(f))
+      if (sgn(Q(dot(pl.normal, p.vertex(v)) - pl.offset)) != 0) return false;
+    for (int v = 0; v < p.vertex_count(); ++v)
+      if (sgn(Q(dot(pl.normal, p.vertex(v)) - pl.offset)) > 0) return false;
+  }
+  return true;
+}
 
 Separation<Q> exact_edge_projection(const Exact& E, int ea, int eb) {
   const Vec3<Q> n = cross(E.A.edge_direction(ea), E.B.edge_direction(eb));
@@ -303,12 +331,19 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     rec.add("minkowski_face", cfg, "kernel", Klass::agree, nullptr, agree_verdicts);
   }
   // ---- every SAT ----
-  const Feature& fe = E.ref.feature;
-  const Separation<Q>& se = E.ref.separation;
   for (Sat sat : all_sats()) {
     if (sat == Sat::brute_force &&
         static_cast<double>(EA) * EB * (A.vertex_count() + B.vertex_count()) > 2e7)
       continue;
+    // The exact answer of this SAT (the mpq Gauss map when the input is
+    // exactly convex, where all exact SATs agree; otherwise mpq's run of the
+    // same SAT when it was made).  Only a comparison that still crosses SATs
+    // on a non-convex input may be classified nonconvex.
+    const SatResult<Q>& R = E.ref_for(sat);
+    const Feature& fe = R.feature;
+    const Separation<Q>& se = R.separation;
+    const bool crosses = E.cross_sat(sat);
+    auto cls = [crosses](Klass k) { return (crosses && k == Klass::unexplained) ? Klass::nonconvex : k; };
     const SatResult<F> r = run_sat<Policy>(sat, A, B);
     rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
     const Feature& ff = r.feature;
@@ -320,14 +355,14 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
         std::ostringstream s;
         s << what << ": " << cfg << " " << sat_name(sat) << " reports overlap=" << r.overlap << " feature "
           << to_string(ff) << " separation " << num(sf) << " (exact value of that feature "
-          << num(sepax::to_double(xf)) << ", bound " << num(bf) << "); exact: overlap=" << E.ref.overlap
+          << num(sepax::to_double(xf)) << ", bound " << num(bf) << "); exact: overlap=" << R.overlap
           << " feature " << to_string(fe) << " separation " << num(sepax::to_double(se)) << " (" << cfg
           << " bound for it " << num(be) << ")";
         return s.str();
       };
     };
     // overlap verdict
-    const Klass ko = classify_overlap(r.overlap, E.ref.overlap, se, bf + be, exact_decisions);
+    const Klass ko = cls(classify_overlap(r.overlap, R.overlap, se, bf + be, exact_decisions));
     rec.add("overlap", cfg, sat_name(sat), ko, describe("overlap verdict differs"));
     // feature
     Klass kf = Klass::agree;
@@ -344,15 +379,15 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
         kf = close(xf, se, bf + be) ? Klass::tie : Klass::unexplained;
       }
     }
-    rec.add("feature", cfg, sat_name(sat), kf, describe("feature differs"));
+    rec.add("feature", cfg, sat_name(sat), cls(kf), describe("feature differs"));
     // separation value
-    const Klass ks = classify_separation(sf, se, same_axis(ff, fe), bf, be, exact_decisions);
+    const Klass ks = cls(classify_separation(sf, se, same_axis(ff, fe), bf, be, exact_decisions));
     rec.add("separation", cfg, sat_name(sat), ks, describe("separation outside its bound"));
   }
 }
 
 template <class T>
-void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, const Exact& E,
+void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, Exact& E,
                       const std::string& cfg, bool skip_reference, const CheckOptions& opt, Recorder& rec) {
   const auto A = ConvexPolyhedron<T>::convert_from(Af);
   const auto B = ConvexPolyhedron<T>::convert_from(Bf);
@@ -365,14 +400,24 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
       continue;
     const SatResult<T> r = run_sat<policy::Plain>(sat, A, B);
     rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
-    bool same = r.overlap == E.ref.overlap && r.feature == E.ref.feature;
-    if constexpr (std::is_same_v<T, Q>) same = same && sepax::compare(r.separation, E.ref.separation) == 0;
-    rec.add("exact", cfg, sat_name(sat), same ? Klass::agree : Klass::unexplained, [&] {
+    // mpq: always against the reference (mpq Gauss map); other exact types:
+    // against mpq's run of the same SAT when the input is not exactly convex.
+    const bool is_mpq = std::is_same_v<T, Q>;
+    const SatResult<Q>& R = is_mpq ? E.ref : E.ref_for(sat);
+    const bool crosses = sat != Sat::gauss_map && (is_mpq || E.cross_sat(sat));
+    bool same = r.overlap == R.overlap && r.feature == R.feature;
+    if constexpr (std::is_same_v<T, Q>) {
+      same = same && sepax::compare(r.separation, R.separation) == 0;
+      if (!E.convex) E.ref_by_sat[static_cast<std::size_t>(sat)] = r;
+    }
+    const Klass k = same ? Klass::agree : (!E.convex && crosses) ? Klass::nonconvex : Klass::unexplained;
+    rec.add("exact", cfg, sat_name(sat), k, [&] {
       std::ostringstream s;
       s << cfg << " " << sat_name(sat) << ": overlap=" << r.overlap << " feature " << to_string(r.feature)
-        << " separation " << num(sepax::to_double(r.separation)) << "; reference mpq gauss_map: overlap="
-        << E.ref.overlap << " feature " << to_string(E.ref.feature) << " separation "
-        << num(sepax::to_double(E.ref.separation));
+        << " separation " << num(sepax::to_double(r.separation)) << "; reference mpq "
+        << (&R == &E.ref ? "gauss_map" : sat_name(sat)) << ": overlap=" << R.overlap << " feature "
+        << to_string(R.feature) << " separation " << num(sepax::to_double(R.separation))
+        << (E.convex ? "" : " (exact image not exactly convex)");
       return s.str();
     });
   }
@@ -488,6 +533,7 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   }
   E.arcs = exact_arc_signs(Af, Bf);
   E.ref = run_sat<policy::Plain>(Sat::gauss_map, E.A, E.B);
+  E.convex = exactly_convex(E.A) && exactly_convex(E.B);
   rep.configs_run.push_back("mpq/gauss_map");
 
   // exact types among themselves
