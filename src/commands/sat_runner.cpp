@@ -8,8 +8,7 @@
 
 #include <sepax/contact_manifold.hpp>
 #include <sepax/robust/number_types.hpp>
-#include <sepax/sat_brute_force.hpp>
-#include <sepax/sat_gauss_map.hpp>
+#include <sepax/sat.hpp>
 
 #include "commands/shape_builder.hpp"
 
@@ -45,6 +44,15 @@ const char* name(AlgorithmKind k) {
     case AlgorithmKind::Traversal: return "traversal";
   }
   return "?";
+}
+
+SatAlgorithm sat_algorithm(AlgorithmKind k) {
+  switch (k) {
+    case AlgorithmKind::Brute: return SatAlgorithm::brute_force;
+    case AlgorithmKind::Gauss: return SatAlgorithm::gauss_map;
+    case AlgorithmKind::Traversal: return SatAlgorithm::traversal;
+  }
+  return SatAlgorithm::gauss_map;
 }
 
 std::optional<NumberKind> parse_number_kind(std::string_view s) {
@@ -101,17 +109,7 @@ ManifoldOut manifold_out(const ContactManifold<T>& m) {
 
 template <class Policy, Number T>
 SatResult<T> run_algorithm(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, AlgorithmKind alg) {
-  switch (alg) {
-    case AlgorithmKind::Brute: return sat::brute_force<Policy>(a, b);
-    case AlgorithmKind::Gauss: return sat::gauss_map<Policy>(a, b);
-    case AlgorithmKind::Traversal:
-#if SEPAX_CLI_HAVE_TRAVERSAL
-      return sat::traversal<Policy>(a, b);
-#else
-      break;
-#endif
-  }
-  throw std::invalid_argument("--algorithm traversal: this build has no traversal SAT");
+  return sat::run<Policy>(sat_algorithm(alg), a, b);
 }
 
 template <Number T>

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <sepax/feature.hpp>
+#include <sepax/sat.hpp>
 #include <sepax/sat_result.hpp>
 #include <sepax/vec3.hpp>
 
@@ -67,6 +68,9 @@ struct RunOutcome {
   ShapeCounts a, b;
   ManifoldOut manifold;
 };
+
+/// The library's name for an algorithm (sepax/sat.hpp).
+SatAlgorithm sat_algorithm(AlgorithmKind k);
 
 const char* name(NumberKind k);
 const char* name(AlgorithmKind k);
