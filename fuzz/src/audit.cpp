@@ -14,6 +14,7 @@
 #include <sepax/fuzz/error_bounds.hpp>
 #include <sepax/fuzz/generators.hpp>
 #include <sepax/fuzz/sat_list.hpp>
+#include <sepax/manifold_compare.hpp>
 #include <sepax/robust/number_types.hpp>
 
 namespace sepax::fuzz {
@@ -210,6 +211,45 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
     show(fname + "_robust", sat_name(sat), r.overlap, r.feature, r.separation_as_double());
   }
 #endif
+
+  // ---- contact manifold: how it was made, float against exact ----
+  {
+    ManifoldOptions mo;
+    mo.record_steps = true;
+    const auto rf = run_sat<policy::Plain>(Sat::gauss_map, A, B);
+    const ContactManifold<F> mf = contact_manifold(A, B, rf, mo);
+    const ContactManifold<Q> me = contact_manifold(Ae, Be, ref, mo);
+    out << "\nContact manifold (from the Gauss-map result; clip the incident face by the side planes of the "
+           "reference face, keep the points below it, reduce to at most 4):\n";
+    auto show_manifold = [&](const std::string& cfg, const auto& m) {
+      out << "  " << cfg << ": " << to_string(m.kind) << " contact, " << m.size() << " point(s)";
+      if (m.kind == ContactKind::Face) {
+        out << "; reference face " << m.reference_face << " of " << (m.reference_shape == 0 ? "A" : "B")
+            << ", incident face " << m.incident_face << " of " << (m.reference_shape == 0 ? "B" : "A") << " ("
+            << m.incident_faces_visited << " faces searched); clip steps:";
+        for (const auto& st : m.clip_steps)
+          out << " [side edge " << st.side_edge << ": " << st.vertices_in << " -> " << st.vertices_out << "]";
+        out << "; " << m.candidate_points << " point(s) below the reference face before the reduction";
+        if (m.support_fallback) out << "; support-vertex fallback";
+      }
+      out << "\n";
+      for (const auto& pt : m.points) {
+        const Vec3<double> x = vec_to_double(pt.position);
+        char line[200];
+        std::snprintf(line, sizeof line, "    %-24s at (%.9g, %.9g, %.9g)  separation %.12g\n",
+                      to_string(pt.id).c_str(), x[0], x[1], x[2], sepax::to_double(pt.separation));
+        out << line;
+      }
+    };
+    show_manifold("mpq", me);
+    show_manifold(fname + "_plain", mf);
+    const ManifoldDifference d = compare_manifolds(mf, me);
+    out << "  " << fname << " against exact: " << (d.identical() ? "same kind, faces, point count and ids"
+                                                                   : "combinatorics differ")
+        << "; deepest depth error " << g(d.deepest_depth_error) << ", max depth error " << g(d.max_depth_error)
+        << ", max position error " << g(d.max_position_error) << "\n";
+    if (!d.identical()) notes.push_back("the " + fname + " contact manifold differs combinatorially from the exact one");
+  }
 
   // ---- notes ----
   if (parallel_exact)

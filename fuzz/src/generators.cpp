@@ -362,7 +362,7 @@ ShapeSpec builtin_shape(const std::string& name) {
     const int n = static_cast<int>(p[0]);
     s = spec_from(head == "prism" ? shapes::prism<double>(n) : shapes::regular_polygon<double>(n));
   } else if (head == "triangle") {
-    s = flat_of({V(-1, -1, 0), V(1, -1, 0), V(0, 1, 0)});
+    s = flat_of({V(0, 0, 0), V(1, 0, 0), V(0, 1, 0)});  // the same triangle as the sepax program's built-in
   } else {
     throw InvalidInput(ErrorCode::Parse, "unknown shape '" + name +
                                              "' (built-in shapes: cube, box:HX,HY,HZ, tetra, prism:N, polygon:N, "
