@@ -70,16 +70,18 @@
 // false: the decision goes exact.  FMA contraction only removes
 // roundings, so every bound holds with and without it.
 //
-// Centroid.  PlainKernel<mpq_class> orients an edge-pair axis away from A's
-// exact vertex mean.  For a Minkowski edge pair the sign is the same for any
-// point strictly inside A, but the float centroid need not be strictly inside
-// (sliver shapes, and it is off the plane of a flat A), so the exact fallback
-// here uses the exact mean: sign Σ_v n*.(p - v) = sign (V n*.p - n*.Σ v).
+// Centroids.  PlainKernel<mpq_class> orients an edge-pair axis (O(1) form) by
+// the sign of n*.(pA - cA) + n*.(cB - pB), cA and cB the exact vertex means
+// (axis_side).  For a Minkowski edge pair of exactly convex shapes both terms
+// are positive, but the float centroids need not be strictly inside (sliver
+// shapes, and off the plane of a flat shape), and on inputs convex only within
+// tolerance the terms can differ in sign, so the exact fallbacks use the
+// exact means: sign Σ_v n*.(p - v) = sign (V n*.p - n*.Σ v).
 //
 // Edge-pair orientation in compare()/sign().  A separation value does not say
 // which orientation its SAT chose, so the kernel recomputes it from the
-// feature: the O(1) form (edge_separation, Gauss map, traversal) uses the sign
-// s_A of n*.(pA - centroid(A)), no flip when zero; the projection form
+// feature: the O(1) form (edge_separation, Gauss map, traversal) uses
+// axis_side (above), no flip when zero; the projection form
 // (edge_separation_full, brute force) uses s_A if non-zero, else the sign of
 // n*.(centroid(B) - pB), else the sign of n*.(pB - pA) (+1 when zero), which is
 // exactly the orientation its exact support checks select.  A kernel serves one
@@ -257,7 +259,7 @@ class RobustKernel {
     projection_rule_ = false;
     const EdgeAxis ax = edge_axis(ea, eb);
     Vec3<T> n = ax.n;
-    if (centroid_side(a_, a_.edge_tail(ea), ax, centroid_err_a_, extent_a_, ea, eb) < 0) n = Vec3<T>(-n);
+    if (axis_side(ax, ea, eb) < 0) n = Vec3<T>(-n);
     const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
     const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
     return snap(dot(n, Vec3<T>(pb - pa)), edge_value_error(ax.delta), Feature::edges(ea, eb));
@@ -496,6 +498,54 @@ class RobustKernel {
     return centroid_side_exact(p, v, ea, eb);
   }
 
+  // The orientation rule of PlainKernel::edge_axis (the O(1) form): the sign
+  // of n*.(pA - cA) + n*.(cB - pB), cA and cB the exact vertex means, no flip
+  // when zero.  For a Minkowski edge pair of exactly convex shapes both terms
+  // are positive; on inputs convex only within tolerance they can differ in
+  // sign, and then only the sum matches the exact kernel.  Filter: each term's
+  // bound is centroid_side's, the double sum of two T values adds at most
+  // 2^-52 (|oa| + |ob|); exact fallback otherwise.
+  int axis_side(const EdgeAxis& ax, int ea, int eb) const {
+    const T oa = dot(ax.n, Vec3<T>(a_.vertex(a_.edge_tail(ea)) - a_.centroid()));
+    const T ob = dot(ax.n, Vec3<T>(b_.centroid() - b_.vertex(b_.edge_tail(eb))));
+    const double ea_bound = ((ax.delta + gamma(5)) * (extent_a_ + centroid_err_a_) + centroid_err_a_) * kMargin;
+    const double eb_bound = ((ax.delta + gamma(5)) * (extent_b_ + centroid_err_b_) + centroid_err_b_) * kMargin;
+    const double sum = static_cast<double>(oa) + static_cast<double>(ob);
+    const double e = ea_bound + eb_bound +
+                     0x1p-52 * (std::abs(static_cast<double>(oa)) + std::abs(static_cast<double>(ob))) + 8 * kEta;
+    if (sum > e) return 1;
+    if (sum < -e) return -1;
+    return axis_side_exact(ea, eb);
+  }
+
+  // sign( V_A V_B n*.(pA - pB) + V_A n*.Sum(B) - V_B n*.Sum(A) ): the rule
+  // above multiplied by V_A V_B > 0, exactly.
+  SEPAX_ROBUST_COLD int axis_side_exact(int ea, int eb) const {
+    ++fallbacks_;
+    using robust::ExactFloat;
+    const auto n = robust::exact_cross(
+        robust::exact_diff(a_.vertex(a_.edge_head(ea)), a_.vertex(a_.edge_tail(ea))),
+        robust::exact_diff(b_.vertex(b_.edge_head(eb)), b_.vertex(b_.edge_tail(eb))));
+    auto sum_of = [](const P& p) {
+      std::array<ExactFloat, 3> sum{ExactFloat(0), ExactFloat(0), ExactFloat(0)};
+      for (const auto& w : p.vertices()) {
+        for (int c = 0; c < 3; ++c) sum[c] = sum[c] + robust::exact(static_cast<double>(w[c]));
+      }
+      return sum;
+    };
+    auto exact_point = [](const Vec3<T>& v) {
+      return std::array<ExactFloat, 3>{robust::exact(static_cast<double>(v[0])),
+                                       robust::exact(static_cast<double>(v[1])),
+                                       robust::exact(static_cast<double>(v[2]))};
+    };
+    const ExactFloat va(a_.vertex_count()), vb(b_.vertex_count());
+    const auto pa = exact_point(a_.vertex(a_.edge_tail(ea)));
+    const auto pb = exact_point(b_.vertex(b_.edge_tail(eb)));
+    const ExactFloat val = va * vb * (robust::exact_dot(n, pa) - robust::exact_dot(n, pb)) +
+                           va * robust::exact_dot(n, sum_of(b_)) - vb * robust::exact_dot(n, sum_of(a_));
+    return robust::exact_sign(val);
+  }
+
   SEPAX_ROBUST_COLD int centroid_side_exact(const P& p, int v, int ea, int eb) const {
     ++fallbacks_;
     using robust::ExactFloat;
@@ -517,8 +567,9 @@ class RobustKernel {
   // exact counterpart uses (see the header).
   int edge_sigma(int ea, int eb) const {
     const EdgeAxis ax = edge_axis(ea, eb);
+    if (!projection_rule_) return axis_side(ax, ea, eb) < 0 ? -1 : 1;
     const int sa = centroid_side(a_, a_.edge_tail(ea), ax, centroid_err_a_, extent_a_, ea, eb);
-    if (sa != 0 || !projection_rule_) return sa < 0 ? -1 : 1;
+    if (sa != 0) return sa;
     const int sb = -centroid_side(b_, b_.edge_tail(eb), ax, centroid_err_b_, extent_b_, ea, eb);
     if (sb != 0) return sb;
     return edge_pair_sign(ea, eb) < 0 ? -1 : 1;
