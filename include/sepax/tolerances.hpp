@@ -24,7 +24,10 @@
 // | planarity   | ConvexPolyhedron validation     | face vertices within planarity*extent of the face's plane   |
 // | convexity   | ConvexPolyhedron validation     | no vertex more than convexity*extent above any face plane   |
 // | support     | brute-force SAT, float only     | an edge endpoint within support*extent of the extreme       |
-// |             |                                 | projection (on the unit axis) counts as supporting          |
+// |             |                                 | projection (on the unit axis) counts as supporting; plus    |
+// |             |                                 | the projections' own rounding, 25u*max|coordinate| (derived |
+// |             |                                 | in PlainKernel::support_tolerance), which dominates for a   |
+// |             |                                 | small shape far from the origin                             |
 // | parallel    | plain float SATs                | edges with |eA x eB| <= parallel*|eA||eB| (the sine of their |
 // |             |                                 | angle) are parallel and skipped: their float cross product  |
 // |             |                                 | is too inaccurate to be an axis.  The robust policy skips   |
