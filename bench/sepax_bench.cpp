@@ -396,6 +396,26 @@ std::vector<V3f> pose_vertices(const ConvexPolyhedron<float>& p, const Pose& pos
   return out;
 }
 
+// Pose B of pair p (shape p.b at p.pose) once, in double rounded to float,
+// build every row's copy of it from those same vertices (sepax float/double,
+// Bullet, libccd, FCL), and append the pair to the cell.
+void add_posed_pair(Cell& c, PairData p) {
+  const auto& lb = c.pool->shapes[static_cast<std::size_t>(p.b)];
+  p.bverts = pose_vertices(lb.f, p.pose);
+  p.bf = lb.f.with_vertices(p.bverts);
+  p.bd = ConvexPolyhedron<double>::convert_from(p.bf);
+#if SEPAX_BENCH_BULLET
+  p.bullet_b = std::make_unique<BulletShape>(p.bverts);
+#endif
+#if SEPAX_BENCH_CCD
+  p.ccd_b = make_ccd(p.bverts);
+#endif
+#if SEPAX_BENCH_FCL
+  p.fcl_b = std::make_unique<FclShape>(p.bverts, lb.faces);
+#endif
+  c.pairs.push_back(std::move(p));
+}
+
 void build_pairs(Cell& c, Rng& rng, int count) {
   const bool overlapping = c.poses == "overlapping";
   const int m = static_cast<int>(c.pool->shapes.size());
@@ -404,20 +424,7 @@ void build_pairs(Cell& c, Rng& rng, int count) {
     p.a = static_cast<int>(rng.next() % static_cast<std::uint64_t>(m));
     p.b = static_cast<int>(rng.next() % static_cast<std::uint64_t>(m));
     p.pose = overlapping ? random_pose(rng, 0.0, 1.0) : random_pose(rng, 1.0, 2.5);
-    const auto& lb = c.pool->shapes[static_cast<std::size_t>(p.b)];
-    p.bverts = pose_vertices(lb.f, p.pose);
-    p.bf = lb.f.with_vertices(p.bverts);
-    p.bd = ConvexPolyhedron<double>::convert_from(p.bf);
-#if SEPAX_BENCH_BULLET
-    p.bullet_b = std::make_unique<BulletShape>(p.bverts);
-#endif
-#if SEPAX_BENCH_CCD
-    p.ccd_b = make_ccd(p.bverts);
-#endif
-#if SEPAX_BENCH_FCL
-    p.fcl_b = std::make_unique<FclShape>(p.bverts, lb.faces);
-#endif
-    c.pairs.push_back(std::move(p));
+    add_posed_pair(c, std::move(p));
   }
 }
 
@@ -439,20 +446,7 @@ void build_trajectories(Cell& c, Rng& rng, int count, int frames) {
       p.a = a;
       p.b = b;
       p.pose = pose;
-      const auto& lb = c.pool->shapes[static_cast<std::size_t>(b)];
-      p.bverts = pose_vertices(lb.f, p.pose);
-      p.bf = lb.f.with_vertices(p.bverts);
-      p.bd = ConvexPolyhedron<double>::convert_from(p.bf);
-#if SEPAX_BENCH_BULLET
-      p.bullet_b = std::make_unique<BulletShape>(p.bverts);
-#endif
-#if SEPAX_BENCH_CCD
-      p.ccd_b = make_ccd(p.bverts);
-#endif
-#if SEPAX_BENCH_FCL
-      p.fcl_b = std::make_unique<FclShape>(p.bverts, lb.faces);
-#endif
-      c.pairs.push_back(std::move(p));
+      add_posed_pair(c, std::move(p));
       pose.r = step * pose.r;
       const double d = pose.t.norm();
       if (d > 0.005) pose.t *= (d - 0.005) / d;
