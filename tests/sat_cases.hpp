@@ -356,12 +356,63 @@ std::vector<SatCase<T>> known_cases() {
     c.dyadic = true;
     cs.push_back(c);
   }
+  // Coplanar polygons (best_axis.hpp, scan_side_axes): every face and edge-pair
+  // axis is +-z with separation 0, so only the in-plane side axes can separate.
+  const auto right = shapes::triangle<T>(v3<T>(0, 0, 0), v3<T>(2, 0, 0), v3<T>(0, 2, 0));
+  {
+    // B = the right triangle moved by 3 along x: a gap of 1 in the plane.
+    // Side axes: B's left edge x = 3 (outward normal -x) has A's vertex 1
+    // (2,0,0) lowest along +x: separation 3 - 2 = 1.  A's hypotenuse
+    // (normal (1,1)/sqrt 2) gives 1/sqrt 2 (B's vertex (3,0)); every other side
+    // axis is negative.  So SideB(1, left edge of B), axis +x from A to B.
+    SatCase<T> c;
+    c.name = "triangles coplanar, gap in the plane";
+    c.a = right;
+    c.b = translated(right, v3<T>(3, 0, 0));
+    c.feature = Feature::side_b(1, edge_between(c.b, 0, 2));
+    c.separation = sep_value(T(1));
+    c.overlap = false;
+    c.axis = {1, 0, 0};
+    c.dyadic = true;
+    cs.push_back(c);
+  }
+  {
+    // Squares [0,2]^2 and [3,5] x [0,2]: A's right edge x = 2 (normal +x) and
+    // B's left edge x = 3 (normal -x) both give exactly 1 (a tie, exact in
+    // float too): SideA wins, with B's lowest vertex along +x the lower index
+    // of its two vertices at x = 3: vertex 0.
+    SatCase<T> c;
+    c.name = "squares coplanar, facing edges";
+    c.a = ConvexPolyhedron<T>::polygon({v3<T>(0, 0, 0), v3<T>(2, 0, 0), v3<T>(2, 2, 0), v3<T>(0, 2, 0)});
+    c.b = ConvexPolyhedron<T>::polygon({v3<T>(3, 0, 0), v3<T>(5, 0, 0), v3<T>(5, 2, 0), v3<T>(3, 2, 0)});
+    c.feature = Feature::side_a(edge_between(c.a, 1, 2), 0);
+    c.separation = sep_value(T(1));
+    c.overlap = false;
+    c.axis = {1, 0, 0};
+    c.dyadic = true;
+    cs.push_back(c);
+  }
+  {
+    // Touching in the plane at the point (2, 0): B's vertex 0 on A's vertex 1.
+    // The best side axes give exactly 0 and the face axes 0 too: FaceA(0)
+    // wins the tie, with B's lowest vertex along -n (all at 0): vertex 0.
+    SatCase<T> c;
+    c.name = "triangles coplanar, touching at a vertex";
+    c.a = right;
+    c.b = translated(right, v3<T>(2, 0, 0));
+    c.feature = Feature::face_a(0, 0);
+    c.separation = sep_value(T(0));
+    c.overlap = true;
+    c.axis = {0, 0, 1};
+    c.dyadic = true;
+    cs.push_back(c);
+  }
   return cs;
 }
 
 /// Coplanar triangles with a gap between them in their common plane.  The
-/// shapes are disjoint, but A - B is flat, so its only face normals are the
-/// plane normal (separation 0) -- see docs/sat.md, "known limitations".
+/// shapes are disjoint, but A - B is flat: its 3D face normals are the plane
+/// normal (separation 0), and only the side axes (best_axis.hpp) separate them.
 template <class T>
 SatCase<T> coplanar_separated_triangles() {
   SatCase<T> c;

@@ -80,4 +80,35 @@ bool scan_face_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& 
   return false;
 }
 
+/// The side axes (feature.hpp), shared by every SAT after its other axes.
+/// When A and B are flat and coplanar, every face normal and every edge-pair
+/// axis is the common plane normal, with separation exactly 0, so those axes
+/// can only say "touching".  The in-plane outward normals of the polygons'
+/// edges are then the face normals of the (flat) Minkowski difference that
+/// decide the 2D question: a side axis with positive separation is a gap in
+/// the plane.  (Face axes win every tie at 0, so a side feature is reported
+/// only for separated polygons.)  Whether the shapes are flat and coplanar is
+/// the kernel's decision (k.coplanar_flat(): exact for exact T and the robust
+/// policy, within the named coplanar tolerance for plain float).  Returns true
+/// when early_out is set and a separating side axis was found.
+template <SatKernel K>
+bool scan_side_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt) {
+  if (!k.coplanar_flat()) return false;
+  for (int e = 0; e < k.a().edge_count(); ++e) {
+    const auto q = k.side_query_a(e);
+    ++stats.side_axes;
+    const Feature feat = Feature::side_a(e, q.support_vertex);
+    best.consider(k, q.separation, feat);
+    if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
+  }
+  for (int e = 0; e < k.b().edge_count(); ++e) {
+    const auto q = k.side_query_b(e);
+    ++stats.side_axes;
+    const Feature feat = Feature::side_b(q.support_vertex, e);
+    best.consider(k, q.separation, feat);
+    if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
+  }
+  return false;
+}
+
 }  // namespace sepax::sat::detail

@@ -6,10 +6,19 @@
 //   FaceA:    a = face of A,              b = support vertex of B (deepest along -normal)
 //   FaceB:    a = support vertex of A,    b = face of B
 //   EdgePair: a = edge of A,              b = edge of B   (undirected edge indices)
+//   SideA:    a = edge of A,              b = support vertex of B
+//   SideB:    a = support vertex of A,    b = edge of B
+//
+// Side axes exist only when A and B are both flat (double-sided polygons) and
+// exactly coplanar: then every 3D candidate axis above is the common plane
+// normal (separation 0), and the in-plane outward normal of each polygon edge,
+// edge direction x face normal, is what separates polygons with a gap between
+// them (see best_axis.hpp, scan_side_axes).
 //
 // Tie-break rule (the same for every T and every SAT): among candidate axes
 // with exactly equal separation, the one whose feature comes first in
 //   FaceA (by face index)  <  FaceB (by face index)  <  EdgePair (by edge of A, then edge of B)
+//     <  SideA (by edge of A)  <  SideB (by edge of B)
 // wins.  The support vertex is not part of the order: it is a function of the
 // axis (the lowest-index vertex among the exactly deepest ones).
 #pragma once
@@ -20,7 +29,7 @@
 
 namespace sepax {
 
-enum class FeatureType : std::uint8_t { FaceA = 0, FaceB = 1, EdgePair = 2 };
+enum class FeatureType : std::uint8_t { FaceA = 0, FaceB = 1, EdgePair = 2, SideA = 3, SideB = 4 };
 
 struct Feature {
   FeatureType type = FeatureType::FaceA;
@@ -30,9 +39,12 @@ struct Feature {
   static Feature face_a(int face, int support_vertex_b) { return {FeatureType::FaceA, face, support_vertex_b}; }
   static Feature face_b(int support_vertex_a, int face) { return {FeatureType::FaceB, support_vertex_a, face}; }
   static Feature edges(int edge_a, int edge_b) { return {FeatureType::EdgePair, edge_a, edge_b}; }
+  static Feature side_a(int edge, int support_vertex_b) { return {FeatureType::SideA, edge, support_vertex_b}; }
+  static Feature side_b(int support_vertex_a, int edge) { return {FeatureType::SideB, support_vertex_a, edge}; }
 
-  /// The index that orders features of one type (the face for face features).
-  int primary() const { return type == FeatureType::FaceB ? b : a; }
+  /// The index that orders features of one type (the face for face features,
+  /// the edge for side features).
+  int primary() const { return type == FeatureType::FaceB || type == FeatureType::SideB ? b : a; }
   int secondary() const { return type == FeatureType::EdgePair ? b : 0; }
 
   friend bool operator==(const Feature& x, const Feature& y) {
@@ -46,12 +58,14 @@ inline bool precedes(const Feature& x, const Feature& y) {
          std::make_tuple(static_cast<int>(y.type), y.primary(), y.secondary());
 }
 
-/// "faceA", "faceB" or "edges" (the names the JSON output uses).
+/// "faceA", "faceB", "edges", "sideA" or "sideB" (the names the JSON output uses).
 inline const char* type_name(FeatureType t) {
   switch (t) {
     case FeatureType::FaceA: return "faceA";
     case FeatureType::FaceB: return "faceB";
     case FeatureType::EdgePair: return "edges";
+    case FeatureType::SideA: return "sideA";
+    case FeatureType::SideB: return "sideB";
   }
   return "?";
 }

@@ -11,6 +11,7 @@
 //   measures and the fuzzer audits against exact arithmetic.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 
@@ -30,6 +31,31 @@ class PlainKernel {
 
   FaceQuery<T> face_query_a(int f) const { return face_query(a_, f, b_); }
   FaceQuery<T> face_query_b(int f) const { return face_query(b_, f, a_); }
+
+  // Side axes (coplanar flat shapes only, best_axis.hpp): the in-plane
+  // outward normal u = (head - tail) x normal(edge_face(e, 0)) of edge e (the
+  // face of half-edge 2e is on its left seen from outside, so u points out of
+  // the polygon), and the other shape's support vertex along -u.
+  // Both flat, and every vertex of B on A's plane: exactly for exact T; for
+  // float and double within Tolerances<T>::coplanar of the larger extent (as
+  // sat2::coplanar_sat), since rounded heights of a tilted coplanar pair are
+  // rarely exactly 0.  Side axes are valid separating directions for any two
+  // shapes, so a tolerance here can only add candidates, never a wrong one.
+  bool coplanar_flat() const {
+    if (!a_.is_flat() || !b_.is_flat()) return false;
+    const Plane<T>& pl = a_.plane(0);
+    T tol(0);
+    if constexpr (!number_traits<T>::is_exact) {
+      tol = static_cast<T>(Tolerances<T>::coplanar * std::max(a_.extent(), b_.extent()));
+    }
+    for (const auto& v : b_.vertices()) {
+      if (abs_of(T(dot(pl.normal, v) - pl.offset)) > tol) return false;
+    }
+    return true;
+  }
+
+  FaceQuery<T> side_query_a(int e) const { return side_query(a_, e, b_); }
+  FaceQuery<T> side_query_b(int e) const { return side_query(b_, e, a_); }
 
   Separation<T> face_separation_a(int f, int vb) const { return height(a_.plane(f), b_.vertex(vb)); }
   Separation<T> face_separation_b(int f, int va) const { return height(b_.plane(f), a_.vertex(va)); }
@@ -121,6 +147,8 @@ class PlainKernel {
       case FeatureType::FaceA: return a_.plane(f.a).normal;
       case FeatureType::FaceB: return Vec3<T>(-b_.plane(f.b).normal);
       case FeatureType::EdgePair: return oriented_axis_for_report(f.a, f.b);
+      case FeatureType::SideA: return side_normal(a_, f.a);
+      case FeatureType::SideB: return Vec3<T>(-side_normal(b_, f.b));
     }
     return Vec3<T>(T(0), T(0), T(0));
   }
@@ -130,17 +158,32 @@ class PlainKernel {
  private:
   static FaceQuery<T> face_query(const ConvexPolyhedron<T>& p, int f, const ConvexPolyhedron<T>& q) {
     const Plane<T>& pl = p.plane(f);
+    return support_below(pl.normal, pl.offset, q);
+  }
+
+  // Lowest vertex of q along n (first index among equal heights), and its
+  // height n.v - offset.
+  static FaceQuery<T> support_below(const Vec3<T>& n, const T& offset, const ConvexPolyhedron<T>& q) {
     const auto& vs = q.vertices();
     int best = 0;
-    T best_h = dot(pl.normal, vs[0]);
+    T best_h = dot(n, vs[0]);
     for (int i = 1; i < static_cast<int>(vs.size()); ++i) {
-      const T h = dot(pl.normal, vs[static_cast<std::size_t>(i)]);
+      const T h = dot(n, vs[static_cast<std::size_t>(i)]);
       if (h < best_h) {
         best_h = h;
         best = i;
       }
     }
-    return FaceQuery<T>{Separation<T>{T(best_h - pl.offset), norm2_of(pl.normal)}, best};
+    return FaceQuery<T>{Separation<T>{T(best_h - offset), norm2_of(n)}, best};
+  }
+
+  static Vec3<T> side_normal(const ConvexPolyhedron<T>& p, int e) {
+    return normalized(cross(p.edge_dir(e), p.edge_normal(e, 0)));
+  }
+
+  static FaceQuery<T> side_query(const ConvexPolyhedron<T>& p, int e, const ConvexPolyhedron<T>& q) {
+    const Vec3<T> u = side_normal(p, e);
+    return support_below(u, dot(u, p.vertex(p.edge_tail(e))), q);
   }
 
   static Separation<T> height(const Plane<T>& pl, const Vec3<T>& p) {

@@ -36,6 +36,7 @@ SatResult<typename K::FT> brute_force_with(K& k, const SatOptions& opt = {}) {
       if (opt.early_out && k.sign(*s, feat) > 0) return best.result(k, stats, true);
     }
   }
+  if (detail::scan_side_axes(k, best, stats, opt)) return best.result(k, stats, true);
   return best.result(k, stats, false);
 }
 

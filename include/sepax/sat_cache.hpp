@@ -16,6 +16,8 @@
 //       FaceB(_, g)   k.face_query_b(g)
 //       EdgePair      still a Minkowski face (k.arc_signs strict) and not
 //                     parallel (k.edges_parallel), then k.edge_separation
+//       SideA/SideB   both shapes still flat and coplanar (k.coplanar_flat),
+//                     then k.side_query_a / k.side_query_b
 //     If it still separates (k.sign > 0) the query returns at once (a hit):
 //       overlap = false, early_out = true, feature = the re-evaluated feature,
 //       separation = exactly the separation the SATs compute for that
@@ -53,7 +55,8 @@ namespace sat {
 
 /// The cached feature re-evaluated at the current pose (see the header
 /// comment); nullopt if its indices are out of range or an edge pair is no
-/// longer a non-parallel Minkowski face.
+/// longer a non-parallel Minkowski face, or a side feature's shapes are no
+/// longer flat and coplanar.
 template <SatKernel K>
 std::optional<std::pair<Feature, Separation<typename K::FT>>> reevaluate(K& k, const Feature& f) {
   using T = typename K::FT;
@@ -73,6 +76,16 @@ std::optional<std::pair<Feature, Separation<typename K::FT>>> reevaluate(K& k, c
       if (!k.arc_signs(f.a, f.b).minkowski_face() || k.edges_parallel(f.a, f.b)) return std::nullopt;
       return std::pair<Feature, Separation<T>>{f, k.edge_separation(f.a, f.b)};
     }
+    case FeatureType::SideA: {
+      if (f.a < 0 || f.a >= k.a().edge_count() || !k.coplanar_flat()) return std::nullopt;
+      const auto q = k.side_query_a(f.a);
+      return std::pair<Feature, Separation<T>>{Feature::side_a(f.a, q.support_vertex), q.separation};
+    }
+    case FeatureType::SideB: {
+      if (f.b < 0 || f.b >= k.b().edge_count() || !k.coplanar_flat()) return std::nullopt;
+      const auto q = k.side_query_b(f.b);
+      return std::pair<Feature, Separation<T>>{Feature::side_b(q.support_vertex, f.b), q.separation};
+    }
   }
   return std::nullopt;
 }
@@ -90,8 +103,10 @@ SatResult<typename K::FT> cached_with(K& k, SatCache<typename K::FT>& cache, con
       r.separation = ev->second;
       r.axis = k.axis(ev->first);
       r.early_out = true;
-      r.stats.face_axes = ev->first.type == FeatureType::EdgePair ? 0 : 1;
-      r.stats.edge_pairs = ev->first.type == FeatureType::EdgePair ? 1 : 0;
+      const FeatureType ty = ev->first.type;
+      r.stats.face_axes = ty == FeatureType::FaceA || ty == FeatureType::FaceB ? 1 : 0;
+      r.stats.edge_pairs = ty == FeatureType::EdgePair ? 1 : 0;
+      r.stats.side_axes = ty == FeatureType::SideA || ty == FeatureType::SideB ? 1 : 0;
       r.stats.minkowski_faces = r.stats.edge_pairs;
       r.stats.exact_fallbacks = k.exact_fallbacks();
       cache.feature = r.feature;

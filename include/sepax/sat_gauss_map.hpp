@@ -53,6 +53,7 @@ SatResult<typename K::FT> gauss_map_with(K& k, const SatOptions& opt = {}) {
     }
     stats.edge_pairs += nb;
   }
+  if (detail::scan_side_axes(k, best, stats, opt)) return best.result(k, stats, true);
   return best.result(k, stats, false);
 }
 

@@ -67,6 +67,12 @@ concept SatKernel = requires(K k, const K ck, int i, int j, const Separation<typ
   // face i of A against B / face i of B against A (full support scan)
   { k.face_query_a(i) } -> std::same_as<FaceQuery<typename K::FT>>;
   { k.face_query_b(i) } -> std::same_as<FaceQuery<typename K::FT>>;
+  // both shapes flat and in one plane: then the side axes are candidates
+  { ck.coplanar_flat() } -> std::same_as<bool>;
+  // side axis of edge i of A / of edge i of B (coplanar flat shapes only):
+  // the polygon's in-plane outward edge normal, with a full support scan
+  { k.side_query_a(i) } -> std::same_as<FaceQuery<typename K::FT>>;
+  { k.side_query_b(i) } -> std::same_as<FaceQuery<typename K::FT>>;
   // O(1): height of vertex j of B above face i of A / of vertex j of A above
   // face i of B (for SATs that carry the support vertex, e.g. traversal)
   { k.face_separation_a(i, j) } -> std::same_as<Separation<typename K::FT>>;

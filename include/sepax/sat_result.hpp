@@ -23,6 +23,7 @@ struct SatStats {
   std::int64_t face_axes = 0;        // face normals evaluated
   std::int64_t edge_pairs = 0;       // edge pairs looked at
   std::int64_t minkowski_faces = 0;  // edge pairs that form a face of A - B
+  std::int64_t side_axes = 0;        // in-plane edge normals (coplanar flat shapes only)
   std::int64_t exact_fallbacks = 0;  // robust policy: decisions the filter could not make
 };
 

@@ -133,6 +133,7 @@ class Traversal {
     for (int ea = 0; ea < wa_.edge_count(); ++ea) {
       if (arc(scratch, ea)) return best_.result(k_, stats_, true);
     }
+    if (scan_side_axes(k_, best_, stats_, opt_)) return best_.result(k_, stats_, true);
     return best_.result(k_, stats_, false);
   }
 

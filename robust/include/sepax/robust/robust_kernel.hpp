@@ -168,6 +168,24 @@ class RobustKernel {
     return q;
   }
 
+  // Side axes (coplanar flat shapes only; best_axis.hpp).  No filter: the
+  // case is rare (two flat shapes in exactly one plane), so the support vertex
+  // and every decision on a side feature are exact (value_error is infinite
+  // for SideA/SideB, so compare and sign always take the exact stage).  The
+  // value is the float height along the normalised side normal, carrying the
+  // exact sign (snap_exact).
+  // Both flat and every vertex of B exactly on A's plane (orientation signs).
+  bool coplanar_flat() const {
+    if (!a_.is_flat() || !b_.is_flat()) return false;
+    for (int v = 0; v < b_.vertex_count(); ++v) {
+      if (face_sign(a_, 0, b_.vertex(v)) != 0) return false;
+    }
+    return true;
+  }
+
+  FaceQuery<T> side_query_a(int e) const { return side_query(a_, e, b_, true); }
+  FaceQuery<T> side_query_b(int e) const { return side_query(b_, e, a_, false); }
+
   Separation<T> face_separation_a(int f, int vb) const {
     return snap(height(a_.plane(f), b_.vertex(vb)).num, face_err_a_, Feature::face_a(f, vb));
   }
@@ -321,6 +339,8 @@ class RobustKernel {
         const EdgeAxis ax = edge_axis(f.a, f.b);
         return edge_sigma(f.a, f.b) < 0 ? Vec3<T>(-ax.n) : ax.n;
       }
+      case FeatureType::SideA: return side_normal(a_, f.a);
+      case FeatureType::SideB: return Vec3<T>(-side_normal(b_, f.b));
     }
     return Vec3<T>(T(0), T(0), T(0));
   }
@@ -456,6 +476,8 @@ class RobustKernel {
       case FeatureType::FaceA: return face_err_a_;
       case FeatureType::FaceB: return face_err_b_;
       case FeatureType::EdgePair: return edge_value_error(edge_axis(f.a, f.b).delta);
+      case FeatureType::SideA:
+      case FeatureType::SideB: break;  // always exact (see side_query)
     }
     return std::numeric_limits<double>::infinity();
   }
@@ -585,6 +607,16 @@ class RobustKernel {
         const auto pts = b_.plane_points(f.b);
         return robust::face_separation_exact(pts[0], pts[1], pts[2], a_.vertex(f.a));
       }
+      case FeatureType::SideA: {
+        const auto u = exact_side_normal(a_, f.a);
+        return {robust::exact_dot(u, robust::exact_diff(b_.vertex(f.b), a_.vertex(a_.edge_tail(f.a)))),
+                robust::exact_dot(u, u)};
+      }
+      case FeatureType::SideB: {
+        const auto u = exact_side_normal(b_, f.b);
+        return {robust::exact_dot(u, robust::exact_diff(a_.vertex(f.a), b_.vertex(b_.edge_tail(f.b)))),
+                robust::exact_dot(u, u)};
+      }
       case FeatureType::EdgePair:
       default: {
         const int ea = f.a, eb = f.b;
@@ -602,6 +634,8 @@ class RobustKernel {
       case FeatureType::FaceA: return face_sign(a_, f.a, b_.vertex(f.b));
       case FeatureType::FaceB: return face_sign(b_, f.b, a_.vertex(f.a));
       case FeatureType::EdgePair: return edge_sigma(f.a, f.b) * edge_pair_sign(f.a, f.b);
+      case FeatureType::SideA:
+      case FeatureType::SideB: ++fallbacks_; return robust::exact_sign(exact_separation(f).num);
     }
     return 0;
   }
@@ -626,6 +660,46 @@ class RobustKernel {
     if (std::isfinite(num) && std::isfinite(n2) && n2 > 0) r = static_cast<T>(num / std::sqrt(n2));
     if (sign_of(r) != s) r = s > 0 ? std::numeric_limits<T>::denorm_min() : -std::numeric_limits<T>::denorm_min();
     return Separation<T>{r, T(1)};
+  }
+
+  // ---- side axes (see side_query_a) ----
+
+  // u = (head - tail) x N, N the plane triple's cross product of the face of
+  // half-edge 2e: the polygon's in-plane outward normal of edge e, exactly.
+  static std::array<robust::ExactFloat, 3> exact_side_normal(const P& p, int e) {
+    const auto t = p.plane_points(p.edge_face(e, 0));
+    const auto n = robust::exact_cross(robust::exact_diff(t[1], t[0]), robust::exact_diff(t[2], t[0]));
+    return robust::exact_cross(robust::exact_diff(p.vertex(p.edge_head(e)), p.vertex(p.edge_tail(e))), n);
+  }
+
+  // The same direction in T, unit (reporting and float values only).
+  static Vec3<T> side_normal(const P& p, int e) {
+    const Vec3<T>& d = p.edge_dir(e);
+    const Vec3<T>& n = p.edge_normal(e, 0);
+    const Vec3<double> dd(d[0], d[1], d[2]), nd(n[0], n[1], n[2]);
+    Vec3<double> u = cross(dd, nd);
+    const double len = u.norm();
+    if (len > 0) u /= len;
+    return Vec3<T>(static_cast<T>(u[0]), static_cast<T>(u[1]), static_cast<T>(u[2]));
+  }
+
+  // Support vertex of q along -u (lowest index among the exactly lowest).
+  SEPAX_ROBUST_COLD FaceQuery<T> side_query(const P& p, int e, const P& q, bool of_a) const {
+    ++fallbacks_;
+    const auto u = exact_side_normal(p, e);
+    const Vec3<T>& t = p.vertex(p.edge_tail(e));
+    int best = 0;
+    robust::ExactFloat m = robust::exact_dot(u, robust::exact_diff(q.vertex(0), t));
+    for (int i = 1; i < q.vertex_count(); ++i) {
+      robust::ExactFloat h = robust::exact_dot(u, robust::exact_diff(q.vertex(i), t));
+      if (robust::exact_sign(h - m) < 0) {
+        m = h;
+        best = i;
+      }
+    }
+    const T v = dot(side_normal(p, e), Vec3<T>(q.vertex(best) - t));
+    const Feature f = of_a ? Feature::side_a(e, best) : Feature::side_b(best, e);
+    return FaceQuery<T>{snap_exact(v, f), best};
   }
 
   // ---- decisions ----
