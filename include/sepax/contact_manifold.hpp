@@ -19,6 +19,13 @@
 //     ManifoldOptions::reduce is false.
 // Edge contact (the axis comes from edges eA x eB): one point, the midpoint of
 // the closest points of the two edge segments, with the SAT separation.
+// Side contact (SideA/SideB: two coplanar flat polygons, feature.hpp): always
+// separated, so only within a speculative margin; the 2D face contact.  The
+// reference segment is the side's edge, the incident segment the edge of the
+// other polygon at its support vertex most parallel to it; the incident
+// segment is clipped to the slab between the planes through the reference
+// edge's ends (normal to it), and the clipped ends within the margin are the
+// points, with their separation along the side normal.
 //
 // Conventions (see docs/contacts.md):
 //   normal      from A to B: the SAT axis.  Unit when T normalises; for
@@ -61,13 +68,14 @@
 
 namespace sepax {
 
-enum class ContactKind : std::uint8_t { None = 0, Face = 1, Edge = 2 };
+enum class ContactKind : std::uint8_t { None = 0, Face = 1, Edge = 2, Side = 3 };
 
 inline const char* to_string(ContactKind k) {
   switch (k) {
     case ContactKind::None: return "none";
     case ContactKind::Face: return "face";
     case ContactKind::Edge: return "edge";
+    case ContactKind::Side: return "side";
   }
   return "?";
 }
@@ -379,6 +387,96 @@ void edge_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, in
   m.points.push_back(c);
 }
 
+/// Side contact (see the header comment).  R's edge ref_edge with in-plane
+/// outward normal u = (head - tail) x normal(edge_face(ref_edge, 0)) (unit
+/// when T normalises); `support` is the deepest vertex of I along -u.
+template <Number T>
+void side_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bool ref_is_a, int ref_edge,
+                  int support, const T& margin, ContactManifold<T>& m) {
+  const ConvexPolyhedron<T>& R = ref_is_a ? a : b;
+  const ConvexPolyhedron<T>& I = ref_is_a ? b : a;
+  m.kind = ContactKind::Side;
+  m.reference_shape = ref_is_a ? 0 : 1;
+  const int rt = R.edge_tail(ref_edge), rh = R.edge_head(ref_edge);
+  const Vec3<T>& t = R.vertex(rt);
+  const Vec3<T> d = R.edge_direction(ref_edge);
+  Vec3<T> u = cross(d, R.plane(R.edge_face(ref_edge, 0)).normal);
+  if constexpr (number_traits<T>::normalizes) {
+    const T len = number_traits<T>::sqrt(squared_norm(u));
+    u = Vec3<T>(u[0] / len, u[1] / len, u[2] / len);
+  }
+  const T n2 = norm2_of(u);
+  // Incident edge: of the two edges of I at `support`, the one most
+  // perpendicular to u, i.e. least (w.u)^2 / |w|^2 (exact in squared form for
+  // rationals; ties to the lower edge index).
+  int inc = -1, other = -1;
+  T best_num(0), best_den(1);
+  for (int h : I.vertex_half_edges(support)) {
+    const int e = h / 2;
+    const int o = I.half_edge(h ^ 1).origin;
+    const Vec3<T> w(I.vertex(o) - I.vertex(support));
+    const T wu = dot(w, u);
+    const T num = wu * wu, den = squared_norm(w);
+    if (inc < 0 || num * best_den < best_num * den || (num * best_den == best_num * den && e < inc)) {
+      inc = e;
+      other = o;
+      best_num = num;
+      best_den = den;
+    }
+  }
+  // Clip the segment p -> q to 0 <= d.(x - t) <= d.d.
+  const Vec3<T>& p = I.vertex(support);
+  const Vec3<T>& q = I.vertex(other);
+  const T gp = dot(d, Vec3<T>(p - t)), gq = dot(d, Vec3<T>(q - t)), dd = dot(d, d);
+  struct End {
+    Vec3<T> point;
+    ContactFeatureId id;  // R's feature first
+  };
+  std::vector<End> ends;
+  auto at = [&](const T& g) {  // the point of p -> q where d.(x - t) == g
+    const T lambda = T(g - gp) / T(gq - gp);
+    return Vec3<T>(p[0] + lambda * (q[0] - p[0]), p[1] + lambda * (q[1] - p[1]), p[2] + lambda * (q[2] - p[2]));
+  };
+  auto clip_end = [&](const Vec3<T>& x, const T& gx, int vx) {
+    if (gx < T(0)) {
+      if (!(T(0) < gp || T(0) < gq)) return;  // the whole segment is before the tail plane
+      ends.push_back({at(T(0)), {ShapeFeature::vertex(rt), ShapeFeature::edge(inc)}});
+    } else if (gx > dd) {
+      if (!(gp < dd || gq < dd)) return;  // beyond the head plane
+      ends.push_back({at(dd), {ShapeFeature::vertex(rh), ShapeFeature::edge(inc)}});
+    } else {
+      ends.push_back({x, {ShapeFeature::edge(ref_edge), ShapeFeature::vertex(vx)}});
+    }
+  };
+  clip_end(p, gp, support);
+  clip_end(q, gq, other);
+  if (ends.size() == 2 && ends[0].point == ends[1].point) ends.pop_back();
+  auto add = [&](const End& x, bool fallback) {
+    const Separation<T> s = fallback ? m.separation : Separation<T>{T(dot(u, Vec3<T>(x.point - t))), n2};
+    if (!fallback && !within_margin(s, margin)) return;
+    const T k = s.num / n2;
+    const Vec3<T> proj(x.point[0] - u[0] * k, x.point[1] - u[1] * k, x.point[2] - u[2] * k);
+    ContactPoint<T> c;
+    c.separation = s;
+    c.point_a = ref_is_a ? proj : x.point;
+    c.point_b = ref_is_a ? x.point : proj;
+    c.id = ref_is_a ? x.id : x.id.swapped();
+    const T half = T(1) / T(2);
+    c.position = Vec3<T>((c.point_a[0] + c.point_b[0]) * half, (c.point_a[1] + c.point_b[1]) * half,
+                         (c.point_a[2] + c.point_b[2]) * half);
+    m.points.push_back(c);
+  };
+  for (const auto& x : ends) add(x, false);
+  if (m.points.empty()) {
+    // The incident segment misses the slab (corner against corner), or no
+    // clipped end is within the margin: the support vertex alone, with the
+    // SAT's separation (which is within the margin).
+    m.support_fallback = true;
+    add(End{p, {ShapeFeature::edge(ref_edge), ShapeFeature::vertex(support)}}, true);
+  }
+  m.candidate_points = static_cast<int>(m.points.size());
+}
+
 }  // namespace contact_detail
 
 /// The contact manifold of A and B from a SAT result `sat` for the same pair
@@ -425,6 +523,18 @@ ContactManifold<T> contact_manifold(const ConvexPolyhedron<T>& a, const ConvexPo
       check_index(sat.feature.a, a.edge_count(), "edge of A");
       check_index(sat.feature.b, b.edge_count(), "edge of B");
       contact_detail::edge_contact(a, b, sat.feature.a, sat.feature.b, m);
+      break;
+    }
+    case FeatureType::SideA: {
+      check_index(sat.feature.a, a.edge_count(), "edge of A");
+      check_index(sat.feature.b, b.vertex_count(), "support vertex of B");
+      contact_detail::side_contact(a, b, true, sat.feature.a, sat.feature.b, margin, m);
+      break;
+    }
+    case FeatureType::SideB: {
+      check_index(sat.feature.b, b.edge_count(), "edge of B");
+      check_index(sat.feature.a, a.vertex_count(), "support vertex of A");
+      contact_detail::side_contact(a, b, false, sat.feature.b, sat.feature.a, margin, m);
       break;
     }
   }

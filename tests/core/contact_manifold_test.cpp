@@ -320,6 +320,83 @@ TEMPLATE_TEST_CASE("speculative margin", "[contact][margin]", float, double) {
   for (const auto& c : mt2.points) CHECK(to_double(c.separation) <= 0.1 + 1e-6);
 }
 
+TEMPLATE_TEST_CASE("coplanar polygons with a gap: side contact within the margin", "[contact][margin][side]",
+                   float, double) {
+  using T = TestType;
+  auto v = [](double x, double y) { return vec_from_double<T>(Vec3<double>(x, y, 0)); };
+  // squares [0,2]^2 and [3,5] x [0,1]: A's right edge x = 2 against B's left
+  // edge x = 3, a gap of 1 (SideA, feature.hpp)
+  const auto a = ConvexPolyhedron<T>::polygon({v(0, 0), v(2, 0), v(2, 2), v(0, 2)});
+  const auto b = ConvexPolyhedron<T>::polygon({v(3, 0), v(5, 0), v(5, 1), v(3, 1)});
+  const auto r = sat::gauss_map(a, b);
+  REQUIRE(r.feature.type == FeatureType::SideA);
+  CHECK(contact_manifold(a, b, r).empty());
+  ManifoldOptions opt;
+  opt.margin = 1.5;
+  const auto m = contact_manifold(a, b, r, opt);
+  CHECK(m.kind == ContactKind::Side);
+  REQUIRE(m.size() == 2);  // B's left edge, inside A's edge's slab
+  for (const auto& c : m.points) {
+    CHECK(to_double(c.separation) == 1.0);
+    CHECK(vec_to_double(c.point_a)[0] == 2.0);
+    CHECK(vec_to_double(c.point_b)[0] == 3.0);
+    CHECK(c.id.a == ShapeFeature::edge(r.feature.a));
+    CHECK(c.id.b.kind == ShapeFeature::vertex(0).kind);
+  }
+  // B lower by 1/2: its left edge [(3,-0.5), (3,0.5)] is cut by the slab of
+  // A's edge at y = 0: A's corner (2,0) against B's edge, and B's vertex 3
+  const auto low = ConvexPolyhedron<T>::polygon({v(3, -0.5), v(5, -0.5), v(5, 0.5), v(3, 0.5)});
+  const auto rl = sat::gauss_map(a, low);
+  REQUIRE(rl.feature.type == FeatureType::SideA);
+  const auto ml = contact_manifold(a, low, rl, opt);
+  CHECK(ml.kind == ContactKind::Side);
+  REQUIRE(ml.size() == 2);
+  int clipped = 0;
+  for (const auto& c : ml.points) {
+    CHECK(to_double(c.separation) == 1.0);
+    if (vec_to_double(c.point_b)[1] == 0.0) {
+      ++clipped;
+      CHECK(c.id.a.kind == ShapeFeature::vertex(0).kind);
+      CHECK(c.id.b.kind == ShapeFeature::edge(0).kind);
+    } else {
+      CHECK(c.id.b == ShapeFeature::vertex(3));
+    }
+  }
+  CHECK(clipped == 1);
+  // B lower by 3/2: its edge misses the slab (corner against corner): the
+  // support vertex alone, flagged
+  const auto lower = ConvexPolyhedron<T>::polygon({v(3, -1.5), v(5, -1.5), v(5, -0.5), v(3, -0.5)});
+  const auto rw = sat::gauss_map(a, lower);
+  const auto mw = contact_manifold(a, lower, rw, opt);
+  CHECK(mw.support_fallback);
+  REQUIRE(mw.size() == 1);
+  CHECK(vec_to_double(mw.points[0].point_b) == Vec3<double>(3, -1.5, 0));
+  // moving B by the separation along the normal makes the polygons touch
+  const Vec3<double> shift = vec_to_double(m.resolving_translation());
+  CHECK(shift[0] == -1.0);
+  const auto rt = sat::gauss_map(a, moved(b, Eigen::Matrix3d::Identity(), shift));
+  CHECK(rt.overlap);
+  CHECK(to_double(rt.separation) == 0.0);
+  // The reference edge on B (SideB): the right triangle against B; B's left
+  // edge x = 3 gives 1, A's hypotenuse only 1/sqrt 2.  The incident edge is
+  // A's hypotenuse (more perpendicular to the normal than the bottom edge),
+  // clipped to B's edge's slab 0 <= y <= 1: (2,0) at 1 and (1,1) at 2.
+  const auto tri = ConvexPolyhedron<T>::polygon({v(0, 0), v(2, 0), v(0, 2)});
+  const auto rs = sat::gauss_map(tri, b);
+  REQUIRE(rs.feature.type == FeatureType::SideB);
+  CHECK(vec_to_double(rs.axis)[0] == Approx(1.0));
+  const auto ms = contact_manifold(tri, b, rs, opt);
+  CHECK(ms.kind == ContactKind::Side);
+  CHECK(ms.reference_shape == 1);
+  REQUIRE(ms.size() == 1);
+  CHECK(vec_to_double(ms.points[0].point_a) == Vec3<double>(2, 0, 0));
+  opt.margin = 2.5;
+  const auto ms2 = contact_manifold(tri, b, rs, opt);
+  REQUIRE(ms2.size() == 2);
+  CHECK(to_double(ms2.points[1].separation) == Approx(2.0));
+  CHECK(vec_to_double(ms2.points[1].point_a).isApprox(Vec3<double>(1, 1, 0)));
+}
+
 TEST_CASE("bad input to contact_manifold", "[contact][errors]") {
   const auto a = shapes::cube<double>(1.0);
   const auto b = moved(shapes::cube<double>(1.0), Eigen::Matrix3d::Identity(), {0, 0, 1.5});
