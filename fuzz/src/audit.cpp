@@ -179,8 +179,34 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
     }
   }
 
+  // side axes: two flat shapes in one plane (best_axis.hpp)
+  const bool cop_e = ke.coplanar_flat(), cop_f = k.coplanar_flat();
+  if (cop_e || cop_f) {
+    out << "  (both shapes flat and in one plane" << (cop_e ? (cop_f ? "" : ", exactly only") : (", " + fname + " only"))
+        << ": the in-plane edge normals are candidates)\n";
+    auto sides = [&](bool of_a) {
+      const auto& p = of_a ? A : B;
+      const auto& q = of_a ? B : A;
+      const auto& dp = of_a ? dA : dB;
+      for (int e = 0; e < p.edge_count(); ++e) {
+        const auto qf = of_a ? k.side_query_a(e) : k.side_query_b(e);
+        const auto qe = of_a ? ke.side_query_a(e) : ke.side_query_b(e);
+        const double bnd = bounds::side_axis_bound<F>(p, e, q, dp[static_cast<std::size_t>(p.edge_face(e, 0))]);
+        row(std::string(of_a ? "sideA " : "sideB ") + std::to_string(e) + (of_a ? " (vB " : " (vA ") +
+                std::to_string(qe.support_vertex) + ")",
+            double(qf.separation.num), qe.separation, bnd);
+        if (cop_e) {
+          cands.push_back({of_a ? Feature::side_a(e, qe.support_vertex) : Feature::side_b(qe.support_vertex, e),
+                           qe.separation});
+        }
+      }
+    };
+    sides(true);
+    sides(false);
+  }
+
   // ---- chosen features ----
-  out << "\nChosen features (maximum separation; ties broken faceA < faceB < edges by index):\n";
+  out << "\nChosen features (maximum separation; ties broken faceA < faceB < edges < sideA < sideB by index):\n";
   auto show = [&](const std::string& cfg, const std::string& sat, bool overlap, const Feature& f, double s) {
     char line[300];
     std::snprintf(line, sizeof line, "  %-14s %-12s %-9s %-16s separation %.12g\n", cfg.c_str(), sat.c_str(),
@@ -252,6 +278,9 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
   }
 
   // ---- notes ----
+  if (cop_e)
+    notes.push_back("both shapes are flat and exactly in one plane: every face and edge-pair axis is the plane "
+                    "normal (separation 0); the in-plane edge normals (sideA/sideB) decide a gap");
   if (parallel_exact)
     notes.push_back(std::to_string(parallel_exact) + " edge pair(s) are exactly parallel (no edge axis; skipped by every SAT)");
   if (parallel_tol)

@@ -170,8 +170,18 @@ Separation<Q> exact_value(const Exact& E, Sat sat, const Feature& f) {
     case FeatureType::FaceB: return E.fqB[static_cast<std::size_t>(f.b)].separation;
     case FeatureType::EdgePair:
       return sat == Sat::brute_force ? exact_edge_projection(E, f.a, f.b) : E.k->edge_separation(f.a, f.b);
+    case FeatureType::SideA: return E.k->side_query_a(f.a).separation;
+    case FeatureType::SideB: return E.k->side_query_b(f.b).separation;
   }
   return {};
+}
+
+// The exact height of vertex v of q along the side axis of edge e of p (the
+// same value num / sqrt(norm2) as PlainKernel<Q>::side_query gives its support
+// vertex): u = (head - tail) x N, N the exact plane normal of edge_face(e, 0).
+Separation<Q> exact_side_height(const CPQ& p, int e, const CPQ& q, int v) {
+  const Vec3<Q> u = cross(p.edge_direction(e), p.plane(p.edge_face(e, 0)).normal);
+  return {dot(u, Vec3<Q>(q.vertex(v) - p.vertex(p.edge_tail(e)))), squared_norm(u)};
 }
 
 bool same_axis(const Feature& x, const Feature& y) {
@@ -258,8 +268,16 @@ struct FloatSide {
         const double u = bounds::u_of<F>();
         return (2 * m + 2 * u * mag * (1 + bounds::gamma(1, u))) * bounds::kSlack;
       }
+      case FeatureType::SideA: return side_bound(A, deltaA, f.a, B);
+      case FeatureType::SideB: return side_bound(B, deltaB, f.b, A);
     }
     return 0;
+  }
+
+  // (6) of error_bounds.hpp: the side axis of edge e of p against q's vertices.
+  double side_bound(const ConvexPolyhedron<F>& p, const std::vector<double>& delta, int e,
+                    const ConvexPolyhedron<F>& q) const {
+    return bounds::side_axis_bound<F>(p, e, q, delta[static_cast<std::size_t>(p.edge_face(e, 0))]);
   }
 };
 
@@ -369,6 +387,16 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     if (!(ff == fe)) {
       if (exact_decisions) {
         kf = Klass::unexplained;
+      } else if (same_axis(ff, fe) &&
+                 (ff.type == FeatureType::SideA || ff.type == FeatureType::SideB)) {
+        // same side axis, different support vertex: their exact heights
+        const bool on_a = ff.type == FeatureType::SideA;
+        const int e = on_a ? ff.a : ff.b;
+        const CPQ& p = on_a ? E.A : E.B;
+        const CPQ& q = on_a ? E.B : E.A;
+        const Separation<Q> h1 = exact_side_height(p, e, q, on_a ? ff.b : ff.a);
+        const Separation<Q> h2 = exact_side_height(p, e, q, on_a ? fe.b : fe.a);
+        kf = close(h1, h2, 2 * bf) ? Klass::tie : Klass::unexplained;
       } else if (same_axis(ff, fe)) {
         // same face, different support vertex: compare the two vertices' exact heights
         const bool on_a = ff.type == FeatureType::FaceA;

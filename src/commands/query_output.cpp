@@ -17,6 +17,7 @@ json::Value stats_json(const SatStats& s) {
   return json::Value(json::Object{{"face_axes", static_cast<long long>(s.face_axes)},
                                   {"edge_pairs", static_cast<long long>(s.edge_pairs)},
                                   {"minkowski_faces", static_cast<long long>(s.minkowski_faces)},
+                                  {"side_axes", static_cast<long long>(s.side_axes)},
                                   {"exact_fallbacks", static_cast<long long>(s.exact_fallbacks)}});
 }
 
@@ -31,6 +32,10 @@ std::string feature_text(const Feature& f) {
     case FeatureType::FaceA: return "faceA: face " + a + " of A, support vertex " + b + " of B";
     case FeatureType::FaceB: return "faceB: face " + b + " of B, support vertex " + a + " of A";
     case FeatureType::EdgePair: return "edges: edge " + a + " of A, edge " + b + " of B";
+    case FeatureType::SideA:
+      return "sideA: in-plane normal of edge " + a + " of A (coplanar polygons), support vertex " + b + " of B";
+    case FeatureType::SideB:
+      return "sideB: in-plane normal of edge " + b + " of B (coplanar polygons), support vertex " + a + " of A";
   }
   return "?";
 }
@@ -46,6 +51,8 @@ json::Value manifold_json(const ManifoldOut& m) {
     o.emplace_back("reference", m.reference_shape == 0 ? "A" : "B");
     o.emplace_back("reference_face", m.reference_face);
     o.emplace_back("incident_face", m.incident_face);
+  } else if (m.kind == "side") {
+    o.emplace_back("reference", m.reference_shape == 0 ? "A" : "B");
   }
   o.emplace_back("points", json::Value(std::move(points)));
   return json::Value(std::move(o));
@@ -85,13 +92,17 @@ void print_query_text(std::ostream& out, const RunOutcome& r, const RunConfig& c
       << "arithmetic: " << name(cfg.number) << ", algorithm " << name(cfg.algorithm) << ", "
       << (cfg.robust ? "robust" : "plain") << " policy\n"
       << "stats:      " << r.stats.face_axes << " face axes, " << r.stats.edge_pairs << " edge pairs, "
-      << r.stats.minkowski_faces << " Minkowski faces, " << r.stats.exact_fallbacks << " exact fallbacks\n";
+      << r.stats.minkowski_faces << " Minkowski faces, "
+      << (r.stats.side_axes > 0 ? std::to_string(r.stats.side_axes) + " side axes, " : std::string())
+      << r.stats.exact_fallbacks << " exact fallbacks\n";
   const ManifoldOut& m = r.manifold;
   out << "manifold:   " << m.kind << " contact, " << m.points.size() << " point" << (m.points.size() == 1 ? "" : "s");
   if (m.kind == "face") {
     out << " (reference face " << m.reference_face << " of " << (m.reference_shape == 0 ? "A" : "B")
         << ", incident face " << m.incident_face << " of " << (m.reference_shape == 0 ? "B" : "A") << ", "
         << m.candidate_points << " clipped points before reduction)";
+  } else if (m.kind == "side") {
+    out << " (reference edge on " << (m.reference_shape == 0 ? "A" : "B") << ", coplanar polygons)";
   }
   out << "\n";
   for (const auto& p : m.points) {

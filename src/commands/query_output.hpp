@@ -4,10 +4,13 @@
 // batch output line.  Keys (JSON):
 //   overlap     true when the shapes share a point (touching counts)
 //   separation  signed distance along the reported axis (> 0 separated)
-//   feature     {"type": "faceA"|"faceB"|"edges", "a": i, "b": j}:
+//   feature     {"type": "faceA"|"faceB"|"edges"|"sideA"|"sideB", "a": i, "b": j}:
 //               faceA: a = face of A, b = support vertex of B;
 //               faceB: a = support vertex of A, b = face of B;
-//               edges: a = edge of A, b = edge of B
+//               edges: a = edge of A, b = edge of B;
+//               sideA: a = edge of A, b = support vertex of B (two flat
+//                      shapes in one plane: the edge's in-plane normal);
+//               sideB: a = support vertex of A, b = edge of B
 //   normal      [x, y, z] unit axis pointing from A towards B
 //   number, algorithm, policy, stats      (query --json only)
 #pragma once

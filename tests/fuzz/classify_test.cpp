@@ -117,6 +117,26 @@ void check_bounds_on_random_triangles(int trials) {
     const F sf = F(dot(pl.normal, v) - pl.offset);
     const Q se = dot(Ne, Vec3<Q>(vec_cast<Q>(v) - q0));
     REQUIRE(within(double(sf), ExactSep{se, squared_norm(Ne)}, bounds::face_bound<F>(pl.normal, p0, v, dn)));
+    // (6) side axis of the edge p0 -> p1 (in-plane outward normal d x n), as
+    // the plain kernel computes it (u in F) and as the robust one does (u in
+    // double, rounded to F; value u . fl(v - p0))
+    {
+      const Vec3<F> de(p1 - p0);
+      Vec3<F> us = cross(de, pl.normal);
+      const F len = std::sqrt(squared_norm(us));
+      us = Vec3<F>(us[0] / len, us[1] / len, us[2] / len);
+      const double du = bounds::delta_side<F>(de, pl.normal, dn);
+      const Vec3<Q> ue = cross(Vec3<Q>(q1 - q0), Ne);
+      const ExactSep xe{dot(ue, Vec3<Q>(vec_cast<Q>(v) - q0)), squared_norm(ue)};
+      const F s_plain = F(dot(us, v) - dot(us, p0));
+      REQUIRE(within(double(s_plain), xe, bounds::side_bound<F>(us, p0, v, du)));
+      Vec3<double> ud = cross(Vec3<double>(double(de[0]), double(de[1]), double(de[2])),
+                              Vec3<double>(double(pl.normal[0]), double(pl.normal[1]), double(pl.normal[2])));
+      ud /= ud.norm();
+      const Vec3<F> ur{static_cast<F>(ud[0]), static_cast<F>(ud[1]), static_cast<F>(ud[2])};
+      const F s_robust = dot(ur, Vec3<F>(v - p0));
+      REQUIRE(within(double(s_robust), xe, bounds::side_bound<F>(ur, p0, v, du)));
+    }
     ++checked;
   }
   CHECK(checked > trials / 2);

@@ -53,14 +53,32 @@
 //     gamma_3 sum|n||v| + delta_n ||v|| (n as in (4)), the subtraction rounds once:
 //     => B_proj = 2 max_v (gamma_3 sum|n||v| + delta_n ||v||) + u (|min_B| + |max_A|) (1 + gamma_1).
 //
+// (6) Side axis of edge e of a flat shape (coplanar flat shapes, best_axis.hpp):
+//     plain:  u = n(fl(d x n)) with d = fl(head - tail), n the face's unit
+//             normal (delta_n from (1)), n(.) the rounded normalisation;
+//             value fl(fl(u.v) - fl(u.t)), t the edge's tail: (3) with u for n;
+//     robust: u computed in double and rounded to F, value fl(u . fl(v - t)):
+//             (2)/(4) with u for n.
+//     Exact: u_e = d_e x N_e / |d_e x N_e| (N_e the plane triple's normal).
+//       ||fl(d x n) - d x n|| <= gamma_2 ||C||, C = |d| x |n| componentwise;
+//       ||d x n - d_e x n_e|| <= (||d - d_e|| ||n|| + ||d_e|| ||n - n_e||)
+//                             <= (u + delta_n)(1 + gamma_4) ||d|| / (1 - u)  =: e_dn
+//       (||n|| <= 1 + gamma_4, ||d_e|| <= ||d|| / (1 - u));
+//       |d_e x n_e| >= |d x n| - e_dn >= lo := |w|(1 - 2^-50) - e_dn, w = d x n
+//       evaluated in double;
+//     => delta_u = gamma_4 + 2 (gamma_2 ||C|| + e_dn) / lo   (as in (1)),
+//        B_side(v) = max(B_face(v) with u, B_edge(v - t) with u).
+//
 // The bounds are evaluated in double.  Their own rounding is covered by the
 // final factor (1 + 2^-30), far above the ~10 double roundings involved.  The
 // exact length |N_e| enters only as a lower bound (a slightly shrunk double).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include <sepax/convex_polyhedron.hpp>
 #include <sepax/number_traits.hpp>
 #include <sepax/vec3.hpp>
 
@@ -128,6 +146,40 @@ inline double projection_bound(const Vec3<F>& n, const Vec3<F>& v, double delta_
   const double u = u_of<F>();
   const Vec3<double> nd = d(n), vd = d(v);
   return (gamma(3, u) * abs_dot(nd, vd) + delta_n * norm(vd)) * kSlack;
+}
+
+/// (6) ||u - u_e|| for the side axis of an edge d with face unit normal n.
+template <class F>
+inline double delta_side(const Vec3<F>& dir, const Vec3<F>& n, double delta_n) {
+  const double u = u_of<F>();
+  const Vec3<double> dd = d(dir), nd = d(n);
+  const double e_dn = (u + delta_n) * (1 + gamma(4, u)) * norm(dd) / (1 - u);
+  const double lo = norm(cross(dd, nd)) * (1 - 0x1p-50) - e_dn;
+  if (!(lo > 0)) return std::numeric_limits<double>::infinity();
+  return (gamma(4, u) + 2.0 * (gamma(2, u) * norm(abs_cross(dd, nd)) + e_dn) / lo) * kSlack;
+}
+
+/// (6) a side-axis height of v (unit side normal u, edge tail t), for the
+/// plain and the robust evaluation.
+template <class F>
+inline double side_bound(const Vec3<F>& uvec, const Vec3<F>& t, const Vec3<F>& v, double delta_u) {
+  return std::max(face_bound<F>(uvec, t, v, delta_u), edge_bound<F>(uvec, Vec3<F>(v - t), delta_u));
+}
+
+/// (6) the bound of the side axis of edge e of p against every vertex of q
+/// (the side query's minimum), delta_n the bound (1) of edge_face(e, 0)'s normal.
+template <class F>
+inline double side_axis_bound(const ConvexPolyhedron<F>& p, int e, const ConvexPolyhedron<F>& q, double delta_n) {
+  const Vec3<F>& dir = p.edge_dir(e);
+  const Vec3<F>& n = p.edge_normal(e, 0);
+  const double du = delta_side<F>(dir, n, delta_n);
+  Vec3<F> uv = cross(dir, n);
+  const F len = std::sqrt(squared_norm(uv));
+  uv = Vec3<F>(uv[0] / len, uv[1] / len, uv[2] / len);
+  const Vec3<F>& t = p.vertex(p.edge_tail(e));
+  double m = 0;
+  for (const auto& v : q.vertices()) m = std::max(m, side_bound<F>(uv, t, v, du));
+  return m;
 }
 
 /// A lower bound on sqrt(x) for a double x that approximates an exact value to
