@@ -150,6 +150,40 @@ ShapeSpec random_flat(Rng& r) {
   return flat_of(loop);
 }
 
+// Two convex polygons exactly in one plane (float coordinates): vertices on
+// circles in the plane z = 0 (angles sorted, so the loops are convex), B's
+// centre at a random in-plane distance (gap, touching range or overlap), then
+// a map that keeps them exactly coplanar in float: z = 2^j x (exact), axis
+// permutations and sign flips (cube rotations).  Only the side axes separate
+// such a pair when there is a gap (best_axis.hpp).
+std::pair<ShapeSpec, ShapeSpec> coplanar_flat_pair(Rng& r) {
+  auto loop_at = [&](double cx, double cy) {
+    const int n = irange(r, 3, 8);
+    const double rad = uni(r, 0.3, 1.0);
+    std::vector<double> ang;
+    for (int i = 0; i < n; ++i) ang.push_back(uni(r, 0, 6.283185307179586));
+    std::sort(ang.begin(), ang.end());
+    std::vector<V> loop;
+    for (double a : ang) {
+      const V p(static_cast<float>(cx + rad * std::cos(a)), static_cast<float>(cy + rad * std::sin(a)), 0.0);
+      if (!loop.empty() && (p - loop.back()).norm() < 0.05 * rad) continue;
+      loop.push_back(p);
+    }
+    while (loop.size() > 3 && (loop.front() - loop.back()).norm() < 0.05 * rad) loop.pop_back();
+    return loop;
+  };
+  const double dist = uni(r, 0.0, 2.5), dir = uni(r, 0, 6.283185307179586);
+  std::vector<V> la = loop_at(0, 0), lb = loop_at(dist * std::cos(dir), dist * std::sin(dir));
+  const int tilt = irange(r, -2, 2);  // z = 2^tilt x, or no tilt
+  const Eigen::Matrix3d R = cube_rotation(irange(r, 0, 23));
+  for (auto* l : {&la, &lb})
+    for (auto& v : *l) {
+      if (tilt != 0) v[2] = std::ldexp(v[0], tilt);
+      v = R * v;
+    }
+  return {flat_of(la), flat_of(lb)};
+}
+
 ShapeSpec random_prism(Rng& r) {
   const int n = irange(r, 3, 32);
   return spec_from(shapes::prism<double>(n, uni(r, 0.3, 1.2), uni(r, 0.2, 1.2)));
@@ -268,6 +302,16 @@ FuzzCase make(const std::string& fam, Rng& r) {
   if (fam == "boxes") return place(r, fam, random_box(r), random_box(r), irange(r, 0, 1) == 0);
   if (fam == "tetra") return place(r, fam, random_tetra(r), irange(r, 0, 1) ? random_tetra(r) : any_solid(r));
   if (fam == "flat") {
+    if (irange(r, 0, 3) == 0) {
+      // coplanar polygons, placed as drawn (no pose: a pose would round them
+      // off their common plane)
+      auto [a, b] = coplanar_flat_pair(r);
+      FuzzCase c;
+      c.family = fam;
+      c.a = std::move(a);
+      c.b = std::move(b);
+      return c;
+    }
     FuzzCase c = place(r, fam, random_flat(r), irange(r, 0, 2) == 0 ? random_flat(r) : any_solid(r),
                        irange(r, 0, 2) == 0);
     if (irange(r, 0, 1)) std::swap(c.a, c.b);
