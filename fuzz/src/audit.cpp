@@ -179,11 +179,10 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
     }
   }
 
-  // side axes: two flat shapes in one plane (best_axis.hpp)
-  const bool cop_e = ke.coplanar_flat(), cop_f = k.coplanar_flat();
-  if (cop_e || cop_f) {
-    out << "  (both shapes flat and in one plane" << (cop_e ? (cop_f ? "" : ", exactly only") : (", " + fname + " only"))
-        << ": the in-plane edge normals are candidates)\n";
+  // side axes: two flat shapes (best_axis.hpp)
+  const bool flat_pair = A.is_flat() && B.is_flat();
+  if (flat_pair) {
+    out << "  (both shapes flat: the in-plane edge normals are candidates)\n";
     auto sides = [&](bool of_a) {
       const auto& p = of_a ? A : B;
       const auto& q = of_a ? B : A;
@@ -195,7 +194,7 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
         row(std::string(of_a ? "sideA " : "sideB ") + std::to_string(e) + (of_a ? " (vB " : " (vA ") +
                 std::to_string(qe.support_vertex) + ")",
             double(qf.separation.num), qe.separation, bnd);
-        if (cop_e) {
+        {
           cands.push_back({of_a ? Feature::side_a(e, qe.support_vertex) : Feature::side_b(qe.support_vertex, e),
                            qe.separation});
         }
@@ -278,9 +277,14 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
   }
 
   // ---- notes ----
-  if (cop_e)
-    notes.push_back("both shapes are flat and exactly in one plane: every face and edge-pair axis is the plane "
-                    "normal (separation 0); the in-plane edge normals (sideA/sideB) decide a gap");
+  if (flat_pair) {
+    bool coplanar = true;
+    for (int v = 0; v < Be.vertex_count() && coplanar; ++v)
+      coplanar = sign(Separation<Q>{Q(dot(Ae.plane(0).normal, Be.vertex(v)) - Ae.plane(0).offset), Q(1)}) == 0;
+    if (coplanar)
+      notes.push_back("both shapes are flat and exactly in one plane: every face and edge-pair axis is the plane "
+                      "normal (separation 0); the in-plane edge normals (sideA/sideB) decide a gap");
+  }
   if (parallel_exact)
     notes.push_back(std::to_string(parallel_exact) + " edge pair(s) are exactly parallel (no edge axis; skipped by every SAT)");
   if (parallel_tol)

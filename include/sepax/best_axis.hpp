@@ -80,20 +80,22 @@ bool scan_face_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& 
   return false;
 }
 
-/// The side axes (feature.hpp), shared by every SAT after its other axes.
-/// When A and B are flat and coplanar, every face normal and every edge-pair
-/// axis is the common plane normal, with separation exactly 0, so those axes
-/// can only say "touching".  The in-plane outward normals of the polygons'
-/// edges are then the face normals of the (flat) Minkowski difference that
-/// decide the 2D question: a side axis with positive separation is a gap in
-/// the plane.  (Face axes win every tie at 0, so a side feature is reported
-/// only for separated polygons.)  Whether the shapes are flat and coplanar is
-/// the kernel's decision (k.coplanar_flat(): exact for exact T and the robust
-/// policy, within the named coplanar tolerance for plain float).  Returns true
-/// when early_out is set and a separating side axis was found.
+/// The side axes (feature.hpp), shared by every SAT after its other axes,
+/// when A and B are both flat (double-sided polygons).  A polygon's sides are
+/// faces of zero thickness with normals u = (head - tail) x n: in-plane,
+/// outward.  For two polygons in one plane they are the only axes that can see
+/// a gap: the Minkowski difference is flat, every face normal and every eA x eB
+/// is the plane normal, with separation exactly 0.  For two polygons in
+/// different planes they are valid separating directions too (any direction
+/// is), so adding them never changes a verdict in exact arithmetic; they are
+/// taken for every pair of flat shapes, with no coplanarity test, so that
+/// float and exact runs always have the same candidates.  Face axes win every
+/// exact tie, so a side feature is reported only when its separation is the
+/// largest.  Returns true when early_out is set and a separating side axis
+/// was found.
 template <SatKernel K>
 bool scan_side_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt) {
-  if (!k.coplanar_flat()) return false;
+  if (!k.a().is_flat() || !k.b().is_flat()) return false;
   for (int e = 0; e < k.a().edge_count(); ++e) {
     const auto q = k.side_query_a(e);
     ++stats.side_axes;

@@ -9,11 +9,11 @@
 //   SideA:    a = edge of A,              b = support vertex of B
 //   SideB:    a = support vertex of A,    b = edge of B
 //
-// Side axes exist only when A and B are both flat (double-sided polygons) and
-// exactly coplanar: then every 3D candidate axis above is the common plane
-// normal (separation 0), and the in-plane outward normal of each polygon edge,
-// edge direction x face normal, is what separates polygons with a gap between
-// them (see best_axis.hpp, scan_side_axes).
+// Side axes exist only when A and B are both flat (double-sided polygons):
+// the in-plane outward normal of a polygon edge, edge direction x face
+// normal.  For two polygons in one plane every 3D candidate axis above is the
+// common plane normal (separation 0), and the side axes are what separates
+// polygons with a gap between them (see best_axis.hpp, scan_side_axes).
 //
 // Tie-break rule (the same for every T and every SAT): among candidate axes
 // with exactly equal separation, the one whose feature comes first in

@@ -32,28 +32,10 @@ class PlainKernel {
   FaceQuery<T> face_query_a(int f) const { return face_query(a_, f, b_); }
   FaceQuery<T> face_query_b(int f) const { return face_query(b_, f, a_); }
 
-  // Side axes (coplanar flat shapes only, best_axis.hpp): the in-plane
+  // Side axes (both shapes flat, best_axis.hpp): the in-plane
   // outward normal u = (head - tail) x normal(edge_face(e, 0)) of edge e (the
   // face of half-edge 2e is on its left seen from outside, so u points out of
   // the polygon), and the other shape's support vertex along -u.
-  // Both flat, and every vertex of B on A's plane: exactly for exact T; for
-  // float and double within Tolerances<T>::coplanar of the larger extent (as
-  // sat2::coplanar_sat), since rounded heights of a tilted coplanar pair are
-  // rarely exactly 0.  Side axes are valid separating directions for any two
-  // shapes, so a tolerance here can only add candidates, never a wrong one.
-  bool coplanar_flat() const {
-    if (!a_.is_flat() || !b_.is_flat()) return false;
-    const Plane<T>& pl = a_.plane(0);
-    T tol(0);
-    if constexpr (!number_traits<T>::is_exact) {
-      tol = static_cast<T>(Tolerances<T>::coplanar * std::max(a_.extent(), b_.extent()));
-    }
-    for (const auto& v : b_.vertices()) {
-      if (abs_of(T(dot(pl.normal, v) - pl.offset)) > tol) return false;
-    }
-    return true;
-  }
-
   FaceQuery<T> side_query_a(int e) const { return side_query(a_, e, b_); }
   FaceQuery<T> side_query_b(int e) const { return side_query(b_, e, a_); }
 

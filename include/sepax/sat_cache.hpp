@@ -16,8 +16,7 @@
 //       FaceB(_, g)   k.face_query_b(g)
 //       EdgePair      still a Minkowski face (k.arc_signs strict) and not
 //                     parallel (k.edges_parallel), then k.edge_separation
-//       SideA/SideB   both shapes still flat and coplanar (k.coplanar_flat),
-//                     then k.side_query_a / k.side_query_b
+//       SideA/SideB   k.side_query_a / k.side_query_b (both shapes flat)
 //     If it still separates (k.sign > 0) the query returns at once (a hit):
 //       overlap = false, early_out = true, feature = the re-evaluated feature,
 //       separation = exactly the separation the SATs compute for that
@@ -55,8 +54,7 @@ namespace sat {
 
 /// The cached feature re-evaluated at the current pose (see the header
 /// comment); nullopt if its indices are out of range or an edge pair is no
-/// longer a non-parallel Minkowski face, or a side feature's shapes are no
-/// longer flat and coplanar.
+/// longer a non-parallel Minkowski face.
 template <SatKernel K>
 std::optional<std::pair<Feature, Separation<typename K::FT>>> reevaluate(K& k, const Feature& f) {
   using T = typename K::FT;
@@ -77,12 +75,12 @@ std::optional<std::pair<Feature, Separation<typename K::FT>>> reevaluate(K& k, c
       return std::pair<Feature, Separation<T>>{f, k.edge_separation(f.a, f.b)};
     }
     case FeatureType::SideA: {
-      if (f.a < 0 || f.a >= k.a().edge_count() || !k.coplanar_flat()) return std::nullopt;
+      if (f.a < 0 || f.a >= k.a().edge_count() || !(k.a().is_flat() && k.b().is_flat())) return std::nullopt;
       const auto q = k.side_query_a(f.a);
       return std::pair<Feature, Separation<T>>{Feature::side_a(f.a, q.support_vertex), q.separation};
     }
     case FeatureType::SideB: {
-      if (f.b < 0 || f.b >= k.b().edge_count() || !k.coplanar_flat()) return std::nullopt;
+      if (f.b < 0 || f.b >= k.b().edge_count() || !(k.a().is_flat() && k.b().is_flat())) return std::nullopt;
       const auto q = k.side_query_b(f.b);
       return std::pair<Feature, Separation<T>>{Feature::side_b(q.support_vertex, f.b), q.separation};
     }

@@ -67,9 +67,7 @@ concept SatKernel = requires(K k, const K ck, int i, int j, const Separation<typ
   // face i of A against B / face i of B against A (full support scan)
   { k.face_query_a(i) } -> std::same_as<FaceQuery<typename K::FT>>;
   { k.face_query_b(i) } -> std::same_as<FaceQuery<typename K::FT>>;
-  // both shapes flat and in one plane: then the side axes are candidates
-  { ck.coplanar_flat() } -> std::same_as<bool>;
-  // side axis of edge i of A / of edge i of B (coplanar flat shapes only):
+  // side axis of edge i of A / of edge i of B (both shapes flat only):
   // the polygon's in-plane outward edge normal, with a full support scan
   { k.side_query_a(i) } -> std::same_as<FaceQuery<typename K::FT>>;
   { k.side_query_b(i) } -> std::same_as<FaceQuery<typename K::FT>>;

@@ -17,10 +17,6 @@
 // |             |                                 | coplanar*extent below its plane; a face corner closer than  |
 // |             |                                 | coplanar*extent to the line through its neighbours is       |
 // |             |                                 | removed (every output face strictly convex)                 |
-// |             | also: plain float SATs          | two flat shapes are coplanar (their side axes are           |
-// |             |                                 | candidates, best_axis.hpp) when every vertex of B is within |
-// |             |                                 | coplanar*extent of A's plane (extent: the larger shape's);  |
-// |             |                                 | the robust policy and exact types decide it exactly         |
 // | flat        | hull builder                    | a point set within flat*extent of a plane is a flat polygon;|
 // |             |                                 | within flat*extent of a line it is Collinear.  flat =       |
 // |             |                                 | 2*coplanar so that a solid is never thinner than twice the  |

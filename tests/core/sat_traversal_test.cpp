@@ -47,7 +47,6 @@ struct Counting {
   const ConvexPolyhedron<FT>& b() const { return k.b(); }
   FaceQuery<FT> face_query_a(int i) const { ++face_queries; return k.face_query_a(i); }
   FaceQuery<FT> face_query_b(int i) const { ++face_queries; return k.face_query_b(i); }
-  bool coplanar_flat() const { return k.coplanar_flat(); }
   FaceQuery<FT> side_query_a(int i) const { return k.side_query_a(i); }
   FaceQuery<FT> side_query_b(int i) const { return k.side_query_b(i); }
   Separation<FT> face_separation_a(int i, int j) const { ++heights; return k.face_separation_a(i, j); }

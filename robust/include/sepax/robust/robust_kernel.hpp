@@ -168,21 +168,12 @@ class RobustKernel {
     return q;
   }
 
-  // Side axes (coplanar flat shapes only; best_axis.hpp).  No filter: the
-  // case is rare (two flat shapes in exactly one plane), so the support vertex
+  // Side axes (both shapes flat; best_axis.hpp).  No filter: the case is
+  // rare (two double-sided polygons) and small, so the support vertex
   // and every decision on a side feature are exact (value_error is infinite
   // for SideA/SideB, so compare and sign always take the exact stage).  The
   // value is the float height along the normalised side normal, carrying the
   // exact sign (snap_exact).
-  // Both flat and every vertex of B exactly on A's plane (orientation signs).
-  bool coplanar_flat() const {
-    if (!a_.is_flat() || !b_.is_flat()) return false;
-    for (int v = 0; v < b_.vertex_count(); ++v) {
-      if (face_sign(a_, 0, b_.vertex(v)) != 0) return false;
-    }
-    return true;
-  }
-
   FaceQuery<T> side_query_a(int e) const { return side_query(a_, e, b_, true); }
   FaceQuery<T> side_query_b(int e) const { return side_query(b_, e, a_, false); }
 
