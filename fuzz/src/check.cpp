@@ -55,21 +55,47 @@ bool within(double x, const Separation<Q>& s, double bound) {
   return cmp_rational_sep(Q(qx - qb), s) <= 0 && cmp_rational_sep(Q(qx + qb), s) >= 0;
 }
 
-// |value(s)| <= bound, exactly.
+// sign(value(x) - value(y) - b), exactly, for x = p/sqrt(m), y = q/sqrt(n)
+// (m, n > 0) and a rational b.  Multiplying by sqrt(m n) > 0 it is the sign of
+//   X - Y,   X = p sqrt(n) - q sqrt(m),   Y = b sqrt(m n).
+// sign(X) compares p sqrt(n) with q sqrt(m): signs first, then p^2 n vs q^2 m.
+// When sign(X) != sign(Y) that decides it; when both are s != 0, compare the
+// squares: X^2 - Y^2 = R - S sqrt(m n) with R = p^2 n + q^2 m - b^2 m n and
+// S = 2 p q, whose sign is again signs first, then R^2 vs S^2 m n; times s.
+// Every step is a rational comparison: nothing goes through double.
+int sign_sep_diff(const Separation<Q>& x, const Separation<Q>& y, const Q& b) {
+  const Q &p = x.num, &m = x.norm2, &q = y.num, &n = y.norm2;
+  // sign(u sqrt(a) - v sqrt(c)) for rationals u, v and a, c >= 0
+  auto sign_sqrt_diff = [](const Q& u, const Q& a, const Q& v, const Q& c) {
+    const int su = sgn(u) * sgn(a), sv = sgn(v) * sgn(c);
+    if (su != sv) return su < sv ? -1 : 1;
+    if (su == 0) return 0;
+    const Q lhs = u * u * a, rhs = v * v * c;
+    const int mag = (lhs > rhs) - (lhs < rhs);
+    return su > 0 ? mag : -mag;
+  };
+  const int sx = sign_sqrt_diff(p, n, q, m);
+  const int sy = sgn(b);  // sqrt(m n) > 0
+  if (sx != sy) return sx < sy ? -1 : 1;
+  if (sx == 0) return 0;
+  const Q mn = m * n;
+  const Q R = p * p * n + q * q * m - b * b * mn;
+  const Q S = 2 * p * q;
+  // sign(X^2 - Y^2) = sign(R - S sqrt(mn)) = sign_sqrt_diff(R, 1, S, mn)
+  const int sq = sign_sqrt_diff(R, Q(1), S, mn);
+  return sx > 0 ? sq : -sq;
+}
 
-// |value(x) - value(y)| <= bound for two exact separations with different axis
-// norms.  Evaluated on the doubles nearest to each value: each is within a
-// relative 3*2^-53 of the exact value (num and norm2 rounded, one sqrt, one
-// division), and the subtraction rounds once; the bound is widened by exactly
-// those amounts.  This is classification (tie or not), not a SAT decision.
+// |value(x) - value(y)| <= bound for two exact separations with (possibly)
+// different axis norms, decided exactly (sign_sep_diff): equal values always
+// hold, an infinite bound always holds, and the bound is the rational value of
+// the double.  Nothing goes through double.
 bool close(const Separation<Q>& x, const Separation<Q>& y, double bound) {
   if (!std::isfinite(bound)) return true;
   if (sepax::compare(x, y) == 0) return true;
-  const double a = sepax::to_double(x), b = sepax::to_double(y);
-  const double slack = 0x1p-50 * (std::abs(a) + std::abs(b));
-  return std::abs(a - b) <= bound + slack;
+  const Q b(bound);
+  return sign_sep_diff(x, y, b) <= 0 && sign_sep_diff(y, x, b) <= 0;
 }
-
 
 Klass classify_sign(int float_sign, const ExactSep& exact, double bound, bool exact_decisions) {
   const int es = sign(exact);

@@ -10,6 +10,7 @@
 #include <sepax/fuzz/error_bounds.hpp>
 #include <sepax/fuzz/generators.hpp>
 #include <sepax/plain_kernel.hpp>
+#include <sepax/robust/core_expr.hpp>
 #include <sepax/robust/number_types.hpp>
 
 using namespace sepax;
@@ -79,6 +80,39 @@ TEST_CASE("close: ties between exact separations on different axes", "[fuzz][cla
   CHECK(close(a, c, 0));
   CHECK_FALSE(close(a, d, 0.009));
   CHECK(close(a, d, 0.011));
+}
+
+TEST_CASE("close and sign_sep_diff are exact (no doubles), against CORE::Expr", "[fuzz][classify][tie]") {
+  // Exactly at the boundary: 3/sqrt(4) - 1/sqrt(16) = 1.25.
+  const ExactSep x{Q(3), Q(4)}, y{Q(1), Q(16)};
+  CHECK(sign_sep_diff(x, y, Q(5, 4)) == 0);
+  CHECK(sign_sep_diff(x, y, Q(5, 4) + Q(1, 1000000000)) < 0);
+  CHECK(sign_sep_diff(x, y, Q(5, 4) - Q(1, 1000000000)) > 0);
+  CHECK(close(x, y, 1.25));
+  CHECK_FALSE(close(x, y, 1.2499999999999998));  // the double just below 1.25
+  // Irrational values a double cannot separate: sqrt(2)/2 vs 1/sqrt(2) are equal;
+  // 1/sqrt(2) vs 1/sqrt(2 + 2^-120) differ by ~2^-123, far below double resolution.
+  const ExactSep r{Q(1), Q(2)}, r2{Q(1), Q(2) + Q(mpz_class(1), mpz_class(1) << 120)};
+  CHECK(sign_sep_diff(r, ExactSep{Q(1), Q(2)}, Q(0)) == 0);
+  CHECK(sign_sep_diff(r, r2, Q(0)) > 0);
+  CHECK(close(r, r2, 0x1p-122));
+  CHECK_FALSE(close(r, r2, 0x1p-125));  // the old double-based test called these equal
+  // Random small rationals (mixed signs, tiny differences) against CORE::Expr's exact sqrt.
+  std::mt19937_64 rng(77);
+  std::uniform_int_distribution<int> small(-9, 9), pos(1, 50);
+  int decided = 0;
+  for (int t = 0; t < 3000; ++t) {
+    const Q p(small(rng), pos(rng)), q(small(rng), pos(rng)), m(pos(rng), pos(rng)), n(pos(rng), pos(rng));
+    Q b(small(rng), pos(rng));
+    if (t % 4 == 0) b = 0;
+    using CORE::Expr;
+    auto ex = [](const Q& v) { return to_core_expr(v); };
+    const Expr diff = ex(p) / sqrt(ex(m)) - ex(q) / sqrt(ex(n)) - ex(b);
+    const int want = diff.sign();
+    REQUIRE(sign_sep_diff(ExactSep{p, m}, ExactSep{q, n}, b) == want);
+    decided += want != 0;
+  }
+  CHECK(decided > 2000);
 }
 
 // The bounds of error_bounds.hpp, tested against exact arithmetic on the very

@@ -21,8 +21,10 @@ int cmp_rational_sep(const mpq_class& r, const ExactSep& s);
 /// |x - value(s)| <= bound, exactly (bound as the rational value of a double;
 /// an infinite bound always holds).
 bool within(double x, const ExactSep& s, double bound);
-/// |value(x) - value(y)| <= bound; equal values always hold.  Decided on the
-/// nearest doubles widened by their conversion error (classification only).
+/// sign(value(x) - value(y) - b), exactly (rational comparisons only, see check.cpp).
+int sign_sep_diff(const ExactSep& x, const ExactSep& y, const mpq_class& b);
+/// |value(x) - value(y)| <= bound (bound as the rational value of a double; an
+/// infinite bound always holds); equal values always hold.  Decided exactly.
 bool close(const ExactSep& x, const ExactSep& y, double bound);
 
 /// One sign a float configuration decided (float_sign) against the exact
