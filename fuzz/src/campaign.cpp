@@ -13,6 +13,7 @@
 #include <sepax/error.hpp>
 #include <sepax/fuzz/cli.hpp>
 #include <sepax/fuzz/generators.hpp>
+#include <sepax/fuzz/shrink.hpp>
 
 namespace sepax::fuzz {
 
@@ -162,7 +163,8 @@ namespace {
 int usage(const char* msg) {
   std::cerr << "sepax fuzz: " << msg << "\n"
             << "usage: sepax fuzz [--seconds S] [--cases N] [--seed K] [--families a,b,...] [--out DIR] [--json] [--quiet]\n"
-            << "       sepax fuzz --replay FILE_OR_DIR... [--json]\n"
+            << "                  [--shrink-steps N] [--shrink-seconds S] [--shrink-max N]\n"
+            << "       sepax fuzz --replay FILE_OR_DIR... [--json] [--shrink] [--out DIR]\n"
             << "families:";
   for (const auto& f : family_names()) std::cerr << " " << f;
   std::cerr << "\n";
@@ -179,7 +181,11 @@ bool parse_number(const char* s, double& out) {
 
 int fuzz_main(int argc, char** argv) {
   double seconds = 30, max_cases = 0, seed_d = 1;
-  bool json = false, quiet = false, replay = false;
+  bool json = false, quiet = false, replay = false, shrink_replays = false;
+  // Shrinking (shrink.hpp): each unexplained finding, up to shrink_max per
+  // run, is shrunk within this budget; the original reproducer is kept too.
+  ShrinkOptions shrink_opt;
+  double shrink_steps = shrink_opt.max_steps, shrink_max = 5;
   std::string out_dir = "fuzz-reproducers";
   std::vector<std::string> families = family_names(), files;
   for (int i = 1; i < argc; ++i) {
@@ -208,6 +214,14 @@ int fuzz_main(int argc, char** argv) {
     } else if (a == "--out") {
       if (i + 1 >= argc) return usage("--out needs a directory");
       out_dir = argv[++i];
+    } else if (a == "--shrink-steps") {
+      if (!value(shrink_steps)) return usage("--shrink-steps needs a non-negative integer (0: no shrinking)");
+    } else if (a == "--shrink-seconds") {
+      if (!value(shrink_opt.max_seconds)) return usage("--shrink-seconds needs a non-negative number");
+    } else if (a == "--shrink-max") {
+      if (!value(shrink_max)) return usage("--shrink-max needs a non-negative integer");
+    } else if (a == "--shrink") {
+      shrink_replays = true;
     } else if (a == "--json") {
       json = true;
     } else if (a == "--quiet") {
@@ -223,6 +237,27 @@ int fuzz_main(int argc, char** argv) {
       return usage(("unknown argument '" + a + "'").c_str());
     }
   }
+  shrink_opt.max_steps = static_cast<int>(std::min(shrink_steps, 1e9));
+  int shrunk = 0;
+  // Shrink a finding (its original reproducer is `original`) and record the
+  // shrunk reproducer; a failure to shrink never hides the finding.
+  auto shrink_finding = [&](Report& rep, const std::string& original, const std::string& dir, const FuzzCase& c,
+                            const CaseReport& r) {
+    if (shrink_opt.max_steps <= 0 || shrunk >= shrink_max) return;
+    ++shrunk;
+    try {
+      const std::string path = shrunk_path(original, dir);
+      ShrinkStats st;
+      if (!quiet) std::fprintf(stderr, "\n[sepax fuzz] shrinking %s ...", original.c_str());
+      if (write_shrunk_reproducer(path, original, c, r, shrink_opt, &st)) {
+        rep.reproducers.push_back(path);
+        if (!quiet)
+          std::fprintf(stderr, " %d of %d steps kept in %.1f s -> %s\n", st.kept, st.steps, st.seconds, path.c_str());
+      }
+    } catch (const std::exception& e) {
+      std::cerr << "sepax fuzz: could not shrink " << original << ": " << e.what() << "\n";
+    }
+  };
   Report rep;
   rep.seed = static_cast<std::uint64_t>(seed_d);
   const auto t0 = std::chrono::steady_clock::now();
@@ -261,6 +296,7 @@ int fuzz_main(int argc, char** argv) {
       if (r.unexplained_count) {
         for (const auto& f : r.unexplained) std::cerr << "  [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
         if (status == 0) status = 1;
+        if (shrink_replays) shrink_finding(rep, p, out_dir, c, r);
       }
     }
     rep.seconds = elapsed();
@@ -299,7 +335,9 @@ int fuzz_main(int argc, char** argv) {
     rep.add(fam, r);
     if (r.unexplained_count) {
       try {
-        rep.reproducers.push_back(write_reproducer(out_dir, c, r));
+        const std::string original = write_reproducer(out_dir, c, r);
+        rep.reproducers.push_back(original);
+        shrink_finding(rep, original, "", c, r);
       } catch (const std::exception& e) {
         std::cerr << "sepax fuzz: could not write a reproducer: " << e.what() << "\n";
       }
