@@ -23,6 +23,12 @@ std::int64_t Report::unexplained() const {
   return n;
 }
 
+std::int64_t Report::skipped_total() const {
+  std::int64_t n = 0;
+  for (const auto& [k, c] : skipped) n += c;
+  return n;
+}
+
 void Report::add(const std::string& family, const CaseReport& r) {
   auto& f = families[family];
   if (!r.valid) {
@@ -35,6 +41,10 @@ void Report::add(const std::string& family, const CaseReport& r) {
   f.unexplained += r.unexplained_count;
   for (const auto& [k, c] : r.by_comparison) comparisons[k] += c;
   for (const auto& [k, c] : r.by_config) by_config[k] += c;
+  for (const auto& [k, n] : r.skipped) {
+    skipped[k] += n;
+    f.skipped[k] += n;
+  }
   for (const auto& x : r.unexplained)
     if (findings.size() < 20) findings.push_back(x);
 }
@@ -70,6 +80,12 @@ std::string jstr(const std::string& s) {
   return o + "\"";
 }
 
+std::string jskips(const std::map<std::string, std::int64_t>& m) {
+  std::string o = "{";
+  for (const auto& [k, n] : m) o += (o.size() > 1 ? "," : "") + jstr(k) + ":" + std::to_string(n);
+  return o + "}";
+}
+
 std::string jcounts(const Counts& c) {
   std::string o = "{";
   for (int k = 0; k < kKlassCount; ++k) {
@@ -90,7 +106,7 @@ void print_json(std::ostream& out, const Report& r) {
   bool first = true;
   for (const auto& [name, f] : r.families) {
     out << (first ? "" : ",") << jstr(name) << ":{\"cases\":" << f.cases << ",\"rejected\":" << f.rejected
-        << ",\"unexplained\":" << f.unexplained << "}";
+        << ",\"unexplained\":" << f.unexplained << ",\"skipped\":" << jskips(f.skipped) << "}";
     first = false;
   }
   out << "},\"comparisons\":{";
@@ -105,7 +121,8 @@ void print_json(std::ostream& out, const Report& r) {
     out << (first ? "" : ",") << jstr(name) << ":" << jcounts(c);
     first = false;
   }
-  out << "},\"reproducers\":[";
+  out << "},\"skipped_total\":" << r.skipped_total() << ",\"skipped\":" << jskips(r.skipped);
+  out << ",\"reproducers\":[";
   for (std::size_t i = 0; i < r.reproducers.size(); ++i) out << (i ? "," : "") << jstr(r.reproducers[i]);
   out << "],\"findings\":[";
   for (std::size_t i = 0; i < r.findings.size(); ++i) {
@@ -148,6 +165,19 @@ void print_text(std::ostream& out, const Report& r) {
   };
   table(r.comparisons, "comparison");
   table(r.by_config, "comparison/configuration");
+  // Comparisons not made above a size budget (CheckOptions), per family.
+  out << "\n  skipped above size budgets (not compared): " << r.skipped_total() << "\n";
+  for (const auto& [key, n] : r.skipped) {
+    std::snprintf(line, sizeof line, "    %-36s %9lld  (", key.c_str(), static_cast<long long>(n));
+    out << line;
+    bool first = true;
+    for (const auto& [fam, f] : r.families)
+      if (auto it = f.skipped.find(key); it != f.skipped.end()) {
+        out << (first ? "" : ", ") << fam << " " << it->second;
+        first = false;
+      }
+    out << ")\n";
+  }
   out << "\n  unexplained disagreements: " << r.unexplained() << "\n";
   for (const auto& f : r.findings) out << "    [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
   if (!r.reproducers.empty()) {

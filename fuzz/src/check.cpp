@@ -218,6 +218,10 @@ struct Recorder {
       if (kept[cmp]++ < opt.max_findings) rep.unexplained.push_back({cmp, cfg, sat, detail()});
     }
   }
+  /// A comparison not made (size budget): counted in CaseReport::skipped.
+  void skip(const std::string& cmp, const std::string& cfg, const std::string& sat) {
+    ++rep.skipped[cmp + "/" + cfg + "/" + sat];
+  }
 };
 
 template <class F>
@@ -297,7 +301,7 @@ const char* side_name(int i) {
 
 template <class F, class Policy>
 void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B,
-                 const std::string& cfg, bool exact_decisions, Recorder& rec) {
+                 const std::string& cfg, bool exact_decisions, const CheckOptions& opt, Recorder& rec) {
   const FloatSide<F> S(A, B, E);
   const int EA = A.edge_count(), EB = B.edge_count();
   // ---- arc signs and Minkowski-face verdicts, every edge pair ----
@@ -358,9 +362,11 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
   }
   // ---- every SAT ----
   for (Sat sat : all_sats()) {
-    if (sat == Sat::brute_force &&
-        static_cast<double>(EA) * EB * (A.vertex_count() + B.vertex_count()) > 2e7)
+    if (sat == Sat::brute_force && static_cast<double>(EA) * EB * (A.vertex_count() + B.vertex_count()) >
+                                       static_cast<double>(opt.float_brute_budget)) {
+      for (const char* cmp : {"overlap", "feature", "separation"}) rec.skip(cmp, cfg, sat_name(sat));
       continue;
+    }
     // The exact answer of this SAT (the mpq Gauss map when the input is
     // exactly convex, where all exact SATs agree; otherwise mpq's run of the
     // same SAT when it was made).  Only a comparison that still crosses SATs
@@ -419,11 +425,13 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
   const auto B = ConvexPolyhedron<T>::convert_from(Bf);
   const double cost = static_cast<double>(A.edge_count()) * B.edge_count() * (A.vertex_count() + B.vertex_count());
   for (Sat sat : all_sats()) {
-    if (skip_reference && sat == Sat::gauss_map) continue;
-    if (sat == Sat::brute_force && cost > static_cast<double>(opt.exact_brute_budget)) continue;
-    if (sat == Sat::gauss_map && static_cast<double>(A.edge_count()) * B.edge_count() >
-                                     static_cast<double>(opt.exact_gauss_pair_budget))
+    if (skip_reference && sat == Sat::gauss_map) continue;  // it is the reference itself
+    if ((sat == Sat::brute_force && cost > static_cast<double>(opt.exact_brute_budget)) ||
+        (sat == Sat::gauss_map && static_cast<double>(A.edge_count()) * B.edge_count() >
+                                      static_cast<double>(opt.exact_gauss_pair_budget))) {
+      rec.skip("exact", cfg, sat_name(sat));
       continue;
+    }
     const SatResult<T> r = run_sat<policy::Plain>(sat, A, B);
     rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
     // mpq: always against the reference (mpq Gauss map); other exact types:
@@ -566,16 +574,18 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   check_exact_type<Q>(Af, Bf, E, "mpq", true, opt, rec);
   if (static_cast<std::int64_t>(E.A.edge_count()) * E.B.edge_count() <= opt.gmpq_pair_budget)
     check_exact_type<CGAL::Gmpq>(Af, Bf, E, "gmpq", false, opt, rec);
+  else
+    for (Sat sat : all_sats()) rec.skip("exact", "gmpq", sat_name(sat));
   check_exact_type<CGAL::Epeck::FT>(Af, Bf, E, "epeck", false, opt, rec);
 
   // float configurations on identical inputs
   const auto Ad = ConvexPolyhedron<double>::convert_from(Af);
   const auto Bd = ConvexPolyhedron<double>::convert_from(Bf);
-  check_float<float, policy::Plain>(E, Af, Bf, "float_plain", false, rec);
-  check_float<double, policy::Plain>(E, Ad, Bd, "double_plain", false, rec);
+  check_float<float, policy::Plain>(E, Af, Bf, "float_plain", false, opt, rec);
+  check_float<double, policy::Plain>(E, Ad, Bd, "double_plain", false, opt, rec);
 #if SEPAX_FUZZ_HAS_ROBUST
-  check_float<float, policy::Robust>(E, Af, Bf, "float_robust", true, rec);
-  check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, rec);
+  check_float<float, policy::Robust>(E, Af, Bf, "float_robust", true, opt, rec);
+  check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, opt, rec);
 #endif
   return rep;
 }

@@ -91,6 +91,10 @@ struct CaseReport {
   std::vector<Finding> unexplained;         // at most a few per comparison
   std::int64_t unexplained_count = 0;
   std::vector<std::string> configs_run;     // "config/sat"
+  /// Comparisons not made because a run was above a size budget
+  /// (CheckOptions), as "comparison/config/sat" -> count.  Reported, never
+  /// silently dropped.
+  std::map<std::string, std::int64_t> skipped;
 };
 
 struct CheckOptions {
@@ -101,6 +105,8 @@ struct CheckOptions {
   /// is at most this; gmpq only when E_A*E_B is at most gmpq_pair_budget.
   std::int64_t exact_gauss_pair_budget = 60'000;
   std::int64_t gmpq_pair_budget = 10'000;
+  /// Float/double brute force only when E_A*E_B*(V_A+V_B) is at most this.
+  std::int64_t float_brute_budget = 20'000'000;
   /// Keep at most this many Finding records per comparison (all are counted).
   int max_findings = 8;
 };
