@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <sstream>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -200,6 +201,32 @@ Separation<Q> exact_value(const Exact& E, Sat sat, const Feature& f) {
   return {};
 }
 
+// The exact optimum over the candidates a plain F run certainly measured:
+// every face, and every exact Minkowski edge pair whose float edge directions
+// are certainly outside the plain kernel's parallel skip
+// (parallel_band == outside, error_bounds.hpp (6)).  A plain run that skipped
+// the exact winner must still reach this value, up to the bounds.
+template <class F>
+std::pair<Separation<Q>, Feature> measured_optimum(const Exact& E, Sat sat, const ConvexPolyhedron<F>& A,
+                                                   const ConvexPolyhedron<F>& B) {
+  std::pair<Separation<Q>, Feature> best{E.fqA[0].separation, Feature::face_a(0, E.fqA[0].support_vertex)};
+  auto consider = [&](const Separation<Q>& s, const Feature& f) {
+    if (sepax::compare(s, best.first) > 0) best = {s, f};
+  };
+  for (int f = 0; f < E.A.face_count(); ++f)
+    consider(E.fqA[static_cast<std::size_t>(f)].separation, Feature::face_a(f, E.fqA[static_cast<std::size_t>(f)].support_vertex));
+  for (int f = 0; f < E.B.face_count(); ++f)
+    consider(E.fqB[static_cast<std::size_t>(f)].separation, Feature::face_b(E.fqB[static_cast<std::size_t>(f)].support_vertex, f));
+  const int EB = E.B.edge_count();
+  for (int ea = 0; ea < E.A.edge_count(); ++ea)
+    for (int eb = 0; eb < EB; ++eb) {
+      if (!E.arcs[static_cast<std::size_t>(ea * EB + eb)].minkowski_face() || E.k->edges_parallel(ea, eb)) continue;
+      if (parallel_band<F>(A.edge_dir(ea), B.edge_dir(eb)) != ParallelBand::outside) continue;
+      consider(exact_value(E, sat, Feature::edges(ea, eb)), Feature::edges(ea, eb));
+    }
+  return best;
+}
+
 bool same_axis(const Feature& x, const Feature& y) {
   return x.type == y.type && x.primary() == y.primary() && x.secondary() == y.secondary();
 }
@@ -382,6 +409,28 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     const double sf = r.separation_as_double();
     const double bf = S.bound(sat, ff), be = S.bound(sat, fe);
     const Separation<Q> xf = exact_value(E, sat, ff);
+    // The plain kernel skips edge pairs within its parallel tolerance
+    // (plain_kernel.hpp edges_parallel).  When the exact winner is an edge
+    // pair and the float chose something else, find out whether the float may
+    // have skipped that pair (error_bounds.hpp (6), decided exactly):
+    //   outside  the float certainly measured it: the usual tie/bound rules;
+    //   inside   it may have been skipped: the disagreement is explained only
+    //            if the float's choice still reaches the optimum over the
+    //            candidates it certainly measured (measured_optimum) within
+    //            the two bounds, its verdict is the one its own feature
+    //            implies, and its value is within its own bound;
+    //   unknown  the guard fails (under/overflow): nothing can be shown, the
+    //            feature difference is unexplained.
+    ParallelBand band = ParallelBand::outside;
+    std::optional<std::pair<Separation<Q>, Feature>> measured;
+    double bm = 0;
+    if (!exact_decisions && !(ff == fe) && fe.type == FeatureType::EdgePair) {
+      band = parallel_band<F>(A.edge_dir(fe.a), B.edge_dir(fe.b));
+      if (band == ParallelBand::inside) {
+        measured = measured_optimum<F>(E, sat, A, B);
+        bm = S.bound(sat, measured->second);
+      }
+    }
     auto describe = [&](const char* what) {
       return [&, what] {
         std::ostringstream s;
@@ -390,12 +439,24 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
           << num(sepax::to_double(xf)) << ", bound " << num(bf) << "); exact: overlap=" << R.overlap
           << " feature " << to_string(fe) << " separation " << num(sepax::to_double(se)) << " (" << cfg
           << " bound for it " << num(be) << ")";
+        if (band == ParallelBand::inside)
+          s << "; the exact winner is within " << cfg << "'s parallel-edge skip (sin <= "
+            << num(bounds::ParallelSkip<F>::sine_bound()) << "); optimum over the pairs it certainly measured: "
+            << to_string(measured->second) << " " << num(sepax::to_double(measured->first)) << " (bound " << num(bm)
+            << ")";
+        if (band == ParallelBand::unknown)
+          s << "; cannot show whether " << cfg << " skipped the winning edge pair as parallel (underflow/overflow guard)";
         return s.str();
       };
     };
     // overlap verdict
-    const Klass ko = cls(classify_overlap(r.overlap, R.overlap, se, bf + be, exact_decisions));
-    rec.add("overlap", cfg, sat_name(sat), ko, describe("overlap verdict differs"));
+    Klass ko = classify_overlap(r.overlap, R.overlap, se, bf + be, exact_decisions);
+    if (band == ParallelBand::inside && ko != Klass::agree) {
+      // the verdict its own feature implies, exactly or within its bound
+      ko = classify_overlap(r.overlap, sign(xf) <= 0, xf, bf, false);
+      if (ko == Klass::agree) ko = Klass::explained;
+    }
+    rec.add("overlap", cfg, sat_name(sat), cls(ko), describe("overlap verdict differs"));
     // feature
     Klass kf = Klass::agree;
     if (!(ff == fe)) {
@@ -407,13 +468,22 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
         const Separation<Q> h1 = on_a ? E.k->face_separation_a(ff.a, ff.b) : E.k->face_separation_b(ff.b, ff.a);
         const Separation<Q> h2 = on_a ? E.k->face_separation_a(fe.a, fe.b) : E.k->face_separation_b(fe.b, fe.a);
         kf = close(h1, h2, 2 * bf) ? Klass::tie : Klass::unexplained;
+      } else if (band == ParallelBand::inside) {
+        // measured - xf <= bf + bm, exactly (the double sum rounds by 2^-53,
+        // inside the 2^-30 slack each bound carries)
+        kf = sign_sep_diff(measured->first, xf, Q(bf + bm)) <= 0 ? Klass::explained : Klass::unexplained;
+      } else if (band == ParallelBand::unknown) {
+        kf = Klass::unexplained;
       } else {
         kf = close(xf, se, bf + be) ? Klass::tie : Klass::unexplained;
       }
     }
     rec.add("feature", cfg, sat_name(sat), cls(kf), describe("feature differs"));
     // separation value
-    const Klass ks = cls(classify_separation(sf, se, same_axis(ff, fe), bf, be, exact_decisions));
+    Klass ks = classify_separation(sf, se, same_axis(ff, fe), bf, be, exact_decisions);
+    if (band == ParallelBand::inside && ks != Klass::agree)
+      ks = within(sf, xf, bf) ? Klass::explained : Klass::unexplained;  // its own feature's value
+    ks = cls(ks);
     rec.add("separation", cfg, sat_name(sat), ks, describe("separation outside its bound"));
   }
 }

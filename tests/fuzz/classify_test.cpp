@@ -191,3 +191,84 @@ TEST_CASE("integer arc signs equal the rational kernel's", "[fuzz][arcs]") {
     }
   }
 }
+
+// error_bounds.hpp (6): whenever the plain kernel calls an edge pair parallel,
+// parallel_band must say "inside" (soundness), and pairs clearly above the
+// tolerance must be "outside" (the band is tight).
+template <class F>
+void check_parallel_band(double tol) {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> u(-1, 1), f(0.5, 1.5);
+  std::uniform_int_distribution<int> ex(-10, 10);
+  int skipped = 0, measured = 0;
+  for (int t = 0; t < 4000; ++t) {
+    const double scale = std::ldexp(1.0, ex(rng));
+    Vec3<double> d(u(rng), u(rng), u(rng));
+    d.normalize();
+    Vec3<double> p(u(rng), u(rng), u(rng));
+    p = (p - d * d.dot(p)).normalized();
+    const double ang = tol * f(rng);  // around the tolerance
+    const Vec3<double> e = (d * std::cos(ang) + p * std::sin(ang)) * (scale * f(rng));
+    auto tri = [&](const Vec3<double>& dir, const Vec3<double>& off) {
+      std::vector<Vec3<F>> v{vec_from_double<F>(off), vec_from_double<F>(Vec3<double>(off + dir * scale)),
+                             vec_from_double<F>(Vec3<double>(off + cross(p, d) * scale))};
+      return ConvexPolyhedron<F>::from_faces(v, {{0, 1, 2}, {2, 1, 0}});
+    };
+    const auto A = tri(d, Vec3<double>(0, 0, 0));
+    const auto B = tri(e / scale, Vec3<double>(3 * scale, 0, 0));
+    const PlainKernel<F> k(A, B);
+    for (int ea = 0; ea < A.edge_count(); ++ea)
+      for (int eb = 0; eb < B.edge_count(); ++eb) {
+        const ParallelBand band = parallel_band<F>(A.edge_dir(ea), B.edge_dir(eb));
+        REQUIRE(band != ParallelBand::unknown);
+        if (k.edges_parallel(ea, eb)) {
+          ++skipped;
+          REQUIRE(band == ParallelBand::inside);
+        } else {
+          ++measured;
+        }
+        // exact sine clearly above the tolerance: certainly measured
+        const Vec3<Q> a = vec_cast<Q>(A.edge_dir(ea)), b = vec_cast<Q>(B.edge_dir(eb));
+        const Q k2 = Q(1.01 * tol) * Q(1.01 * tol);
+        if (squared_norm(cross(a, b)) > k2 * squared_norm(a) * squared_norm(b)) REQUIRE(band == ParallelBand::outside);
+      }
+  }
+  CHECK(skipped > 1000);
+  CHECK(measured > 1000);
+}
+
+TEST_CASE("parallel_band: sound for every pair the plain kernel skips, tight above it", "[fuzz][classify][parallel]") {
+  check_parallel_band<float>(1e-4);
+  check_parallel_band<double>(1e-8);
+  // the guard: tiny or huge edges cannot be shown either way
+  CHECK(parallel_band<float>(Vec3<float>(1e-20f, 0, 0), Vec3<float>(1, 1e-5f, 0)) == ParallelBand::unknown);
+  CHECK(parallel_band<float>(Vec3<float>(1e30f, 0, 0), Vec3<float>(1, 1e-5f, 0)) == ParallelBand::unknown);
+  CHECK(parallel_band<float>(Vec3<float>(1, 0, 0), Vec3<float>(1, 1e-5f, 0)) == ParallelBand::inside);
+  CHECK(parallel_band<float>(Vec3<float>(1, 0, 0), Vec3<float>(1, 1e-3f, 0)) == ParallelBand::outside);
+  CHECK(parallel_band<double>(Vec3<double>(1, 0, 0), Vec3<double>(1, 1e-5, 0)) == ParallelBand::outside);
+}
+
+// Two wedges touching ridge to ridge, the ridges turned by 3e-5 rad: exactly,
+// the ridge pair (axis z) is a Minkowski face and wins; plain float skips it
+// as parallel (sin < 1e-4) and picks a face.  That must be classified
+// "explained" (float_plain), while double measures the pair and agrees.
+TEST_CASE("check: a winner inside the float parallel skip is explained, not a tie", "[fuzz][classify][parallel]") {
+  const double th = 3e-5, g = 0.25;
+  FuzzCase c;
+  c.family = "manual";
+  std::vector<Vec3<double>> a{{-1, 0, 1}, {1, 0, 1}, {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0}, {1, 1, 0}};
+  std::vector<Vec3<double>> b;
+  for (const auto& p : a) {
+    const Vec3<double> m(p[0], p[1], 2 + g - p[2]);  // upside down, ridge at z = 1 + g
+    b.emplace_back(m[0] * std::cos(th) - m[1] * std::sin(th), m[0] * std::sin(th) + m[1] * std::cos(th), m[2]);
+  }
+  c.a = hull_of(a);
+  c.b = hull_of(b);
+  const CaseReport r = check_case(c);
+  REQUIRE(r.valid);
+  for (const auto& x : r.unexplained) UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+  CHECK(r.unexplained_count == 0);
+  CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 1);
+  CHECK(r.by_config.at("feature/float_plain")[Klass::tie] == 0);
+  CHECK(r.by_config.at("feature/double_plain")[Klass::agree] == r.by_config.at("feature/double_plain").total());
+}

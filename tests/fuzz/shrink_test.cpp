@@ -138,7 +138,7 @@ TEST_CASE("shrink: pose simplification un-rotates B and rounds its offset", "[fu
       for (int k = 0; k < 3; ++k) CHECK(std::ldexp(v[k], 4) == std::nearbyint(std::ldexp(v[k], 4)));
 }
 
-TEST_CASE("shrink: the step budget is respected; a passing case is returned unchanged", "[fuzz][shrink]") {
+TEST_CASE("shrink: the step budget is respected, and a passing case is returned unchanged", "[fuzz][shrink]") {
   FuzzCase c;
   c.a = blob(3, 30, 1.0, V(0, 0, 0), {});
   c.b = blob(4, 30, 1.0, V(1, 0, 0), {});
