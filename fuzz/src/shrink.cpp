@@ -171,8 +171,21 @@ class Shrinker {
     return true;
   }
 
+  // The float polyhedron builds (a cheap check, not a predicate evaluation).
+  static bool builds(const ShapeSpec& s) {
+    try {
+      std::vector<Vec3<float>> v;
+      for (const auto& p : s.vertices)
+        v.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]));
+      (void)ConvexPolyhedron<float>::from_faces(std::move(v), s.faces);
+      return true;
+    } catch (...) {
+      return false;
+    }
+  }
+
   // Move the vertices of one or both shapes by `map` (then round to float):
-  // try keeping the face lists, then re-hulling.
+  // keep the face lists when the moved shapes are still valid, else re-hull.
   template <class Map>
   bool attempt_moved(bool move_a, bool move_b, const Map& map, const std::string& what) {
     FuzzCase c = cur_;
@@ -181,7 +194,7 @@ class Shrinker {
       for (auto& v : s->vertices) v = map(v);
       round_to_float(*s);
     }
-    if (attempt(c, what)) return true;
+    if (builds(c.a) && builds(c.b)) return attempt(c, what);
     FuzzCase h = c;
     for (auto [move, s] : {std::pair{move_a, &h.a}, std::pair{move_b, &h.b}}) {
       if (!move) continue;
@@ -263,7 +276,8 @@ class Shrinker {
       const V off = centroid(cur_.b) - centroid(cur_.a);
       const double m = off.cwiseAbs().maxCoeff();
       if (m > 0) {
-        for (int k = 0; k <= 20 && budget_left(); ++k) {
+        for (const int k : {0, 1, 2, 3, 4, 6, 8, 12, 16, 20}) {
+          if (!budget_left()) break;
           const double g = std::ldexp(pow2_at_least(m), -k);
           const V r(round_to_grid(off[0], g), round_to_grid(off[1], g), round_to_grid(off[2], g));
           const V d = r - off;
@@ -280,7 +294,8 @@ class Shrinker {
   void round_coordinates() {
     const double top = pow2_at_least(std::max(max_abs(cur_), 1e-30));
     for (const bool on_a : {true, false}) {
-      for (int k = 1; k <= 24 && budget_left(); ++k) {
+      for (const int k : {1, 2, 3, 4, 6, 8, 12, 16, 20, 24}) {
+        if (!budget_left()) break;
         const double g = std::ldexp(top, -k);
         std::ostringstream w;
         w << "round " << (on_a ? "A" : "B") << "'s coordinates to the grid 2^" << std::ilogb(g);

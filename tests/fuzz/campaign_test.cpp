@@ -109,3 +109,18 @@ TEST_CASE("comparisons skipped above size budgets are counted and reported", "[f
         std::string::npos);
   CHECK(txt.str().find("(boxes 2)") != std::string::npos);
 }
+
+TEST_CASE("sepax fuzz shrink options", "[fuzz][cli][shrink]") {
+  auto run = [](std::vector<std::string> args) {
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    return fuzz_main(static_cast<int>(argv.size()), argv.data());
+  };
+  CHECK(run({"fuzz", "--cases", "2", "--quiet", "--shrink-steps", "0", "--shrink-seconds", "5", "--shrink-max", "1",
+             "--out", "fuzz-test-out"}) == 0);
+  CHECK(run({"fuzz", "--shrink-steps", "x"}) == 2);
+  CHECK(run({"fuzz", "--shrink-seconds"}) == 2);
+  // replaying passing cases with --shrink writes nothing and succeeds
+  CHECK(run({"fuzz", "--quiet", "--replay", SEPAX_SOURCE_DIR "/fuzz/corpus/00-triangle-on-box-face.case", "--shrink",
+             "--out", "fuzz-test-shrink-out"}) == 0);
+}

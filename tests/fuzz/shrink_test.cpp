@@ -180,3 +180,31 @@ TEST_CASE("shrink: failure signatures and the reproducer file", "[fuzz][shrink]"
   CHECK_FALSE(write_shrunk_reproducer("shrink-test-out/none.case", "-", c, check_case_guarded(c)));
   CHECK_FALSE(std::filesystem::exists("shrink-test-out/none.case"));
 }
+
+TEST_CASE("shrink: end to end through the real checker", "[fuzz][shrink]") {
+  // Preserve a real classification (a float_plain feature tie on a generated
+  // touching pair) instead of a bug: the shrinker must keep it while simplifying.
+  auto has_tie = [](const FuzzCase& x) {
+    const CaseReport r = check_case_guarded(x);
+    const auto it = r.by_config.find("feature/float_plain");
+    return r.valid && it != r.by_config.end() && it->second[Klass::tie] > 0;
+  };
+  FuzzCase c;
+  bool found = false;
+  for (std::uint64_t seed = 0; seed < 200 && !found; ++seed) {
+    c = generate("touching", seed);
+    found = has_tie(c);
+  }
+  REQUIRE(found);
+  ShrinkOptions opt;
+  opt.max_steps = 120;
+  ShrinkStats st;
+  const FuzzCase m = shrink(c, has_tie, opt, &st);
+  std::string log;
+  for (const auto& l : st.log) log += l + "\n";
+  INFO("seed " << c.seed << "\n" << log);
+  CHECK(has_tie(m));
+  CHECK(st.steps <= 120);
+  CHECK(st.kept > 0);
+  CHECK(m.a.vertices.size() + m.b.vertices.size() <= c.a.vertices.size() + c.b.vertices.size());
+}

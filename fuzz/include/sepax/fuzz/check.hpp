@@ -24,9 +24,13 @@
 //   agree        identical (separation: the float value equals the exact one)
 //   exact_zero   differs, and the exact quantity is exactly zero
 //   explained    differs, and the exact value lies within the forward error
-//                bound of the float computation (error_bounds.hpp)
+//                bound of the float computation (error_bounds.hpp); or a
+//                plain run missed an exact winning edge pair that lies inside
+//                its parallel-edge skip (error_bounds.hpp (6), parallel_band in
+//                classify.hpp) and its choice reaches the optimum over the
+//                candidates it certainly measured, within the bounds
 //   tie          different features whose exact separations are equal, or
-//                equal within the two features' bounds
+//                equal within the two features' bounds (both decided exactly)
 //   unexplained  anything else: a bug (or a bound that is wrong) -- the
 //                drivers write a reproducer and exit non-zero
 //   nonconvex    two *different* SATs disagree in exact arithmetic on an input

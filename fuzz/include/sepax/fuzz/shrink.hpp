@@ -13,13 +13,14 @@
 //                      frame (normal of its largest face, its longest edge) is
 //                      the identity; rotate B about its centre so that B's frame
 //                      is the identity (or A's frame); round B's offset from A
-//                      to 1, 2, 3, ... significant bits;
+//                      to 1, 2, 3, 4, 6, 8, ... significant bits;
 //   3. round coordinates   every coordinate of A (then B) to a power-of-two
-//                      grid 2^(E - k) for k = 1, 2, 3, ..., (2^E >= the largest
-//                      coordinate magnitude): the coarsest that still fails;
+//                      grid 2^(E - k) for k = 1, 2, 3, 4, 6, 8, 12, 16, 20, 24
+//                      (2^E >= the largest coordinate magnitude): the coarsest
+//                      that still fails;
 //
-// each geometric step tried twice: keeping the face lists (valid when the
-// moved vertices stay planar) and re-hulling the moved points.  Rounds repeat
+// a geometric step keeps the face lists when the moved shapes still validate
+// (a cheap check, not counted), and re-hulls the moved points otherwise.  Rounds repeat
 // until one makes no progress or the budget is spent.
 //
 // Budget: at most `max_steps` predicate evaluations (each a full check_case
