@@ -64,7 +64,8 @@ double pow2_at_least(double x) {
   return m == 0.5 ? std::ldexp(1.0, e - 1) : std::ldexp(1.0, e);
 }
 
-double round_to_grid(double x, double g) { return g * std::nearbyint(x / g); }
+// (+ 0.0 turns a rounded -0 into +0: "-0" in a reproducer only confuses.)
+double round_to_grid(double x, double g) { return g * std::nearbyint(x / g) + 0.0; }
 
 std::optional<ShapeSpec> rehull(const std::vector<V>& pts) {
   if (pts.size() < 3) return std::nullopt;
