@@ -2,7 +2,9 @@
 #include <sepax/fuzz/shrink.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -66,6 +68,27 @@ double pow2_at_least(double x) {
 
 // (+ 0.0 turns a rounded -0 into +0: "-0" in a reproducer only confuses.)
 double round_to_grid(double x, double g) { return g * std::nearbyint(x / g) + 0.0; }
+
+// Significant bits of x (0 for 0): 0.5 and 3 have 1 and 2, a random float 24.
+int significant_bits(double x) {
+  if (x == 0) return 0;
+  int e;
+  const double m = std::frexp(std::abs(x), &e);
+  auto M = static_cast<std::uint64_t>(std::ldexp(m, 53));  // exact: x is a float (or a double)
+  M >>= std::countr_zero(M);
+  return static_cast<int>(std::bit_width(M));
+}
+
+// How complicated a case is: vertices first, then the significant bits of all
+// coordinates.  Every kept step except the (at most two) rotations makes it
+// strictly smaller, so the shrinker terminates even without a budget.
+std::pair<std::size_t, long> complexity(const FuzzCase& c) {
+  long bits = 0;
+  for (const auto* s : {&c.a, &c.b})
+    for (const auto& v : s->vertices)
+      for (int k = 0; k < 3; ++k) bits += significant_bits(v[k]);
+  return {c.a.vertices.size() + c.b.vertices.size(), bits};
+}
 
 std::optional<ShapeSpec> rehull(const std::vector<V>& pts) {
   if (pts.size() < 3) return std::nullopt;
@@ -133,6 +156,7 @@ class Shrinker {
   const ShrinkOptions& opt_;
   ShrinkStats& st_;
   std::chrono::steady_clock::time_point t0_;
+  bool scene_rotated_ = false, b_rotated_ = false;  // each rotation is kept at most once
 
   bool budget_left() {
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
@@ -154,9 +178,12 @@ class Shrinker {
     return key(x.vertices) == key(y.vertices);
   }
 
-  // Evaluate a candidate; keep it when it still fails.
-  bool attempt(const FuzzCase& cand, const std::string& what) {
+  // Evaluate a candidate; keep it when it still fails.  Unless `any` (the
+  // rotations, kept at most once each), it must also be strictly simpler
+  // (complexity): no cycles of steps that undo each other.
+  bool attempt(const FuzzCase& cand, const std::string& what, bool any = false) {
     if (same(cand.a, cur_.a) && same(cand.b, cur_.b)) return false;
+    if (!any && !(complexity(cand) < complexity(cur_))) return false;
     if (!budget_left()) return false;
     ++st_.steps;
     bool f = false;
@@ -188,14 +215,14 @@ class Shrinker {
   // Move the vertices of one or both shapes by `map` (then round to float):
   // keep the face lists when the moved shapes are still valid, else re-hull.
   template <class Map>
-  bool attempt_moved(bool move_a, bool move_b, const Map& map, const std::string& what) {
+  bool attempt_moved(bool move_a, bool move_b, const Map& map, const std::string& what, bool any = false) {
     FuzzCase c = cur_;
     for (auto [move, s] : {std::pair{move_a, &c.a}, std::pair{move_b, &c.b}}) {
       if (!move) continue;
       for (auto& v : s->vertices) v = map(v);
       round_to_float(*s);
     }
-    if (builds(c.a) && builds(c.b)) return attempt(c, what);
+    if (builds(c.a) && builds(c.b)) return attempt(c, what, any);
     FuzzCase h = c;
     for (auto [move, s] : {std::pair{move_a, &h.a}, std::pair{move_b, &h.b}}) {
       if (!move) continue;
@@ -203,7 +230,7 @@ class Shrinker {
       if (!r) return false;
       *s = *r;
     }
-    return attempt(h, what + ", re-hulled");
+    return attempt(h, what + ", re-hulled", any);
   }
 
   // ---- 1. remove points ----
@@ -252,24 +279,26 @@ class Shrinker {
       }
     }
     // Whole scene: A's frame to the identity (about A's centre).
-    {
+    if (!scene_rotated_) {
       const Eigen::Matrix3d R = frame_inverse(cur_.a);
       if (!R.isIdentity(0)) {
         const V ca = centroid(cur_.a);
-        attempt_moved(true, true, [&](const V& v) { return V(R * (v - ca) + ca); }, "rotate the scene: A's frame to the identity");
+        scene_rotated_ = attempt_moved(true, true, [&](const V& v) { return V(R * (v - ca) + ca); },
+                                       "rotate the scene: A's frame to the identity", true);
       }
     }
     // B alone: its frame to the identity, or to A's frame (about B's centre).
-    {
+    if (!b_rotated_) {
       const Eigen::Matrix3d RB = frame_inverse(cur_.b);
       const V cb = centroid(cur_.b);
-      bool done = false;
       if (!RB.isIdentity(0))
-        done = attempt_moved(false, true, [&](const V& v) { return V(RB * (v - cb) + cb); }, "rotate B: its frame to the identity");
-      if (!done) {
+        b_rotated_ = attempt_moved(false, true, [&](const V& v) { return V(RB * (v - cb) + cb); },
+                                   "rotate B: its frame to the identity", true);
+      if (!b_rotated_) {
         const Eigen::Matrix3d R = frame_inverse(cur_.a).transpose() * frame_inverse(cur_.b);
         if (!R.isIdentity(0))
-          attempt_moved(false, true, [&](const V& v) { return V(R * (v - cb) + cb); }, "rotate B: its frame to A's frame");
+          b_rotated_ = attempt_moved(false, true, [&](const V& v) { return V(R * (v - cb) + cb); },
+                                     "rotate B: its frame to A's frame", true);
       }
     }
     // B alone: its offset from A rounded to k significant bits.

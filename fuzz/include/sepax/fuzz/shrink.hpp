@@ -20,7 +20,12 @@
 //                      that still fails;
 //
 // a geometric step keeps the face lists when the moved shapes still validate
-// (a cheap check, not counted), and re-hulls the moved points otherwise.  Rounds repeat
+// (a cheap check, not counted), and re-hulls the moved points otherwise.
+// A kept step must make the case strictly simpler -- fewer vertices, or
+// fewer significant bits over all coordinates -- except the two rotations,
+// which are kept at most once each (they may add bits that the rounding steps
+// then remove).  So no sequence of steps can cycle, and shrinking ends even
+// without a budget.  Rounds repeat
 // until one makes no progress or the budget is spent.
 //
 // Budget: at most `max_steps` predicate evaluations (each a full check_case
