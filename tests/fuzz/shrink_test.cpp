@@ -208,3 +208,22 @@ TEST_CASE("shrink: end to end through the real checker", "[fuzz][shrink]") {
   CHECK(st.kept > 0);
   CHECK(m.a.vertices.size() + m.b.vertices.size() <= c.a.vertices.size() + c.b.vertices.size());
 }
+
+TEST_CASE("shrink: terminates on its own (no cycles), even when every valid case 'fails'", "[fuzz][shrink]") {
+  // Steps that undo each other (rotate, round, rotate, ...) used to cycle
+  // until the budget ran out; every kept step must now simplify the case.
+  FuzzCase c;
+  c.a = blob(5, 25, 1.0, V(10.1, -3.3, 7.7), {});
+  c.b = blob(6, 25, 0.7, V(11.3, -2.9, 7.1), {});
+  const FailurePredicate valid = [](const FuzzCase& x) { return builds(x.a) && builds(x.b); };
+  ShrinkOptions opt;
+  opt.max_steps = 100000;
+  opt.max_seconds = 600;
+  ShrinkStats st;
+  const FuzzCase m = shrink(c, valid, opt, &st);
+  CHECK_FALSE(st.out_of_budget);
+  CHECK(st.steps < 2000);
+  CHECK(m.a.vertices.size() == 3);
+  CHECK(m.b.vertices.size() == 3);
+  CHECK(valid(m));
+}
