@@ -13,12 +13,19 @@
 #include <sepax/error.hpp>
 #include <sepax/fuzz/cli.hpp>
 #include <sepax/fuzz/generators.hpp>
+#include <sepax/fuzz/shrink.hpp>
 
 namespace sepax::fuzz {
 
 std::int64_t Report::unexplained() const {
   std::int64_t n = 0;
   for (const auto& [k, c] : comparisons) n += c[Klass::unexplained];
+  return n;
+}
+
+std::int64_t Report::skipped_total() const {
+  std::int64_t n = 0;
+  for (const auto& [k, c] : skipped) n += c;
   return n;
 }
 
@@ -34,6 +41,10 @@ void Report::add(const std::string& family, const CaseReport& r) {
   f.unexplained += r.unexplained_count;
   for (const auto& [k, c] : r.by_comparison) comparisons[k] += c;
   for (const auto& [k, c] : r.by_config) by_config[k] += c;
+  for (const auto& [k, n] : r.skipped) {
+    skipped[k] += n;
+    f.skipped[k] += n;
+  }
   for (const auto& x : r.unexplained)
     if (findings.size() < 20) findings.push_back(x);
 }
@@ -69,6 +80,12 @@ std::string jstr(const std::string& s) {
   return o + "\"";
 }
 
+std::string jskips(const std::map<std::string, std::int64_t>& m) {
+  std::string o = "{";
+  for (const auto& [k, n] : m) o += (o.size() > 1 ? "," : "") + jstr(k) + ":" + std::to_string(n);
+  return o + "}";
+}
+
 std::string jcounts(const Counts& c) {
   std::string o = "{";
   for (int k = 0; k < kKlassCount; ++k) {
@@ -89,7 +106,7 @@ void print_json(std::ostream& out, const Report& r) {
   bool first = true;
   for (const auto& [name, f] : r.families) {
     out << (first ? "" : ",") << jstr(name) << ":{\"cases\":" << f.cases << ",\"rejected\":" << f.rejected
-        << ",\"unexplained\":" << f.unexplained << "}";
+        << ",\"unexplained\":" << f.unexplained << ",\"skipped\":" << jskips(f.skipped) << "}";
     first = false;
   }
   out << "},\"comparisons\":{";
@@ -104,7 +121,8 @@ void print_json(std::ostream& out, const Report& r) {
     out << (first ? "" : ",") << jstr(name) << ":" << jcounts(c);
     first = false;
   }
-  out << "},\"reproducers\":[";
+  out << "},\"skipped_total\":" << r.skipped_total() << ",\"skipped\":" << jskips(r.skipped);
+  out << ",\"reproducers\":[";
   for (std::size_t i = 0; i < r.reproducers.size(); ++i) out << (i ? "," : "") << jstr(r.reproducers[i]);
   out << "],\"findings\":[";
   for (std::size_t i = 0; i < r.findings.size(); ++i) {
@@ -147,6 +165,19 @@ void print_text(std::ostream& out, const Report& r) {
   };
   table(r.comparisons, "comparison");
   table(r.by_config, "comparison/configuration");
+  // Comparisons not made above a size budget (CheckOptions), per family.
+  out << "\n  skipped above size budgets (not compared): " << r.skipped_total() << "\n";
+  for (const auto& [key, n] : r.skipped) {
+    std::snprintf(line, sizeof line, "    %-36s %9lld  (", key.c_str(), static_cast<long long>(n));
+    out << line;
+    bool first = true;
+    for (const auto& [fam, f] : r.families)
+      if (auto it = f.skipped.find(key); it != f.skipped.end()) {
+        out << (first ? "" : ", ") << fam << " " << it->second;
+        first = false;
+      }
+    out << ")\n";
+  }
   out << "\n  unexplained disagreements: " << r.unexplained() << "\n";
   for (const auto& f : r.findings) out << "    [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
   if (!r.reproducers.empty()) {
@@ -162,7 +193,8 @@ namespace {
 int usage(const char* msg) {
   std::cerr << "sepax fuzz: " << msg << "\n"
             << "usage: sepax fuzz [--seconds S] [--cases N] [--seed K] [--families a,b,...] [--out DIR] [--json] [--quiet]\n"
-            << "       sepax fuzz --replay FILE_OR_DIR... [--json]\n"
+            << "                  [--shrink-steps N] [--shrink-seconds S] [--shrink-max N]\n"
+            << "       sepax fuzz --replay FILE_OR_DIR... [--json] [--shrink] [--out DIR]\n"
             << "families:";
   for (const auto& f : family_names()) std::cerr << " " << f;
   std::cerr << "\n";
@@ -179,7 +211,11 @@ bool parse_number(const char* s, double& out) {
 
 int fuzz_main(int argc, char** argv) {
   double seconds = 30, max_cases = 0, seed_d = 1;
-  bool json = false, quiet = false, replay = false;
+  bool json = false, quiet = false, replay = false, shrink_replays = false;
+  // Shrinking (shrink.hpp): each unexplained finding, up to shrink_max per
+  // run, is shrunk within this budget; the original reproducer is kept too.
+  ShrinkOptions shrink_opt;
+  double shrink_steps = shrink_opt.max_steps, shrink_max = 5;
   std::string out_dir = "fuzz-reproducers";
   std::vector<std::string> families = family_names(), files;
   for (int i = 1; i < argc; ++i) {
@@ -208,6 +244,14 @@ int fuzz_main(int argc, char** argv) {
     } else if (a == "--out") {
       if (i + 1 >= argc) return usage("--out needs a directory");
       out_dir = argv[++i];
+    } else if (a == "--shrink-steps") {
+      if (!value(shrink_steps)) return usage("--shrink-steps needs a non-negative integer (0: no shrinking)");
+    } else if (a == "--shrink-seconds") {
+      if (!value(shrink_opt.max_seconds)) return usage("--shrink-seconds needs a non-negative number");
+    } else if (a == "--shrink-max") {
+      if (!value(shrink_max)) return usage("--shrink-max needs a non-negative integer");
+    } else if (a == "--shrink") {
+      shrink_replays = true;
     } else if (a == "--json") {
       json = true;
     } else if (a == "--quiet") {
@@ -223,6 +267,27 @@ int fuzz_main(int argc, char** argv) {
       return usage(("unknown argument '" + a + "'").c_str());
     }
   }
+  shrink_opt.max_steps = static_cast<int>(std::min(shrink_steps, 1e9));
+  int shrunk = 0;
+  // Shrink a finding (its original reproducer is `original`) and record the
+  // shrunk reproducer; a failure to shrink never hides the finding.
+  auto shrink_finding = [&](Report& rep, const std::string& original, const std::string& dir, const FuzzCase& c,
+                            const CaseReport& r) {
+    if (shrink_opt.max_steps <= 0 || shrunk >= shrink_max) return;
+    ++shrunk;
+    try {
+      const std::string path = shrunk_path(original, dir);
+      ShrinkStats st;
+      if (!quiet) std::fprintf(stderr, "\n[sepax fuzz] shrinking %s ...", original.c_str());
+      if (write_shrunk_reproducer(path, original, c, r, shrink_opt, &st)) {
+        rep.reproducers.push_back(path);
+        if (!quiet)
+          std::fprintf(stderr, " %d of %d steps kept in %.1f s -> %s\n", st.kept, st.steps, st.seconds, path.c_str());
+      }
+    } catch (const std::exception& e) {
+      std::cerr << "sepax fuzz: could not shrink " << original << ": " << e.what() << "\n";
+    }
+  };
   Report rep;
   rep.seed = static_cast<std::uint64_t>(seed_d);
   const auto t0 = std::chrono::steady_clock::now();
@@ -261,6 +326,7 @@ int fuzz_main(int argc, char** argv) {
       if (r.unexplained_count) {
         for (const auto& f : r.unexplained) std::cerr << "  [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
         if (status == 0) status = 1;
+        if (shrink_replays) shrink_finding(rep, p, out_dir, c, r);
       }
     }
     rep.seconds = elapsed();
@@ -299,7 +365,9 @@ int fuzz_main(int argc, char** argv) {
     rep.add(fam, r);
     if (r.unexplained_count) {
       try {
-        rep.reproducers.push_back(write_reproducer(out_dir, c, r));
+        const std::string original = write_reproducer(out_dir, c, r);
+        rep.reproducers.push_back(original);
+        shrink_finding(rep, original, "", c, r);
       } catch (const std::exception& e) {
         std::cerr << "sepax fuzz: could not write a reproducer: " << e.what() << "\n";
       }

@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <sstream>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -55,21 +56,47 @@ bool within(double x, const Separation<Q>& s, double bound) {
   return cmp_rational_sep(Q(qx - qb), s) <= 0 && cmp_rational_sep(Q(qx + qb), s) >= 0;
 }
 
-// |value(s)| <= bound, exactly.
+// sign(value(x) - value(y) - b), exactly, for x = p/sqrt(m), y = q/sqrt(n)
+// (m, n > 0) and a rational b.  Multiplying by sqrt(m n) > 0 it is the sign of
+//   X - Y,   X = p sqrt(n) - q sqrt(m),   Y = b sqrt(m n).
+// sign(X) compares p sqrt(n) with q sqrt(m): signs first, then p^2 n vs q^2 m.
+// When sign(X) != sign(Y) that decides it; when both are s != 0, compare the
+// squares: X^2 - Y^2 = R - S sqrt(m n) with R = p^2 n + q^2 m - b^2 m n and
+// S = 2 p q, whose sign is again signs first, then R^2 vs S^2 m n; times s.
+// Every step is a rational comparison: nothing goes through double.
+int sign_sep_diff(const Separation<Q>& x, const Separation<Q>& y, const Q& b) {
+  const Q &p = x.num, &m = x.norm2, &q = y.num, &n = y.norm2;
+  // sign(u sqrt(a) - v sqrt(c)) for rationals u, v and a, c >= 0
+  auto sign_sqrt_diff = [](const Q& u, const Q& a, const Q& v, const Q& c) {
+    const int su = sgn(u) * sgn(a), sv = sgn(v) * sgn(c);
+    if (su != sv) return su < sv ? -1 : 1;
+    if (su == 0) return 0;
+    const Q lhs = u * u * a, rhs = v * v * c;
+    const int mag = (lhs > rhs) - (lhs < rhs);
+    return su > 0 ? mag : -mag;
+  };
+  const int sx = sign_sqrt_diff(p, n, q, m);
+  const int sy = sgn(b);  // sqrt(m n) > 0
+  if (sx != sy) return sx < sy ? -1 : 1;
+  if (sx == 0) return 0;
+  const Q mn = m * n;
+  const Q R = p * p * n + q * q * m - b * b * mn;
+  const Q S = 2 * p * q;
+  // sign(X^2 - Y^2) = sign(R - S sqrt(mn)) = sign_sqrt_diff(R, 1, S, mn)
+  const int sq = sign_sqrt_diff(R, Q(1), S, mn);
+  return sx > 0 ? sq : -sq;
+}
 
-// |value(x) - value(y)| <= bound for two exact separations with different axis
-// norms.  Evaluated on the doubles nearest to each value: each is within a
-// relative 3*2^-53 of the exact value (num and norm2 rounded, one sqrt, one
-// division), and the subtraction rounds once; the bound is widened by exactly
-// those amounts.  This is classification (tie or not), not a SAT decision.
+// |value(x) - value(y)| <= bound for two exact separations with (possibly)
+// different axis norms, decided exactly (sign_sep_diff): equal values always
+// hold, an infinite bound always holds, and the bound is the rational value of
+// the double.  Nothing goes through double.
 bool close(const Separation<Q>& x, const Separation<Q>& y, double bound) {
   if (!std::isfinite(bound)) return true;
   if (sepax::compare(x, y) == 0) return true;
-  const double a = sepax::to_double(x), b = sepax::to_double(y);
-  const double slack = 0x1p-50 * (std::abs(a) + std::abs(b));
-  return std::abs(a - b) <= bound + slack;
+  const Q b(bound);
+  return sign_sep_diff(x, y, b) <= 0 && sign_sep_diff(y, x, b) <= 0;
 }
-
 
 Klass classify_sign(int float_sign, const ExactSep& exact, double bound, bool exact_decisions) {
   const int es = sign(exact);
@@ -184,6 +211,42 @@ Separation<Q> exact_side_height(const CPQ& p, int e, const CPQ& q, int v) {
   return {dot(u, Vec3<Q>(q.vertex(v) - p.vertex(p.edge_tail(e)))), squared_norm(u)};
 }
 
+// The exact optimum over the candidates a plain F run certainly measured:
+// every face, and every exact Minkowski edge pair whose float edge directions
+// are certainly outside the plain kernel's parallel skip
+// (parallel_band == outside, error_bounds.hpp (6)).  A plain run that skipped
+// the exact winner must still reach this value, up to the bounds.
+template <class F>
+std::pair<Separation<Q>, Feature> measured_optimum(const Exact& E, Sat sat, const ConvexPolyhedron<F>& A,
+                                                   const ConvexPolyhedron<F>& B) {
+  std::pair<Separation<Q>, Feature> best{E.fqA[0].separation, Feature::face_a(0, E.fqA[0].support_vertex)};
+  auto consider = [&](const Separation<Q>& s, const Feature& f) {
+    if (sepax::compare(s, best.first) > 0) best = {s, f};
+  };
+  for (int f = 0; f < E.A.face_count(); ++f)
+    consider(E.fqA[static_cast<std::size_t>(f)].separation, Feature::face_a(f, E.fqA[static_cast<std::size_t>(f)].support_vertex));
+  for (int f = 0; f < E.B.face_count(); ++f)
+    consider(E.fqB[static_cast<std::size_t>(f)].separation, Feature::face_b(E.fqB[static_cast<std::size_t>(f)].support_vertex, f));
+  const int EB = E.B.edge_count();
+  for (int ea = 0; ea < E.A.edge_count(); ++ea)
+    for (int eb = 0; eb < EB; ++eb) {
+      if (!E.arcs[static_cast<std::size_t>(ea * EB + eb)].minkowski_face() || E.k->edges_parallel(ea, eb)) continue;
+      if (parallel_band<F>(A.edge_dir(ea), B.edge_dir(eb)) != ParallelBand::outside) continue;
+      consider(exact_value(E, sat, Feature::edges(ea, eb)), Feature::edges(ea, eb));
+    }
+  if (E.A.is_flat() && E.B.is_flat()) {  // side axes (best_axis.hpp): always measured
+    for (int e = 0; e < E.A.edge_count(); ++e) {
+      const auto q = E.k->side_query_a(e);
+      consider(q.separation, Feature::side_a(e, q.support_vertex));
+    }
+    for (int e = 0; e < E.B.edge_count(); ++e) {
+      const auto q = E.k->side_query_b(e);
+      consider(q.separation, Feature::side_b(q.support_vertex, e));
+    }
+  }
+  return best;
+}
+
 bool same_axis(const Feature& x, const Feature& y) {
   return x.type == y.type && x.primary() == y.primary() && x.secondary() == y.secondary();
 }
@@ -201,6 +264,10 @@ struct Recorder {
       rep.unexplained_count += times;
       if (kept[cmp]++ < opt.max_findings) rep.unexplained.push_back({cmp, cfg, sat, detail()});
     }
+  }
+  /// A comparison not made (size budget): counted in CaseReport::skipped.
+  void skip(const std::string& cmp, const std::string& cfg, const std::string& sat) {
+    ++rep.skipped[cmp + "/" + cfg + "/" + sat];
   }
 };
 
@@ -274,7 +341,7 @@ struct FloatSide {
     return 0;
   }
 
-  // (6) of error_bounds.hpp: the side axis of edge e of p against q's vertices.
+  // (7) of error_bounds.hpp: the side axis of edge e of p against q's vertices.
   double side_bound(const ConvexPolyhedron<F>& p, const std::vector<double>& delta, int e,
                     const ConvexPolyhedron<F>& q) const {
     return bounds::side_axis_bound<F>(p, e, q, delta[static_cast<std::size_t>(p.edge_face(e, 0))]);
@@ -289,7 +356,7 @@ const char* side_name(int i) {
 
 template <class F, class Policy>
 void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B,
-                 const std::string& cfg, bool exact_decisions, Recorder& rec) {
+                 const std::string& cfg, bool exact_decisions, const CheckOptions& opt, Recorder& rec) {
   const FloatSide<F> S(A, B, E);
   const int EA = A.edge_count(), EB = B.edge_count();
   // ---- arc signs and Minkowski-face verdicts, every edge pair ----
@@ -350,9 +417,11 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
   }
   // ---- every SAT ----
   for (Sat sat : all_sats()) {
-    if (sat == Sat::brute_force &&
-        static_cast<double>(EA) * EB * (A.vertex_count() + B.vertex_count()) > 2e7)
+    if (sat == Sat::brute_force && static_cast<double>(EA) * EB * (A.vertex_count() + B.vertex_count()) >
+                                       static_cast<double>(opt.float_brute_budget)) {
+      for (const char* cmp : {"overlap", "feature", "separation"}) rec.skip(cmp, cfg, sat_name(sat));
       continue;
+    }
     // The exact answer of this SAT (the mpq Gauss map when the input is
     // exactly convex, where all exact SATs agree; otherwise mpq's run of the
     // same SAT when it was made).  Only a comparison that still crosses SATs
@@ -368,6 +437,28 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     const double sf = r.separation_as_double();
     const double bf = S.bound(sat, ff), be = S.bound(sat, fe);
     const Separation<Q> xf = exact_value(E, sat, ff);
+    // The plain kernel skips edge pairs within its parallel tolerance
+    // (plain_kernel.hpp edges_parallel).  When the exact winner is an edge
+    // pair and the float chose something else, find out whether the float may
+    // have skipped that pair (error_bounds.hpp (6), decided exactly):
+    //   outside  the float certainly measured it: the usual tie/bound rules;
+    //   inside   it may have been skipped: the disagreement is explained only
+    //            if the float's choice still reaches the optimum over the
+    //            candidates it certainly measured (measured_optimum) within
+    //            the two bounds, its verdict is the one its own feature
+    //            implies, and its value is within its own bound;
+    //   unknown  the guard fails (under/overflow): nothing can be shown, the
+    //            feature difference is unexplained.
+    ParallelBand band = ParallelBand::outside;
+    std::optional<std::pair<Separation<Q>, Feature>> measured;
+    double bm = 0;
+    if (!exact_decisions && !(ff == fe) && fe.type == FeatureType::EdgePair) {
+      band = parallel_band<F>(A.edge_dir(fe.a), B.edge_dir(fe.b));
+      if (band == ParallelBand::inside) {
+        measured = measured_optimum<F>(E, sat, A, B);
+        bm = S.bound(sat, measured->second);
+      }
+    }
     auto describe = [&](const char* what) {
       return [&, what] {
         std::ostringstream s;
@@ -376,12 +467,24 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
           << num(sepax::to_double(xf)) << ", bound " << num(bf) << "); exact: overlap=" << R.overlap
           << " feature " << to_string(fe) << " separation " << num(sepax::to_double(se)) << " (" << cfg
           << " bound for it " << num(be) << ")";
+        if (band == ParallelBand::inside)
+          s << "; the exact winner is within " << cfg << "'s parallel-edge skip (sin <= "
+            << num(bounds::ParallelSkip<F>::sine_bound()) << "); optimum over the pairs it certainly measured: "
+            << to_string(measured->second) << " " << num(sepax::to_double(measured->first)) << " (bound " << num(bm)
+            << ")";
+        if (band == ParallelBand::unknown)
+          s << "; cannot show whether " << cfg << " skipped the winning edge pair as parallel (underflow/overflow guard)";
         return s.str();
       };
     };
     // overlap verdict
-    const Klass ko = cls(classify_overlap(r.overlap, R.overlap, se, bf + be, exact_decisions));
-    rec.add("overlap", cfg, sat_name(sat), ko, describe("overlap verdict differs"));
+    Klass ko = classify_overlap(r.overlap, R.overlap, se, bf + be, exact_decisions);
+    if (band == ParallelBand::inside && ko != Klass::agree) {
+      // the verdict its own feature implies, exactly or within its bound
+      ko = classify_overlap(r.overlap, sign(xf) <= 0, xf, bf, false);
+      if (ko == Klass::agree) ko = Klass::explained;
+    }
+    rec.add("overlap", cfg, sat_name(sat), cls(ko), describe("overlap verdict differs"));
     // feature
     Klass kf = Klass::agree;
     if (!(ff == fe)) {
@@ -403,13 +506,22 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
         const Separation<Q> h1 = on_a ? E.k->face_separation_a(ff.a, ff.b) : E.k->face_separation_b(ff.b, ff.a);
         const Separation<Q> h2 = on_a ? E.k->face_separation_a(fe.a, fe.b) : E.k->face_separation_b(fe.b, fe.a);
         kf = close(h1, h2, 2 * bf) ? Klass::tie : Klass::unexplained;
+      } else if (band == ParallelBand::inside) {
+        // measured - xf <= bf + bm, exactly (the double sum rounds by 2^-53,
+        // inside the 2^-30 slack each bound carries)
+        kf = sign_sep_diff(measured->first, xf, Q(bf + bm)) <= 0 ? Klass::explained : Klass::unexplained;
+      } else if (band == ParallelBand::unknown) {
+        kf = Klass::unexplained;
       } else {
         kf = close(xf, se, bf + be) ? Klass::tie : Klass::unexplained;
       }
     }
     rec.add("feature", cfg, sat_name(sat), cls(kf), describe("feature differs"));
     // separation value
-    const Klass ks = cls(classify_separation(sf, se, same_axis(ff, fe), bf, be, exact_decisions));
+    Klass ks = classify_separation(sf, se, same_axis(ff, fe), bf, be, exact_decisions);
+    if (band == ParallelBand::inside && ks != Klass::agree)
+      ks = within(sf, xf, bf) ? Klass::explained : Klass::unexplained;  // its own feature's value
+    ks = cls(ks);
     rec.add("separation", cfg, sat_name(sat), ks, describe("separation outside its bound"));
   }
 }
@@ -421,11 +533,13 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
   const auto B = ConvexPolyhedron<T>::convert_from(Bf);
   const double cost = static_cast<double>(A.edge_count()) * B.edge_count() * (A.vertex_count() + B.vertex_count());
   for (Sat sat : all_sats()) {
-    if (skip_reference && sat == Sat::gauss_map) continue;
-    if (sat == Sat::brute_force && cost > static_cast<double>(opt.exact_brute_budget)) continue;
-    if (sat == Sat::gauss_map && static_cast<double>(A.edge_count()) * B.edge_count() >
-                                     static_cast<double>(opt.exact_gauss_pair_budget))
+    if (skip_reference && sat == Sat::gauss_map) continue;  // it is the reference itself
+    if ((sat == Sat::brute_force && cost > static_cast<double>(opt.exact_brute_budget)) ||
+        (sat == Sat::gauss_map && static_cast<double>(A.edge_count()) * B.edge_count() >
+                                      static_cast<double>(opt.exact_gauss_pair_budget))) {
+      rec.skip("exact", cfg, sat_name(sat));
       continue;
+    }
     const SatResult<T> r = run_sat<policy::Plain>(sat, A, B);
     rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
     // mpq: always against the reference (mpq Gauss map); other exact types:
@@ -568,16 +682,18 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   check_exact_type<Q>(Af, Bf, E, "mpq", true, opt, rec);
   if (static_cast<std::int64_t>(E.A.edge_count()) * E.B.edge_count() <= opt.gmpq_pair_budget)
     check_exact_type<CGAL::Gmpq>(Af, Bf, E, "gmpq", false, opt, rec);
+  else
+    for (Sat sat : all_sats()) rec.skip("exact", "gmpq", sat_name(sat));
   check_exact_type<CGAL::Epeck::FT>(Af, Bf, E, "epeck", false, opt, rec);
 
   // float configurations on identical inputs
   const auto Ad = ConvexPolyhedron<double>::convert_from(Af);
   const auto Bd = ConvexPolyhedron<double>::convert_from(Bf);
-  check_float<float, policy::Plain>(E, Af, Bf, "float_plain", false, rec);
-  check_float<double, policy::Plain>(E, Ad, Bd, "double_plain", false, rec);
+  check_float<float, policy::Plain>(E, Af, Bf, "float_plain", false, opt, rec);
+  check_float<double, policy::Plain>(E, Ad, Bd, "double_plain", false, opt, rec);
 #if SEPAX_FUZZ_HAS_ROBUST
-  check_float<float, policy::Robust>(E, Af, Bf, "float_robust", true, rec);
-  check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, rec);
+  check_float<float, policy::Robust>(E, Af, Bf, "float_robust", true, opt, rec);
+  check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, opt, rec);
 #endif
   return rep;
 }

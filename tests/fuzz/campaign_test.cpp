@@ -2,6 +2,8 @@
 // line of `sepax fuzz` / `sepax audit`.
 #include <catch2/catch.hpp>
 
+#include <sstream>
+
 #include <sepax/fuzz/campaign.hpp>
 #include <sepax/fuzz/cli.hpp>
 #include <sepax/fuzz/generators.hpp>
@@ -67,4 +69,58 @@ TEST_CASE("sepax fuzz command line", "[fuzz][cli]") {
   std::vector<char*> abargv;
   for (auto& a : abad) abargv.push_back(a.data());
   CHECK(audit_main(static_cast<int>(abargv.size()), abargv.data()) == 2);
+}
+
+TEST_CASE("comparisons skipped above size budgets are counted and reported", "[fuzz][campaign][skips]") {
+  const FuzzCase c = generate("boxes", 3);
+  // default budgets: a box pair runs everything
+  const CaseReport full = check_case_guarded(c);
+  REQUIRE(full.valid);
+  CHECK(full.skipped.empty());
+  // zero budgets: every budgeted run is skipped, and each skip is counted
+  CheckOptions none;
+  none.exact_brute_budget = 0;
+  none.exact_gauss_pair_budget = 0;
+  none.gmpq_pair_budget = 0;
+  none.float_brute_budget = 0;
+  const CaseReport r = check_case_guarded(c, none);
+  REQUIRE(r.valid);
+  for (const char* key : {"exact/mpq/brute_force", "exact/gmpq/brute_force", "exact/gmpq/gauss_map", "exact/gmpq/traversal",
+                          "exact/epeck/brute_force", "exact/epeck/gauss_map", "overlap/float_plain/brute_force",
+                          "feature/double_plain/brute_force", "separation/float_robust/brute_force"}) {
+    INFO(key);
+    CHECK(r.skipped.count(key) == 1);
+  }
+  // nothing skipped is also counted as compared
+  CHECK(r.by_config.count("exact/gmpq") == 0);
+  CHECK(r.by_comparison.at("overlap").total() < full.by_comparison.at("overlap").total());
+  Report rep;
+  rep.add("boxes", r);
+  rep.add("boxes", r);
+  CHECK(rep.skipped.at("exact/gmpq/gauss_map") == 2);
+  CHECK(rep.families.at("boxes").skipped.at("overlap/float_plain/brute_force") == 2);
+  CHECK(rep.skipped_total() == 2 * static_cast<std::int64_t>(r.skipped.size()));
+  std::ostringstream js, txt;
+  print_json(js, rep);
+  print_text(txt, rep);
+  CHECK(js.str().find("\"skipped\":{\"exact/epeck/brute_force\":2") != std::string::npos);
+  CHECK(js.str().find("\"skipped_total\":") != std::string::npos);
+  CHECK(txt.str().find("skipped above size budgets (not compared): " + std::to_string(rep.skipped_total())) !=
+        std::string::npos);
+  CHECK(txt.str().find("(boxes 2)") != std::string::npos);
+}
+
+TEST_CASE("sepax fuzz shrink options", "[fuzz][cli][shrink]") {
+  auto run = [](std::vector<std::string> args) {
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    return fuzz_main(static_cast<int>(argv.size()), argv.data());
+  };
+  CHECK(run({"fuzz", "--cases", "2", "--quiet", "--shrink-steps", "0", "--shrink-seconds", "5", "--shrink-max", "1",
+             "--out", "fuzz-test-out"}) == 0);
+  CHECK(run({"fuzz", "--shrink-steps", "x"}) == 2);
+  CHECK(run({"fuzz", "--shrink-seconds"}) == 2);
+  // replaying passing cases with --shrink writes nothing and succeeds
+  CHECK(run({"fuzz", "--quiet", "--replay", SEPAX_SOURCE_DIR "/fuzz/corpus/00-triangle-on-box-face.case", "--shrink",
+             "--out", "fuzz-test-shrink-out"}) == 0);
 }

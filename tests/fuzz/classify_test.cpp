@@ -10,6 +10,7 @@
 #include <sepax/fuzz/error_bounds.hpp>
 #include <sepax/fuzz/generators.hpp>
 #include <sepax/plain_kernel.hpp>
+#include <sepax/robust/core_expr.hpp>
 #include <sepax/robust/number_types.hpp>
 
 using namespace sepax;
@@ -81,6 +82,39 @@ TEST_CASE("close: ties between exact separations on different axes", "[fuzz][cla
   CHECK(close(a, d, 0.011));
 }
 
+TEST_CASE("close and sign_sep_diff are exact (no doubles), against CORE::Expr", "[fuzz][classify][tie]") {
+  // Exactly at the boundary: 3/sqrt(4) - 1/sqrt(16) = 1.25.
+  const ExactSep x{Q(3), Q(4)}, y{Q(1), Q(16)};
+  CHECK(sign_sep_diff(x, y, Q(5, 4)) == 0);
+  CHECK(sign_sep_diff(x, y, Q(5, 4) + Q(1, 1000000000)) < 0);
+  CHECK(sign_sep_diff(x, y, Q(5, 4) - Q(1, 1000000000)) > 0);
+  CHECK(close(x, y, 1.25));
+  CHECK_FALSE(close(x, y, 1.2499999999999998));  // the double just below 1.25
+  // Irrational values a double cannot separate: sqrt(2)/2 vs 1/sqrt(2) are equal;
+  // 1/sqrt(2) vs 1/sqrt(2 + 2^-120) differ by ~2^-123, far below double resolution.
+  const ExactSep r{Q(1), Q(2)}, r2{Q(1), Q(2) + Q(mpz_class(1), mpz_class(1) << 120)};
+  CHECK(sign_sep_diff(r, ExactSep{Q(1), Q(2)}, Q(0)) == 0);
+  CHECK(sign_sep_diff(r, r2, Q(0)) > 0);
+  CHECK(close(r, r2, 0x1p-122));
+  CHECK_FALSE(close(r, r2, 0x1p-125));  // the old double-based test called these equal
+  // Random small rationals (mixed signs, tiny differences) against CORE::Expr's exact sqrt.
+  std::mt19937_64 rng(77);
+  std::uniform_int_distribution<int> small(-9, 9), pos(1, 50);
+  int decided = 0;
+  for (int t = 0; t < 3000; ++t) {
+    const Q p(small(rng), pos(rng)), q(small(rng), pos(rng)), m(pos(rng), pos(rng)), n(pos(rng), pos(rng));
+    Q b(small(rng), pos(rng));
+    if (t % 4 == 0) b = 0;
+    using CORE::Expr;
+    auto ex = [](const Q& v) { return to_core_expr(v); };
+    const Expr diff = ex(p) / sqrt(ex(m)) - ex(q) / sqrt(ex(n)) - ex(b);
+    const int want = diff.sign();
+    REQUIRE(sign_sep_diff(ExactSep{p, m}, ExactSep{q, n}, b) == want);
+    decided += want != 0;
+  }
+  CHECK(decided > 2000);
+}
+
 // The bounds of error_bounds.hpp, tested against exact arithmetic on the very
 // operation sequences of the plain kernel: they must never be exceeded.
 template <class F>
@@ -117,7 +151,7 @@ void check_bounds_on_random_triangles(int trials) {
     const F sf = F(dot(pl.normal, v) - pl.offset);
     const Q se = dot(Ne, Vec3<Q>(vec_cast<Q>(v) - q0));
     REQUIRE(within(double(sf), ExactSep{se, squared_norm(Ne)}, bounds::face_bound<F>(pl.normal, p0, v, dn)));
-    // (6) side axis of the edge p0 -> p1 (in-plane outward normal d x n), as
+    // (7) side axis of the edge p0 -> p1 (in-plane outward normal d x n), as
     // the plain kernel computes it (u in F) and as the robust one does (u in
     // double, rounded to F; value u . fl(v - p0))
     {
@@ -176,4 +210,85 @@ TEST_CASE("integer arc signs equal the rational kernel's", "[fuzz][arcs]") {
         }
     }
   }
+}
+
+// error_bounds.hpp (6): whenever the plain kernel calls an edge pair parallel,
+// parallel_band must say "inside" (soundness), and pairs clearly above the
+// tolerance must be "outside" (the band is tight).
+template <class F>
+void check_parallel_band(double tol) {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> u(-1, 1), f(0.5, 1.5);
+  std::uniform_int_distribution<int> ex(-10, 10);
+  int skipped = 0, measured = 0;
+  for (int t = 0; t < 4000; ++t) {
+    const double scale = std::ldexp(1.0, ex(rng));
+    Vec3<double> d(u(rng), u(rng), u(rng));
+    d.normalize();
+    Vec3<double> p(u(rng), u(rng), u(rng));
+    p = (p - d * d.dot(p)).normalized();
+    const double ang = tol * f(rng);  // around the tolerance
+    const Vec3<double> e = (d * std::cos(ang) + p * std::sin(ang)) * (scale * f(rng));
+    auto tri = [&](const Vec3<double>& dir, const Vec3<double>& off) {
+      std::vector<Vec3<F>> v{vec_from_double<F>(off), vec_from_double<F>(Vec3<double>(off + dir * scale)),
+                             vec_from_double<F>(Vec3<double>(off + cross(p, d) * scale))};
+      return ConvexPolyhedron<F>::from_faces(v, {{0, 1, 2}, {2, 1, 0}});
+    };
+    const auto A = tri(d, Vec3<double>(0, 0, 0));
+    const auto B = tri(e / scale, Vec3<double>(3 * scale, 0, 0));
+    const PlainKernel<F> k(A, B);
+    for (int ea = 0; ea < A.edge_count(); ++ea)
+      for (int eb = 0; eb < B.edge_count(); ++eb) {
+        const ParallelBand band = parallel_band<F>(A.edge_dir(ea), B.edge_dir(eb));
+        REQUIRE(band != ParallelBand::unknown);
+        if (k.edges_parallel(ea, eb)) {
+          ++skipped;
+          REQUIRE(band == ParallelBand::inside);
+        } else {
+          ++measured;
+        }
+        // exact sine clearly above the tolerance: certainly measured
+        const Vec3<Q> a = vec_cast<Q>(A.edge_dir(ea)), b = vec_cast<Q>(B.edge_dir(eb));
+        const Q k2 = Q(1.01 * tol) * Q(1.01 * tol);
+        if (squared_norm(cross(a, b)) > k2 * squared_norm(a) * squared_norm(b)) REQUIRE(band == ParallelBand::outside);
+      }
+  }
+  CHECK(skipped > 1000);
+  CHECK(measured > 1000);
+}
+
+TEST_CASE("parallel_band: sound for every pair the plain kernel skips, tight above it", "[fuzz][classify][parallel]") {
+  check_parallel_band<float>(1e-4);
+  check_parallel_band<double>(1e-8);
+  // the guard: tiny or huge edges cannot be shown either way
+  CHECK(parallel_band<float>(Vec3<float>(1e-20f, 0, 0), Vec3<float>(1, 1e-5f, 0)) == ParallelBand::unknown);
+  CHECK(parallel_band<float>(Vec3<float>(1e30f, 0, 0), Vec3<float>(1, 1e-5f, 0)) == ParallelBand::unknown);
+  CHECK(parallel_band<float>(Vec3<float>(1, 0, 0), Vec3<float>(1, 1e-5f, 0)) == ParallelBand::inside);
+  CHECK(parallel_band<float>(Vec3<float>(1, 0, 0), Vec3<float>(1, 1e-3f, 0)) == ParallelBand::outside);
+  CHECK(parallel_band<double>(Vec3<double>(1, 0, 0), Vec3<double>(1, 1e-5, 0)) == ParallelBand::outside);
+}
+
+// Two wedges touching ridge to ridge, the ridges turned by 3e-5 rad: exactly,
+// the ridge pair (axis z) is a Minkowski face and wins; plain float skips it
+// as parallel (sin < 1e-4) and picks a face.  That must be classified
+// "explained" (float_plain), while double measures the pair and agrees.
+TEST_CASE("check: a winner inside the float parallel skip is explained, not a tie", "[fuzz][classify][parallel]") {
+  const double th = 3e-5, g = 0.25;
+  FuzzCase c;
+  c.family = "manual";
+  std::vector<Vec3<double>> a{{-1, 0, 1}, {1, 0, 1}, {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0}, {1, 1, 0}};
+  std::vector<Vec3<double>> b;
+  for (const auto& p : a) {
+    const Vec3<double> m(p[0], p[1], 2 + g - p[2]);  // upside down, ridge at z = 1 + g
+    b.emplace_back(m[0] * std::cos(th) - m[1] * std::sin(th), m[0] * std::sin(th) + m[1] * std::cos(th), m[2]);
+  }
+  c.a = hull_of(a);
+  c.b = hull_of(b);
+  const CaseReport r = check_case(c);
+  REQUIRE(r.valid);
+  for (const auto& x : r.unexplained) UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+  CHECK(r.unexplained_count == 0);
+  CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 1);
+  CHECK(r.by_config.at("feature/float_plain")[Klass::tie] == 0);
+  CHECK(r.by_config.at("feature/double_plain")[Klass::agree] == r.by_config.at("feature/double_plain").total());
 }

@@ -51,3 +51,17 @@ TEST_CASE("inputs convex only within tolerance: cross-SAT exact differences are 
     }
   }
 }
+
+TEST_CASE("corpus 26: a winner inside the plain float parallel skip is explained, not a tie",
+          "[fuzz][corpus][parallel]") {
+  const auto path = std::filesystem::path(SEPAX_SOURCE_DIR) / "fuzz" / "corpus" / "26-flat-near-parallel-skip-explained.case";
+  const CaseReport r = check_case(read_case_file(path.string()));
+  REQUIRE(r.valid);
+  CHECK(r.unexplained_count == 0);
+  const Counts& ff = r.by_config.at("feature/float_plain");
+  CHECK(ff[Klass::explained] >= 2);  // gauss_map and traversal skip the winning pair
+  CHECK(ff[Klass::tie] == 0);
+  CHECK(r.by_config.at("separation/float_plain")[Klass::explained] >= 2);
+  const Counts& fd = r.by_config.at("feature/double_plain");
+  CHECK(fd[Klass::agree] == fd.total());  // double measures the pair (sin ~ 5e-6 > 1e-8)
+}

@@ -19,6 +19,7 @@ struct FamilyStats {
   std::int64_t cases = 0;      // checked
   std::int64_t rejected = 0;   // generated shapes the float validation rejected
   std::int64_t unexplained = 0;
+  std::map<std::string, std::int64_t> skipped;  // "comparison/config/sat" -> comparisons not made (size budgets)
 };
 
 struct Report {
@@ -29,9 +30,11 @@ struct Report {
   std::map<std::string, FamilyStats> families;
   std::map<std::string, Counts> comparisons;
   std::map<std::string, Counts> by_config;
+  std::map<std::string, std::int64_t> skipped;  // "comparison/config/sat" -> comparisons not made (size budgets)
   std::vector<std::string> reproducers;
   std::vector<Finding> findings;  // first few unexplained findings
   std::int64_t unexplained() const;
+  std::int64_t skipped_total() const;
   void add(const std::string& family, const CaseReport& r);
 };
 

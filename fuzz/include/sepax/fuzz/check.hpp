@@ -24,9 +24,13 @@
 //   agree        identical (separation: the float value equals the exact one)
 //   exact_zero   differs, and the exact quantity is exactly zero
 //   explained    differs, and the exact value lies within the forward error
-//                bound of the float computation (error_bounds.hpp)
+//                bound of the float computation (error_bounds.hpp); or a
+//                plain run missed an exact winning edge pair that lies inside
+//                its parallel-edge skip (error_bounds.hpp (6), parallel_band in
+//                classify.hpp) and its choice reaches the optimum over the
+//                candidates it certainly measured, within the bounds
 //   tie          different features whose exact separations are equal, or
-//                equal within the two features' bounds
+//                equal within the two features' bounds (both decided exactly)
 //   unexplained  anything else: a bug (or a bound that is wrong) -- the
 //                drivers write a reproducer and exit non-zero
 //   nonconvex    two *different* SATs disagree in exact arithmetic on an input
@@ -91,6 +95,10 @@ struct CaseReport {
   std::vector<Finding> unexplained;         // at most a few per comparison
   std::int64_t unexplained_count = 0;
   std::vector<std::string> configs_run;     // "config/sat"
+  /// Comparisons not made because a run was above a size budget
+  /// (CheckOptions), as "comparison/config/sat" -> count.  Reported, never
+  /// silently dropped.
+  std::map<std::string, std::int64_t> skipped;
 };
 
 struct CheckOptions {
@@ -101,6 +109,8 @@ struct CheckOptions {
   /// is at most this; gmpq only when E_A*E_B is at most gmpq_pair_budget.
   std::int64_t exact_gauss_pair_budget = 60'000;
   std::int64_t gmpq_pair_budget = 10'000;
+  /// Float/double brute force only when E_A*E_B*(V_A+V_B) is at most this.
+  std::int64_t float_brute_budget = 20'000'000;
   /// Keep at most this many Finding records per comparison (all are counted).
   int max_findings = 8;
 };

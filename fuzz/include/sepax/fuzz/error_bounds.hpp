@@ -53,7 +53,35 @@
 //     gamma_3 sum|n||v| + delta_n ||v|| (n as in (4)), the subtraction rounds once:
 //     => B_proj = 2 max_v (gamma_3 sum|n||v| + delta_n ||v||) + u (|min_B| + |max_A|) (1 + gamma_1).
 //
-// (6) Side axis of edge e of a flat shape (coplanar flat shapes, best_axis.hpp):
+// (6) The parallel-edge skip of the plain kernel (plain_kernel.hpp edges_parallel):
+//       parallel  <=>  !( fl(N.N) > fl(fl(fl(t t) fl(da.da)) fl(db.db)) ),
+//     N = fl(da x db), t = (F)Tolerances<F>::parallel, and da, db the edge
+//     directions the kernel stores (exact F values).  The SATs skip such a
+//     pair, so a float run can miss an exact winner there.  What a "parallel"
+//     answer implies about the exact values of da, db:
+//     Standard model with gradual underflow, eta = half the smallest subnormal
+//     of F (2^-150, 2^-1075): a product rounds to x y (1 + d) + e, |d| <= u,
+//     |e| <= eta; sums and differences underflow exactly.
+//       |N_i - (da x db)_i| <= gamma_2 C_i + 2 eta,   ||C|| <= sqrt(2) |da||db|
+//         (C_x = |a1 b2| + |a2 b1|; sum_x C_x^2 <= 2 |da|^2 |db|^2 by Cauchy-Schwarz)
+//       fl(N.N) >= (1 - gamma_3) |N|^2 - 3 eta            (a sum of squares)
+//       fl(da.da) <= (1 + gamma_3) |da|^2 + 3 eta, likewise db; t t rounds once
+//       right side <= P (1 + gamma_9) + eta fl(db.db)(1 + u) + eta,  P = t^2 |da|^2 |db|^2.
+//     Guard (checked exactly): |da|^2, |db|^2 >= 2^80 eta and P >= 2^50 eta, so
+//     every eta term is below 2^-24 of what it is added to (e.g. eta |db|^2 / P
+//     = eta / (t^2 |da|^2) <= 2^-26 for both float and double tolerances);
+//     and |da|^2, |db|^2 <= 2^50 (float) / 2^500 (double): nothing overflows.
+//     Then "parallel" gives (1 - gamma_3)|N|^2 <= P (1 + gamma_9)(1 + 2^-23), and
+//       |da x db| <= |N| + sqrt(2) gamma_2 |da||db| + 4 eta
+//     => sin(da, db) = |da x db| / (|da||db|) <= K_F,
+//        K_F = ( t sqrt((1 + gamma_9)(1 + 2^-23) / (1 - gamma_3)) + sqrt(2) gamma_2 ) (1 + 2^-23).
+//     The fuzzer decides |da x db|^2 <= K_F^2 |da|^2 |db|^2 exactly (classify.hpp
+//     parallel_band): when it fails, the plain kernel certainly measured the
+//     pair; when it holds, the kernel may have skipped it.  K_F = 1.0016864e-4
+//     for float (t = (float)1e-4 = 0.99999997e-4; the sqrt(2) gamma_2 term is
+//     the 0.17%) and 1.0000002e-8 for double (t = 1e-8).
+//
+// (7) Side axis of edge e of a flat shape (two flat shapes, best_axis.hpp):
 //     plain:  u = n(fl(d x n)) with d = fl(head - tail), n the face's unit
 //             normal (delta_n from (1)), n(.) the rounded normalisation;
 //             value fl(fl(u.v) - fl(u.t)), t the edge's tail: (3) with u for n;
@@ -80,6 +108,7 @@
 
 #include <sepax/convex_polyhedron.hpp>
 #include <sepax/number_traits.hpp>
+#include <sepax/tolerances.hpp>
 #include <sepax/vec3.hpp>
 
 namespace sepax::fuzz::bounds {
@@ -148,7 +177,23 @@ inline double projection_bound(const Vec3<F>& n, const Vec3<F>& v, double delta_
   return (gamma(3, u) * abs_dot(nd, vd) + delta_n * norm(vd)) * kSlack;
 }
 
-/// (6) ||u - u_e|| for the side axis of an edge d with face unit normal n.
+/// (6) The parallel skip: the tolerance t the kernel uses, the sine bound
+/// K_F, and the guard limits on squared lengths (see above).
+template <class F>
+struct ParallelSkip {
+  static double tol() { return double(static_cast<F>(Tolerances<F>::parallel)); }
+  static double sine_bound() {
+    const double u = u_of<F>(), t = tol();
+    return (t * std::sqrt((1 + gamma(9, u)) * (1 + 0x1p-23) / (1 - gamma(3, u))) + std::sqrt(2.0) * gamma(2, u)) *
+           (1 + 0x1p-23) * kSlack;
+  }
+  // eta = 2^-150 (float), 2^-1075 (double); the guard limits 2^80 eta, 2^50 eta.
+  static constexpr bool is_float = sizeof(F) == 4;
+  static double min_len2() { return is_float ? 0x1p-70 : 0x1p-995; }
+  static double min_p() { return is_float ? 0x1p-100 : 0x1p-1025; }
+  static double max_len2() { return is_float ? 0x1p50 : 0x1p500; }
+};
+/// (7) ||u - u_e|| for the side axis of an edge d with face unit normal n.
 template <class F>
 inline double delta_side(const Vec3<F>& dir, const Vec3<F>& n, double delta_n) {
   const double u = u_of<F>();
@@ -159,14 +204,14 @@ inline double delta_side(const Vec3<F>& dir, const Vec3<F>& n, double delta_n) {
   return (gamma(4, u) + 2.0 * (gamma(2, u) * norm(abs_cross(dd, nd)) + e_dn) / lo) * kSlack;
 }
 
-/// (6) a side-axis height of v (unit side normal u, edge tail t), for the
+/// (7) a side-axis height of v (unit side normal u, edge tail t), for the
 /// plain and the robust evaluation.
 template <class F>
 inline double side_bound(const Vec3<F>& uvec, const Vec3<F>& t, const Vec3<F>& v, double delta_u) {
   return std::max(face_bound<F>(uvec, t, v, delta_u), edge_bound<F>(uvec, Vec3<F>(v - t), delta_u));
 }
 
-/// (6) the bound of the side axis of edge e of p against every vertex of q
+/// (7) the bound of the side axis of edge e of p against every vertex of q
 /// (the side query's minimum), delta_n the bound (1) of edge_face(e, 0)'s normal.
 template <class F>
 inline double side_axis_bound(const ConvexPolyhedron<F>& p, int e, const ConvexPolyhedron<F>& q, double delta_n) {
