@@ -695,7 +695,7 @@ class RobustKernel {
   // shapes with more than kScalarSupportMax vertices, lanes_bounded), else
   // the scalar loop.
   static constexpr int kScalarSupportMax = 4;
-  FaceQuery<T> face_query(const P& p, int f, const P& q, double w) const {
+  SEPAX_ROBUST_INLINE FaceQuery<T> face_query(const P& p, int f, const P& q, double w) const {
     const Plane<T>& pl = p.plane(f);
     const auto& vs = q.vertices();
     const int nv = static_cast<int>(vs.size());
@@ -718,8 +718,11 @@ class RobustKernel {
         m = lt ? h : m;
       }
     }
-    if (!(static_cast<double>(second) - static_cast<double>(m) > w)) best = resolve_support(p, f, q, m, w);
-    const T hb = dot(pl.normal, vs[static_cast<std::size_t>(best)]);
+    T hb = m;  // n.v at best (the value PlainKernel reports)
+    if (!(static_cast<double>(second) - static_cast<double>(m) > w)) [[unlikely]] {
+      best = resolve_support(p, f, q, m, w);
+      hb = dot(pl.normal, vs[static_cast<std::size_t>(best)]);
+    }
     return FaceQuery<T>{Separation<T>{T(hb - pl.offset), T(1)}, best};
   }
 
