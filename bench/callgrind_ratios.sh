@@ -44,6 +44,7 @@ for n in 8 16 32 64 128 256; do
   ratio "bullet gjk+epa over robust traversal, sphere$n" "bullet gjk+epa (float)" "traversal float robust" "sphere$n" 3 ">="
 done
 for n in 16 32 64; do
+  ratio "robust over plain gauss map, sphere$n" "gauss float robust" "gauss float" "sphere$n" 1.15 "<="
   ratio "robust over plain traversal, sphere$n" "traversal float robust" "traversal float" "sphere$n" 1.15 "<="
   ratio "traversal+manifold over traversal, sphere$n" "traversal+manifold float" "traversal float" "sphere$n" 1.30 "<="
 done

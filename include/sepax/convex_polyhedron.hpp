@@ -41,10 +41,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <span>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -196,6 +198,29 @@ class ConvexPolyhedron {
   /// edge_normals(side)[e] == plane(edge_face(e, side)).normal.
   const Vec3<T>& edge_normal(int e, int side) const {
     return (side == 0 ? edge_n0_ : edge_n1_)[static_cast<std::size_t>(e)];
+  }
+
+  // ---- lane arrays: one array per coordinate (float and double only) ----
+  // The values above again, split by coordinate for SIMD scans (simd_lanes.hpp):
+  //   lane_edge(k)[e], k = 0..2: edge_normal(e, 0) x, y, z;
+  //                    3..5: -edge_normal(e, 1) (negated: exact, and the arc
+  //                          test then wants all four products of one sign);
+  //                    6..8: edge_dir(e)                (the Gauss map's arc test)
+  //   lane_vertex(c)[v], c = 0..2: vertex(v)[c]          (support scans)
+  // Copies (or exact negations), not recomputations.  Each array is padded to
+  // a multiple of kLanePad entries (the padding holds zeros and is masked out
+  // by every scan).  Empty for exact T.
+  // lanes_bounded(): every value above (normals, directions, vertices, plane
+  // normals) is finite with magnitude <= 2^60, so no dot product of a normal
+  // with a direction or a vertex can overflow or be NaN: the SIMD scans rely
+  // on it, and callers fall back to scalar code when it is false.
+  static constexpr int kLanePad = 8;
+  bool lanes_bounded() const { return lanes_bounded_; }
+  int lane_edge_stride() const { return lane_edge_stride_; }
+  const T* lane_edge(int k) const { return lanes_.data() + static_cast<std::size_t>(k * lane_edge_stride_); }
+  int lane_vertex_stride() const { return lane_vertex_stride_; }
+  const T* lane_vertex(int c) const {
+    return lanes_.data() + static_cast<std::size_t>(9 * lane_edge_stride_ + c * lane_vertex_stride_);
   }
 
   // ---- faces ----
@@ -447,6 +472,7 @@ class ConvexPolyhedron {
       edge_n0_.push_back(plane(edge_face(e, 0)).normal);
       edge_n1_.push_back(plane(edge_face(e, 1)).normal);
     }
+    compute_lanes();
     Vec3<T> sum(T(0), T(0), T(0));
     bmin_ = bmax_ = vertices_.empty() ? sum : vertices_[0];
     for (const auto& v : vertices_) {
@@ -466,6 +492,40 @@ class ConvexPolyhedron {
       max_abs_ = std::max({max_abs_, std::abs(to_double(bmin_[c])), std::abs(to_double(bmax_[c]))});
     }
     extent_ = std::sqrt(d2);
+  }
+
+  void compute_lanes() {
+    lanes_.clear();
+    lane_edge_stride_ = lane_vertex_stride_ = 0;
+    lanes_bounded_ = false;
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      auto padded = [](int n) { return (n + kLanePad - 1) / kLanePad * kLanePad; };
+      lane_edge_stride_ = padded(edge_count());
+      lane_vertex_stride_ = padded(vertex_count());
+      lanes_.assign(static_cast<std::size_t>(9 * lane_edge_stride_ + 3 * lane_vertex_stride_), T(0));
+      for (int e = 0; e < edge_count(); ++e) {
+        const std::size_t i = static_cast<std::size_t>(e);
+        for (int c = 0; c < 3; ++c) {
+          const auto k = static_cast<std::size_t>(c * lane_edge_stride_) + i;
+          const auto stride = static_cast<std::size_t>(3 * lane_edge_stride_);
+          lanes_[k] = edge_n0_[i][c];
+          lanes_[k + stride] = T(-edge_n1_[i][c]);
+          lanes_[k + 2 * stride] = edge_dirs_[i][c];
+        }
+      }
+      for (int v = 0; v < vertex_count(); ++v) {
+        for (int c = 0; c < 3; ++c) {
+          lanes_[static_cast<std::size_t>(9 * lane_edge_stride_ + c * lane_vertex_stride_ + v)] =
+              vertices_[static_cast<std::size_t>(v)][c];
+        }
+      }
+      const T big = T(0x1p60);
+      lanes_bounded_ = true;
+      for (const T& x : lanes_) lanes_bounded_ = lanes_bounded_ && std::abs(x) <= big;  // false for NaN
+      for (const auto& pl : planes_) {
+        for (int c = 0; c < 3; ++c) lanes_bounded_ = lanes_bounded_ && std::abs(pl.normal[c]) <= big;
+      }
+    }
   }
 
   // Signed distance-like value of p above plane f: exact N.(p - v_i) for exact
@@ -615,6 +675,9 @@ class ConvexPolyhedron {
   std::vector<Vec3<T>> edge_dirs_;  // per edge: head - tail
   std::vector<Vec3<T>> edge_n0_;    // per edge: normal of edge_face(e, 0)
   std::vector<Vec3<T>> edge_n1_;    // per edge: normal of edge_face(e, 1)
+  std::vector<T> lanes_;            // lane arrays (float/double): 9 edge, then 3 vertex arrays
+  int lane_edge_stride_ = 0, lane_vertex_stride_ = 0;
+  bool lanes_bounded_ = false;
   Vec3<T> centroid_ = Vec3<T>(T(0), T(0), T(0));
   Vec3<T> bmin_ = Vec3<T>(T(0), T(0), T(0));
   Vec3<T> bmax_ = Vec3<T>(T(0), T(0), T(0));

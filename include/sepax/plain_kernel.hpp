@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "sat_kernel.hpp"
+#include "simd_lanes.hpp"
 
 namespace sepax {
 
@@ -24,13 +25,14 @@ class PlainKernel {
  public:
   using FT = T;
 
-  PlainKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) : a_(a), b_(b) {}
+  PlainKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b)
+      : a_(a), b_(b), lanes_(a.lanes_bounded() && b.lanes_bounded()) {}
 
   const ConvexPolyhedron<T>& a() const { return a_; }
   const ConvexPolyhedron<T>& b() const { return b_; }
 
-  FaceQuery<T> face_query_a(int f) const { return face_query(a_, f, b_); }
-  FaceQuery<T> face_query_b(int f) const { return face_query(b_, f, a_); }
+  FaceQuery<T> face_query_a(int f) const { return face_query(a_, f, b_, lanes_); }
+  FaceQuery<T> face_query_b(int f) const { return face_query(b_, f, a_, lanes_); }
 
   // Side axes (both shapes flat, best_axis.hpp): the in-plane
   // outward normal u = (head - tail) x normal(edge_face(e, 0)) of edge e (the
@@ -80,6 +82,26 @@ class PlainKernel {
     return adc * bdc < 0 && cba * bdc > 0;
   }
 
+  /// Optional batched member (sat_kernel.hpp, HasMinkowskiFaces): the eb in
+  /// [lo, hi) with minkowski_face(ea, eb), ascending, written to out; their
+  /// number returned.  Float and double: all four products for a few edges of
+  /// B at once over B's lane arrays (simd_lanes.hpp), the same values and the
+  /// same decision as minkowski_face.  Shapes whose coordinates could overflow
+  /// (not lanes_bounded) take the scalar test.  Exact T has no batched form.
+  int minkowski_faces(int ea, int lo, int hi, int* out) const
+    requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  {
+    if (lanes_) {
+      return simd::arc_candidates<false>(b_, lo, hi, a_.edge_dir(ea), a_.edge_normal(ea, 0),
+                                         a_.edge_normal(ea, 1), T(0), out);
+    }
+    int n = 0;
+    for (int eb = lo; eb < hi; ++eb) {
+      if (minkowski_face(ea, eb)) out[n++] = eb;
+    }
+    return n;
+  }
+
   bool edges_parallel(int ea, int eb) const {
     const Vec3<T>& da = a_.edge_dir(ea);
     const Vec3<T>& db = b_.edge_dir(eb);
@@ -96,7 +118,7 @@ class PlainKernel {
     Vec3<T> n = edge_axis(ea, eb);
     const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
     const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
-    return Separation<T>{dot(n, Vec3<T>(pb - pa)), norm2_of(n)};
+    return Separation<T>{dot(n, diff(pb, pa)), norm2_of(n)};
   }
 
   std::optional<Separation<T>> edge_separation_full(int ea, int eb) const {
@@ -138,7 +160,9 @@ class PlainKernel {
   std::int64_t exact_fallbacks() const { return 0; }
 
  private:
-  static FaceQuery<T> face_query(const ConvexPolyhedron<T>& p, int f, const ConvexPolyhedron<T>& q) {
+  static constexpr int kScalarSupportMax = 4;  // measured: the lanes win from 8 vertices on
+  static FaceQuery<T> face_query(const ConvexPolyhedron<T>& p, int f, const ConvexPolyhedron<T>& q,
+                                 [[maybe_unused]] bool lanes) {
     const Plane<T>& pl = p.plane(f);
     return support_below(pl.normal, pl.offset, q);
   }
@@ -147,6 +171,15 @@ class PlainKernel {
   // height n.v - offset.
   static FaceQuery<T> support_below(const Vec3<T>& n, const T& offset, const ConvexPolyhedron<T>& q) {
     const auto& vs = q.vertices();
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      if (lanes && q.vertex_count() > kScalarSupportMax) {
+        // The scalar loop below, a few vertices at a time (simd_lanes.hpp):
+        // the same n.v values, the same lowest-index argmin.  (For a handful
+        // of vertices the scalar loop is cheaper than merging the lanes.)
+        const simd::Support<T> s = simd::support_scan<false>(q, pl.normal);
+        return FaceQuery<T>{Separation<T>{T(s.min - pl.offset), norm2_of(pl.normal)}, s.index};
+      }
+    }
     int best = 0;
     T best_h = dot(n, vs[0]);
     for (int i = 1; i < static_cast<int>(vs.size()); ++i) {
@@ -170,6 +203,12 @@ class PlainKernel {
 
   static Separation<T> height(const Plane<T>& pl, const Vec3<T>& p) {
     return Separation<T>{T(dot(pl.normal, p) - pl.offset), norm2_of(pl.normal)};
+  }
+
+  // p - q, one subtraction per coordinate (the value of Vec3<T>(p - q), which
+  // g++ -O2 did not always inline).
+  static Vec3<T> diff(const Vec3<T>& p, const Vec3<T>& q) {
+    return Vec3<T>(T(p[0] - q[0]), T(p[1] - q[1]), T(p[2] - q[2]));
   }
 
   static T norm2_of(const Vec3<T>& n) {
@@ -207,8 +246,8 @@ class PlainKernel {
     Vec3<T> n = unoriented_axis(ea, eb);
     const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
     const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
-    const T out_a = dot(n, Vec3<T>(pa - a_.centroid()));
-    const T in_b = dot(n, Vec3<T>(b_.centroid() - pb));
+    const T out_a = dot(n, diff(pa, a_.centroid()));
+    const T in_b = dot(n, diff(b_.centroid(), pb));
     if (T(out_a + in_b) < T(0)) n = Vec3<T>(-n);
     return n;
   }
@@ -243,6 +282,7 @@ class PlainKernel {
 
   const ConvexPolyhedron<T>& a_;
   const ConvexPolyhedron<T>& b_;
+  bool lanes_;  // both shapes lanes_bounded(): the SIMD scans apply
 };
 
 template <Number T>

@@ -109,6 +109,21 @@ concept HasMinkowskiFace = requires(K k, int i, int j) {
   { k.minkowski_face(i, j) } -> std::same_as<bool>;
 };
 
+/// Optional batched kernel member (not part of SatKernel):
+///   int minkowski_faces(int ea, int lo, int hi, int* out)
+/// writes to out, in increasing order, every eb in [lo, hi) for which
+/// minkowski_face(ea, eb) (equivalently arc_signs(ea, eb).minkowski_face())
+/// holds, and returns their number; hi - lo <= kMinkowskiBatch and lo is a
+/// multiple of kMinkowskiBatch.  It lets a kernel test one edge of A against
+/// many edges of B at once (SIMD over B's lane arrays).  sat::gauss_map_with
+/// uses it when present, minkowski_face / arc_signs otherwise.
+inline constexpr int kMinkowskiBatch = 256;
+
+template <class K>
+concept HasMinkowskiFaces = requires(const K k, int i, int* out) {
+  { k.minkowski_faces(i, i, i, out) } -> std::same_as<int>;
+};
+
 /// Maps (policy, T) to a kernel type.  Specialised by each policy.
 template <class Policy, class T>
 struct kernel_for;

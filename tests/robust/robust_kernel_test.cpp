@@ -330,3 +330,64 @@ TEST_CASE("policy::Robust for exact types is the plain exact kernel", "[robust][
   STATIC_REQUIRE(SatKernel<RobustKernel<float>>);
   STATIC_REQUIRE(SatKernel<RobustKernel<double>>);
 }
+
+// RobustKernel::minkowski_faces (the lane pre-filter over B's edges, then
+// minkowski_face for the survivors) against the exact arc test, pair by pair:
+// it must accept exactly the eb that PlainKernel<mpq_class>::arc_signs accepts
+// on the exact images, also where arc products are exactly zero (touching
+// boxes, polygons in box faces) and where the lanes are off (coordinates
+// beyond 2^60).
+TEMPLATE_TEST_CASE("robust batched arc test = exact arc test, pair by pair", "[robust][kernel][lanes]", float,
+                   double) {
+  using T = TestType;
+  std::vector<std::pair<ConvexPolyhedron<T>, ConvexPolyhedron<T>>> cases;
+  const auto box = shapes::box<T>(1.0, 1.0, 1.0);
+  for (double x : {0.0, 1.5, 2.0})
+    for (double y : {0.0, 1.0, 2.0})
+      for (double z : {0.5, 1.75, 2.0}) {
+        cases.emplace_back(box, translated(shapes::box<T>(0.5, 1.0, 0.75), v3<T>(x, -y, z)));
+        cases.emplace_back(box, translated(quarter_turn(shapes::box<T>(0.5, 1.0, 0.75)), v3<T>(x, y, z)));
+      }
+  cases.emplace_back(box, shapes::triangle<T>(v3<T>(0, 0, 1), v3<T>(0.5, 0, 1), v3<T>(0, 0.5, 1)));
+  cases.emplace_back(ConvexPolyhedron<T>::polygon({v3<T>(-1, -1, 1), v3<T>(1, -1, 1), v3<T>(1, 1, 1)}), box);
+  cases.emplace_back(box, translated(shapes::prism<T>(12, 1.0, 1.0), v3<T>(1.0, 0.0, 2.0)));
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int n : {6, 12, 24, 40}) {
+    const auto ha = random_sphere_hull<T>(rng, n);
+    const auto hb = random_sphere_hull<T>(rng, n);
+    for (double scale : {1.0, 1e-4, 1e4}) {
+      cases.emplace_back(posed(ha, random_rotation(rng), Vec3<double>(0, 0, 0), scale),
+                         posed(hb, random_rotation(rng), Vec3<double>(u(rng), u(rng), u(rng)) * scale, scale));
+    }
+  }
+  // beyond 2^60: lanes_bounded() is false, every pair takes minkowski_face
+  cases.emplace_back(posed(box, random_rotation(rng), Vec3<double>(0, 0, 0), 1e20),
+                     posed(box, random_rotation(rng), Vec3<double>(0.5e20, 0, 0), 1e20));
+  int with_lanes = 0, mismatches = 0;
+  long accepted = 0;
+  int found[kMinkowskiBatch];
+  for (const auto& [a, b] : cases) {
+    with_lanes += a.lanes_bounded() && b.lanes_bounded();
+    const RobustKernel<T> k(a, b);
+    const auto ae = ConvexPolyhedron<mpq_class>::convert_from(a);
+    const auto be = ConvexPolyhedron<mpq_class>::convert_from(b);
+    const PlainKernel<mpq_class> ke(ae, be);
+    for (int ea = 0; ea < a.edge_count(); ++ea) {
+      std::vector<int> batched, scalar, exact;
+      for (int lo = 0; lo < b.edge_count(); lo += kMinkowskiBatch) {
+        const int n = k.minkowski_faces(ea, lo, std::min(b.edge_count(), lo + kMinkowskiBatch), found);
+        batched.insert(batched.end(), found, found + n);
+      }
+      for (int eb = 0; eb < b.edge_count(); ++eb) {
+        if (k.minkowski_face(ea, eb)) scalar.push_back(eb);
+        if (ke.arc_signs(ea, eb).minkowski_face()) exact.push_back(eb);
+      }
+      if (batched != exact || scalar != exact) ++mismatches;
+      accepted += static_cast<long>(exact.size());
+    }
+  }
+  CHECK(mismatches == 0);
+  CHECK(with_lanes == static_cast<int>(cases.size()) - 1);
+  CHECK(accepted > 500);
+}

@@ -152,6 +152,8 @@ class RobustKernel {
     centroid_err_b_ = centroid_error(b);
     extent_a_ = da;
     extent_b_ = db;
+    lanes_ = a.lanes_bounded() && b.lanes_bounded();
+    arc_lane_bound_ = std::max(arc_err_a_t_, arc_err_b_t_);
   }
 
   const ConvexPolyhedron<T>& a() const { return a_; }
@@ -233,6 +235,35 @@ class RobustKernel {
     if (adc * bdc == 0) [[unlikely]] return minkowski_face_resolve(ea, eb);
     const int cba = c > eb_ ? 1 : -1;
     return adc * bdc < 0 && cba * bdc > 0;
+  }
+
+  /// Optional batched member (sat_kernel.hpp, HasMinkowskiFaces): the eb in
+  /// [lo, hi) with minkowski_face(ea, eb), ascending.  A float pre-filter over
+  /// B's lane arrays (simd_lanes.hpp, arc_candidates<true>) computes the same
+  /// four values c, d, a, b as minkowski_face, for a few edges at once, and
+  /// drops a pair only when both sign patterns of a crossing are certainly
+  /// violated: some value is beyond the bound arc_lane_bound_ = max(arc_err_a_t_,
+  /// arc_err_b_t_) >= the bound of each value (see the header: E_arc, rounded
+  /// up to T) on the wrong side, so its exact sign is wrong as well.  The
+  /// survivors (the crossing pairs and the few within the bounds) go through
+  /// minkowski_face, which decides them exactly.  So the result is exactly
+  /// {eb : minkowski_face(ea, eb)}, with or without FMA contraction (the bound
+  /// holds either way).  The lanes need both shapes lanes_bounded() (no
+  /// overflow, no NaN); otherwise every pair takes minkowski_face.
+  SEPAX_ROBUST_INLINE int minkowski_faces(int ea, int lo, int hi, int* out) const {
+    int n = 0;
+    if (lanes_) {
+      const int m = simd::arc_candidates<true>(b_, lo, hi, a_.edge_dir(ea), a_.edge_normal(ea, 0),
+                                               a_.edge_normal(ea, 1), arc_lane_bound_, out);
+      for (int i = 0; i < m; ++i) {
+        if (minkowski_face(ea, out[i])) out[n++] = out[i];
+      }
+      return n;
+    }
+    for (int eb = lo; eb < hi; ++eb) {
+      if (minkowski_face(ea, eb)) out[n++] = eb;
+    }
+    return n;
   }
 
  private:
@@ -724,23 +755,39 @@ class RobustKernel {
 
   // Support vertex of q along the inward normal of face f of p: the lowest
   // index among the vertices with exactly minimal N_f . v.
-  FaceQuery<T> face_query(const P& p, int f, const P& q, double w) const {
+  // The float minimum and second minimum come from the same n.v values
+  // either way: a few vertices at a time over q's lane arrays (simd_lanes.hpp;
+  // shapes with more than kScalarSupportMax vertices, lanes_bounded), else
+  // the scalar loop.
+  static constexpr int kScalarSupportMax = 4;
+  SEPAX_ROBUST_INLINE FaceQuery<T> face_query(const P& p, int f, const P& q, double w) const {
     const Plane<T>& pl = p.plane(f);
     const auto& vs = q.vertices();
     const int nv = static_cast<int>(vs.size());
     int best = 0;
-    T m = dot(pl.normal, vs[0]);
-    T second = std::numeric_limits<T>::infinity();
-    for (int i = 1; i < nv; ++i) {
-      // branch-free minimum and second minimum (selects, not jumps)
-      const T h = dot(pl.normal, vs[static_cast<std::size_t>(i)]);
-      const bool lt = h < m;
-      second = lt ? m : (h < second ? h : second);
-      best = lt ? i : best;
-      m = lt ? h : m;
+    T m, second;
+    if (lanes_ && nv > kScalarSupportMax) {
+      const simd::Support<T> s = simd::support_scan<true>(q, pl.normal);
+      best = s.index;
+      m = s.min;
+      second = s.second;
+    } else {
+      m = dot(pl.normal, vs[0]);
+      second = std::numeric_limits<T>::infinity();
+      for (int i = 1; i < nv; ++i) {
+        // branch-free minimum and second minimum (selects, not jumps)
+        const T h = dot(pl.normal, vs[static_cast<std::size_t>(i)]);
+        const bool lt = h < m;
+        second = lt ? m : (h < second ? h : second);
+        best = lt ? i : best;
+        m = lt ? h : m;
+      }
     }
-    if (!(static_cast<double>(second) - static_cast<double>(m) > w)) best = resolve_support(p, f, q, m, w);
-    const T hb = dot(pl.normal, vs[static_cast<std::size_t>(best)]);
+    T hb = m;  // n.v at best (the value PlainKernel reports)
+    if (!(static_cast<double>(second) - static_cast<double>(m) > w)) [[unlikely]] {
+      best = resolve_support(p, f, q, m, w);
+      hb = dot(pl.normal, vs[static_cast<std::size_t>(best)]);
+    }
     return FaceQuery<T>{Separation<T>{T(hb - pl.offset), T(1)}, best};
   }
 
@@ -835,6 +882,8 @@ class RobustKernel {
     EdgeAxis axis;
   };
   mutable AxisCache axis_cache_;
+  bool lanes_ = false;    // both shapes lanes_bounded(): the SIMD scans apply
+  T arc_lane_bound_ = 0;  // max(arc_err_a_t_, arc_err_b_t_), for arc_candidates
   mutable std::int64_t fallbacks_ = 0;
   mutable bool projection_rule_ = false;
 };

@@ -1,0 +1,279 @@
+// sepax/simd_lanes.hpp
+//
+// The two hot loops of the Gauss-map SAT over the lane arrays of
+// ConvexPolyhedron (one array per coordinate), a few edges or vertices at a
+// time with baseline SSE2 (4 floats or 2 doubles per instruction; no
+// -march=native, no -ffast-math).  On targets without SSE2, or with
+// SEPAX_NO_SIMD defined, the same code runs one lane at a time.
+//
+// Every lane evaluates exactly the operation sequence of the scalar code it
+// replaces -- dot(a, b) = (a0*b0 + a1*b1) + a2*b2, left to right, in T -- so
+// the values are bit-identical to PlainKernel's (IEEE operations are the
+// same in a vector lane).  Under FMA contraction (-march=native
+// -ffp-contract=fast) the compiler may fuse differently here and in the scalar
+// code: plain float/double decisions may then differ between the two paths
+// on inputs within rounding of a tie, as plain float decisions already differ
+// between builds.  The robust kernel only uses these values in filters whose
+// bounds hold with and without contraction.
+//
+//   arc_candidates  the Minkowski-face (arc crossing) test of one edge of A
+//                   against a range of edges of B: exact decisions of the
+//                   plain float test (kFilter = false), or the superset of
+//                   pairs that are not certainly rejected by a filter with
+//                   an error bound (kFilter = true).
+//   support_scan    argmin over a shape's vertices of n.v (lowest index among
+//                   equal minima), with the minimum, and optionally the
+//                   second smallest value (for the robust filter).
+// Both need ConvexPolyhedron::lanes_bounded() of the shapes they read (no
+// value can overflow, none is NaN); callers check it once per query and use
+// their scalar code otherwise.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+#include "convex_polyhedron.hpp"
+
+#if defined(__SSE2__) && !defined(SEPAX_NO_SIMD)
+#include <emmintrin.h>
+#define SEPAX_SIMD_SSE2 1
+#endif
+
+/// Inline the per-group bodies into their loops (GCC otherwise outlines a
+/// lambda called from two places).
+#if defined(__GNUC__) || defined(__clang__)
+#define SEPAX_SIMD_INLINE __attribute__((always_inline))
+#else
+#define SEPAX_SIMD_INLINE
+#endif
+
+namespace sepax::simd {
+
+/// Lane operations: V holds `width` values of T, M a per-lane mask.
+template <class T>
+struct Lanes {  // portable fallback: one lane
+  using V = T;
+  using M = bool;
+  static constexpr int width = 1;
+  static V load(const T* p) { return *p; }
+  static V set1(T x) { return x; }
+  static V iota(T base) { return base; }
+  static V add(V a, V b) { return a + b; }
+  static V mul(V a, V b) { return a * b; }
+  static M lt(V a, V b) { return a < b; }
+  static M gt(V a, V b) { return a > b; }
+  static M unord(V a, V b) { return a != a || b != b; }
+  static M mand(M a, M b) { return a && b; }
+  static M mor(M a, M b) { return a || b; }
+  static M mandnot(M a, M b) { return !a && b; }  // ~a & b
+  static V select(M m, V a, V b) { return m ? a : b; }
+  static V min_lt(V h, V m) { return h < m ? h : m; }  // h if h < m, else m
+  static V max_gt(V h, V m) { return h > m ? h : m; }  // h if h > m, else m
+  static M eq(V a, V b) { return a == b; }
+  static V hmin(V v) { return v; }  // the minimum over the lanes, in every lane
+  static unsigned bits(M m) { return m ? 1u : 0u; }
+  static T first(V v) { return v; }
+};
+
+#if defined(SEPAX_SIMD_SSE2)
+template <>
+struct Lanes<float> {
+  using V = __m128;
+  using M = __m128;
+  static constexpr int width = 4;
+  static V load(const float* p) { return _mm_loadu_ps(p); }
+  static V set1(float x) { return _mm_set1_ps(x); }
+  static V iota(float base) { return _mm_setr_ps(base, base + 1.0f, base + 2.0f, base + 3.0f); }
+  static V add(V a, V b) { return _mm_add_ps(a, b); }
+  static V mul(V a, V b) { return _mm_mul_ps(a, b); }
+  static M lt(V a, V b) { return _mm_cmplt_ps(a, b); }
+  static M gt(V a, V b) { return _mm_cmpgt_ps(a, b); }
+  static M unord(V a, V b) { return _mm_cmpunord_ps(a, b); }
+  static M mand(M a, M b) { return _mm_and_ps(a, b); }
+  static M mor(M a, M b) { return _mm_or_ps(a, b); }
+  static M mandnot(M a, M b) { return _mm_andnot_ps(a, b); }
+  static V select(M m, V a, V b) { return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b)); }
+  // minps(a, b) = a < b ? a : b and maxps(a, b) = a > b ? a : b, per lane
+  static V min_lt(V h, V m) { return _mm_min_ps(h, m); }
+  static V max_gt(V h, V m) { return _mm_max_ps(h, m); }
+  static M eq(V a, V b) { return _mm_cmpeq_ps(a, b); }
+  static V hmin(V v) {  // no NaN: min over the lanes, in every lane
+    v = _mm_min_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm_min_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)));
+  }
+  static unsigned bits(M m) { return static_cast<unsigned>(_mm_movemask_ps(m)); }
+  static float first(V v) { return _mm_cvtss_f32(v); }
+};
+
+template <>
+struct Lanes<double> {
+  using V = __m128d;
+  using M = __m128d;
+  static constexpr int width = 2;
+  static V load(const double* p) { return _mm_loadu_pd(p); }
+  static V set1(double x) { return _mm_set1_pd(x); }
+  static V iota(double base) { return _mm_setr_pd(base, base + 1.0); }
+  static V add(V a, V b) { return _mm_add_pd(a, b); }
+  static V mul(V a, V b) { return _mm_mul_pd(a, b); }
+  static M lt(V a, V b) { return _mm_cmplt_pd(a, b); }
+  static M gt(V a, V b) { return _mm_cmpgt_pd(a, b); }
+  static M unord(V a, V b) { return _mm_cmpunord_pd(a, b); }
+  static M mand(M a, M b) { return _mm_and_pd(a, b); }
+  static M mor(M a, M b) { return _mm_or_pd(a, b); }
+  static M mandnot(M a, M b) { return _mm_andnot_pd(a, b); }
+  static V select(M m, V a, V b) { return _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b)); }
+  static V min_lt(V h, V m) { return _mm_min_pd(h, m); }
+  static V max_gt(V h, V m) { return _mm_max_pd(h, m); }
+  static M eq(V a, V b) { return _mm_cmpeq_pd(a, b); }
+  static V hmin(V v) { return _mm_min_pd(v, _mm_shuffle_pd(v, v, 1)); }
+  static unsigned bits(M m) { return static_cast<unsigned>(_mm_movemask_pd(m)); }
+  static double first(V v) { return _mm_cvtsd_f64(v); }
+};
+#endif
+
+/// A dot product per lane, in dot()'s order: (x*bx + y*by) + z*bz.
+template <class L>
+inline typename L::V dot3(typename L::V x, typename L::V y, typename L::V z, typename L::V bx,
+                          typename L::V by, typename L::V bz) {
+  return L::add(L::add(L::mul(x, bx), L::mul(y, by)), L::mul(z, bz));
+}
+
+/// Minkowski-face test of edge ea of A against the edges eb in [lo, hi) of B
+/// (lo a multiple of the lane width, e.g. of kMinkowskiBatch).  Writes the accepted eb to
+/// out in increasing order and returns their number (out needs hi - lo
+/// entries).  With, per pair, the four values PlainKernel::arc_signs signs
+///   c = n_B0(eb).d_A(ea)   d = n_B1(eb).d_A(ea)   a = n_A0(ea).d_B(eb)   b = n_A1(ea).d_B(eb)
+/// (n_P0, n_P1 the normals of the edge's faces on sides 0 and 1, d_P its
+/// direction), the arcs cross iff sign(c) = sign(a) = -sign(d) = -sign(b) != 0
+/// (ArcSigns::minkowski_face with cba = sign c, dba = sign d, adc = -sign a,
+/// bdc = -sign b: cba*dba < 0, adc*bdc < 0 and cba*bdc > 0).  The lanes
+/// compute d' = (-n_B1).d_A = -d and b' = (-n_A1).d_B = -b (negation is exact
+/// and commutes with rounding), so the test is: all four of c, a, d', b'
+/// positive, or all four negative.  Needs lanes_bounded() of A and B (no NaN).
+///  * kFilter = false: accept iff min(c, a, d', b') > 0 or max(...) < 0:
+///    exactly the scalar decision on these values (zeros reject).
+///  * kFilter = true, with `bound` >= the error bound of each of the four
+///    values (beyond it a value's sign is certain): accept unless each pattern
+///    has a value certainly of the wrong sign, i.e. unless min < -bound and
+///    max > bound.  A superset of the pairs the exact test accepts.
+template <bool kFilter, class T>
+SEPAX_SIMD_INLINE inline int arc_candidates(const ConvexPolyhedron<T>& b, int lo, int hi, const Vec3<T>& da,
+                          const Vec3<T>& na0, const Vec3<T>& na1, T bound, int* out) {
+  using L = Lanes<T>;
+  using V = typename L::V;
+  using M = typename L::M;
+  constexpr int W = L::width;
+  const T* n0x = b.lane_edge(0);
+  const T* n0y = b.lane_edge(1);
+  const T* n0z = b.lane_edge(2);
+  const T* n1x = b.lane_edge(3);  // -n_B1
+  const T* n1y = b.lane_edge(4);
+  const T* n1z = b.lane_edge(5);
+  const T* dx = b.lane_edge(6);
+  const T* dy = b.lane_edge(7);
+  const T* dz = b.lane_edge(8);
+  const V ax = L::set1(da[0]), ay = L::set1(da[1]), az = L::set1(da[2]);
+  const V p0x = L::set1(na0[0]), p0y = L::set1(na0[1]), p0z = L::set1(na0[2]);
+  const V p1x = L::set1(T(-na1[0])), p1y = L::set1(T(-na1[1])), p1z = L::set1(T(-na1[2]));
+  const V lo_lim = L::set1(kFilter ? T(-bound) : T(0));
+  const V hi_lim = L::set1(kFilter ? bound : T(0));
+  // one group of W pairs: the accepted lanes as bits
+  auto group = [&](std::size_t i) SEPAX_SIMD_INLINE {
+    const V c = dot3<L>(L::load(n0x + i), L::load(n0y + i), L::load(n0z + i), ax, ay, az);
+    const V d = dot3<L>(L::load(n1x + i), L::load(n1y + i), L::load(n1z + i), ax, ay, az);
+    const V a = dot3<L>(L::load(dx + i), L::load(dy + i), L::load(dz + i), p0x, p0y, p0z);
+    const V e = dot3<L>(L::load(dx + i), L::load(dy + i), L::load(dz + i), p1x, p1y, p1z);
+    const V mn = L::min_lt(L::min_lt(c, a), L::min_lt(d, e));
+    const V mx = L::max_gt(L::max_gt(c, a), L::max_gt(d, e));
+    M m;
+    if constexpr (!kFilter) {
+      m = L::mor(L::gt(mn, lo_lim), L::lt(mx, hi_lim));
+    } else {
+      m = L::mandnot(L::mand(L::lt(mn, lo_lim), L::gt(mx, hi_lim)), L::eq(mn, mn));
+    }
+    return L::bits(m);
+  };
+  int n = 0;
+  auto emit = [&](unsigned m, int g) SEPAX_SIMD_INLINE {
+    while (m != 0) {
+      out[n++] = g + std::countr_zero(m);
+      m &= m - 1;
+    }
+  };
+  const int full = lo + (hi - lo) / W * W;
+  for (int g = lo; g < full; g += W) {
+    const unsigned m = group(static_cast<std::size_t>(g));
+    if (m != 0) emit(m, g);
+  }
+  if (full < hi) emit(group(static_cast<std::size_t>(full)) & ((1u << (hi - full)) - 1u), full);  // padding lanes
+  return n;
+}
+
+/// Result of support_scan.
+template <class T>
+struct Support {
+  int index = 0;    // lowest index among the minima of n.v
+  T min = T(0);     // n.v at index
+  T second = T(0);  // kSecond: the smallest n.v over the other vertices (+inf if none)
+};
+
+/// argmin over the vertices v of q of dot(n, v), the lowest index among equal
+/// minima: the vertex PlainKernel's scalar loop `if (h < best) best = h`
+/// selects.  kSecond also keeps the smallest value over the other vertices
+/// (equal to min when the minimum is attained twice).  Per lane: the smallest
+/// value, the first index attaining it, and the second smallest value; the
+/// lanes are merged at the end.  Needs lanes_bounded() of q and a finite n
+/// with |n_i| <= 2^60 (no NaN); vertex counts up to 2^24 (indices are kept
+/// exactly as T).
+template <bool kSecond, class T>
+SEPAX_SIMD_INLINE inline Support<T> support_scan(const ConvexPolyhedron<T>& q, const Vec3<T>& n) {
+  using L = Lanes<T>;
+  using V = typename L::V;
+  using M = typename L::M;
+  constexpr int W = L::width;
+  const int nv = q.vertex_count();
+  const T* x = q.lane_vertex(0);
+  const T* y = q.lane_vertex(1);
+  const T* z = q.lane_vertex(2);
+  const V nx = L::set1(n[0]), ny = L::set1(n[1]), nz = L::set1(n[2]);
+  const V inf = L::set1(std::numeric_limits<T>::infinity());
+  V m1 = inf, m2 = inf;
+  V idx = L::set1(T(0));
+  V cur = L::iota(T(0));
+  const V step = L::set1(T(W));
+  auto visit = [&](V h) SEPAX_SIMD_INLINE {
+    const M lt = L::lt(h, m1);
+    if constexpr (kSecond) m2 = L::min_lt(L::max_gt(h, m1), m2);  // the larger of (h, m1), if below m2
+    idx = L::select(lt, cur, idx);
+    m1 = L::min_lt(h, m1);
+    cur = L::add(cur, step);
+  };
+  const int full = nv / W * W;
+  for (int g = 0; g < full; g += W) {
+    const auto i = static_cast<std::size_t>(g);
+    visit(dot3<L>(L::load(x + i), L::load(y + i), L::load(z + i), nx, ny, nz));
+  }
+  if (full < nv) {  // the last, partial group: padding lanes become +inf
+    const auto i = static_cast<std::size_t>(full);
+    const V h = dot3<L>(L::load(x + i), L::load(y + i), L::load(z + i), nx, ny, nz);
+    visit(L::select(L::lt(cur, L::set1(static_cast<T>(nv))), h, inf));
+  }
+  // merge the lanes: the minimum, then the lowest index among the lanes holding it
+  Support<T> r;
+  const V mn = L::hmin(m1);
+  const M at_min = L::eq(m1, mn);
+  const V best = L::hmin(L::select(at_min, idx, inf));
+  r.min = L::first(mn);
+  r.index = static_cast<int>(L::first(best));
+  if (r.min == std::numeric_limits<T>::infinity()) r.index = 0;  // every value +inf (never with bounded lanes)
+  if constexpr (kSecond) {
+    // the best lane contributes its second value, every other lane its first
+    const M best_lane = L::mand(at_min, L::eq(idx, best));
+    r.second = L::first(L::hmin(L::select(best_lane, m2, m1)));
+  }
+  return r;
+}
+
+}  // namespace sepax::simd
