@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include <sepax/error.hpp>
+#include <sepax/fuzz/check_manifold.hpp>
 #include <sepax/fuzz/cli.hpp>
 #include <sepax/fuzz/generators.hpp>
 
@@ -34,6 +35,8 @@ void Report::add(const std::string& family, const CaseReport& r) {
   f.unexplained += r.unexplained_count;
   for (const auto& [k, c] : r.by_comparison) comparisons[k] += c;
   for (const auto& [k, c] : r.by_config) by_config[k] += c;
+  for (const auto& [k, c] : r.details) details[k] += c;
+  for (const auto& [k, v] : r.maxima) maxima[k] = std::max(maxima[k], v);
   for (const auto& x : r.unexplained)
     if (findings.size() < 20) findings.push_back(x);
 }
@@ -104,7 +107,9 @@ void print_json(std::ostream& out, const Report& r) {
     out << (first ? "" : ",") << jstr(name) << ":" << jcounts(c);
     first = false;
   }
-  out << "},\"reproducers\":[";
+  out << "},\"manifold\":";
+  print_manifold_json(out, r.comparisons, r.by_config, r.details, r.maxima);
+  out << ",\"reproducers\":[";
   for (std::size_t i = 0; i < r.reproducers.size(); ++i) out << (i ? "," : "") << jstr(r.reproducers[i]);
   out << "],\"findings\":[";
   for (std::size_t i = 0; i < r.findings.size(); ++i) {
@@ -147,6 +152,7 @@ void print_text(std::ostream& out, const Report& r) {
   };
   table(r.comparisons, "comparison");
   table(r.by_config, "comparison/configuration");
+  print_manifold_text(out, r.comparisons, r.by_config, r.details, r.maxima);
   out << "\n  unexplained disagreements: " << r.unexplained() << "\n";
   for (const auto& f : r.findings) out << "    [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
   if (!r.reproducers.empty()) {
