@@ -54,6 +54,15 @@ void check_manifolds(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<f
                      const ConvexPolyhedron<mpq_class>& Aq, const ConvexPolyhedron<mpq_class>& Bq,
                      const SatResult<mpq_class>& exact_sat, const CheckOptions& opt, CaseReport& rep);
 
+/// One float configuration against the exact manifolds, with the float SAT
+/// result given (the core of check_manifolds, for tests): records under the
+/// configuration name "float_given" and returns its class (agree when the SAT
+/// feature differs from the exact one: nothing is compared).
+Klass check_manifold_float(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
+                           const ConvexPolyhedron<mpq_class>& Aq, const ConvexPolyhedron<mpq_class>& Bq,
+                           const SatResult<mpq_class>& exact_sat, const SatResult<float>& float_sat,
+                           const CheckOptions& opt, CaseReport& rep);
+
 /// The report's "manifold" section (text table) and JSON value.
 void print_manifold_text(std::ostream& out, const std::map<std::string, Counts>& comparisons,
                          const std::map<std::string, Counts>& by_config, const std::map<std::string, Counts>& details,
