@@ -99,19 +99,24 @@ T contact_hull_area2(const std::vector<Vec3<T>>& points, const std::vector<int>&
 
 /// Are points[q[0]], points[q[1]], ... (a cyclic sequence) in weakly convex
 /// position in this order?  On success `sigma` is the orientation (+1: counter-
-/// clockwise about `normal`).  Exact for exact T.
+/// clockwise about `normal`).  Exact for exact T (tol = 0).  For float T,
+/// orientations within `tol` (an H value, e.g. the reduction's area_tol) of 0
+/// count as straight: a polygon convex up to rounding and near-collinear clip
+/// points takes the O(n^2) scan, whose H then differs from the hull area by no
+/// more than such tolerances (near-ties).
 template <Number T>
 bool weakly_convex_sequence(const std::vector<Vec3<T>>& points, const std::vector<int>& q, const Vec3<T>& normal,
-                            int& sigma) {
+                            int& sigma, const T& tol = T(0)) {
   const std::size_t n = q.size();
   auto P = [&](std::size_t i) -> const Vec3<T>& { return points[static_cast<std::size_t>(q[i % n])]; };
+  auto sgn_tol = [&](const T& x) { return x > tol ? 1 : (x < T(-tol) ? -1 : 0); };
   using reduction_detail::orient;
   sigma = 0;
   // q[0] must not coincide with its neighbours (its two rays below).
   if (!(squared_norm(Vec3<T>(P(1) - P(0))) > T(0)) || !(squared_norm(Vec3<T>(P(n - 1) - P(0))) > T(0))) return false;
   // Fan from q[0]: the angles of q[1..n-1] around q[0] must be monotone ...
   for (std::size_t t = 1; t + 1 < n; ++t) {
-    const int s = sign_of(orient(P(0), P(t), P(t + 1), normal));
+    const int s = sgn_tol(orient(P(0), P(t), P(t + 1), normal));
     if (s == 0) continue;
     if (sigma == 0) sigma = s;
     if (s != sigma) return false;
@@ -120,15 +125,15 @@ bool weakly_convex_sequence(const std::vector<Vec3<T>>& points, const std::vecto
   // ... and within a half-turn: every point on the inner side of the first ray
   // q0->q1 and of the last ray q0->q[n-1] (no second winding around q0).
   for (std::size_t t = 2; t < n; ++t)
-    if (sign_of(orient(P(0), P(1), P(t), normal)) == -sigma) return false;
+    if (sgn_tol(orient(P(0), P(1), P(t), normal)) == -sigma) return false;
   for (std::size_t t = 1; t + 1 < n; ++t)
-    if (sign_of(orient(P(0), P(t), P(n - 1), normal)) == -sigma) return false;
+    if (sgn_tol(orient(P(0), P(t), P(n - 1), normal)) == -sigma) return false;
   // With the angles around q[0] monotone within a half-turn the polygon is
   // simple and star-shaped from q[0]; a simple polygon whose every turn goes
   // the same way (or straight) is convex.
   // Every turn the same way (or straight).
   for (std::size_t t = 0; t < n; ++t) {
-    const int s = sign_of(orient(P(t + n - 1), P(t), P(t + 1), normal));
+    const int s = sgn_tol(orient(P(t + n - 1), P(t), P(t + 1), normal));
     if (s != 0 && s != sigma) return false;
   }
   return true;
@@ -175,7 +180,7 @@ std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const
   T m4(0);
   std::array<int, 3> best4{-1, -1, -1};
   int sigma = 0;
-  if (!force_general && weakly_convex_sequence(points, q, normal, sigma)) {
+  if (!force_general && weakly_convex_sequence(points, q, normal, sigma, area_tol)) {
     // O(n^2): H(d, j, k, l) = sigma (T(d,j,k) + T(d,k,l)) for positions
     // 1 <= a < c < b <= n-1 of j, k, l.
     const Vec3<T> ns = sigma > 0 ? normal : Vec3<T>(-normal);
@@ -217,10 +222,15 @@ std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const
       }
     }
   } else {
-    // O(n^3) over all triples (j < k < l by index), the general formula:
-    // the maximum, then the first triple in index order within area_tol of it
-    // (the smallest sorted triple).
-    std::vector<int> idx{d, -1, -1, -1};
+    // O(n^3) over all triples (j < k < l by index), the general formula
+    // (the same terms in the same order as contact_hull_area2, with the
+    // triangles at d tabulated): the maximum, then the first triple in index
+    // order within area_tol of it (the smallest sorted triple).
+    std::vector<T> td(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), T(0));
+    auto TD = [&](int a, int b) -> T& { return td[static_cast<std::size_t>(a) * static_cast<std::size_t>(n) + static_cast<std::size_t>(b)]; };
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b)
+        if (a != d && b != d) TD(a, b) = abs_of(orient(P(d), P(a), P(b), normal));
     auto scan = [&](bool find) {
       const T floor = m4 - area_tol;
       for (int j = 0; j < n; ++j) {
@@ -229,8 +239,7 @@ std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const
           if (k == d) continue;
           for (int l = k + 1; l < n; ++l) {
             if (l == d) continue;
-            idx[1] = j, idx[2] = k, idx[3] = l;
-            const T h = contact_hull_area2(points, idx, normal);
+            const T h = T(T(TD(j, k) + TD(j, l) + TD(k, l) + abs_of(orient(P(j), P(k), P(l), normal))) / T(2));
             if (!find) {
               if (!have4 || h > m4) m4 = h, have4 = true;
             } else if (!(h < floor)) {

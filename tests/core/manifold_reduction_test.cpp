@@ -208,6 +208,22 @@ TEST_CASE("convex position test: a star polygon and a reflex vertex are not conv
   CHECK(weakly_convex_sequence(c, {3, 4, 0, 1, 2}, up, sigma));
 }
 
+TEST_CASE("convex position up to a float tolerance: near-straight turns count as straight", "[reduction]") {
+  // a square with a point on an edge pushed inwards by 1e-9: reflex exactly,
+  // straight within a tolerance of 1e-6 (doubled area)
+  std::vector<V> c{{0, 0, 0}, {4, 0, 0}, {4, 2, 0}, {4, 4, 0}, {0, 4, 0}};
+  c[2][0] -= 1e-9;
+  int sigma = 0;
+  CHECK_FALSE(weakly_convex_sequence(c, {0, 1, 2, 3, 4}, up, sigma));
+  CHECK(weakly_convex_sequence(c, {0, 1, 2, 3, 4}, up, sigma, 1e-6));
+  CHECK(sigma == 1);
+  // both scans pick the square's corners
+  const std::vector<double> keys{0, 0, 0, 0, -1};
+  const auto k = reduce_contact_points(c, keys, up, 0.0, 1e-6);
+  CHECK(k == std::vector<int>{4, 0, 1, 3});
+  CHECK(reduce_contact_points(c, keys, up, 0.0, 1e-6, true) == k);
+}
+
 TEST_CASE("points not in convex position: the general scan, still the maximum", "[reduction]") {
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> u(-10, 10);
