@@ -398,6 +398,7 @@ struct FloatCheck {
         const Vec3<F> w(B.vertex(B.edge_tail(f.b)) - A.vertex(A.edge_tail(f.a)));
         return bounds::edge_bound<F>(n, w, dnf);
       }
+      default: break;  // feature types without a bound here: no value is compared
     }
     return kInf;
   }
@@ -429,7 +430,27 @@ struct FloatCheck {
       return Klass::unexplained;
     }
     if (mf.kind == ContactKind::Edge) return edge(r, mf);
-    return face(mf, mr);
+    if (mf.kind == ContactKind::Face) return face(mf, mr);
+    return other_kind(mf);
+  }
+
+  // ---- a contact kind this comparison has no bounds for (e.g. a side
+  // contact of coplanar polygons): ids and count only; a difference is
+  // exact_zero when the exact SAT separation is exactly 0, else unexplained.
+  Klass other_kind(const ContactManifold<F>& mf) {
+    const auto& me = E.all;
+    rec.rep.details["manifold.values_not_compared"].add(Klass::agree);
+    bool same = mf.size() == me.size();
+    for (int i = 0; same && i < mf.size(); ++i)
+      same = mf.points[static_cast<std::size_t>(i)].id == me.points[static_cast<std::size_t>(i)].id;
+    if (same) {
+      rec.aspect("points", Klass::agree);
+      return Klass::agree;
+    }
+    why << to_string(mf.kind) << " contact ids " << ids_string(mf) << " vs exact " << ids_string(me);
+    const Klass k = sign(E.sat.separation) == 0 ? Klass::exact_zero : Klass::unexplained;
+    rec.aspect("points", k);
+    return k;
   }
 
   // ---- edge contact (M7) ----

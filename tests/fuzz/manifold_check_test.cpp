@@ -61,7 +61,7 @@ TEST_CASE("manifold comparison on the corpus: compared, nothing unexplained, bou
   }
   CHECK(total[Klass::unexplained] == 0);
   CHECK(total[Klass::agree] >= 80);
-  CHECK(total[Klass::exact_zero] >= 1);  // 26-touching-float-support-fallback
+  CHECK(total[Klass::exact_zero] >= 1);  // 28-touching-float-support-fallback
   CHECK(details["manifold.points"].total() > 0);
   CHECK(details["manifold.depth_position"].total() > 0);
   CHECK(details["manifold.reduction"].total() > 0);
@@ -76,7 +76,7 @@ TEST_CASE("manifold comparison on the corpus: compared, nothing unexplained, bou
 
 TEST_CASE("float loses the clipped point of an exact touching contact: exact_zero, not agree", "[fuzz][manifold]") {
   const CaseReport r =
-      check_case(read_case_file(std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/26-touching-float-support-fallback.case"));
+      check_case(read_case_file(std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/28-touching-float-support-fallback.case"));
   REQUIRE(r.valid);
   CHECK(r.unexplained_count == 0);
   CHECK(r.by_config.at("manifold/float_robust")[Klass::exact_zero] == 1);
