@@ -697,11 +697,50 @@ struct FloatCheck {
           if (first_bad.empty()) first_bad = "exact point " + to_string(c.id);
         }
       }
-      // exact zero: a vertex exactly on a side plane, or a clipped vertex
-      // exactly on the reference plane
-      bool ez = rpe.exact_zero;
-      for (const auto& v : rpe.poly)
-        if (sgn(Q(dot(Re.plane(rf).normal, v.point) - Re.plane(rf).offset)) == 0) ez = true;
+      // exact_zero: the difference comes from a quantity that is exactly 0 in
+      // exact arithmetic: an exact point without a partner lies exactly on the
+      // reference plane or exactly on a side plane it was not made by; for a
+      // float point without a partner, such an exact clipped vertex lies
+      // within its tolerance.  Otherwise explained.
+      struct SideQ {
+        Vec3<Q> c;
+        Q off;
+        int edge, tail, head;
+      };
+      std::vector<SideQ> sides;
+      {
+        int he = Re.face(rf).edge;
+        for (int i = 0; i < Re.face(rf).count; ++i, he = Re.half_edge(he).next) {
+          const int t = Re.half_edge(he).origin, hd = Re.half_edge(Re.half_edge(he).next).origin;
+          SideQ sq{cross(Vec3<Q>(Re.vertex(hd) - Re.vertex(t)), Re.plane(rf).normal), Q(0), he / 2, t, hd};
+          sq.off = dot(sq.c, Re.vertex(t));
+          sides.push_back(sq);
+        }
+      }
+      // idr: the reference-side feature first (ClipVertex order)
+      auto exact_zero_at = [&](const Vec3<Q>& x, const ContactFeatureId& idr) {
+        if (sgn(Q(dot(Re.plane(rf).normal, x) - Re.plane(rf).offset)) == 0) return true;
+        for (const auto& sq : sides) {
+          const bool own = (idr.a.kind == ShapeFeatureKind::Edge && idr.a.index == sq.edge) ||
+                           (idr.a.kind == ShapeFeatureKind::Vertex && (idr.a.index == sq.tail || idr.a.index == sq.head));
+          if (!own && sgn(Q(dot(sq.c, x) - sq.off)) == 0) return true;
+        }
+        return false;
+      };
+      bool ez = false;
+      for (int j = 0; j < me.size() && !ez; ++j) {
+        if (used[static_cast<std::size_t>(j)]) continue;
+        const auto& c = me.points[static_cast<std::size_t>(j)];
+        ez = exact_zero_at(ref_a ? c.point_b : c.point_a, ref_a ? c.id : c.id.swapped());
+      }
+      for (int i = 0; i < mf.size() && !ez; ++i) {
+        if (match[static_cast<std::size_t>(i)] >= 0) continue;
+        const auto& c = mf.points[static_cast<std::size_t>(i)];
+        const V x = vd(ref_a ? c.point_b : c.point_a);
+        const double tol = kept[static_cast<std::size_t>(i)].ep + rpf.rho + es_max + weld + slack;
+        for (const auto& v : rpe.poly)
+          if ((vd(v.point) - x).norm() <= tol && exact_zero_at(v.point, v.id)) ez = true;
+      }
       kpts = !all_ok ? Klass::unexplained : ez ? Klass::exact_zero : Klass::explained;
       why << "clipped points differ: " << cfg << " " << ids_string(mf) << " vs exact " << ids_string(me);
       if (!all_ok) why << "; not near any boundary: " << first_bad;

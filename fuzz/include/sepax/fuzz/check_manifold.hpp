@@ -17,9 +17,11 @@
 // One class per (case, configuration), the worst of its aspects:
 //   agree        same incident face, ids before and after the reduction, every
 //                depth and position within its bound
-//   exact_zero   ids differ, every difference explained (below), and the exact
-//                clip met an exact zero: a vertex exactly on a side plane or a
-//                point exactly on the reference plane
+//   exact_zero   ids differ, every difference explained (below), and caused
+//                by an exact zero: an exact point without a partner lies exactly
+//                on the reference plane or on a side plane it was not made by
+//                (for a float point without a partner: such an exact clipped
+//                vertex within its tolerance)
 //   explained    ids differ; every unmatched point lies within its bound of
 //                the other manifold's clipped polygon, of a side plane or of
 //                the reference plane (a decision at a boundary, or a weld)
