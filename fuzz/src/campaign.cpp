@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include <sepax/error.hpp>
+#include <sepax/fuzz/check_manifold.hpp>
 #include <sepax/fuzz/cli.hpp>
 #include <sepax/fuzz/generators.hpp>
 #include <sepax/fuzz/shrink.hpp>
@@ -45,6 +46,8 @@ void Report::add(const std::string& family, const CaseReport& r) {
     skipped[k] += n;
     f.skipped[k] += n;
   }
+  for (const auto& [k, c] : r.details) details[k] += c;
+  for (const auto& [k, v] : r.maxima) maxima[k] = std::max(maxima[k], v);
   for (const auto& x : r.unexplained)
     if (findings.size() < 20) findings.push_back(x);
 }
@@ -121,7 +124,9 @@ void print_json(std::ostream& out, const Report& r) {
     out << (first ? "" : ",") << jstr(name) << ":" << jcounts(c);
     first = false;
   }
-  out << "},\"skipped_total\":" << r.skipped_total() << ",\"skipped\":" << jskips(r.skipped);
+  out << "},\"manifold\":";
+  print_manifold_json(out, r.comparisons, r.by_config, r.details, r.maxima);
+  out << ",\"skipped_total\":" << r.skipped_total() << ",\"skipped\":" << jskips(r.skipped);
   out << ",\"reproducers\":[";
   for (std::size_t i = 0; i < r.reproducers.size(); ++i) out << (i ? "," : "") << jstr(r.reproducers[i]);
   out << "],\"findings\":[";
@@ -178,6 +183,7 @@ void print_text(std::ostream& out, const Report& r) {
       }
     out << ")\n";
   }
+  print_manifold_text(out, r.comparisons, r.by_config, r.details, r.maxima);
   out << "\n  unexplained disagreements: " << r.unexplained() << "\n";
   for (const auto& f : r.findings) out << "    [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
   if (!r.reproducers.empty()) {

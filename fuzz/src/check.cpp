@@ -17,6 +17,7 @@
 #include <sepax/fuzz/error_bounds.hpp>
 #include <sepax/fuzz/sat_list.hpp>
 #include <sepax/fuzz/classify.hpp>
+#include <sepax/fuzz/check_manifold.hpp>
 
 namespace sepax::fuzz {
 
@@ -695,6 +696,7 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   check_float<float, policy::Robust>(E, Af, Bf, "float_robust", true, opt, rec);
   check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, opt, rec);
 #endif
+  if (opt.manifolds) check_manifolds(Af, Bf, E.A, E.B, E.ref, opt, rep);
   return rep;
 }
 

@@ -136,6 +136,72 @@ TEMPLATE_TEST_CASE("exact: rotated box on a larger box (rational rotation), ever
   }
 }
 
+TEMPLATE_TEST_CASE("exact: the reduced rotated-box octagon has exactly the largest area with the deepest point",
+                   "[contact][exact][reduction]", mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
+  using T = TestType;
+  const auto a = shapes::cube<T>(1.0);
+  // rotation about z by atan(3/4), tilted so that the depths differ: the
+  // incident face is a rational plane, the deepest clip point is unique
+  const T c = q<T>(4, 5), s = q<T>(3, 5);
+  const auto b = map_vertices(shapes::box<T>(0.9, 0.9, 0.5), [&](const Vec3<T>& v) {
+    return Vec3<T>(c * v[0] - s * v[1] + q<T>(1, 20), s * v[0] + c * v[1], v[2] + q<T>(7, 5) + v[0] * q<T>(1, 50));
+  });
+  ManifoldOptions all;
+  all.reduce = false;
+  const auto full = contact_manifold(a, b, sat::gauss_map(a, b), all);
+  REQUIRE(full.kind == ContactKind::Face);
+  REQUIRE(full.size() == 8);
+  const auto red = contact_manifold(a, b);
+  REQUIRE(red.size() == 4);
+  // map kept ids to full indices
+  std::vector<int> kept;
+  for (const auto& p : red.points)
+    for (int i = 0; i < full.size(); ++i)
+      if (full.points[i].id == p.id) kept.push_back(i);
+  REQUIRE(kept.size() == 4);
+  // the first kept point is the exactly deepest one
+  for (const auto& p : full.points) CHECK(compare(red.points[0].separation, p.separation) <= 0);
+  std::vector<Vec3<T>> pos;
+  for (const auto& p : full.points) pos.push_back(p.position);
+  const Vec3<T>& n = full.normal;
+  const T h = contact_hull_area2(pos, kept, n);
+  CHECK(h > T(0));
+  // exactly maximal over every 4-subset containing the deepest point, and the
+  // only maximum (no tie here)
+  const int d = kept[0];
+  int equal = 0;
+  for (int i = 0; i < 8; ++i)
+    for (int j = i + 1; j < 8; ++j)
+      for (int k = j + 1; k < 8; ++k) {
+        if (i == d || j == d || k == d) continue;
+        const T hs = contact_hull_area2(pos, {d, i, j, k}, n);
+        CHECK(hs <= h);
+        if (hs == h) ++equal;
+      }
+  CHECK(equal == 1);
+  // both scans agree exactly
+  std::vector<T> keys;
+  for (const auto& p : full.points) keys.push_back(p.separation.num);
+  CHECK(reduce_contact_points(pos, keys, n, T(0), T(0)) == kept);
+  CHECK(reduce_contact_points(pos, keys, n, T(0), T(0), true) == kept);
+  // float and double make the same choice on the same configuration (no tie)
+  auto float_ids = [&](auto zero) {
+    using F = decltype(zero);
+    const auto af = shapes::cube<F>(1.0);
+    const auto bf = map_vertices(shapes::box<F>(0.9, 0.9, 0.5), [&](const Vec3<F>& v) {
+      return Vec3<F>(F(0.8) * v[0] - F(0.6) * v[1] + F(0.05), F(0.6) * v[0] + F(0.8) * v[1],
+                     v[2] + F(1.4) + v[0] * F(0.02));
+    });
+    std::vector<ContactFeatureId> ids;
+    for (const auto& p : contact_manifold(af, bf).points) ids.push_back(p.id);
+    return ids;
+  };
+  std::vector<ContactFeatureId> exact_ids;
+  for (const auto& p : red.points) exact_ids.push_back(p.id);
+  CHECK((float_ids(0.0) == exact_ids));
+  CHECK((float_ids(0.0f) == exact_ids));
+}
+
 TEMPLATE_TEST_CASE("exact: crossed edges", "[contact][exact]", mpq_class, CGAL::Epeck::FT) {
   using T = TestType;
   const auto a = wedge<T>();

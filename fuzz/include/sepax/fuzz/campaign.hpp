@@ -31,6 +31,8 @@ struct Report {
   std::map<std::string, Counts> comparisons;
   std::map<std::string, Counts> by_config;
   std::map<std::string, std::int64_t> skipped;  // "comparison/config/sat" -> comparisons not made (size budgets)
+  std::map<std::string, Counts> details;   // sub-comparisons (CaseReport::details)
+  std::map<std::string, double> maxima;    // largest error/bound ratios (CaseReport::maxima)
   std::vector<std::string> reproducers;
   std::vector<Finding> findings;  // first few unexplained findings
   std::int64_t unexplained() const;

@@ -19,6 +19,7 @@
 //   feature         the minimum-penetration (maximum-separation) feature
 //   separation      the reported separation against the exact optimum
 //   exact           exact configurations and exact SATs among themselves
+//   manifold        float against exact contact manifolds (check_manifold.hpp)
 //
 // Classes of a comparison:
 //   agree        identical (separation: the float value equals the exact one)
@@ -99,6 +100,8 @@ struct CaseReport {
   /// (CheckOptions), as "comparison/config/sat" -> count.  Reported, never
   /// silently dropped.
   std::map<std::string, std::int64_t> skipped;
+  std::map<std::string, Counts> details;    // sub-comparisons, e.g. "manifold.points" (check_manifold.hpp)
+  std::map<std::string, double> maxima;     // largest error/bound ratios, e.g. "manifold.depth"
 };
 
 struct CheckOptions {
@@ -113,6 +116,8 @@ struct CheckOptions {
   std::int64_t float_brute_budget = 20'000'000;
   /// Keep at most this many Finding records per comparison (all are counted).
   int max_findings = 8;
+  /// Compare float and exact contact manifolds (check_manifold.hpp).
+  bool manifolds = true;
 };
 
 /// The four arc-test signs of every edge pair (index ea * E_B + eb), exactly,
