@@ -207,10 +207,15 @@ class RobustKernel {
   /// compare() with both error bounds given (error_bound() of fx and fy, e.g.
   /// kept by the caller for its current best): the same filter and the same
   /// exact fallback, hence the same answer.
+  /// The filter width of compare_bounded() for error bounds ex and ey: when
+  /// x.num - y.num (in double) is beyond it, the exact comparison has that
+  /// sign.
+  double compare_width(double ex, double ey) const { return (ex + ey) * kMargin; }
+
   int compare_bounded(const Separation<T>& x, const Feature& fx, double ex, const Separation<T>& y,
                       const Feature& fy, double ey) const {
     if (fx == fy) return 0;
-    const double bound = (ex + ey) * kMargin;
+    const double bound = compare_width(ex, ey);
     const double d = static_cast<double>(x.num) - static_cast<double>(y.num);
     if (d > bound) return 1;
     if (d < -bound) return -1;
