@@ -10,11 +10,13 @@
 // face:
 //
 //  1. Faces of A, in breadth-first order over face adjacency (GaussMapWalk):
-//     the support vertex of B for the root face comes from the one full
-//     support scan (k.face_query_a); every other face's support vertex is
+//     the root face's climb is seeded by the one full support scan
+//     (k.face_query_a, made for a start face, see Pruning); every face's
+//     support vertex is
 //     found by hill-climbing on B's vertex graph from its parent face's
-//     support vertex, comparing heights above the face exactly
-//     (k.compare of k.face_separation_a(f, v) for neighbouring v).  A linear
+//     vertex, comparing heights above the face exactly (k.compare of
+//     k.face_separation_a(f, v) for neighbouring v; float kernels compare
+//     fl(n.v) within the kernel's filter, exactly inside it).  A linear
 //     function on a convex polytope has no local minimum that is not global,
 //     so the climb ends at a deepest vertex; when the deepest set is larger
 //     than one vertex (a tie: an edge or face of B) it is searched for the
@@ -32,6 +34,20 @@
 //     A convex region is left at most once by a great-circle arc, so every
 //     crossing is found exactly once and the walk moves monotonically along
 //     the arc.
+//
+// Pruning (candidates exactly below the best so far can never be the answer,
+// whatever the tie-break, so they are skipped; the result is unchanged):
+//   * step 0 evaluates two faces near the direction between the shapes'
+//     bounding-box centres first (start()), for a good first best;
+//   * a face's climb stops at the first vertex whose height is exactly below
+//     the best (every vertex's height bounds the face's separation); that
+//     vertex seeds the face's children and is climbed on (certify()) only if
+//     an arc walk needs the support vertex;
+//   * an arc of a solid A is skipped when two heights bound every Minkowski
+//     face on it below a best <= 0 (arc_below_best()), and so is a single
+//     crossing (crossing_below_best()).
+// Every pruning decision is a kernel decision (exact under policy::Robust),
+// so the robust walk takes exactly the exact walk's path.
 //
 // Degenerate cases, decided by the same signs:
 //   * the path leaves a region through a Gauss-map vertex of -B (a face g of B

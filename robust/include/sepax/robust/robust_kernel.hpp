@@ -452,8 +452,8 @@ class RobustKernel {
         const Vec3<T> c = cross(e1, e2);
         const double nc2 = squared_norm_d(c);
         const double num = squared_norm_d(e1) * squared_norm_d(e2);
-        bad |= !(nc2 > kTinySquared) | !(nc2 <= std::numeric_limits<double>::max()) |
-               !(num <= std::numeric_limits<double>::max());
+        bad |= !(nc2 > kTinySquared && nc2 <= std::numeric_limits<double>::max() &&
+                 num <= std::numeric_limits<double>::max());
         const bool larger = num * wden > wnum * nc2;
         wnum = larger ? num : wnum;
         wden = larger ? nc2 : wden;
