@@ -81,12 +81,19 @@ class GaussMapWalk {
       }
     }
     for (int f : face_order_) face_parent_.push_back(parent[static_cast<std::size_t>(f)]);
+    triangulated_ = true;
+    for (std::size_t h = 0; h < nh; ++h) {
+      if (next_[static_cast<std::size_t>(next_[static_cast<std::size_t>(next_[h])])] != static_cast<int>(h))
+        triangulated_ = false;
+    }
   }
 
   int vertex_count() const { return nv_; }
   int edge_count() const { return ne_; }
   int face_count() const { return nf_; }
   bool is_flat() const { return flat_; }
+  /// Every face is a triangle (the hill climb then needs no far-vertex pass).
+  bool triangulated() const { return triangulated_; }
 
   /// True when this data was built for p's combinatorics (checked by counts:
   /// build the walk data from the hull itself or a with_vertices/convert_from
@@ -134,6 +141,7 @@ class GaussMapWalk {
  private:
   int nv_ = 0, ne_ = 0, nf_ = 0;
   bool flat_ = false;
+  bool triangulated_ = false;
   std::vector<int> adj_start_, adj_half_, adj_vertex_, adj_edge_;
   std::vector<int> origin_, face_, next_, prev_;
   std::vector<int> face_order_, face_parent_;

@@ -10,11 +10,13 @@
 // face:
 //
 //  1. Faces of A, in breadth-first order over face adjacency (GaussMapWalk):
-//     the support vertex of B for the root face comes from the one full
-//     support scan (k.face_query_a); every other face's support vertex is
+//     the root face's climb is seeded by the one full support scan
+//     (k.face_query_a, made for a start face, see Pruning); every face's
+//     support vertex is
 //     found by hill-climbing on B's vertex graph from its parent face's
-//     support vertex, comparing heights above the face exactly
-//     (k.compare of k.face_separation_a(f, v) for neighbouring v).  A linear
+//     vertex, comparing heights above the face exactly (k.compare of
+//     k.face_separation_a(f, v) for neighbouring v; float kernels compare
+//     fl(n.v) within the kernel's filter, exactly inside it).  A linear
 //     function on a convex polytope has no local minimum that is not global,
 //     so the climb ends at a deepest vertex; when the deepest set is larger
 //     than one vertex (a tie: an edge or face of B) it is searched for the
@@ -32,6 +34,20 @@
 //     A convex region is left at most once by a great-circle arc, so every
 //     crossing is found exactly once and the walk moves monotonically along
 //     the arc.
+//
+// Pruning (candidates exactly below the best so far can never be the answer,
+// whatever the tie-break, so they are skipped; the result is unchanged):
+//   * step 0 evaluates two faces near the direction between the shapes'
+//     bounding-box centres first (start()), for a good first best;
+//   * a face's climb stops at the first vertex whose height is exactly below
+//     the best (every vertex's height bounds the face's separation); that
+//     vertex seeds the face's children and is climbed on (certify()) only if
+//     an arc walk needs the support vertex;
+//   * an arc of a solid A is skipped when two heights bound every Minkowski
+//     face on it below a best <= 0 (arc_below_best()), and so is a single
+//     crossing (crossing_below_best()).
+// Every pruning decision is a kernel decision (exact under policy::Robust),
+// so the robust walk takes exactly the exact walk's path.
 //
 // Degenerate cases, decided by the same signs:
 //   * the path leaves a region through a Gauss-map vertex of -B (a face g of B
@@ -72,12 +88,23 @@
 #pragma once
 
 #include <array>
+#include <concepts>
 #include <cstdint>
+#include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "best_axis.hpp"
 #include "gauss_map_walk.hpp"
 #include "plain_kernel.hpp"
+
+/// The walk's O(1) per-face checks: inlined into their loops even when the
+/// inliner's size heuristics would not.
+#if defined(__GNUC__) || defined(__clang__)
+#define SEPAX_TRAVERSAL_INLINE [[gnu::always_inline]] inline
+#else
+#define SEPAX_TRAVERSAL_INLINE inline
+#endif
 
 namespace sepax::sat {
 
@@ -93,6 +120,10 @@ struct TraversalStats {
   std::int64_t corner_passes = 0;     // walks through a Gauss-map vertex of -B
   std::int64_t lex_starts = 0;        // arcs started by the lexicographic rule
   std::int64_t fallback_arcs = 0;     // arcs tested against every arc of -B
+  std::int64_t pruned_faces = 0;      // faces whose climb stopped below the best
+  std::int64_t pruned_arcs = 0;       // arcs skipped: every crossing below the best
+  std::int64_t late_certified = 0;    // pruned faces climbed on for an arc walk
+  std::int64_t pruned_crossings = 0;  // crossings skipped: below the best
 };
 
 namespace detail {
@@ -121,23 +152,62 @@ class Traversal {
 
   Traversal(K& k, const GaussMapWalk& wa, const GaussMapWalk& wb, const SatOptions& opt,
             TraversalStats& ts)
-      : k_(k), wa_(wa), wb_(wb), opt_(opt), ts_(ts) {}
+      : k_(k), wa_(wa), wb_(wb), opt_(opt), ts_(ts), prune_arcs_(!wa.is_flat()) {}
 
   SatResult<T> run() {
     const int fa = wa_.face_count(), fb = wb_.face_count();
-    FaceScratch scratch(fa + fb);
-    // sup(f) for faces of A at [0, fa), for faces of B at [fa, fa + fb):
-    // (support vertex << 1) | tie.
-    if (faces<true>(scratch, 0)) return best_.result(k_, stats_, true);
-    if (faces<false>(scratch, fa)) return best_.result(k_, stats_, true);
-    for (int ea = 0; ea < wa_.edge_count(); ++ea) {
-      if (arc(scratch, ea)) return best_.result(k_, stats_, true);
+    FaceScratch st(fa + fb);
+    // st(f) for faces of A at [0, fa), for faces of B at [fa, fa + fb):
+    // (vertex << 2) | kCertified | kTie, see climb().
+    if (start()) return best_.result(k_, stats_, true);
+    if (faces<true>(st, 0)) return best_.result(k_, stats_, true);
+    if (faces<false>(st, fa)) return best_.result(k_, stats_, true);
+    const int ne = wa_.edge_count();
+    for (int ea = 0; ea < ne; ++ea) {
+      // Both ends in the closed region of the same unique support vertex:
+      // the region is convex, the arc stays inside, no crossing.
+      const int s0 = st[wa_.edge_face(ea, 0)], s1 = st[wa_.edge_face(ea, 1)];
+      if ((s0 >> 2) == (s1 >> 2)) {
+        if ((s0 & s1 & kCertified) && !((s0 | s1) & kTie)) continue;
+        // both climbs cut off at the same vertex x: both heights of x are
+        // known to be below the best (arc_below_best with x)
+        if (!((s0 | s1) & kCertified) && prune_arcs_ && best_nonpositive()) {
+          ++ts_.pruned_arcs;
+          continue;
+        }
+      }
+      if (arc(st, ea)) return best_.result(k_, stats_, true);
     }
     if (scan_side_axes(k_, best_, stats_, opt_)) return best_.result(k_, stats_, true);
     return best_.result(k_, stats_, false);
   }
 
  private:
+  // Per-face state bits (below the vertex index).
+  static constexpr int kTie = 1;        // the deepest set has more than one vertex
+  static constexpr int kCertified = 2;  // the vertex is the support vertex (else: a
+                                        // vertex whose height is below the best)
+
+  // Kernels with the filtered support comparison (RobustKernel): compare two
+  // vertices below a face through fl(n.v), exact only within the filter.
+  static constexpr bool kFiltered = requires(const K& k, int i) {
+    { k.support_filter_a() } -> std::same_as<T>;
+    { k.support_filter_b() } -> std::same_as<T>;
+    { k.support_sign_a(i, i, i) } -> std::same_as<int>;
+    { k.support_sign_b(i, i, i) } -> std::same_as<int>;
+  };
+  // PlainKernel<float/double>: compare fl(n.v) as T values (filter width 0).
+  static constexpr bool kPlainFloat = std::is_floating_point_v<T> && std::is_same_v<K, PlainKernel<T>>;
+  static constexpr bool kFast = kFiltered || kPlainFloat;
+  // Kernels that expose their value error bounds (RobustKernel): the current
+  // best's bound is kept, so comparing a candidate with the best costs one
+  // filter (the same filter and exact fallback as k.compare).
+  static constexpr bool kBounded = requires(const K& k, const Feature& f, const Separation<T>& s, double e) {
+    { k.error_bound(f) } -> std::same_as<double>;
+    { k.compare_width(e, e) } -> std::same_as<double>;
+    { k.compare_bounded(s, f, e, s, f, e) } -> std::same_as<int>;
+  };
+
   // ---- heights -------------------------------------------------------------
   // OfA: face f of A, vertex v of B; else face f of B, vertex v of A.
   template <bool OfA>
@@ -155,21 +225,95 @@ class Traversal {
     return k_.compare(hv, face_feature<OfA>(f, v), hw, face_feature<OfA>(f, w));
   }
 
-  struct Support {
-    int vertex;
-    Separation<T> sep;
-    bool tie;
-  };
+  // ---- the best candidate --------------------------------------------------
+  // The exact comparison of a candidate with the current best (which exists).
+  int vs_best(const Separation<T>& s, const Feature& f) {
+    if constexpr (kBounded) {
+      return k_.compare_bounded(s, f, k_.error_bound(f), best_.separation(), best_.feature(), best_err_);
+    } else {
+      return k_.compare(s, f, best_.separation(), best_.feature());
+    }
+  }
+  // Exactly below the best: such a candidate can never be the answer (the
+  // best only grows), whatever the tie-break.
+  bool below_best(const Separation<T>& s, const Feature& f) { return best_.has() && vs_best(s, f) < 0; }
 
-  // Deepest vertex of the other shape below face f, from seed, by hill climb;
-  // the lowest index among exactly deepest ones, and whether there was a tie.
+  // Face f's height h = fl(fl(n_f.x) - offset) of vertex x (bit for bit the
+  // kernel's face_separation value before its sign snap, which compare()
+  // does not need: the value is within the kernel's error bound either way)
+  // is exactly below the best.  kBounded: one subtraction against the
+  // precomputed filter width; within it, compare_bounded decides exactly.
   template <bool OfA>
-  Support climb(int f, int seed) {
+  SEPAX_TRAVERSAL_INLINE bool face_below_best(int f, int x, T h) {
+    if (!best_.has()) return false;
+    if constexpr (kBounded) {
+      const double d = static_cast<double>(best_.separation().num) - static_cast<double>(h);
+      const double cut = OfA ? cut_a_ : cut_b_;
+      if (d > cut) return true;
+      if (d < -cut) return false;
+    }
+    return vs_best(Separation<T>{h, T(1)}, face_feature<OfA>(f, x)) < 0;
+  }
+  // The same for any kernel (height from the kernel).
+  template <bool OfA>
+  SEPAX_TRAVERSAL_INLINE bool face_below_best(int f, int x) {
+    if constexpr (kFast) {
+      const Plane<T>& pl = (OfA ? k_.a() : k_.b()).plane(f);
+      const Vec3<T>& p = (OfA ? k_.b() : k_.a()).vertex(x);
+      ++ts_.height_evals;
+      return face_below_best<OfA>(f, x, T(dot(pl.normal, p) - pl.offset));
+    } else {
+      return below_best(height<OfA>(f, x), face_feature<OfA>(f, x));
+    }
+  }
+
+  void offer(const Separation<T>& s, const Feature& f) {
+    if constexpr (kBounded) {
+      if (best_.has() && vs_best(s, f) < 0) return;  // the common case: one filter
+    }
+    if (best_.consider(k_, s, f)) {
+      if constexpr (kBounded) {
+        best_err_ = k_.error_bound(f);
+        cut_a_ = k_.compare_width(k_.error_bound(Feature::face_a(0, 0)), best_err_);
+        cut_b_ = k_.compare_width(k_.error_bound(Feature::face_b(0, 0)), best_err_);
+      }
+      best_sign_ = 2;
+    }
+  }
+
+  // The best so far has separation <= 0 (exactly).
+  bool best_nonpositive() {
+    if (!best_.has()) return false;
+    if (best_sign_ == 2) best_sign_ = k_.sign(best_.separation(), best_.feature());
+    return best_sign_ <= 0;
+  }
+
+  // ---- support vertices by hill climbing -----------------------------------
+  // Deepest vertex of the other shape below face f, by hill climb from seed v;
+  // the lowest index among exactly deepest ones.  Returns
+  // (vertex << 2) | kCertified | (kTie if the deepest set has more than one
+  // vertex).  With cutoff, the climb stops as soon as the height of its
+  // current vertex is exactly below the best candidate so far: every vertex's
+  // height is >= the face's separation, so the face cannot be the answer; it
+  // returns (vertex << 2) without kCertified, and certify() resumes the same
+  // deterministic climb from there if the support vertex is needed later.
+  template <bool OfA>
+  int climb(int f, int v, bool cutoff) {
+    if constexpr (kFast) {
+      return climb_fast<OfA>(f, v, cutoff);
+    } else {
+      return climb_generic<OfA>(f, v, cutoff);
+    }
+  }
+
+  // Kernels without the fast path (exact T): heights and k.compare.
+  template <bool OfA>
+  int climb_generic(int f, int v, bool cutoff) {
     const GaussMapWalk& w = OfA ? wb_ : wa_;
-    int v = seed;
     Separation<T> hv = height<OfA>(f, v);
     int budget = w.vertex_count() + 1;
     for (;;) {
+      if (cutoff && below_best(hv, face_feature<OfA>(f, v))) return v << 2;
       bool moved = false, tie = false;
       for (int i = w.adj_begin(v); i < w.adj_end(v); ++i) {
         const int u = w.adj_vertex(i);
@@ -183,7 +327,7 @@ class Traversal {
         }
         if (c == 0) tie = true;
       }
-      if (!moved) {
+      if (!moved && !w.triangulated()) {
         // The far vertices of v's non-triangular faces (not neighbours of v):
         // on an exactly convex polytope none is strictly lower, but a face
         // that is planar only up to rounding (the exact image of a rotated
@@ -207,18 +351,117 @@ class Traversal {
         if (--budget < 0) return scan<OfA>(f);  // inconsistent rounding only
         continue;
       }
-      if (!tie) return Support{v, hv, false};
-      return Support{lowest_tied<OfA>(f, v, hv), hv, true};
+      if (!tie) return (v << 2) | kCertified;
+      return (lowest_tied<OfA>(f, v, hv) << 2) | kCertified | kTie;
+    }
+  }
+
+  // Filter width for comparing fl(n.u) - fl(n.v) (0 for plain float).
+  template <bool OfA>
+  T filter() const {
+    if constexpr (kFiltered) {
+      return OfA ? k_.support_filter_a() : k_.support_filter_b();
+    } else {
+      return T(0);
+    }
+  }
+  // The exact sign of height(f, u) - height(f, v), asked only when
+  // d = fl(n.u) - fl(n.v) is within the filter (or NaN).  Plain float: the
+  // filter is 0, d is 0 or NaN here, and the answer is 0 (equal), as
+  // compare() of two rounded values.
+  template <bool OfA>
+  int exact_vs(int f, int u, int v, T d) {
+    if constexpr (kFiltered) {
+      return OfA ? k_.support_sign_a(f, u, v) : k_.support_sign_b(f, u, v);
+    } else {
+      return (d > T(0)) - (d < T(0));
+    }
+  }
+
+  // Float kernels: the climb compares g = fl(n.v) (the support scan's
+  // values), within the kernel's filter exactly; the same decisions as
+  // climb_generic under policy::Robust (both are the exact sign of
+  // N.(u - v)), with no Separation or kernel call per neighbour.
+  // check_seed = false: the caller has just found the seed not below the best.
+  template <bool OfA>
+  int climb_fast(int f, int v, bool cutoff, bool check_seed = true) {
+    const GaussMapWalk& w = OfA ? wb_ : wa_;
+    const Vec3<T>* vs = (OfA ? k_.b() : k_.a()).vertices().data();
+    const Plane<T>& pl = (OfA ? k_.a() : k_.b()).plane(f);
+    const Vec3<T> n = pl.normal;
+    const T off = pl.offset;
+    const T W = filter<OfA>();
+    cutoff = cutoff && best_.has();
+    std::int64_t evals = 1;
+    int budget = w.vertex_count() + 1;
+    T gv = dot(n, vs[v]);
+    for (bool check = check_seed;; check = true) {
+      // fl(gv - off) is bit for bit the kernel's face separation value
+      // (height = fl(fl(n.v) - offset)); the comparison is exact.
+      if (cutoff && check && face_below_best<OfA>(f, v, T(gv - off))) {
+        ts_.height_evals += evals;
+        return v << 2;
+      }
+      bool moved = false, tie = false;
+      const int end = w.adj_end(v);
+      for (int i = w.adj_begin(v); i < end; ++i) {
+        const int u = w.adj_vertex(i);
+        const T gu = dot(n, vs[u]);
+        ++evals;
+        const T d = gu - gv;
+        if (!(d < -W)) {
+          if (d > W) continue;
+          const int c = exact_vs<OfA>(f, u, v, d);
+          if (c > 0) continue;
+          if (c == 0) {
+            tie = true;
+            continue;
+          }
+        }
+        v = u;
+        gv = gu;
+        moved = true;
+        break;
+      }
+      if (!moved && !w.triangulated()) {
+        // far vertices of non-triangular faces (see climb_generic)
+        for (int i = w.adj_begin(v); i < end && !moved; ++i) {
+          const int h = w.adj_half_edge(i);
+          for (int g = w.next(w.next(h)); w.next(g) != h; g = w.next(g)) {
+            const int x = w.origin(g);
+            const T gx = dot(n, vs[x]);
+            ++evals;
+            const T d = gx - gv;
+            if (d < -W || (!(d > W) && exact_vs<OfA>(f, x, v, d) < 0)) {
+              v = x;
+              gv = gx;
+              moved = true;
+              break;
+            }
+          }
+        }
+      }
+      if (moved) {
+        ++ts_.climb_steps;
+        if (--budget < 0) {  // inconsistent rounding only
+          ts_.height_evals += evals;
+          return scan<OfA>(f);
+        }
+        continue;
+      }
+      ts_.height_evals += evals;
+      if (!tie) return (v << 2) | kCertified;
+      return (lowest_tied_fast<OfA>(f, v, n, gv, W) << 2) | kCertified | kTie;
     }
   }
 
   // Only reached when rounding made the climb cycle (never for exact
   // decisions): a full support scan.
   template <bool OfA>
-  Support scan(int f) {
+  int scan(int f) {
     ++ts_.support_scans;
     const auto q = OfA ? k_.face_query_a(f) : k_.face_query_b(f);
-    return Support{q.support_vertex, q.separation, true};
+    return (q.support_vertex << 2) | kCertified | kTie;
   }
 
   // The deepest set through v is a face of the other polytope containing v
@@ -226,8 +469,23 @@ class Traversal {
   // the loop of the face that contains it.  Returns its lowest vertex index.
   template <bool OfA>
   int lowest_tied(int f, int v, const Separation<T>& hv) {
-    const GaussMapWalk& w = OfA ? wb_ : wa_;
     auto tied = [&](int u) { return cmp<OfA>(f, u, height<OfA>(f, u), v, hv) == 0; };
+    return lowest_tied_with<OfA>(v, tied);
+  }
+  template <bool OfA>
+  int lowest_tied_fast(int f, int v, const Vec3<T>& n, T gv, T W) {
+    const Vec3<T>* vs = (OfA ? k_.b() : k_.a()).vertices().data();
+    auto tied = [&](int u) {
+      ++ts_.height_evals;
+      const T d = dot(n, vs[u]) - gv;
+      if (d < -W || d > W) return false;
+      return exact_vs<OfA>(f, u, v, d) == 0;
+    };
+    return lowest_tied_with<OfA>(v, tied);
+  }
+  template <bool OfA, class Tied>
+  int lowest_tied_with(int v, Tied&& tied) {
+    const GaussMapWalk& w = OfA ? wb_ : wa_;
     int m = v;
     for (int i = w.adj_begin(v); i < w.adj_end(v); ++i) {
       const int u = w.adj_vertex(i);
@@ -243,31 +501,114 @@ class Traversal {
     return m;
   }
 
-  // Steps 1 and 2: support vertices of all faces of A (OfA) or of B.
+  // ---- step 0: a good first candidate ---------------------------------------
+  // The cutoff prunes a face only against the best so far, so the walk first
+  // takes two faces that are likely near the answer: with d the vector
+  // between the bounding-box centres (A to B), the face of A at A's vertex
+  // furthest along d (its region of the Gauss map contains d) and the face of
+  // B at B's vertex furthest along -d.  Their support vertices also seed the
+  // face walks of step 1 and 2 (the root face of A and of B).
+  //
+  // The choice is a heuristic (any choice gives the same result on exactly
+  // convex inputs), but it is made so that a float shape and its exact image
+  // (convert_from) choose the same faces, under every FMA contraction
+  // setting: coordinates and d are rounded to float, so every product
+  // float * float is exact in double and contraction cannot change it; the
+  // sums are plain double additions; ties keep the lowest index.  Hence
+  // policy::Robust and exact arithmetic still take identical steps.
+  static double key_coord(const T& x) { return static_cast<double>(static_cast<float>(to_double(x))); }
+  static int furthest(const ConvexPolyhedron<T>& p, const double (&d)[3]) {
+    int best = 0;
+    double m = -std::numeric_limits<double>::infinity();
+    const int nv = p.vertex_count();
+    for (int i = 0; i < nv; ++i) {
+      const Vec3<T>& v = p.vertex(i);
+      const double x = key_coord(v[0]) * d[0] + key_coord(v[1]) * d[1] + key_coord(v[2]) * d[2];
+      if (x > m) {
+        m = x;
+        best = i;
+      }
+    }
+    return best;
+  }
+
+  // Returns true on early out.
+  bool start() {
+    const ConvexPolyhedron<T>& a = k_.a();
+    const ConvexPolyhedron<T>& b = k_.b();
+    double d[3], md[3];
+    for (int c = 0; c < 3; ++c) {
+      const double cb = key_coord(b.bounds_min()[c]) + key_coord(b.bounds_max()[c]);
+      const double ca = key_coord(a.bounds_min()[c]) + key_coord(a.bounds_max()[c]);
+      d[c] = static_cast<double>(static_cast<float>(cb - ca));
+      md[c] = -d[c];
+    }
+    const int va = furthest(a, d), vb = furthest(b, md);
+    const int fa = wa_.face(wa_.adj_half_edge(wa_.adj_begin(va)));
+    const int fb = wb_.face(wb_.adj_half_edge(wb_.adj_begin(vb)));
+    ++ts_.support_scans;
+    seed_a_ = k_.face_query_a(fa).support_vertex;
+    int s = climb<true>(fa, seed_a_, false);
+    seed_a_ = s >> 2;
+    if (offer_face<true>(fa, seed_a_)) return true;
+    s = climb<false>(fb, va, true);
+    seed_b_ = s >> 2;
+    if ((s & kCertified) && offer_face<false>(fb, seed_b_)) return true;
+    return false;
+  }
+
+  // Offer face f with its support vertex v; true on early out.
   template <bool OfA>
-  bool faces(FaceScratch& sup, int base) {
+  bool offer_face(int f, int v) {
+    const Feature feat = face_feature<OfA>(f, v);
+    const Separation<T> h = height<OfA>(f, v);
+    offer(h, feat);
+    return opt_.early_out && k_.sign(h, feat) > 0;
+  }
+
+  // Steps 1 and 2: support vertices of all faces of A (OfA) or of B, each
+  // climbed from its parent face's vertex with the cutoff.
+  template <bool OfA>
+  bool faces(FaceScratch& st, int base) {
     const GaussMapWalk& w = OfA ? wa_ : wb_;
     const auto& order = w.face_order();
     const auto& parent = w.face_parent();
     for (std::size_t i = 0; i < order.size(); ++i) {
       const int f = order[i];
-      int seed;
-      if (parent[i] >= 0) {
-        seed = sup[base + parent[i]] >> 1;
-      } else if (OfA) {
-        ++ts_.support_scans;
-        seed = k_.face_query_a(f).support_vertex;
-      } else {
-        seed = 0;
-      }
-      const Support s = climb<OfA>(f, seed);
-      sup[base + f] = (s.vertex << 1) | (s.tie ? 1 : 0);
+      const int seed = parent[i] >= 0 ? st[base + parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
       ++stats_.face_axes;
-      const Feature feat = face_feature<OfA>(f, s.vertex);
-      best_.consider(k_, s.sep, feat);
-      if (opt_.early_out && k_.sign(s.sep, feat) > 0) return true;
+      int s;
+      if constexpr (kFast) {
+        // most faces stop at their seed: decided here, without the climb's call
+        if (face_below_best<OfA>(f, seed)) {
+          st[base + f] = seed << 2;
+          ++ts_.pruned_faces;
+          continue;
+        }
+        s = climb_fast<OfA>(f, seed, true, false);
+      } else {
+        s = climb<OfA>(f, seed, true);
+      }
+      st[base + f] = s;
+      if (!(s & kCertified)) {
+        ++ts_.pruned_faces;
+        continue;
+      }
+      if (offer_face<OfA>(f, s >> 2)) return true;
     }
     return false;
+  }
+
+  // The support state of face f of A, climbed to the support vertex if the
+  // cutoff stopped it.
+  int certify(FaceScratch& st, int f) {
+    int s = st[f];
+    if (!(s & kCertified)) {
+      ++ts_.late_certified;
+      s = climb<true>(f, s >> 2, false);
+      st[f] = s;
+    }
+    return s;
   }
 
   // ---- step 3: arcs of A ---------------------------------------------------
@@ -275,6 +616,17 @@ class Traversal {
     ++ts_.arc_tests;
     ++stats_.edge_pairs;
     return k_.arc_signs(ea, eb);
+  }
+  // == signs(ea, eb).minkowski_face(), through the kernel's early-out form
+  // when it has one (the same decision from the same values).
+  bool crosses(int ea, int eb) {
+    if constexpr (HasMinkowskiFace<K>) {
+      ++ts_.arc_tests;
+      ++stats_.edge_pairs;
+      return k_.minkowski_face(ea, eb);
+    } else {
+      return signs(ea, eb).minkowski_face();
+    }
   }
 
   // A strictly crossing pair: a candidate axis unless the edges are parallel.
@@ -284,7 +636,7 @@ class Traversal {
     ++stats_.minkowski_faces;
     const auto s = k_.edge_separation(ea, eb);
     const Feature feat = Feature::edges(ea, eb);
-    best_.consider(k_, s, feat);
+    offer(s, feat);
     return opt_.early_out && k_.sign(s, feat) > 0;
   }
 
@@ -292,7 +644,7 @@ class Traversal {
   bool fallback(int ea) {
     ++ts_.fallback_arcs;
     for (int eb = 0; eb < wb_.edge_count(); ++eb) {
-      if (signs(ea, eb).minkowski_face() && pair(ea, eb)) return true;
+      if (crosses(ea, eb) && pair(ea, eb)) return true;
     }
     return false;
   }
@@ -305,28 +657,65 @@ class Traversal {
     return wb_.edge_tail(e) == v ? es : -es;
   }
 
-  bool arc(FaceScratch& sup, int ea) {
+  // Arc pruning.  For a unit n on the (short, A not flat) arc of eA from
+  // n0 = n(f0) to n1 = n(f1), A's support along n is eA, so the separation
+  // along n is min_B n.b - n.a_tail <= n.(x - a_tail) for any vertex x of B.
+  // With n = (a n0 + b n1)/|a n0 + b n1| (a, b >= 0), n0.(x - a_tail) =
+  // height(f0, x) and n1.(x - a_tail) = height(f1, x) (a_tail lies on both
+  // faces), and |a n0 + b n1| <= a + b: if both heights are <= m <= 0 then
+  // n.(x - a_tail) <= (a + b) m / |a n0 + b n1| <= m.  So when both heights
+  // are exactly below a best that is <= 0, every Minkowski face on the arc
+  // (its exact separation is the separation along its normal) is exactly
+  // below the best, and the arc is skipped.  x: the vertex stored for f0 or f1.
+  // All three decisions are exact (k.compare, k.sign), so policy::Robust
+  // prunes exactly where exact arithmetic prunes.
+  // A face whose climb was cut off has its stored vertex's height exactly
+  // below an earlier best, hence below the current one: not asked again.
+  bool arc_below_best(int s0, int s1, int f0, int f1) {
+    if (!prune_arcs_ || !best_nonpositive()) return false;
+    auto below = [&](int f, int x) { return face_below_best<true>(f, x); };
+    const int x0 = s0 >> 2, x1 = s1 >> 2;
+    if (!(s0 & kCertified)) {
+      if (!(s1 & kCertified) && x0 == x1) return true;  // both known below, same x
+      if (below(f1, x0)) return true;                     // x = x0
+      return !(s1 & kCertified) && x1 != x0 && below(f0, x1);  // x = x1
+    }
+    if (!(s1 & kCertified)) return below(f0, x1);        // x = x1
+    return below(f0, x0) && below(f1, x0);               // x = x0
+  }
+
+  bool crossing_below_best(int f0, int f1, int v) {
+    return prune_arcs_ && best_nonpositive() && face_below_best<true>(f0, v) && face_below_best<true>(f1, v);
+  }
+
+  bool arc(FaceScratch& st, int ea) {
     const int f0 = wa_.edge_face(ea, 0), f1 = wa_.edge_face(ea, 1);
-    const int s0 = sup[f0], s1 = sup[f1];
+    int s0 = st[f0], s1 = st[f1];
+    if (arc_below_best(s0, s1, f0, f1)) {
+      ++ts_.pruned_arcs;
+      return false;
+    }
+    s0 = certify(st, f0);
+    s1 = certify(st, f1);
     bool forward;
     int v;
-    if (!(s0 & 1)) {
+    if (!(s0 & kTie)) {
       forward = true;
-      v = s0 >> 1;
-    } else if (!(s1 & 1)) {
+      v = s0 >> 2;
+    } else if (!(s1 & kTie)) {
       forward = false;
-      v = s1 >> 1;
+      v = s1 >> 2;
     } else if (!wa_.is_flat()) {
       forward = true;
-      v = lex_start(f0, f1, s0 >> 1);
+      v = lex_start(f0, f1, s0 >> 2);
       if (v < 0) return fallback(ea);
     } else {
       return fallback(ea);
     }
     const int fe = forward ? f1 : f0;
     const int se = forward ? s1 : s0;
-    const int end_vertex = se >> 1;
-    const bool end_tie = (se & 1) != 0;
+    const int end_vertex = se >> 2;
+    const bool end_tie = (se & kTie) != 0;
     Separation<T> end_h;
     bool have_end_h = false;
     int entry = -1;
@@ -347,14 +736,21 @@ class Traversal {
       for (int i = wb_.adj_begin(v); i < wb_.adj_end(v); ++i) {
         const int eb = wb_.adj_edge(i);
         if (eb == entry) continue;
-        if (signs(ea, eb).minkowski_face()) {
+        if (crosses(ea, eb)) {
           exit_edge = eb;
           v = wb_.adj_vertex(i);
           break;
         }
       }
       if (exit_edge >= 0) {
-        if (pair(ea, exit_edge)) return true;
+        // The crossing's normal n lies on the arc and B's support along it is
+        // the crossed edge (both ends): its separation is n.(v - a_tail) for
+        // the vertex v just entered, bounded as in arc_below_best.
+        if (crossing_below_best(f0, f1, v)) {
+          ++ts_.pruned_crossings;
+        } else if (pair(ea, exit_edge)) {
+          return true;
+        }
         entry = exit_edge;
         continue;
       }
@@ -445,7 +841,12 @@ class Traversal {
   const GaussMapWalk& wb_;
   const SatOptions& opt_;
   TraversalStats& ts_;
+  const bool prune_arcs_;
+  int seed_a_ = 0, seed_b_ = 0;  // root seeds of step 1 and 2 (from step 0)
   BestAxis<K> best_;
+  double best_err_ = 0;  // k.error_bound of the best's feature (kBounded)
+  double cut_a_ = 0, cut_b_ = 0;  // compare_width of a face of A / B against the best
+  int best_sign_ = 2;    // k.sign of the best, 2 = not known yet
   SatStats stats_;
 };
 

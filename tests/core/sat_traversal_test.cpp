@@ -105,6 +105,12 @@ TEST_CASE("traversal agrees with gauss map and brute force on random hull pairs 
     CHECK(ts.support_scans == 1);
     fallbacks += ts.fallback_arcs;
     corners += ts.corner_passes;
+    // PlainKernel<double> itself takes the float fast path (climbs on
+    // fl(n.v), no Separation per neighbour); Counting<> above the generic one.
+    sat::TraversalStats fs;
+    const auto f = sat::traversal_with(pk, wa, wb, {}, &fs);
+    check_same(f, sat::gauss_map(a, b), "gauss_map (fast path)");
+    CHECK(fs.support_scans == 1);
   }
   // Random points are in general position: the walk never needs a fallback.
   CHECK(fallbacks == 0);
@@ -136,6 +142,41 @@ TEST_CASE("traversal makes far fewer kernel calls than gauss map on sphere hulls
               << " support scans, " << g_arcs / reps << " arc tests");
     CHECK(t_scans == reps);
     CHECK(t_arcs * 4 < g_arcs);
+  }
+}
+
+TEST_CASE("traversal prunes faces and arcs below the best, with the same result", "[traversal]") {
+  // Overlapping sphere hulls: most faces' climbs stop at their seed (a vertex
+  // already below the best), most arcs are skipped by the arc bound, and the
+  // answer is still the Gauss map's.
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> off(-0.6, 0.6);
+  for (int n : {16, 64, 96}) {  // (the test hull builder is O(n^4))
+    std::int64_t faces = 0, edges = 0;
+    sat::TraversalStats sum;
+    for (int r = 0; r < 6; ++r) {
+      const auto a = test::sphere_hull(rng, n);
+      const auto b = test::moved(test::sphere_hull(rng, n), test::random_rotation(rng),
+                                 V3(off(rng), off(rng), off(rng)));
+      const GaussMapWalk wa(a), wb(b);
+      PlainKernel<double> pk(a, b);
+      sat::TraversalStats ts;
+      const auto t = sat::traversal_with(pk, wa, wb, {}, &ts);
+      check_same(t, sat::gauss_map(a, b), "gauss_map");
+      faces += a.face_count() + b.face_count();
+      edges += a.edge_count();
+      sum.pruned_faces += ts.pruned_faces;
+      sum.pruned_arcs += ts.pruned_arcs;
+      sum.height_evals += ts.height_evals;
+      sum.late_certified += ts.late_certified;
+      CHECK(ts.support_scans == 1);
+    }
+    WARN("N=" << n << ": pruned faces " << sum.pruned_faces << " of " << faces << ", pruned arcs "
+              << sum.pruned_arcs << " of " << edges << ", late climbs " << sum.late_certified
+              << ", O(1) heights per face " << double(sum.height_evals) / double(faces));
+    CHECK(sum.pruned_faces * 10 > faces * 7);
+    CHECK(sum.pruned_arcs * 2 > edges);
+    CHECK(sum.height_evals < 6 * faces);
   }
 }
 

@@ -13,6 +13,7 @@
 #include <sepax/robust/number_types.hpp>
 #include <sepax/sat_brute_force.hpp>
 #include <sepax/sat_gauss_map.hpp>
+#include <sepax/sat_traversal.hpp>
 #include <sepax/shapes.hpp>
 
 #if __has_include(<sepax/robust/robust_kernel.hpp>)
@@ -124,11 +125,25 @@ void run(const std::string& id, const P& a, const P& b) {
   const auto qb = ConvexPolyhedron<mpq_class>::convert_from(b);
   const auto e_gm = sat::gauss_map(qa, qb);
   const auto e_bf = sat::brute_force(qa, qb);
-  std::printf("E %s gm %s | bf %s\n", id.c_str(), decision(e_gm).c_str(), decision(e_bf).c_str());
+  // The traversal's path (start faces, cutoffs, pruning) must not depend on
+  // FMA either: its walk counters are printed with its decision.
+  const GaussMapWalk wa(a), wb(b);
+  auto walk = [&](auto& k) {
+    sat::TraversalStats ts;
+    const auto r = sat::traversal_with(k, wa, wb, {}, &ts);
+    return decision(r) + " steps " + std::to_string(ts.climb_steps) + "/" + std::to_string(ts.pruned_faces) +
+           "/" + std::to_string(ts.pruned_arcs) + "/" + std::to_string(ts.arc_tests) + "/" +
+           std::to_string(ts.late_certified);
+  };
+  PlainKernel<mpq_class> ek(qa, qb);
+  std::printf("E %s gm %s | bf %s | tr %s\n", id.c_str(), decision(e_gm).c_str(), decision(e_bf).c_str(),
+              walk(ek).c_str());
 #ifdef SEPAX_FMA_HAVE_ROBUST
   const auto r_gm = sat::gauss_map<policy::Robust>(a, b);
   const auto r_bf = sat::brute_force<policy::Robust>(a, b);
-  std::printf("R %s gm %s | bf %s\n", id.c_str(), decision(r_gm).c_str(), decision(r_bf).c_str());
+  RobustKernel<double> rk(a, b);
+  std::printf("R %s gm %s | bf %s | tr %s\n", id.c_str(), decision(r_gm).c_str(), decision(r_bf).c_str(),
+              walk(rk).c_str());
 #endif
   const auto d_gm = sat::gauss_map(a, b);
   const auto d_bf = sat::brute_force(a, b);

@@ -145,6 +145,8 @@ class RobustKernel {
     arc_err_b_ = (db_n + gamma(5)) * da * kMargin + 2 * kEta;
     arc_err_a_t_ = round_up(arc_err_a_);
     arc_err_b_t_ = round_up(arc_err_b_);
+    support_err_a_t_ = round_up(support_err_a_);
+    support_err_b_t_ = round_up(support_err_b_);
     edge_abs_ = gamma(8) * (d_ + s3 * (ma + mb)) * kMargin + 8 * kEta;
     proj_abs_a_ = 2 * gamma(3) * s3 * ma * kMargin + 4 * kEta;
     proj_abs_b_ = 2 * gamma(3) * s3 * mb * kMargin + 4 * kEta;
@@ -184,6 +186,51 @@ class RobustKernel {
   }
   Separation<T> face_separation_b(int f, int va) const {
     return snap(height(b_.plane(f), a_.vertex(va)).num, face_err_b_, Feature::face_b(va, f));
+  }
+
+  // ---- the traversal's filtered support comparisons (optional members) ----
+  // Two vertices u, v of B below face f of A are compared through
+  // g = fl(n_f . p) (the support scan's values): |(g_u - g_v) - (N/|N|).(u - v)|
+  // <= W_A (support_err_a_, "(support)" in the header).  support_filter_a() is
+  // W_A rounded up to T, so a T comparison is enough: rounding is monotone and
+  // -W is a T value, so fl(g_u - g_v) < -W implies g_u - g_v < -W (exactly),
+  // hence N.(u - v) < 0; likewise > W.  FMA contraction inside the dot products
+  // only removes roundings (γ_3 still bounds them); the subtraction has no
+  // product to contract with.  Within the filter (or NaN) the caller asks
+  // support_sign_*, the exact sign.
+
+  /// W_A rounded up to T: bound on the error of fl(n_f.u) - fl(n_f.v), f a face
+  /// of A, u, v vertices of B.
+  T support_filter_a() const { return support_err_a_t_; }
+  /// W_B rounded up to T (faces of B, vertices of A).
+  T support_filter_b() const { return support_err_b_t_; }
+  /// Exact sign of N_f . (b_u - b_v), N_f the plane triple's cross product of
+  /// face f of A: < 0 when vertex u of B is strictly deeper below f than v.
+  int support_sign_a(int f, int u, int v) const { return face_pair_sign(a_, f, b_.vertex(v), b_.vertex(u)); }
+  /// Exact sign of N_f . (a_u - a_v), f a face of B.
+  int support_sign_b(int f, int u, int v) const { return face_pair_sign(b_, f, a_.vertex(v), a_.vertex(u)); }
+
+  /// The bound on |value - exact value| of a separation this kernel returns
+  /// for feature f (face_separation_*, face_query_*, edge_separation): the
+  /// bound compare() and sign() use.
+  double error_bound(const Feature& f) const { return value_error(f); }
+
+  /// compare() with both error bounds given (error_bound() of fx and fy, e.g.
+  /// kept by the caller for its current best): the same filter and the same
+  /// exact fallback, hence the same answer.
+  /// The filter width of compare_bounded() for error bounds ex and ey: when
+  /// x.num - y.num (in double) is beyond it, the exact comparison has that
+  /// sign.
+  double compare_width(double ex, double ey) const { return (ex + ey) * kMargin; }
+
+  int compare_bounded(const Separation<T>& x, const Feature& fx, double ex, const Separation<T>& y,
+                      const Feature& fy, double ey) const {
+    if (fx == fy) return 0;
+    const double bound = compare_width(ex, ey);
+    const double d = static_cast<double>(x.num) - static_cast<double>(y.num);
+    if (d > bound) return 1;
+    if (d < -bound) return -1;
+    return compare_exact(fx, fy);
   }
 
   ArcSigns arc_signs(int ea, int eb) const {
@@ -427,6 +474,35 @@ class RobustKernel {
   }
 
   static double normal_error(const P& p) {
+    if constexpr (std::is_same_v<T, float>) {
+      // The same maximum of r2 = |ẽ1|^2 |ẽ2|^2 / |Ñ|^2 without a division or
+      // a finiteness test per face (this runs for every face of both shapes
+      // on every query): the maximum fraction num/den is tracked by cross
+      // multiplication.  For float inputs every factor is a double square of
+      // a float (<= 3 * 2^256), so num * den < 2^1024 cannot overflow; an
+      // infinite or NaN float difference or cross product, or a tiny |Ñ|,
+      // sets `bad` (then there is no bound: infinity, as before).  The one
+      // division at the end rounds once (relative 2^-53, inside kMargin).
+      double wnum = 0, wden = 1;
+      bool bad = false;
+      const int nf = p.face_count();
+      for (int f = 0; f < nf; ++f) {
+        const auto& t = p.face(f).plane_vertices;
+        const Vec3<T>& v0 = p.vertex(t[0]);
+        const Vec3<T> e1(p.vertex(t[1]) - v0);
+        const Vec3<T> e2(p.vertex(t[2]) - v0);
+        const Vec3<T> c = cross(e1, e2);
+        const double nc2 = squared_norm_d(c);
+        const double num = squared_norm_d(e1) * squared_norm_d(e2);
+        bad |= !(nc2 > kTinySquared && nc2 <= std::numeric_limits<double>::max() &&
+                 num <= std::numeric_limits<double>::max());
+        const bool larger = num * wden > wnum * nc2;
+        wnum = larger ? num : wnum;
+        wden = larger ? nc2 : wden;
+      }
+      if (bad) return kNoBound;
+      return unit_error_from_ratio(std::sqrt(wnum / wden) * kMargin);
+    }
     double worst = 0;
     for (int f = 0; f < p.face_count(); ++f) {
       const auto& t = p.face(f).plane_vertices;
@@ -509,6 +585,13 @@ class RobustKernel {
   SEPAX_ROBUST_COLD int compare_exact(const Feature& fx, const Feature& fy) const {
     ++fallbacks_;
     return robust::compare_exact(exact_separation(fx), exact_separation(fy));
+  }
+
+  // sign of N_f . (q1 - q0), N_f the plane triple's cross product of face f of p.
+  int face_pair_sign(const P& p, int f, const Vec3<T>& q0, const Vec3<T>& q1) const {
+    const auto& t = p.face(f).plane_vertices;
+    const Vec3<T>& v0 = p.vertex(t[0]);
+    return robust::orient_sign(v0, p.vertex(t[1]), v0, p.vertex(t[2]), q0, q1, &fallbacks_);
   }
 
   // sign of N_f . (p - v_i), N_f the plane triple's cross product.
@@ -874,6 +957,7 @@ class RobustKernel {
   double support_err_a_ = 0, support_err_b_ = 0;
   double arc_err_a_ = 0, arc_err_b_ = 0;
   T arc_err_a_t_ = 0, arc_err_b_t_ = 0;
+  T support_err_a_t_ = 0, support_err_b_t_ = 0;
   double edge_abs_ = 0;
   double proj_abs_a_ = 0, proj_abs_b_ = 0;
   double centroid_err_a_ = 0, centroid_err_b_ = 0;
