@@ -162,22 +162,23 @@ class PlainKernel {
  private:
   static constexpr int kScalarSupportMax = 4;  // measured: the lanes win from 8 vertices on
   static FaceQuery<T> face_query(const ConvexPolyhedron<T>& p, int f, const ConvexPolyhedron<T>& q,
-                                 [[maybe_unused]] bool lanes) {
+                                 bool lanes) {
     const Plane<T>& pl = p.plane(f);
-    return support_below(pl.normal, pl.offset, q);
+    return support_below(pl.normal, pl.offset, q, lanes);
   }
 
   // Lowest vertex of q along n (first index among equal heights), and its
-  // height n.v - offset.
-  static FaceQuery<T> support_below(const Vec3<T>& n, const T& offset, const ConvexPolyhedron<T>& q) {
+  // height n.v - offset.  lanes: q's lane arrays may be used (lanes_bounded).
+  static FaceQuery<T> support_below(const Vec3<T>& n, const T& offset, const ConvexPolyhedron<T>& q,
+                                    [[maybe_unused]] bool lanes) {
     const auto& vs = q.vertices();
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
       if (lanes && q.vertex_count() > kScalarSupportMax) {
         // The scalar loop below, a few vertices at a time (simd_lanes.hpp):
         // the same n.v values, the same lowest-index argmin.  (For a handful
         // of vertices the scalar loop is cheaper than merging the lanes.)
-        const simd::Support<T> s = simd::support_scan<false>(q, pl.normal);
-        return FaceQuery<T>{Separation<T>{T(s.min - pl.offset), norm2_of(pl.normal)}, s.index};
+        const simd::Support<T> s = simd::support_scan<false>(q, n);
+        return FaceQuery<T>{Separation<T>{T(s.min - offset), norm2_of(n)}, s.index};
       }
     }
     int best = 0;
@@ -198,7 +199,7 @@ class PlainKernel {
 
   static FaceQuery<T> side_query(const ConvexPolyhedron<T>& p, int e, const ConvexPolyhedron<T>& q) {
     const Vec3<T> u = side_normal(p, e);
-    return support_below(u, dot(u, p.vertex(p.edge_tail(e))), q);
+    return support_below(u, dot(u, p.vertex(p.edge_tail(e))), q, false);
   }
 
   static Separation<T> height(const Plane<T>& pl, const Vec3<T>& p) {
