@@ -586,6 +586,27 @@ class ConvexPolyhedron {
     }
   }
 
+  // Float and double: |N| / L^2 for the plane triple's N = (v_j - v_i) x
+  // (v_k - v_i) and L its longest side, i.e. the triangle's height over its
+  // longest side (computed on the sides scaled by a power of two, so at any
+  // scale).  Rounding alone makes |N| up to about 14u L^2 for collinear
+  // points, so a face whose aspect is not above Tolerances::sliver has no
+  // meaningful normal.
+  double triple_aspect(int f) const {
+    const auto& t = face(f).plane_vertices;
+    Vec3<T> u(vertex(t[1]) - vertex(t[0]));
+    Vec3<T> w(vertex(t[2]) - vertex(t[0]));
+    const T m = detail::max_abs2(u, w);
+    if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return 0;
+    const int e = detail::pow2_exponent(m);
+    u = detail::scale_pow2(u, e);
+    w = detail::scale_pow2(w, e);
+    const double n = std::sqrt(to_double(squared_norm(cross(u, w))));
+    const double l2 = std::max({to_double(squared_norm(u)), to_double(squared_norm(w)),
+                                to_double(squared_norm(Vec3<T>(w - u)))});
+    return n / l2;
+  }
+
   void validate_geometry() {
     if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
     if constexpr (!number_traits<T>::is_exact) check_range();
@@ -594,9 +615,22 @@ class ConvexPolyhedron {
     // faces: non-zero area, planar, convex loops
     for (int f = 0; f < face_count(); ++f) {
       const auto& pl = plane(f);
-      if (is_zero(pl.normal) || !(squared_norm(pl.normal) > T(0))) {
-        fail(ErrorCode::DegenerateFace, "face " + std::to_string(f) +
-                                            " has zero area (its vertices are collinear)");
+      if constexpr (number_traits<T>::is_exact) {
+        if (is_zero(pl.normal)) {
+          fail(ErrorCode::DegenerateFace, "face " + std::to_string(f) +
+                                              " has zero area (its vertices are collinear)");
+        }
+      } else {
+        const double aspect = triple_aspect(f);
+        if (!(aspect > Tolerances<T>::sliver)) {
+          const auto& t = face(f).plane_vertices;
+          fail(ErrorCode::DegenerateFace,
+               "face " + std::to_string(f) + " has zero area up to rounding: its widest triangle (vertices " +
+                   std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+                   ") is only " + num_str(aspect) +
+                   " times as high as its longest side (Tolerances::sliver = " +
+                   num_str(Tolerances<T>::sliver) + "); its normal would be rounding noise");
+        }
       }
       const auto loop = face_vertices(f);
       const int n = static_cast<int>(loop.size());

@@ -396,3 +396,48 @@ TEMPLATE_TEST_CASE("scale: out-of-range input gets BadScale naming the problem",
   CHECK(contains(f.message, "too small"));
   CHECK(!contains(f.message, "zero area"));
 }
+
+// ---- sliver faces: zero area up to rounding -----------------------------------
+
+TEMPLATE_TEST_CASE("validation: a face that is zero-area only up to rounding is refused",
+                   "[polyhedron][errors]", float, double) {
+  using T = TestType;
+  // Three points on the line t*(1/3, 1/7, 1/11), rounded to T: collinear but
+  // for rounding, so (b - a) x (c - a) is not zero -- the old check (normal
+  // != 0) accepted this triangle with a normal made of rounding noise.
+  const Vec3<T> a(T(0), T(0), T(0));
+  const Vec3<T> b(T(1) / T(3), T(1) / T(7), T(1) / T(11));
+  const Vec3<T> c(T(5) / T(3), T(5) / T(7), T(5) / T(11));
+  REQUIRE(!is_zero(cross(Vec3<T>(b - a), Vec3<T>(c - a))));
+  auto r = failure<T>({a, b, c}, {{0, 1, 2}, {0, 2, 1}});
+  CHECK(r.code == ErrorCode::DegenerateFace);
+  CHECK(contains(r.message, "face 0"));
+  CHECK(contains(r.message, "zero area up to rounding"));
+  // the same at scale 1e20 (relative to the face, not absolute)
+  const T k(1e20f);
+  r = failure<T>({Vec3<T>(a * k), Vec3<T>(b * k), Vec3<T>(c * k)}, {{0, 1, 2}, {0, 2, 1}});
+  CHECK(r.code == ErrorCode::DegenerateFace);
+
+  // a sliver triangle, height sliver/4 over its longest side, vs a thin but
+  // valid one (4 * sliver), flat and as the base of a tetrahedron
+  const double sl = Tolerances<T>::sliver;
+  for (const double h : {sl / 4, sl * 4}) {
+    INFO("height " << h);
+    const std::vector<Vec3<T>> tri{Vec3<T>(T(0), T(0), T(0)), Vec3<T>(T(1), T(0), T(0)),
+                                   Vec3<T>(T(0.5), static_cast<T>(h), T(0))};
+    const auto flat = failure<T>(tri, {{0, 1, 2}, {0, 2, 1}});
+    auto tet_v = tri;
+    tet_v.emplace_back(T(0.5), T(0.3), T(1));
+    const auto solid = failure<T>(tet_v, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}});
+    if (h < sl) {
+      CHECK(flat.code == ErrorCode::DegenerateFace);
+      CHECK(contains(flat.message, "face 0"));
+      CHECK(solid.code == ErrorCode::DegenerateFace);
+      CHECK(contains(solid.message, "face 0"));
+      CHECK(contains(solid.message, "sliver"));
+    } else {
+      CHECK(flat.message == "no error");
+      CHECK(solid.message == "no error");
+    }
+  }
+}
