@@ -77,6 +77,31 @@ struct Plane {
   T offset;        // normal . x == offset on the plane
 };
 
+namespace detail {
+
+/// Float and double: |N| / L^2 for N = (b - a) x (c - a) and L the longest
+/// side of triangle abc, i.e. its height over its longest side (computed on the
+/// sides scaled by a power of two, so at any scale; 0 for a zero or
+/// non-finite side).  Rounding alone gives collinear points an aspect up to
+/// about 14u; ConvexPolyhedron refuses faces whose plane triangle has an
+/// aspect not above Tolerances::sliver (and the hull builder checks 2x that).
+template <class T>
+double triangle_aspect(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  static_assert(std::is_floating_point_v<T>);
+  Vec3<T> u(b - a), w(c - a);
+  const T m = max_abs2(u, w);
+  if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return 0;
+  const int e = pow2_exponent(m);
+  u = scale_pow2(u, e);
+  w = scale_pow2(w, e);
+  const double n = std::sqrt(static_cast<double>(squared_norm(cross(u, w))));
+  const double l2 = static_cast<double>(
+      std::max({squared_norm(u), squared_norm(w), squared_norm(Vec3<T>(w - u))}));
+  return n / l2;
+}
+
+}  // namespace detail
+
 /// Plane through three points, normalised when T normalises.
 ///
 /// For float and double the unit normal is scale-safe (scaled_cross in
@@ -586,25 +611,12 @@ class ConvexPolyhedron {
     }
   }
 
-  // Float and double: |N| / L^2 for the plane triple's N = (v_j - v_i) x
-  // (v_k - v_i) and L its longest side, i.e. the triangle's height over its
-  // longest side (computed on the sides scaled by a power of two, so at any
-  // scale).  Rounding alone makes |N| up to about 14u L^2 for collinear
-  // points, so a face whose aspect is not above Tolerances::sliver has no
-  // meaningful normal.
+  // Float and double: the plane triangle's height over its longest side
+  // (detail::triangle_aspect); not above Tolerances::sliver means zero area up
+  // to rounding.
   double triple_aspect(int f) const {
     const auto& t = face(f).plane_vertices;
-    Vec3<T> u(vertex(t[1]) - vertex(t[0]));
-    Vec3<T> w(vertex(t[2]) - vertex(t[0]));
-    const T m = detail::max_abs2(u, w);
-    if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return 0;
-    const int e = detail::pow2_exponent(m);
-    u = detail::scale_pow2(u, e);
-    w = detail::scale_pow2(w, e);
-    const double n = std::sqrt(to_double(squared_norm(cross(u, w))));
-    const double l2 = std::max({to_double(squared_norm(u)), to_double(squared_norm(w)),
-                                to_double(squared_norm(Vec3<T>(w - u)))});
-    return n / l2;
+    return detail::triangle_aspect(vertex(t[0]), vertex(t[1]), vertex(t[2]));
   }
 
   void validate_geometry() {
