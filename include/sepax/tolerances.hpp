@@ -54,6 +54,19 @@
 // exceed planarity*extent/(16u) (about 40 extents from the origin for float,
 // 2e5 for double), and the builder reports BadScale for such inputs when
 // validation would be at risk.
+//
+// Scale range (float, double).  Since every tolerance is relative, the
+// absolute scale does not matter within the range where the arithmetic is
+// sound: ConvexPolyhedron (planes, normals, extent, centroid) and the plain
+// SAT kernel (edge axes, parallel test) rescale by powers of two where |N|^2
+// would overflow or underflow, and validation accepts
+//   |coordinate| <= max(T)/16          (sums and differences stay finite)
+//   coplanar/4 * extent >= min(T)      (the smallest tolerance is a normal
+//                                       number: extent >= ~9e-298 for double,
+//                                       ~5e-33 for float)
+// refusing anything else with BadScale.  (The hull builder still refuses an
+// extent whose cube overflows double or whose square overflows T: about
+// 2.8e102 for double, 9e18 for float.)
 #pragma once
 
 #include "number_traits.hpp"
