@@ -900,6 +900,10 @@ class Builder {
       planes.push_back(pl);
       auto h = [&](int v) { return T(dot(pl.normal, X(v)) - pl.offset); };
       bool ok = !is_zero(pl.normal);
+      if constexpr (!exact) {  // (validation: aspect > sliver; here with a factor 2 margin)
+        ok = ok && detail::triangle_aspect(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]) >
+                       2 * Tolerances<T>::sliver;
+      }
       for (int v : l) ok = ok && abs_of(h(v)) <= plan_tol;
       for (int v : used) ok = ok && h(v) <= conv_tol;
       // corners as validation sees them: no reflex turn about this normal

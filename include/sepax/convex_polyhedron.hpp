@@ -42,6 +42,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <span>
 #include <sstream>
@@ -76,10 +77,45 @@ struct Plane {
   T offset;        // normal . x == offset on the plane
 };
 
+namespace detail {
+
+/// Float and double: |N| / L^2 for N = (b - a) x (c - a) and L the longest
+/// side of triangle abc, i.e. its height over its longest side (computed on the
+/// sides scaled by a power of two, so at any scale; 0 for a zero or
+/// non-finite side).  Rounding alone gives collinear points an aspect up to
+/// about 14u; ConvexPolyhedron refuses faces whose plane triangle has an
+/// aspect not above Tolerances::sliver (and the hull builder checks 2x that).
+template <class T>
+double triangle_aspect(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  static_assert(std::is_floating_point_v<T>);
+  Vec3<T> u(b - a), w(c - a);
+  const T m = max_abs2(u, w);
+  if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return 0;
+  const int e = pow2_exponent(m);
+  u = scale_pow2(u, e);
+  w = scale_pow2(w, e);
+  const double n = std::sqrt(static_cast<double>(squared_norm(cross(u, w))));
+  const double l2 = static_cast<double>(
+      std::max({squared_norm(u), squared_norm(w), squared_norm(Vec3<T>(w - u))}));
+  return n / l2;
+}
+
+}  // namespace detail
+
 /// Plane through three points, normalised when T normalises.
+///
+/// For float and double the unit normal is scale-safe (scaled_cross in
+/// vec3.hpp): when |N|^2 of N = (b - a) x (c - a) would overflow or underflow
+/// (coordinates beyond about 1e+-77 for double, 1e+-9 for float), N is taken
+/// from b - a and c - a scaled by a power of two.  Wherever the unscaled
+/// formula neither overflows nor underflows the normal is bit for bit the one
+/// it gives -- the same planes as before, and the robust kernel's error bound
+/// on them (robust_kernel.hpp, normal_error) still holds.  If b - a or c - a
+/// themselves overflow, the normal is not finite; ConvexPolyhedron reports
+/// that as BadScale.
 template <Number T>
 inline Plane<T> plane_through(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
-  Vec3<T> n = cross(Vec3<T>(b - a), Vec3<T>(c - a));
+  Vec3<T> n = scaled_cross(Vec3<T>(b - a), Vec3<T>(c - a));
   if constexpr (number_traits<T>::normalizes) {
     const T len = number_traits<T>::sqrt(squared_norm(n));
     if (len > T(0)) n = Vec3<T>(n[0] / len, n[1] / len, n[2] / len);
@@ -416,16 +452,35 @@ class ConvexPolyhedron {
     }
   }
 
+  // For float T the areas are compared on the face's vertices relative to
+  // loop[0], scaled by one power of two per face (largest |component| in
+  // [1, 2)): the squared areas then neither overflow nor underflow at any
+  // scale, and since the scaling is exact and commutes with rounding, every
+  // comparison -- hence the chosen triple -- is the same as unscaled wherever
+  // the unscaled squares stayed in range.
   void choose_plane_triples() {
     for (int f = 0; f < face_count(); ++f) {
       const auto loop = face_vertices(f);
       const int n = static_cast<int>(loop.size());
       std::array<int, 3> best{loop[0], loop[1], loop[2]};
       if (n <= 16) {
+        std::vector<Vec3<T>> rel;  // loop vertices relative to loop[0] (scaled for float)
+        rel.reserve(static_cast<std::size_t>(n));
+        for (int i = 0; i < n; ++i) rel.push_back(Vec3<T>(vertex(loop[i]) - vertex(loop[0])));
+        if constexpr (std::is_floating_point_v<T>) {
+          T m(0);
+          for (const auto& r : rel) m = std::max(m, detail::max_abs2(r, r));
+          if (m > T(0) && m <= std::numeric_limits<T>::max()) {
+            const int e = detail::pow2_exponent(m);
+            for (auto& r : rel) r = detail::scale_pow2(r, e);
+          }
+        }
+        const Vec3<T> origin(T(0), T(0), T(0));
         T best_area(-1);
         for (int j = 1; j + 1 < n; ++j) {
           for (int k = j + 1; k < n; ++k) {
-            const T a = triangle_area2(vertex(loop[0]), vertex(loop[j]), vertex(loop[k]));
+            const T a = triangle_area2(origin, rel[static_cast<std::size_t>(j)],
+                                       rel[static_cast<std::size_t>(k)]);
             if (a > best_area) {
               best_area = a;
               best = {loop[0], loop[j], loop[k]};
@@ -486,12 +541,37 @@ class ConvexPolyhedron {
     if (!vertices_.empty()) centroid_ = Vec3<T>(sum[0] / n, sum[1] / n, sum[2] / n);
     double d2 = 0;
     max_abs_ = 0;
+    std::array<double, 3> w{};
     for (int c = 0; c < 3; ++c) {
-      const double w = to_double(T(bmax_[c] - bmin_[c]));
-      d2 += w * w;
+      w[static_cast<std::size_t>(c)] = to_double(T(bmax_[c] - bmin_[c]));
+      d2 += w[static_cast<std::size_t>(c)] * w[static_cast<std::size_t>(c)];
       max_abs_ = std::max({max_abs_, std::abs(to_double(bmin_[c])), std::abs(to_double(bmax_[c]))});
     }
     extent_ = std::sqrt(d2);
+    if (!detail::safe_squared_norm(d2)) {
+      // Widths beyond about 1e+-154 (double T): the same diagonal through
+      // widths scaled by a power of two (bit for bit the unscaled value where
+      // that does not overflow or underflow).  Stays infinite if a width is.
+      const double m = std::max({w[0], w[1], w[2]});
+      if (m > 0 && m <= std::numeric_limits<double>::max()) {
+        const int e = std::ilogb(m);
+        double s2 = 0;
+        for (const double wc : w) s2 += std::ldexp(wc, -e) * std::ldexp(wc, -e);
+        extent_ = std::ldexp(std::sqrt(s2), e);
+      }
+    }
+    if constexpr (std::is_floating_point_v<T>) {
+      // The vertex sum overflows long before the coordinates do (n vertices
+      // near max/n): then the centroid is the sum of the vertices scaled by a
+      // power of two, divided by n and scaled back -- bit for bit the plain
+      // formula's value wherever that one does not overflow.
+      if (!vertices_.empty() && !(sum.cwiseAbs().maxCoeff() <= std::numeric_limits<T>::max())) {
+        const int e = detail::pow2_exponent(static_cast<T>(max_abs_));
+        Vec3<T> s(T(0), T(0), T(0));
+        for (const auto& v : vertices_) s = Vec3<T>(s + detail::scale_pow2(v, e));
+        centroid_ = detail::scale_pow2(Vec3<T>(s[0] / n, s[1] / n, s[2] / n), -e);
+      }
+    }
   }
 
   void compute_lanes() {
@@ -545,25 +625,82 @@ class ConvexPolyhedron {
     }
   }
 
-  void validate_geometry() {
-    if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
-    if constexpr (!number_traits<T>::is_exact) {
-      // Squares of coordinates must stay finite (plane and cross-product terms).
-      if (!std::isfinite(max_abs_ * max_abs_ * max_abs_ * 8.0) ||
-          !number_traits<T>::is_finite(static_cast<T>(max_abs_ * max_abs_ * 4.0))) {
-        fail(ErrorCode::BadScale, "coordinates up to " + std::to_string(max_abs_) +
-                                      " overflow " + std::string(number_traits<T>::name) +
-                                      " in plane computations");
+  static std::string num_str(double x) {
+    std::ostringstream s;
+    s.precision(3);
+    s << x;
+    return s.str();
+  }
+
+  // Float and double work at any scale (planes, normals, extent and centroid
+  // are computed scale-safely, see plane_through and scaled_cross) within
+  //   |coordinate| <= max(T)/16   (so that sums and differences of a few
+  //                               coordinates -- edges, plane offsets, the
+  //                               SATs' projections and distances between two
+  //                               such shapes -- stay finite), and
+  //   coplanar/4 * extent >= min(T), the smallest normal number (so that the
+  //                               relative tolerances are not subnormal, where
+  //                               rounding is no longer small against them).
+  // Out of range is refused here with BadScale, naming the quantity that does
+  // not fit, before any geometric check can misreport it.
+  void check_range() {
+    const std::string tname(number_traits<T>::name);
+    const double limit = static_cast<double>(std::numeric_limits<T>::max()) / 16;
+    if (!(max_abs_ <= limit)) {
+      fail(ErrorCode::BadScale, "coordinates up to " + num_str(max_abs_) +
+                                    " are out of range for " + tname + ": sepax needs |coordinate| <= " +
+                                    num_str(limit) +
+                                    " (max/16) so that edges, plane offsets and projections stay finite");
+    }
+    const double smallest_tol = Tolerances<T>::coplanar / 4 * extent_;
+    if (!(smallest_tol >= static_cast<double>(std::numeric_limits<T>::min()))) {
+      fail(ErrorCode::BadScale, "extent " + num_str(extent_) + " is too small for " + tname +
+                                    ": the validation tolerances (relative to the extent) fall "
+                                    "into its subnormal range");
+    }
+    for (int f = 0; f < face_count(); ++f) {  // (cannot fail within the range above)
+      const auto& pl = plane(f);
+      bool finite = number_traits<T>::is_finite(pl.offset);
+      for (int c = 0; c < 3; ++c) finite = finite && number_traits<T>::is_finite(pl.normal[c]);
+      if (!finite) {
+        fail(ErrorCode::BadScale, "face " + std::to_string(f) + ": its plane overflows " + tname +
+                                      "; coordinates reach " + num_str(max_abs_));
       }
     }
+  }
+
+  // Float and double: the plane triangle's height over its longest side
+  // (detail::triangle_aspect); not above Tolerances::sliver means zero area up
+  // to rounding.
+  double triple_aspect(int f) const {
+    const auto& t = face(f).plane_vertices;
+    return detail::triangle_aspect(vertex(t[0]), vertex(t[1]), vertex(t[2]));
+  }
+
+  void validate_geometry() {
+    if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
+    if constexpr (!number_traits<T>::is_exact) check_range();
     const T plan_tol = height_tolerance(Tolerances<T>::planarity);
     const T conv_tol = height_tolerance(Tolerances<T>::convexity);
     // faces: non-zero area, planar, convex loops
     for (int f = 0; f < face_count(); ++f) {
       const auto& pl = plane(f);
-      if (is_zero(pl.normal) || !(squared_norm(pl.normal) > T(0))) {
-        fail(ErrorCode::DegenerateFace, "face " + std::to_string(f) +
-                                            " has zero area (its vertices are collinear)");
+      if constexpr (number_traits<T>::is_exact) {
+        if (is_zero(pl.normal)) {
+          fail(ErrorCode::DegenerateFace, "face " + std::to_string(f) +
+                                              " has zero area (its vertices are collinear)");
+        }
+      } else {
+        const double aspect = triple_aspect(f);
+        if (!(aspect > Tolerances<T>::sliver)) {
+          const auto& t = face(f).plane_vertices;
+          fail(ErrorCode::DegenerateFace,
+               "face " + std::to_string(f) + " has zero area up to rounding: its widest triangle (vertices " +
+                   std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+                   ") is only " + num_str(aspect) +
+                   " times as high as its longest side (Tolerances::sliver = " +
+                   num_str(Tolerances<T>::sliver) + "); its normal would be rounding noise");
+        }
       }
       const auto loop = face_vertices(f);
       const int n = static_cast<int>(loop.size());
@@ -579,16 +716,28 @@ class ConvexPolyhedron {
         const Vec3<T>& a = vertex(loop[static_cast<std::size_t>((i + n - 1) % n)]);
         const Vec3<T>& b = vertex(loop[static_cast<std::size_t>(i)]);
         const Vec3<T>& c = vertex(loop[static_cast<std::size_t>((i + 1) % n)]);
-        const Vec3<T> ab(b - a);
-        const Vec3<T> bc(c - b);
-        const T turn = dot(pl.normal, cross(ab, bc));
+        Vec3<T> ab(b - a);
+        Vec3<T> bc(c - b);
         bool bad;
         if constexpr (number_traits<T>::is_exact) {
-          bad = !(turn > T(0));
+          bad = !(dot(pl.normal, cross(ab, bc)) > T(0));
         } else {
           // turn/|ab| is the distance of c from the line a-b (times |n| = 1).
+          // ab, bc and the tolerance scaled by one power of two (largest
+          // |component| in [1, 2)) so that the cross product and |ab|^2 stay
+          // in range at any scale; exact, so the same decision as unscaled
+          // wherever that stays in range.
+          T tol = conv_tol;
+          const T m = detail::max_abs2(ab, bc);
+          if (m > T(0) && m <= std::numeric_limits<T>::max()) {
+            const int e = detail::pow2_exponent(m);
+            ab = detail::scale_pow2(ab, e);
+            bc = detail::scale_pow2(bc, e);
+            tol = std::ldexp(tol, -e);
+          }
+          const T turn = dot(pl.normal, cross(ab, bc));
           const T lab = number_traits<T>::sqrt(squared_norm(ab));
-          bad = !(lab > T(0)) || turn < -(conv_tol * lab);
+          bad = !(lab > T(0)) || turn < -(tol * lab);
         }
         if (bad) {
           fail(ErrorCode::NonConvexFace,

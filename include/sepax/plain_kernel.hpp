@@ -110,7 +110,7 @@ class PlainKernel {
       return is_zero(n);
     } else {
       const T tol = static_cast<T>(Tolerances<T>::parallel);
-      return !(squared_norm(n) > tol * tol * squared_norm(da) * squared_norm(db));
+      return nearly_parallel(da, db, tol);  // (scale-safe: vec3.hpp)
     }
   }
 
@@ -232,7 +232,7 @@ class PlainKernel {
 
   // eA x eB, normalised when T normalises (not oriented).
   Vec3<T> unoriented_axis(int ea, int eb) const {
-    return normalized(cross(a_.edge_dir(ea), b_.edge_dir(eb)));
+    return normalized(scaled_cross(a_.edge_dir(ea), b_.edge_dir(eb)));
   }
 
   // eA x eB oriented from A to B (Gregorius' rule: for a Minkowski edge pair

@@ -23,6 +23,13 @@
 // |             |                                 | merge tolerance (its sides cannot merge into its top)       |
 // | planarity   | ConvexPolyhedron validation     | face vertices within planarity*extent of the face's plane   |
 // | convexity   | ConvexPolyhedron validation     | no vertex more than convexity*extent above any face plane   |
+// | sliver      | ConvexPolyhedron validation     | relative to the face, not the extent: a face whose plane    |
+// |             |                                 | triangle is at most sliver*L high over its longest side L   |
+// |             |                                 | has zero area up to rounding (DegenerateFace).  Rounding    |
+// |             |                                 | alone gives collinear points a height up to ~14u*L, and a   |
+// |             |                                 | face normal's angular error is ~4u/(height/L).  Below       |
+// |             |                                 | coplanar/4: every hull face (no corner within               |
+// |             |                                 | coplanar*extent of its neighbours' line) passes             |
 // | support     | brute-force SAT, float only     | an edge endpoint within support*extent of the extreme       |
 // |             |                                 | projection (on the unit axis) counts as supporting; plus    |
 // |             |                                 | the projections' own rounding, 25u*max|coordinate| (derived |
@@ -47,6 +54,19 @@
 // exceed planarity*extent/(16u) (about 40 extents from the origin for float,
 // 2e5 for double), and the builder reports BadScale for such inputs when
 // validation would be at risk.
+//
+// Scale range (float, double).  Since every tolerance is relative, the
+// absolute scale does not matter within the range where the arithmetic is
+// sound: ConvexPolyhedron (planes, normals, extent, centroid) and the plain
+// SAT kernel (edge axes, parallel test) rescale by powers of two where |N|^2
+// would overflow or underflow, and validation accepts
+//   |coordinate| <= max(T)/16          (sums and differences stay finite)
+//   coplanar/4 * extent >= min(T)      (the smallest tolerance is a normal
+//                                       number: extent >= ~9e-298 for double,
+//                                       ~5e-33 for float)
+// refusing anything else with BadScale.  (The hull builder still refuses an
+// extent whose cube overflows double or whose square overflows T: about
+// 2.8e102 for double, 9e18 for float.)
 #pragma once
 
 #include "number_traits.hpp"
@@ -61,6 +81,7 @@ struct Tolerances {
   static constexpr double flat = 0;
   static constexpr double planarity = 0;
   static constexpr double convexity = 0;
+  static constexpr double sliver = 0;
   static constexpr double support = 0;
   static constexpr double parallel = 0;
   static constexpr double contact_weld = 0;
@@ -74,6 +95,7 @@ struct Tolerances<float> {
   static constexpr double flat = 2e-5;
   static constexpr double planarity = 4e-5;
   static constexpr double convexity = 4e-5;
+  static constexpr double sliver = 2e-6;
   static constexpr double support = 1e-5;
   static constexpr double parallel = 1e-4;
   static constexpr double contact_weld = 1e-5;
@@ -87,6 +109,7 @@ struct Tolerances<double> {
   static constexpr double flat = 2e-10;
   static constexpr double planarity = 4e-10;
   static constexpr double convexity = 4e-10;
+  static constexpr double sliver = 2e-11;
   static constexpr double support = 1e-10;
   static constexpr double parallel = 1e-8;
   static constexpr double contact_weld = 1e-10;

@@ -8,6 +8,11 @@
 //   * exact number types never meet an Eigen reduction they were not written for.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
 #include <Eigen/Core>
 
 #include "number_traits.hpp"
@@ -52,6 +57,81 @@ template <class T>
 inline bool is_zero(const Vec3<T>& a) {
   const T z(0);
   return a[0] == z && a[1] == z && a[2] == z;
+}
+
+// ---- scale-safe products for float and double --------------------------------
+// |u x w|^2 is of the order of |u|^2 |w|^2: for double it overflows or
+// underflows once coordinates pass about 1e+-77 (float: 1e+-9), long before
+// the coordinates themselves do.  The helpers below rescale by a power of two
+// when (and only when) that happens.  Multiplying by a power of two is exact
+// and commutes with rounding (outside the subnormal range), so wherever the
+// unscaled formula stays in range their results are bit for bit its results.
+namespace detail {
+
+/// max |component| over two vectors.
+template <class T>
+inline T max_abs2(const Vec3<T>& u, const Vec3<T>& w) {
+  using std::fabs;
+  return std::max({fabs(u[0]), fabs(u[1]), fabs(u[2]), fabs(w[0]), fabs(w[1]), fabs(w[2])});
+}
+
+/// Binary exponent e of m (finite, > 0): m * 2^-e is in [1, 2).
+template <class T>
+inline int pow2_exponent(T m) {
+  return std::ilogb(m);
+}
+
+/// v * 2^-e, component by component (std::ldexp: exact unless a component
+/// becomes subnormal; e may exceed the exponent range of a T factor).
+template <class T>
+inline Vec3<T> scale_pow2(const Vec3<T>& v, int e) {
+  return Vec3<T>(std::ldexp(v[0], -e), std::ldexp(v[1], -e), std::ldexp(v[2], -e));
+}
+
+/// A squared norm (or product of squared norms) that is finite and far enough
+/// above the subnormal range that squaring lost no relevant bits.
+template <class T>
+inline bool safe_squared_norm(T n2) {
+  return n2 <= std::numeric_limits<T>::max() && n2 > std::numeric_limits<T>::min() * T(0x1p40);
+}
+
+}  // namespace detail
+
+/// A positive multiple of u x w: u x w itself for exact T, and for float and
+/// double whenever |u x w|^2 is in range; otherwise (u 2^-e) x (w 2^-e) for
+/// the e that puts the largest |component| of u and w in [1, 2).  Its
+/// direction is that of u x w at any scale; normalise it, never use its length.
+template <class T>
+inline Vec3<T> scaled_cross(const Vec3<T>& u, const Vec3<T>& w) {
+  Vec3<T> n = cross(u, w);
+  if constexpr (std::is_floating_point_v<T>) {
+    if (!detail::safe_squared_norm(squared_norm(n))) {
+      const T m = detail::max_abs2(u, w);
+      if (m > T(0) && m <= std::numeric_limits<T>::max()) {
+        const int e = detail::pow2_exponent(m);
+        n = cross(detail::scale_pow2(u, e), detail::scale_pow2(w, e));
+      }
+    }
+  }
+  return n;
+}
+
+/// Float and double: |u x w| <= tol |u| |w| (the sine of their angle is at
+/// most tol), as !(|u x w|^2 > tol^2 |u|^2 |w|^2); when the right-hand side
+/// leaves the range, u and w are first scaled by powers of two of their own.
+template <class T>
+inline bool nearly_parallel(const Vec3<T>& u, const Vec3<T>& w, T tol) {
+  static_assert(std::is_floating_point_v<T>);
+  const T rhs = tol * tol * squared_norm(u) * squared_norm(w);
+  if (detail::safe_squared_norm(rhs)) return !(squared_norm(cross(u, w)) > rhs);
+  const T mu = detail::max_abs2(u, u), mw = detail::max_abs2(w, w);
+  if (!(mu > T(0) && mu <= std::numeric_limits<T>::max() && mw > T(0) &&
+        mw <= std::numeric_limits<T>::max())) {
+    return true;  // a zero or non-finite edge: no usable axis
+  }
+  const Vec3<T> us = detail::scale_pow2(u, detail::pow2_exponent(mu));
+  const Vec3<T> ws = detail::scale_pow2(w, detail::pow2_exponent(mw));
+  return !(squared_norm(cross(us, ws)) > tol * tol * squared_norm(us) * squared_norm(ws));
 }
 
 /// Convert a vector of doubles to T element by element (exact for exact T).

@@ -1,5 +1,7 @@
 # cmake -P script behind the ctest cli/install_and_consume:
-#   1. cmake --install BUILD_DIR into WORK_DIR/prefix
+#   1. cmake --install BUILD_DIR into WORK_DIR/staging, then move it to
+#      WORK_DIR/prefix (relocatable: the exported targets must hold no
+#      absolute library paths nor the old location)
 #   2. the installed bin/sepax answers a query
 #   3. configure tests/consumer against the prefix (find_package(sepax)),
 #      build it, and run its programs
@@ -25,7 +27,21 @@ endfunction()
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 
-run(install ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+# Installed to one place, used from another: the install must be relocatable.
+run(install ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/staging)
+file(RENAME ${WORK_DIR}/staging ${prefix})
+# ... so the exported targets name their dependencies (found by sepaxConfig.cmake
+# on the consuming machine) and hold no library paths of the build machine.
+file(GLOB _exported ${prefix}/lib/cmake/sepax/sepaxTargets*.cmake)
+foreach(f ${_exported})
+  file(READ ${f} _text)
+  if(_text MATCHES "(/[^\"; ]*lib(gmpxx|gmp|mpfr)[^\"; ]*)")
+    message(FATAL_ERROR "${f} links a library by absolute path: ${CMAKE_MATCH_1}")
+  endif()
+  if(_text MATCHES "${WORK_DIR}/staging|${BUILD_DIR}")
+    message(FATAL_ERROR "${f} refers to the install or build directory it came from")
+  endif()
+endforeach()
 foreach(f include/sepax/convex_polyhedron.hpp lib/cmake/sepax/sepaxConfig.cmake
           lib/cmake/sepax/sepaxConfigVersion.cmake lib/cmake/sepax/sepaxTargets.cmake bin/sepax)
   if(NOT EXISTS ${prefix}/${f})

@@ -6,8 +6,10 @@
 #include <sepax/convex_polyhedron.hpp>
 #include <sepax/shapes.hpp>
 
+#include <cmath>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -254,5 +256,188 @@ TEMPLATE_TEST_CASE("half-edge invariants on valid shapes", "[polyhedron]", float
     std::vector<Vec3<T>> pts;
     for (int i = 0; i < 30; ++i) pts.push_back(vec_cast<T>(Vec3<double>(nd(rng), nd(rng), nd(rng))));
     check_half_edge_invariants(convex_hull(pts));
+  }
+}
+
+// ---- scale: planes at any scale in range, clear errors out of range ----------
+
+namespace {
+
+// p's vertices times s, rebuilt (and validated) from p's face lists.
+template <class T>
+ConvexPolyhedron<T> scaled(const ConvexPolyhedron<T>& p, double s) {
+  std::vector<Vec3<T>> v;
+  for (const auto& q : p.vertices())
+    v.emplace_back(static_cast<T>(q[0] * s), static_cast<T>(q[1] * s), static_cast<T>(q[2] * s));
+  Faces f;
+  for (int i = 0; i < p.face_count(); ++i) f.push_back(p.face_vertices(i));
+  return ConvexPolyhedron<T>::from_faces(std::move(v), f);
+}
+
+template <class T>
+std::vector<ConvexPolyhedron<T>> unit_shapes() {
+  std::vector<ConvexPolyhedron<T>> out{shapes::box<T>(1, 2, 0.5), shapes::tetrahedron<T>(1),
+                                       shapes::prism<T>(32, 1.5, 0.5), shapes::regular_polygon<T>(7, 2.0)};
+  out.push_back(shapes::triangle<T>(Vec3<T>(T(0.1f), T(0.2f), T(0.3f)), Vec3<T>(T(1.7f), T(-0.4f), T(0.9f)),
+                                    Vec3<T>(T(-0.3f), T(1.1f), T(2.5f))));
+  std::mt19937 rng(7);
+  std::normal_distribution<double> nd;
+  std::vector<Vec3<T>> pts;
+  for (int i = 0; i < 40; ++i) pts.push_back(vec_cast<T>(Vec3<double>(nd(rng), nd(rng), nd(rng))));
+  out.push_back(convex_hull(pts));
+  return out;
+}
+
+template <class T>
+std::vector<double> in_range_scales() {
+  if constexpr (std::is_same_v<T, double>)
+    return {1e-150, 1e150, 1e300, 1e-80, 1e80, 0x1p-960, 0x1p1000};
+  else
+    return {1e-30, 1e30, 1e36, 1e-12, 1e12, 0x1p-100, 0x1p120};
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("scale: valid shapes build at any scale in range, with the same plane triples",
+                   "[polyhedron][scale]", float, double) {
+  using T = TestType;
+  const double tol = std::is_same_v<T, float> ? 1e-4 : 1e-12;  // rounding of scaled vertices
+  for (const auto& unit : unit_shapes<T>()) {
+    for (const double s : in_range_scales<T>()) {
+      INFO("scale " << s << ", " << unit.vertex_count() << " vertices");
+      ConvexPolyhedron<T> p;
+      REQUIRE_NOTHROW(p = scaled(unit, s));
+      // A power of two scales every rounding exactly: the same plane triples
+      // and normals, bit for bit.  (Other scales round the vertices: triangles
+      // of equal area may then tie-break differently.)
+      int exponent = 0;
+      const bool pow2 = std::frexp(s, &exponent) == 0.5;
+      for (int f = 0; f < p.face_count(); ++f) {
+        const Vec3<T>& n = p.plane(f).normal;
+        const Vec3<T>& n1 = unit.plane(f).normal;
+        if (pow2) {
+          CHECK(p.face(f).plane_vertices == unit.face(f).plane_vertices);
+          CHECK(n == n1);
+          CHECK(p.plane(f).offset == static_cast<T>(unit.plane(f).offset * s));
+        } else {
+          CHECK((vec_to_double(n) - vec_to_double(n1)).norm() < tol);
+          CHECK(std::abs(to_double(p.plane(f).offset) / s - to_double(unit.plane(f).offset)) < 1e-5);
+        }
+        CHECK(std::abs(to_double(squared_norm(n)) - 1.0) < tol);
+      }
+      if (p.is_flat()) CHECK(p.plane(1).normal == Vec3<T>(-p.plane(0).normal));
+      CHECK(std::abs(p.extent() / s / unit.extent() - 1.0) < 1e-6);
+      CHECK(std::abs(to_double(p.centroid()[0]) / s - to_double(unit.centroid()[0])) < 1e-5);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("scale: tolerances stay relative to the extent at every scale", "[polyhedron][scale]",
+                   float, double) {
+  using T = TestType;
+  auto scales = in_range_scales<T>();
+  scales.push_back(1.0);
+  for (const double s : scales) {
+    INFO("scale " << s);
+    // vertex 6 of the cube (half size s) moved up by r*s: within planarity*extent
+    // it is accepted, beyond it faces 1, 3 and 5 are not planar.
+    for (const double r : {Tolerances<T>::planarity / 8, 1e-3}) {
+      auto v = cube_vertices<T>();
+      for (auto& q : v) q = Vec3<T>(static_cast<T>(q[0] * s), static_cast<T>(q[1] * s), static_cast<T>(q[2] * s));
+      v[6][2] = static_cast<T>(s * (1 + r));
+      const auto f = failure<T>(v, cube_faces);
+      if (r < 1e-3) {
+        CHECK(f.message == "no error");
+      } else {
+        CHECK(f.code == ErrorCode::NonPlanarFace);
+      }
+    }
+  }
+}
+
+TEST_CASE("scale: mixed magnitudes in one shape (double)", "[polyhedron][scale]") {
+  using T = double;
+  // a tetrahedron whose coordinates range over 1e140 .. 1e160, and its mirror
+  // image at 1e-160 .. 1e-140
+  for (const double s : {1.0, 1e-300}) {
+    const std::vector<Vec3<T>> v{Vec3<T>(1e150 * s, 1e140 * s, 0), Vec3<T>(3e160 * s, 0, 0),
+                                 Vec3<T>(0, 2e155 * s, 0), Vec3<T>(0, 0, 5e158 * s)};
+    const Faces f{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    if (s == 1.0) {
+      ConvexPolyhedron<T> t;
+      REQUIRE_NOTHROW(t = ConvexPolyhedron<T>::from_faces(v, f));
+      for (int i = 0; i < 4; ++i) CHECK(std::abs(squared_norm(t.plane(i).normal) - 1.0) < 1e-15);
+    } else {
+      // 1e-160 .. 1e-140: extent 3e-140 is in range
+      ConvexPolyhedron<T> t;
+      REQUIRE_NOTHROW(t = ConvexPolyhedron<T>::from_faces(v, f));
+      CHECK(t.plane(0).normal == Vec3<T>(0, 0, -1));
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("scale: out-of-range input gets BadScale naming the problem", "[polyhedron][scale][errors]",
+                   float, double) {
+  using T = TestType;
+  const double big = static_cast<double>(std::numeric_limits<T>::max()) / 4;
+  // coordinates near max: edges and plane offsets would overflow
+  auto v = cube_vertices<T>();
+  for (auto& q : v) q = Vec3<T>(static_cast<T>(q[0] * big), static_cast<T>(q[1] * big), static_cast<T>(q[2] * big));
+  auto f = failure<T>(v, cube_faces);
+  CHECK(f.code == ErrorCode::BadScale);
+  CHECK(contains(f.message, "out of range"));
+  CHECK(!contains(f.message, "zero area"));
+  // so small that the relative tolerances are subnormal
+  const double tiny = static_cast<double>(std::numeric_limits<T>::min()) * 16;
+  v = cube_vertices<T>();
+  for (auto& q : v) q = Vec3<T>(static_cast<T>(q[0] * tiny), static_cast<T>(q[1] * tiny), static_cast<T>(q[2] * tiny));
+  f = failure<T>(v, cube_faces);
+  CHECK(f.code == ErrorCode::BadScale);
+  CHECK(contains(f.message, "too small"));
+  CHECK(!contains(f.message, "zero area"));
+}
+
+// ---- sliver faces: zero area up to rounding -----------------------------------
+
+TEMPLATE_TEST_CASE("validation: a face that is zero-area only up to rounding is refused",
+                   "[polyhedron][errors]", float, double) {
+  using T = TestType;
+  // Three points on the line t*(1/3, 1/7, 1/11), rounded to T: collinear but
+  // for rounding, so (b - a) x (c - a) is not zero -- the old check (normal
+  // != 0) accepted this triangle with a normal made of rounding noise.
+  const Vec3<T> a(T(0), T(0), T(0));
+  const Vec3<T> b(T(1) / T(3), T(1) / T(7), T(1) / T(11));
+  const Vec3<T> c(T(5) / T(3), T(5) / T(7), T(5) / T(11));
+  REQUIRE(!is_zero(cross(Vec3<T>(b - a), Vec3<T>(c - a))));
+  auto r = failure<T>({a, b, c}, {{0, 1, 2}, {0, 2, 1}});
+  CHECK(r.code == ErrorCode::DegenerateFace);
+  CHECK(contains(r.message, "face 0"));
+  CHECK(contains(r.message, "zero area up to rounding"));
+  // the same at scale 1e20 (relative to the face, not absolute)
+  const T k(1e20f);
+  r = failure<T>({Vec3<T>(a * k), Vec3<T>(b * k), Vec3<T>(c * k)}, {{0, 1, 2}, {0, 2, 1}});
+  CHECK(r.code == ErrorCode::DegenerateFace);
+
+  // a sliver triangle, height sliver/4 over its longest side, vs a thin but
+  // valid one (4 * sliver), flat and as the base of a tetrahedron
+  const double sl = Tolerances<T>::sliver;
+  for (const double h : {sl / 4, sl * 4}) {
+    INFO("height " << h);
+    const std::vector<Vec3<T>> tri{Vec3<T>(T(0), T(0), T(0)), Vec3<T>(T(1), T(0), T(0)),
+                                   Vec3<T>(T(0.5), static_cast<T>(h), T(0))};
+    const auto flat = failure<T>(tri, {{0, 1, 2}, {0, 2, 1}});
+    auto tet_v = tri;
+    tet_v.emplace_back(T(0.5), T(0.3), T(1));
+    const auto solid = failure<T>(tet_v, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}});
+    if (h < sl) {
+      CHECK(flat.code == ErrorCode::DegenerateFace);
+      CHECK(contains(flat.message, "face 0"));
+      CHECK(solid.code == ErrorCode::DegenerateFace);
+      CHECK(contains(solid.message, "face 0"));
+      CHECK(contains(solid.message, "sliver"));
+    } else {
+      CHECK(flat.message == "no error");
+      CHECK(solid.message == "no error");
+    }
   }
 }

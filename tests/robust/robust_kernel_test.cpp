@@ -300,17 +300,18 @@ TEMPLATE_TEST_CASE("robust is needed: plain float differs from exact where robus
                               << " runs; robust in none");
 }
 
-TEST_CASE("robust = exact at extreme double scales (1e70, 1e-75)", "[robust][kernel]") {
+TEST_CASE("robust = exact at extreme double scales (1e70 .. 1e300, 1e-75, 1e-150)", "[robust][kernel]") {
   // At 1e70 products of three coordinates reach 1e210; at 1e-75 squared cross products fall
   // below the normalisation guard: the filters must give up and the exact
-  // stage decide.  (ConvexPolyhedron itself rejects faces whose squared normal
-  // underflows or overflows, i.e. coordinates outside ~[1e-77, 1e77].)
+  // stage decide.  Beyond 1e+-77 cross products themselves overflow or
+  // underflow (ConvexPolyhedron builds such shapes since its planes are
+  // scale-safe: |coordinate| <= max/16).
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> u(-1, 1);
   Tally t;
   int failures = 0;
   const auto hull = random_sphere_hull<double>(rng, 8);
-  for (double s : {1e70, 1e-75}) {
+  for (double s : {1e70, 1e-75, 1e150, 1e-150, 1e300}) {
     const auto box = shapes::box<double>(s, s, s);
     for (double z : {0.0, 1.5, 2.0, 3.0}) {
       if (!both_agree(box, translated(box, v3<double>(0.5 * s, 0.0, z * s)), t)) ++failures;
