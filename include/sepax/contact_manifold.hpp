@@ -400,7 +400,7 @@ void side_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   const int rt = R.edge_tail(ref_edge), rh = R.edge_head(ref_edge);
   const Vec3<T>& t = R.vertex(rt);
   const Vec3<T> d = R.edge_direction(ref_edge);
-  Vec3<T> u = cross(d, R.plane(R.edge_face(ref_edge, 0)).normal);
+  Vec3<T> u = scaled_cross(d, R.plane(R.edge_face(ref_edge, 0)).normal);  // == cross for exact T
   if constexpr (number_traits<T>::normalizes) {
     const T len = number_traits<T>::sqrt(squared_norm(u));
     u = Vec3<T>(u[0] / len, u[1] / len, u[2] / len);

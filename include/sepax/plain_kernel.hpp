@@ -194,7 +194,7 @@ class PlainKernel {
   }
 
   static Vec3<T> side_normal(const ConvexPolyhedron<T>& p, int e) {
-    return normalized(cross(p.edge_dir(e), p.edge_normal(e, 0)));
+    return normalized(scaled_cross(p.edge_dir(e), p.edge_normal(e, 0)));  // scale-safe: vec3.hpp
   }
 
   static FaceQuery<T> side_query(const ConvexPolyhedron<T>& p, int e, const ConvexPolyhedron<T>& q) {

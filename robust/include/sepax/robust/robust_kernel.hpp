@@ -782,7 +782,7 @@ class RobustKernel {
     const Vec3<T>& d = p.edge_dir(e);
     const Vec3<T>& n = p.edge_normal(e, 0);
     const Vec3<double> dd(d[0], d[1], d[2]), nd(n[0], n[1], n[2]);
-    Vec3<double> u = cross(dd, nd);
+    Vec3<double> u = scaled_cross(dd, nd);  // scale-safe: vec3.hpp
     const double len = u.norm();
     if (len > 0) u /= len;
     return Vec3<T>(static_cast<T>(u[0]), static_cast<T>(u[1]), static_cast<T>(u[2]));
