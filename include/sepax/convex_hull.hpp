@@ -519,8 +519,8 @@ class Builder {
 
   struct Group {
     std::vector<int> verts;  // sorted welded point indices
-    Vec3<T> area;            // float: sum of triangle cross products
-    Plane<T> pl;
+    Vec3<T> area = Vec3<T>(T(0), T(0), T(0));  // float: sum of triangle cross products
+    Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};  // (initialised: groups_ copies Group{})
     bool degenerate = false;  // a single zero-area triangle
   };
 
