@@ -7,6 +7,8 @@
 // Gauss map and traversal, which visit axes in different orders, agree.
 #pragma once
 
+#include <cstdint>
+
 #include "sat_kernel.hpp"
 
 namespace sepax::sat::detail {
@@ -59,25 +61,31 @@ class BestAxis {
   Feature feature_;
 };
 
-/// The face axes of A then of B: shared by every SAT.  Returns true when
-/// early_out is set and a separating face axis was found.
-template <SatKernel K>
-bool scan_face_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt) {
-  for (int f = 0; f < k.a().face_count(); ++f) {
-    const auto q = k.face_query_a(f);
-    ++stats.face_axes;
-    const Feature feat = Feature::face_a(f, q.support_vertex);
-    best.consider(k, q.separation, feat);
-    if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
-  }
-  for (int f = 0; f < k.b().face_count(); ++f) {
-    const auto q = k.face_query_b(f);
-    ++stats.face_axes;
-    const Feature feat = Feature::face_b(q.support_vertex, f);
+/// Offers the axes i = 0 .. n-1 of one kind: query(i) is a FaceQuery (a
+/// separation and the other shape's support vertex), feature(i, support)
+/// names it; each is counted in `counter`.  Returns true when early_out is
+/// set and a separating axis was found.
+template <SatKernel K, class Query, class MakeFeature>
+bool scan_queries(K& k, BestAxis<K>& best, std::int64_t& counter, int n, const SatOptions& opt, Query&& query,
+                  MakeFeature&& feature) {
+  for (int i = 0; i < n; ++i) {
+    const auto q = query(i);
+    ++counter;
+    const Feature feat = feature(i, q.support_vertex);
     best.consider(k, q.separation, feat);
     if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
   }
   return false;
+}
+
+/// The face axes of A then of B: shared by every SAT.  Returns true when
+/// early_out is set and a separating face axis was found.
+template <SatKernel K>
+bool scan_face_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt) {
+  return scan_queries(k, best, stats.face_axes, k.a().face_count(), opt, [&](int f) { return k.face_query_a(f); },
+                      [](int f, int v) { return Feature::face_a(f, v); }) ||
+         scan_queries(k, best, stats.face_axes, k.b().face_count(), opt, [&](int f) { return k.face_query_b(f); },
+                      [](int f, int v) { return Feature::face_b(v, f); });
 }
 
 /// The side axes (feature.hpp), shared by every SAT after its other axes,
@@ -96,21 +104,10 @@ bool scan_face_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& 
 template <SatKernel K>
 bool scan_side_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt) {
   if (!k.a().is_flat() || !k.b().is_flat()) return false;
-  for (int e = 0; e < k.a().edge_count(); ++e) {
-    const auto q = k.side_query_a(e);
-    ++stats.side_axes;
-    const Feature feat = Feature::side_a(e, q.support_vertex);
-    best.consider(k, q.separation, feat);
-    if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
-  }
-  for (int e = 0; e < k.b().edge_count(); ++e) {
-    const auto q = k.side_query_b(e);
-    ++stats.side_axes;
-    const Feature feat = Feature::side_b(q.support_vertex, e);
-    best.consider(k, q.separation, feat);
-    if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
-  }
-  return false;
+  return scan_queries(k, best, stats.side_axes, k.a().edge_count(), opt, [&](int e) { return k.side_query_a(e); },
+                      [](int e, int v) { return Feature::side_a(e, v); }) ||
+         scan_queries(k, best, stats.side_axes, k.b().edge_count(), opt, [&](int e) { return k.side_query_b(e); },
+                      [](int e, int v) { return Feature::side_b(v, e); });
 }
 
 }  // namespace sepax::sat::detail
