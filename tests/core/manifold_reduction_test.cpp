@@ -25,8 +25,10 @@ std::vector<V> octagon() {
 // Brute force, independent of the library's scans: the largest hull area
 // (shoelace of the convex hull, gift wrapping in the xy plane) over every
 // subset of 4 points that contains point d.
-double hull_area_xy(std::vector<V> q) {
-  // Andrew's monotone chain, then shoelace; exact for small integers.
+// Convex hull in the xy plane (Andrew's monotone chain), counter-clockwise,
+// without collinear or repeated points; exact for small integers.
+std::vector<V> hull_xy(std::vector<V> q) {
+  if (q.empty()) return q;
   std::sort(q.begin(), q.end(), [](const V& a, const V& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); });
   auto cr = [](const V& o, const V& a, const V& b) { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
   std::vector<V> h(2 * q.size());
@@ -39,9 +41,20 @@ double hull_area_xy(std::vector<V> q) {
     while (k >= t && cr(h[k - 2], h[k - 1], q[i]) <= 0) --k;
     h[k++] = q[i];
   }
-  if (k < 4) return 0;  // fewer than 3 distinct hull corners (the last repeats the first)
+  h.resize(k - 1);  // the last point repeats the first
+  return h;
+}
+
+// The hull area (shoelace), 0 with fewer than 3 distinct hull corners.
+double hull_area_xy(const std::vector<V>& q) {
+  const std::vector<V> h = hull_xy(q);
+  if (h.size() < 3) return 0;
   double s = 0;
-  for (std::size_t i = 0; i + 1 < k; ++i) s += h[i][0] * h[i + 1][1] - h[i + 1][0] * h[i][1];
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const V& a = h[i];
+    const V& b = h[(i + 1) % h.size()];
+    s += a[0] * b[1] - b[0] * a[1];
+  }
   return std::abs(s) / 2;
 }
 
@@ -69,21 +82,7 @@ std::vector<V> lattice_convex(std::mt19937& rng, int extra) {
   std::uniform_int_distribution<int> u(-20, 20);
   std::vector<V> pts;
   for (int i = 0; i < 12; ++i) pts.emplace_back(u(rng), u(rng), 0);
-  std::vector<V> q = pts;
-  std::sort(q.begin(), q.end(), [](const V& a, const V& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); });
-  q.erase(std::unique(q.begin(), q.end()), q.end());
-  auto cr = [](const V& o, const V& a, const V& b) { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
-  std::vector<V> h(2 * q.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < q.size(); ++i) {
-    while (k >= 2 && cr(h[k - 2], h[k - 1], q[i]) <= 0) --k;
-    h[k++] = q[i];
-  }
-  for (std::size_t i = q.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cr(h[k - 2], h[k - 1], q[i]) <= 0) --k;
-    h[k++] = q[i];
-  }
-  h.resize(k - 1);
+  const std::vector<V> h = hull_xy(pts);
   // insert midpoints of edges with even coordinate differences
   std::vector<V> out;
   int added = 0;
