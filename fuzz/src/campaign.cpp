@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 
 #include <sepax/error.hpp>
@@ -200,7 +201,9 @@ int usage(const char* msg) {
   std::cerr << "sepax fuzz: " << msg << "\n"
             << "usage: sepax fuzz [--seconds S] [--cases N] [--seed K] [--families a,b,...] [--out DIR] [--json] [--quiet]\n"
             << "                  [--shrink-steps N] [--shrink-seconds S] [--shrink-max N]\n"
-            << "       sepax fuzz --replay FILE_OR_DIR... [--json] [--shrink] [--out DIR]\n"
+            << "       sepax fuzz --replay FILE_OR_DIR... [--bytes] [--json] [--shrink] [--out DIR]\n"
+            << "       (--bytes: the files are libFuzzer inputs, decoded as sepax_libfuzzer decodes them;\n"
+            << "        with --out DIR each is also written there as a readable DIR/NAME.case)\n"
             << "families:";
   for (const auto& f : family_names()) std::cerr << " " << f;
   std::cerr << "\n";
@@ -217,7 +220,7 @@ bool parse_number(const char* s, double& out) {
 
 int fuzz_main(int argc, char** argv) {
   double seconds = 30, max_cases = 0, seed_d = 1;
-  bool json = false, quiet = false, replay = false, shrink_replays = false;
+  bool json = false, quiet = false, replay = false, shrink_replays = false, bytes = false, out_given = false;
   // Shrinking (shrink.hpp): each unexplained finding, up to shrink_max per
   // run, is shrunk within this budget; the original reproducer is kept too.
   ShrinkOptions shrink_opt;
@@ -250,6 +253,7 @@ int fuzz_main(int argc, char** argv) {
     } else if (a == "--out") {
       if (i + 1 >= argc) return usage("--out needs a directory");
       out_dir = argv[++i];
+      out_given = true;
     } else if (a == "--shrink-steps") {
       if (!value(shrink_steps)) return usage("--shrink-steps needs a non-negative integer (0: no shrinking)");
     } else if (a == "--shrink-seconds") {
@@ -258,6 +262,8 @@ int fuzz_main(int argc, char** argv) {
       if (!value(shrink_max)) return usage("--shrink-max needs a non-negative integer");
     } else if (a == "--shrink") {
       shrink_replays = true;
+    } else if (a == "--bytes") {
+      bytes = true;
     } else if (a == "--json") {
       json = true;
     } else if (a == "--quiet") {
@@ -317,7 +323,20 @@ int fuzz_main(int argc, char** argv) {
     for (const auto& p : paths) {
       FuzzCase c;
       try {
-        c = read_case_file(p);
+        if (bytes) {
+          std::ifstream in(p, std::ios::binary);
+          if (!in) throw InvalidInput(ErrorCode::Parse, "cannot open libFuzzer input '" + p + "'");
+          const std::vector<char> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+          c = decode_bytes(reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size());
+          if (out_given) {
+            std::filesystem::create_directories(out_dir);
+            const auto to = std::filesystem::path(out_dir) / (std::filesystem::path(p).stem().string() + ".case");
+            write_case_file(to.string(), c, "decoded from the libFuzzer input " + p);
+            if (!quiet) std::cerr << p << ": decoded to " << to.string() << "\n";
+          }
+        } else {
+          c = read_case_file(p);
+        }
       } catch (const InvalidInput& e) {
         std::cerr << "sepax fuzz: " << e.what() << "\n";
         status = 2;

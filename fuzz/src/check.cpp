@@ -173,22 +173,34 @@ bool exactly_convex(const CPQ& p) {
   return true;
 }
 
-Separation<Q> exact_edge_projection(const Exact& E, int ea, int eb) {
-  const Vec3<Q> n = cross(E.A.edge_direction(ea), E.B.edge_direction(eb));
+// The exact projections of both shapes on N = eA x eB (the brute force's
+// unnormalised axis) and the two gaps: plus (A below B along N) and minus.
+struct EdgeGaps {
+  Vec3<Q> N;
+  Q la, ha, lb, hb;
+  Separation<Q> plus() const { return {Q(lb - ha), squared_norm(N)}; }
+  Separation<Q> minus() const { return {Q(la - hb), squared_norm(N)}; }
+};
+EdgeGaps exact_edge_gaps(const Exact& E, int ea, int eb) {
+  EdgeGaps g;
+  g.N = cross(E.A.edge_direction(ea), E.B.edge_direction(eb));
   auto proj = [&](const CPQ& p, Q& lo, Q& hi) {
-    lo = hi = dot(n, p.vertex(0));
+    lo = hi = dot(g.N, p.vertex(0));
     for (int i = 1; i < p.vertex_count(); ++i) {
-      const Q h = dot(n, p.vertex(i));
+      const Q h = dot(g.N, p.vertex(i));
       if (h < lo) lo = h;
       if (h > hi) hi = h;
     }
   };
-  Q la, ha, lb, hb;
-  proj(E.A, la, ha);
-  proj(E.B, lb, hb);
-  const Q n2 = squared_norm(n);
-  const Separation<Q> sp{Q(lb - ha), n2}, sm{Q(la - hb), n2};
-  return sepax::compare(sp, sm) >= 0 ? sp : sm;
+  proj(E.A, g.la, g.ha);
+  proj(E.B, g.lb, g.hb);
+  return g;
+}
+
+// The exact projection value of edge pair (ea, eb), the larger of both gaps.
+Separation<Q> exact_edge_projection(const Exact& E, int ea, int eb) {
+  const EdgeGaps g = exact_edge_gaps(E, ea, eb);
+  return sepax::compare(g.plus(), g.minus()) >= 0 ? g.plus() : g.minus();
 }
 
 // The exact separation of a feature as the given SAT defines it.
@@ -210,42 +222,6 @@ Separation<Q> exact_value(const Exact& E, Sat sat, const Feature& f) {
 Separation<Q> exact_side_height(const CPQ& p, int e, const CPQ& q, int v) {
   const Vec3<Q> u = cross(p.edge_direction(e), p.plane(p.edge_face(e, 0)).normal);
   return {dot(u, Vec3<Q>(q.vertex(v) - p.vertex(p.edge_tail(e)))), squared_norm(u)};
-}
-
-// The exact optimum over the candidates a plain F run certainly measured:
-// every face, and every exact Minkowski edge pair whose float edge directions
-// are certainly outside the plain kernel's parallel skip
-// (parallel_band == outside, error_bounds.hpp (6)).  A plain run that skipped
-// the exact winner must still reach this value, up to the bounds.
-template <class F>
-std::pair<Separation<Q>, Feature> measured_optimum(const Exact& E, Sat sat, const ConvexPolyhedron<F>& A,
-                                                   const ConvexPolyhedron<F>& B) {
-  std::pair<Separation<Q>, Feature> best{E.fqA[0].separation, Feature::face_a(0, E.fqA[0].support_vertex)};
-  auto consider = [&](const Separation<Q>& s, const Feature& f) {
-    if (sepax::compare(s, best.first) > 0) best = {s, f};
-  };
-  for (int f = 0; f < E.A.face_count(); ++f)
-    consider(E.fqA[static_cast<std::size_t>(f)].separation, Feature::face_a(f, E.fqA[static_cast<std::size_t>(f)].support_vertex));
-  for (int f = 0; f < E.B.face_count(); ++f)
-    consider(E.fqB[static_cast<std::size_t>(f)].separation, Feature::face_b(E.fqB[static_cast<std::size_t>(f)].support_vertex, f));
-  const int EB = E.B.edge_count();
-  for (int ea = 0; ea < E.A.edge_count(); ++ea)
-    for (int eb = 0; eb < EB; ++eb) {
-      if (!E.arcs[static_cast<std::size_t>(ea * EB + eb)].minkowski_face() || E.k->edges_parallel(ea, eb)) continue;
-      if (parallel_band<F>(A.edge_dir(ea), B.edge_dir(eb)) != ParallelBand::outside) continue;
-      consider(exact_value(E, sat, Feature::edges(ea, eb)), Feature::edges(ea, eb));
-    }
-  if (E.A.is_flat() && E.B.is_flat()) {  // side axes (best_axis.hpp): always measured
-    for (int e = 0; e < E.A.edge_count(); ++e) {
-      const auto q = E.k->side_query_a(e);
-      consider(q.separation, Feature::side_a(e, q.support_vertex));
-    }
-    for (int e = 0; e < E.B.edge_count(); ++e) {
-      const auto q = E.k->side_query_b(e);
-      consider(q.separation, Feature::side_b(q.support_vertex, e));
-    }
-  }
-  return best;
 }
 
 bool same_axis(const Feature& x, const Feature& y) {
@@ -342,6 +318,53 @@ struct FloatSide {
     return 0;
   }
 
+  // (8) of error_bounds.hpp: may the plain kernel orient the Gauss-map axis
+  // of (ea, eb) the other way from exact arithmetic?  |S_e| <= B_or, exactly.
+  bool orientation_may_flip(int ea, int eb) const {
+    const Vec3<F> n = unit_axis(A.edge_direction(ea), B.edge_direction(eb));
+    const Vec3<F>& pa = A.vertex(A.edge_tail(ea));
+    const Vec3<F>& pb = B.vertex(B.edge_tail(eb));
+    const Vec3<F> wa(pa - A.centroid()), wb(B.centroid() - pb);
+    const double b = bounds::orientation_bound<F>(n, wa, wb, edge_delta(ea, eb), bounds::centroid_error<F>(A),
+                                                  bounds::centroid_error<F>(B));
+    const Vec3<Q> N = cross(E.A.edge_direction(ea), E.B.edge_direction(eb));
+    const Vec3<Q> X = Vec3<Q>(E.A.vertex(E.A.edge_tail(ea)) - E.A.centroid()) +
+                      Vec3<Q>(E.B.centroid() - E.B.vertex(E.B.edge_tail(eb)));
+    return within(0.0, Separation<Q>{dot(N, X), squared_norm(N)}, b);
+  }
+
+  // (9) of error_bounds.hpp: may the plain brute force accept (ea, eb) in
+  // orientation plus (A's edge at A's maximum along eA x eB, B's at B's
+  // minimum) or minus?  Every endpoint within the "possible" band, exactly.
+  bool support_may_accept(int ea, int eb, bool plus, const EdgeGaps& g) const {
+    const Vec3<F> n = unit_axis(A.edge_direction(ea), B.edge_direction(eb));
+    const double dn = edge_delta(ea, eb);
+    // the band half-width of shape p at its maximum (hi) or minimum
+    auto width = [&](const ConvexPolyhedron<F>& p, bool hi) {
+      double ps = 0;
+      F lo_f = dot(n, p.vertex(0)), hi_f = lo_f;
+      for (const auto& v : p.vertices()) {
+        ps = std::max(ps, bounds::projection_bound<F>(n, v, dn));
+        const F h = dot(n, v);
+        lo_f = std::min(lo_f, h);
+        hi_f = std::max(hi_f, h);
+      }
+      const double t = double(PlainKernel<F>::support_tolerance(p));
+      return bounds::support_band_width<F>(t, ps, std::abs(double(hi ? hi_f : lo_f)));
+    };
+    const Q n2 = squared_norm(g.N);
+    // depth of endpoint v below the extreme ext (sign s: +1 at a maximum)
+    auto near = [&](const Vec3<Q>& v, const Q& ext, int s, double w) {
+      return within(0.0, Separation<Q>{Q(s * (ext - dot(g.N, v))), n2}, w);
+    };
+    const double wa = width(A, plus), wb = width(B, !plus);
+    const Vec3<Q>&ta = E.A.vertex(E.A.edge_tail(ea)), &ha = E.A.vertex(E.A.edge_head(ea));
+    const Vec3<Q>&tb = E.B.vertex(E.B.edge_tail(eb)), &hb = E.B.vertex(E.B.edge_head(eb));
+    if (plus)
+      return near(ta, g.ha, 1, wa) && near(ha, g.ha, 1, wa) && near(tb, g.lb, -1, wb) && near(hb, g.lb, -1, wb);
+    return near(ta, g.la, -1, wa) && near(ha, g.la, -1, wa) && near(tb, g.hb, 1, wb) && near(hb, g.hb, 1, wb);
+  }
+
   // (7) of error_bounds.hpp: the side axis of edge e of p against q's vertices.
   double side_bound(const ConvexPolyhedron<F>& p, const std::vector<double>& delta, int e,
                     const ConvexPolyhedron<F>& q) const {
@@ -355,6 +378,138 @@ const char* side_name(int i) {
   return names[i];
 }
 
+// Is the float Gauss-map orientation of edge pair f the other one from exact
+// arithmetic's?  (Both kernels' axis(): the float's is a unit vector within
+// its small error of +-the exact axis.)
+template <class K>
+bool orientation_flipped(const K& k, const Exact& E, const Feature& f) {
+  return sgn(dot(vec_cast<Q>(k.axis(f)), E.k->axis(f))) <= 0;
+}
+
+// Does the exact brute force accept edge pair f in orientation plus / minus
+// (both endpoints exactly at their shapes' extremes along N)?
+bool exactly_supported(const Exact& E, const EdgeGaps& g, const Feature& f, bool plus) {
+  auto at = [&](const CPQ& p, int e, const Q& ext) {
+    return dot(g.N, p.vertex(p.edge_tail(e))) == ext && dot(g.N, p.vertex(p.edge_head(e))) == ext;
+  };
+  return plus ? at(E.A, f.a, g.ha) && at(E.B, f.b, g.lb) : at(E.A, f.a, g.la) && at(E.B, f.b, g.hb);
+}
+
+// The decision model of a plain run, used when the usual rules leave a
+// difference unexplained.  A plain kernel decides a few things differently
+// from exact arithmetic, each within a band error_bounds.hpp derives:
+//   (2) an arc test accepts or rejects an edge pair (compared per pair as
+//       arc_sign / minkowski_face);
+//   (6) a nearly parallel edge pair is skipped;
+//   (8) a Gauss-map edge axis is oriented the other way (compared per pair as
+//       axis_side);
+//   (9) the brute force accepts a pair within its support tolerance.
+// The SAT's result is explained by them when
+//   (i)   its value sf is within its bound bf of the exact value of its
+//         feature as its kernel decided it (own: the flipped axis's value for
+//         (8), the accepted orientation's gap for (9)), each such decision
+//         within its band, and its overlap verdict is the one that value
+//         implies (exactly or within bf);
+//   (ii)  own reaches, within bf and that candidate's bound, the exact value
+//         (as the kernel decided it) of every candidate the kernel measured:
+//         every face, every side axis, every edge pair it did not skip;
+//   (iii) every exact candidate it did not measure whose exact value beats
+//         own by more than both bounds was skipped within a band: (6) for a
+//         parallel skip, (2) for an arc test (classified per pair); a brute
+//         force that rejects an exactly supported pair is not modelled.
+struct DecisionCheck {
+  bool ok = false;
+  std::string why;
+};
+
+template <class F, class Policy>
+DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>& r, double bf) {
+  const Exact& E = S.E;
+  const ConvexPolyhedron<F>&A = S.A, &B = S.B;
+  const kernel_t<Policy, F> k(A, B);
+  const Feature& ff = r.feature;
+  const double sf = r.separation_as_double();
+  const bool brute = sat == Sat::brute_force;
+  DecisionCheck d;
+  auto fail = [&](std::string why) {
+    d.why = std::move(why);
+    return d;
+  };
+  // (i)
+  std::optional<Separation<Q>> own;
+  if (ff.type == FeatureType::EdgePair && !brute) {
+    const Separation<Q> x = E.k->edge_separation(ff.a, ff.b);
+    if (!orientation_flipped(k, E, ff)) {
+      own = x;
+    } else if (S.orientation_may_flip(ff.a, ff.b)) {
+      own = Separation<Q>{Q(-x.num), x.norm2};
+    } else {
+      return fail("its edge axis is flipped outside the band (8)");
+    }
+  } else if (ff.type == FeatureType::EdgePair) {
+    const EdgeGaps g = exact_edge_gaps(E, ff.a, ff.b);
+    for (const bool plus : {true, false}) {
+      const Separation<Q> v = plus ? g.plus() : g.minus();
+      if (within(sf, v, bf) && (exactly_supported(E, g, ff, plus) || S.support_may_accept(ff.a, ff.b, plus, g))) {
+        own = v;
+        break;
+      }
+    }
+    if (!own) return fail("no orientation of its edge pair is within its support band (9) and its value bound");
+  } else {
+    own = exact_value(E, sat, ff);
+  }
+  if (!within(sf, *own, bf)) return fail("its value is outside its bound of its feature's exact value");
+  if (classify_overlap(r.overlap, sign(*own) <= 0, *own, bf, false) == Klass::unexplained)
+    return fail("its overlap verdict is not the one its feature's value implies");
+  // (ii) and (iii), candidate by candidate
+  std::string bad;
+  auto measured = [&](const Separation<Q>& v, const Feature& f) {
+    if (!bad.empty() || sign_sep_diff(v, *own, Q(bf + S.bound(sat, f))) <= 0) return;
+    bad = "it measured " + to_string(f) + " at exact value " + num(sepax::to_double(v)) + ", beyond its choice";
+  };
+  for (int f = 0; f < E.A.face_count(); ++f)
+    measured(E.fqA[static_cast<std::size_t>(f)].separation, Feature::face_a(f, E.fqA[static_cast<std::size_t>(f)].support_vertex));
+  for (int f = 0; f < E.B.face_count(); ++f)
+    measured(E.fqB[static_cast<std::size_t>(f)].separation, Feature::face_b(E.fqB[static_cast<std::size_t>(f)].support_vertex, f));
+  if (E.A.is_flat() && E.B.is_flat()) {  // side axes (best_axis.hpp): always measured
+    for (int e = 0; e < E.A.edge_count(); ++e) {
+      const auto q = E.k->side_query_a(e);
+      measured(q.separation, Feature::side_a(e, q.support_vertex));
+    }
+    for (int e = 0; e < E.B.edge_count(); ++e) {
+      const auto q = E.k->side_query_b(e);
+      measured(q.separation, Feature::side_b(q.support_vertex, e));
+    }
+  }
+  const int EB = E.B.edge_count();
+  for (int ea = 0; ea < E.A.edge_count() && bad.empty(); ++ea)
+    for (int eb = 0; eb < EB && bad.empty(); ++eb) {
+      const Feature f = Feature::edges(ea, eb);
+      const bool exact_candidate =
+          E.arcs[static_cast<std::size_t>(ea * EB + eb)].minkowski_face() && !E.k->edges_parallel(ea, eb);
+      const bool skipped = k.edges_parallel(ea, eb);
+      const bool taken = !skipped && (brute ? k.edge_separation_full(ea, eb).has_value() : k.minkowski_face(ea, eb));
+      if (taken && brute) {
+        const EdgeGaps g = exact_edge_gaps(E, ea, eb);  // the lower of the two orientations it may have taken
+        measured(sepax::compare(g.plus(), g.minus()) <= 0 ? g.plus() : g.minus(), f);
+      } else if (taken) {
+        const Separation<Q> x = E.k->edge_separation(ea, eb);
+        measured(orientation_flipped(k, E, f) ? Separation<Q>{Q(-x.num), x.norm2} : x, f);
+      } else if (exact_candidate) {
+        const Separation<Q> x = exact_value(E, sat, f);
+        if (sign_sep_diff(x, *own, Q(bf + S.bound(sat, f))) <= 0) continue;  // does not beat it
+        if (skipped && parallel_band<F>(A.edge_dir(ea), B.edge_dir(eb)) == ParallelBand::inside) continue;  // (6)
+        if (!skipped && !brute) continue;  // its arc test: classified per pair (2)
+        bad = "it did not measure " + to_string(f) + " (exact value " + num(sepax::to_double(x)) + ")" +
+              (skipped ? " as parallel, outside the band (6)" : ", rejected by its support check");
+      }
+    }
+  if (!bad.empty()) return fail(bad);
+  d.ok = true;
+  return d;
+}
+
 template <class F, class Policy>
 void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B,
                  const std::string& cfg, bool exact_decisions, const CheckOptions& opt, Recorder& rec) {
@@ -363,7 +518,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
   // ---- arc signs and Minkowski-face verdicts, every edge pair ----
   {
     kernel_t<Policy, F> k(A, B);
-    std::int64_t agree_signs = 0, agree_verdicts = 0;
+    std::int64_t agree_signs = 0, agree_verdicts = 0, agree_sides = 0;
     for (int ea = 0; ea < EA; ++ea) {
       for (int eb = 0; eb < EB; ++eb) {
         const ArcSigns fs = k.arc_signs(ea, eb);
@@ -411,10 +566,31 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
             return s.str();
           });
         }
+        // the orientation of the Gauss-map edge axis (sat_kernel.hpp
+        // edge_separation), for every pair both sides measure
+        if (!fs.minkowski_face() || !es.minkowski_face() || E.k->edges_parallel(ea, eb) || k.edges_parallel(ea, eb))
+          continue;
+        const Feature fpair = Feature::edges(ea, eb);
+        const bool flipped = sgn(dot(vec_cast<Q>(k.axis(fpair)), E.k->axis(fpair))) <= 0;
+        if (!flipped) {
+          ++agree_sides;
+          continue;
+        }
+        const Klass ks = exact_decisions ? Klass::unexplained
+                         : S.orientation_may_flip(ea, eb) ? Klass::explained
+                                                          : Klass::unexplained;
+        rec.add("axis_side", cfg, "kernel", ks, [&] {
+          std::ostringstream s;
+          s << "edge pair (" << ea << "," << eb << "): " << cfg
+            << " orients the edge axis the other way from exact arithmetic"
+            << (ks == Klass::explained ? ", within the bound (8)" : ", outside the bound (8)");
+          return s.str();
+        });
       }
     }
     rec.add("arc_sign", cfg, "kernel", Klass::agree, nullptr, agree_signs);
     rec.add("minkowski_face", cfg, "kernel", Klass::agree, nullptr, agree_verdicts);
+    rec.add("axis_side", cfg, "kernel", Klass::agree, nullptr, agree_sides);
   }
   // ---- every SAT ----
   for (Sat sat : all_sats()) {
@@ -438,55 +614,9 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     const double sf = r.separation_as_double();
     const double bf = S.bound(sat, ff), be = S.bound(sat, fe);
     const Separation<Q> xf = exact_value(E, sat, ff);
-    // The plain kernel skips edge pairs within its parallel tolerance
-    // (plain_kernel.hpp edges_parallel).  When the exact winner is an edge
-    // pair and the float chose something else, find out whether the float may
-    // have skipped that pair (error_bounds.hpp (6), decided exactly):
-    //   outside  the float certainly measured it: the usual tie/bound rules;
-    //   inside   it may have been skipped: the disagreement is explained only
-    //            if the float's choice still reaches the optimum over the
-    //            candidates it certainly measured (measured_optimum) within
-    //            the two bounds, its verdict is the one its own feature
-    //            implies, and its value is within its own bound;
-    //   unknown  the guard fails (under/overflow): nothing can be shown, the
-    //            feature difference is unexplained.
-    ParallelBand band = ParallelBand::outside;
-    std::optional<std::pair<Separation<Q>, Feature>> measured;
-    double bm = 0;
-    if (!exact_decisions && !(ff == fe) && fe.type == FeatureType::EdgePair) {
-      band = parallel_band<F>(A.edge_dir(fe.a), B.edge_dir(fe.b));
-      if (band == ParallelBand::inside) {
-        measured = measured_optimum<F>(E, sat, A, B);
-        bm = S.bound(sat, measured->second);
-      }
-    }
-    auto describe = [&](const char* what) {
-      return [&, what] {
-        std::ostringstream s;
-        s << what << ": " << cfg << " " << sat_name(sat) << " reports overlap=" << r.overlap << " feature "
-          << to_string(ff) << " separation " << num(sf) << " (exact value of that feature "
-          << num(sepax::to_double(xf)) << ", bound " << num(bf) << "); exact: overlap=" << R.overlap
-          << " feature " << to_string(fe) << " separation " << num(sepax::to_double(se)) << " (" << cfg
-          << " bound for it " << num(be) << ")";
-        if (band == ParallelBand::inside)
-          s << "; the exact winner is within " << cfg << "'s parallel-edge skip (sin <= "
-            << num(bounds::ParallelSkip<F>::sine_bound()) << "); optimum over the pairs it certainly measured: "
-            << to_string(measured->second) << " " << num(sepax::to_double(measured->first)) << " (bound " << num(bm)
-            << ")";
-        if (band == ParallelBand::unknown)
-          s << "; cannot show whether " << cfg << " skipped the winning edge pair as parallel (underflow/overflow guard)";
-        return s.str();
-      };
-    };
-    // overlap verdict
+    // The usual rules first: the float measured what exact arithmetic
+    // measured, every value within its bound.
     Klass ko = classify_overlap(r.overlap, R.overlap, se, bf + be, exact_decisions);
-    if (band == ParallelBand::inside && ko != Klass::agree) {
-      // the verdict its own feature implies, exactly or within its bound
-      ko = classify_overlap(r.overlap, sign(xf) <= 0, xf, bf, false);
-      if (ko == Klass::agree) ko = Klass::explained;
-    }
-    rec.add("overlap", cfg, sat_name(sat), cls(ko), describe("overlap verdict differs"));
-    // feature
     Klass kf = Klass::agree;
     if (!(ff == fe)) {
       if (exact_decisions) {
@@ -507,23 +637,45 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
         const Separation<Q> h1 = on_a ? E.k->face_separation_a(ff.a, ff.b) : E.k->face_separation_b(ff.b, ff.a);
         const Separation<Q> h2 = on_a ? E.k->face_separation_a(fe.a, fe.b) : E.k->face_separation_b(fe.b, fe.a);
         kf = close(h1, h2, 2 * bf) ? Klass::tie : Klass::unexplained;
-      } else if (band == ParallelBand::inside) {
-        // measured - xf <= bf + bm, exactly (the double sum rounds by 2^-53,
-        // inside the 2^-30 slack each bound carries)
-        kf = sign_sep_diff(measured->first, xf, Q(bf + bm)) <= 0 ? Klass::explained : Klass::unexplained;
-      } else if (band == ParallelBand::unknown) {
-        kf = Klass::unexplained;
       } else {
         kf = close(xf, se, bf + be) ? Klass::tie : Klass::unexplained;
       }
     }
-    rec.add("feature", cfg, sat_name(sat), cls(kf), describe("feature differs"));
-    // separation value
     Klass ks = classify_separation(sf, se, same_axis(ff, fe), bf, be, exact_decisions);
-    if (band == ParallelBand::inside && ks != Klass::agree)
-      ks = within(sf, xf, bf) ? Klass::explained : Klass::unexplained;  // its own feature's value
-    ks = cls(ks);
-    rec.add("separation", cfg, sat_name(sat), ks, describe("separation outside its bound"));
+    // Then, for a plain run, its kernel's own decisions (decision_check): a
+    // difference that follows from decisions each within its band is explained.
+    // When its kernel did not measure the exact winner as exact arithmetic
+    // does (skipped it as parallel, or flipped its axis), the rules above do
+    // not apply at all (a "tie" would rest on a value it never computed): every
+    // difference is then explained by its decisions or unexplained.
+    bool winner_unmeasured = false;
+    if (!exact_decisions && !(ff == fe) && fe.type == FeatureType::EdgePair) {
+      const kernel_t<Policy, F> k(A, B);
+      winner_unmeasured = k.edges_parallel(fe.a, fe.b) || (sat != Sat::brute_force && orientation_flipped(k, E, fe));
+    }
+    std::optional<DecisionCheck> dc;
+    if (!exact_decisions &&
+        (winner_unmeasured || ko == Klass::unexplained || kf == Klass::unexplained || ks == Klass::unexplained)) {
+      dc = decision_check<F, Policy>(S, sat, r, bf);
+      const Klass by_decisions = dc->ok ? Klass::explained : Klass::unexplained;
+      for (Klass* k : {&ko, &kf, &ks})
+        if (*k == Klass::unexplained || (winner_unmeasured && *k != Klass::agree)) *k = by_decisions;
+    }
+    auto describe = [&](const char* what) {
+      return [&, what] {
+        std::ostringstream s;
+        s << what << ": " << cfg << " " << sat_name(sat) << " reports overlap=" << r.overlap << " feature "
+          << to_string(ff) << " separation " << num(sf) << " (exact value of that feature "
+          << num(sepax::to_double(xf)) << ", bound " << num(bf) << "); exact: overlap=" << R.overlap
+          << " feature " << to_string(fe) << " separation " << num(sepax::to_double(se)) << " (" << cfg
+          << " bound for it " << num(be) << ")";
+        if (dc && !dc->ok) s << "; " << cfg << "'s own decisions do not explain it: " << dc->why;
+        return s.str();
+      };
+    };
+    rec.add("overlap", cfg, sat_name(sat), cls(ko), describe("overlap verdict differs"));
+    rec.add("feature", cfg, sat_name(sat), cls(kf), describe("feature differs"));
+    rec.add("separation", cfg, sat_name(sat), cls(ks), describe("separation outside its bound"));
   }
 }
 

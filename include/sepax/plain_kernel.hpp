@@ -157,6 +157,27 @@ class PlainKernel {
     return Vec3<T>(T(0), T(0), T(0));
   }
 
+  /// The brute force's support tolerance for shape p (edge_separation_full):
+  /// an edge endpoint within it of p's extreme projection counts as
+  /// supporting.  Public for the fuzzer's model of it (error_bounds.hpp (9)).
+  static T support_tolerance(const ConvexPolyhedron<T>& p) {
+    if constexpr (number_traits<T>::is_exact) {
+      (void)p;
+      return T(0);
+    } else {
+      // The named relative tolerance, plus a rounding floor: a projection
+      // fl(n.v) with |n| = 1 (itself rounded: |fl(n) - n| <= 3u) is off by at
+      // most (gamma_3 + 3u)|v|_1 <= 7u*sqrt(3)*max|v_i| (first order), so two
+      // projections of vertices of p differ from the exact difference by at
+      // most 2*7*sqrt(3)u*max|v_i| < 25u*max|v_i|.  Without it, a small shape
+      // far from the origin (rounding > support*extent) loses its supporting
+      // edges: found by the fuzzer (scales family, extent 0.01 at distance 4).
+      const double u = number_traits<T>::unit_roundoff;
+      return static_cast<T>(Tolerances<T>::support * p.extent() + 25.0 * u * p.max_abs_coordinate());
+    }
+  }
+
+
   std::int64_t exact_fallbacks() const { return 0; }
 
  private:
@@ -261,23 +282,6 @@ class PlainKernel {
       const T h = dot(n, p.vertex(i));
       if (h < lo) lo = h;
       if (h > hi) hi = h;
-    }
-  }
-
-  static T support_tolerance(const ConvexPolyhedron<T>& p) {
-    if constexpr (number_traits<T>::is_exact) {
-      (void)p;
-      return T(0);
-    } else {
-      // The named relative tolerance, plus a rounding floor: a projection
-      // fl(n.v) with |n| = 1 (itself rounded: |fl(n) - n| <= 3u) is off by at
-      // most (gamma_3 + 3u)|v|_1 <= 7u*sqrt(3)*max|v_i| (first order), so two
-      // projections of vertices of p differ from the exact difference by at
-      // most 2*7*sqrt(3)u*max|v_i| < 25u*max|v_i|.  Without it, a small shape
-      // far from the origin (rounding > support*extent) loses its supporting
-      // edges: found by the fuzzer (scales family, extent 0.01 at distance 4).
-      const double u = number_traits<T>::unit_roundoff;
-      return static_cast<T>(Tolerances<T>::support * p.extent() + 25.0 * u * p.max_abs_coordinate());
     }
   }
 

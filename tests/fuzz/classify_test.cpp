@@ -3,11 +3,13 @@
 // rational kernel.
 #include <catch2/catch.hpp>
 
+#include <optional>
 #include <random>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <sepax/fuzz/classify.hpp>
 #include <sepax/fuzz/error_bounds.hpp>
+#include <sepax/convex_hull.hpp>
 #include <sepax/fuzz/generators.hpp>
 #include <sepax/plain_kernel.hpp>
 #include <sepax/robust/core_expr.hpp>
@@ -176,9 +178,69 @@ void check_bounds_on_random_triangles(int trials) {
   CHECK(checked > trials / 2);
 }
 
+// (8): the orientation sum of PlainKernel::edge_axis, on the kernel's own
+// operations (its centroids, fl(p - c), the rounded unit axis), against the
+// exact sum on exact centroids; pairs of small polygons far from the origin
+// (where the centroid rounding matters) and of solid hulls at every scale.
+template <class F>
+void check_orientation_bound(int trials) {
+  std::mt19937_64 rng(4321);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> ex(-12, 12), npts(3, 9);
+  int checked = 0;
+  for (int t = 0; t < trials; ++t) {
+    const double scale = std::ldexp(1.0, ex(rng));
+    auto shape = [&] {
+      const Vec3<double> off(u(rng) * 100, u(rng) * 100, u(rng) * 100);
+      std::vector<Vec3<F>> pts;
+      const int n = npts(rng);
+      const bool flat = t % 2 == 0;
+      for (int i = 0; i < n; ++i) {
+        const double a = 2 * 3.141592653589793 * i / n + 0.3 * u(rng);
+        const Vec3<double> p = flat ? Vec3<double>(std::cos(a), std::sin(a), 0) : Vec3<double>(u(rng), u(rng), u(rng));
+        pts.emplace_back(F((p[0] + off[0]) * scale), F((p[1] + off[1]) * scale), F((p[2] + off[2]) * scale));
+      }
+      return convex_hull(pts);
+    };
+    std::optional<ConvexPolyhedron<F>> pa_, pb_;
+    try {
+      pa_.emplace(shape());
+      pb_.emplace(shape());
+    } catch (const InvalidInput&) {
+      continue;
+    }
+    const ConvexPolyhedron<F>&A = *pa_, &B = *pb_;
+    const auto EA = ConvexPolyhedron<Q>::convert_from(A), EB = ConvexPolyhedron<Q>::convert_from(B);
+    for (int ea = 0; ea < A.edge_count(); ea += 2)
+      for (int eb = 0; eb < B.edge_count(); eb += 3) {
+        const Vec3<F> da = A.edge_direction(ea), db = B.edge_direction(eb);
+        const Vec3<Q> N = cross(EA.edge_direction(ea), EB.edge_direction(eb));
+        if (is_zero(N)) continue;
+        Vec3<F> n = cross(da, db);
+        const F len = std::sqrt(squared_norm(n));
+        n = Vec3<F>(n[0] / len, n[1] / len, n[2] / len);
+        const Vec3<F>& pa = A.vertex(A.edge_tail(ea));
+        const Vec3<F>& pb = B.vertex(B.edge_tail(eb));
+        const Vec3<F> wa(pa - A.centroid()), wb(B.centroid() - pb);
+        const F s = F(dot(n, wa) + dot(n, wb));
+        const double dn = bounds::delta_normal<F>(da, db, bounds::sqrt_lower(squared_norm(N).get_d()));
+        const double b = bounds::orientation_bound<F>(n, wa, wb, dn, bounds::centroid_error<F>(A),
+                                                      bounds::centroid_error<F>(B));
+        const Vec3<Q> X = Vec3<Q>(EA.vertex(EA.edge_tail(ea)) - EA.centroid()) +
+                          Vec3<Q>(EB.centroid() - EB.vertex(EB.edge_tail(eb)));
+        const ExactSep se{dot(N, X), squared_norm(N)};
+        REQUIRE(within(double(s), se, b));
+        ++checked;
+      }
+  }
+  CHECK(checked > trials);
+}
+
 TEST_CASE("forward error bounds hold against exact arithmetic", "[fuzz][bounds]") {
   check_bounds_on_random_triangles<float>(3000);
   check_bounds_on_random_triangles<double>(3000);
+  check_orientation_bound<float>(400);
+  check_orientation_bound<double>(400);
 }
 
 TEST_CASE("integer arc signs equal the rational kernel's", "[fuzz][arcs]") {

@@ -69,3 +69,42 @@ TEST_CASE("corpus 26: a winner inside the plain float parallel skip is explained
   const Counts& fd = r.by_config.at("feature/double_plain");
   CHECK(fd[Klass::agree] == fd.total());  // double measures the pair (sin ~ 5e-6 > 1e-8)
 }
+
+// The plain kernel's own decisions (check.cpp decision_check): a flipped
+// Gauss-map edge axis within the band (8), and the brute force's support
+// tolerance (9).  Each was an unexplained finding of the final 10-minute runs
+// before the fuzzer modelled it.
+namespace {
+CaseReport replay_corpus(const char* name) {
+  const auto path = std::filesystem::path(SEPAX_SOURCE_DIR) / "fuzz" / "corpus" / name;
+  return check_case(read_case_file(path.string()));
+}
+}  // namespace
+
+TEST_CASE("corpus 32, 33: a flipped float edge axis within its band is explained", "[fuzz][corpus][orientation]") {
+  for (const char* name : {"32-flat-flipped-edge-axis.case", "33-flat-flipped-edge-axis-beats-face.case"}) {
+    INFO(name);
+    const CaseReport r = replay_corpus(name);
+    REQUIRE(r.valid);
+    for (const auto& x : r.unexplained) UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+    CHECK(r.unexplained_count == 0);
+    // plain float orients at least one edge axis the other way, within (8)
+    CHECK(r.by_config.at("axis_side/float_plain")[Klass::explained] >= 1);
+    // the robust configurations orient every axis as exact arithmetic does
+    CHECK(r.by_config.at("axis_side/float_robust")[Klass::agree] == r.by_config.at("axis_side/float_robust").total());
+    CHECK(r.by_config.at("axis_side/double_robust")[Klass::agree] == r.by_config.at("axis_side/double_robust").total());
+    // Gauss map and traversal report the flipped pair: explained, not a tie
+    CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 2);
+    CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
+  }
+}
+
+TEST_CASE("corpus 34: a pair the float brute force accepts within its support tolerance is explained",
+          "[fuzz][corpus][support]") {
+  const CaseReport r = replay_corpus("34-brute-support-tolerance-accepts.case");
+  REQUIRE(r.valid);
+  for (const auto& x : r.unexplained) UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+  CHECK(r.unexplained_count == 0);
+  CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 1);
+  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
+}

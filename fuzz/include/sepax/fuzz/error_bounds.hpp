@@ -97,6 +97,49 @@
 //     => delta_u = gamma_4 + 2 (gamma_2 ||C|| + e_dn) / lo   (as in (1)),
 //        B_side(v) = max(B_face(v) with u, B_edge(v - t) with u).
 //
+// (8) Orientation of the Gauss-map edge axis (plain_kernel.hpp edge_axis):
+//     float: n the rounded unit axis of (4) (delta_n), c~ the stored centroid of
+//     each shape, wa = fl(pA - c~A), wb = fl(c~B - pB), oa = fl(n . wa),
+//     ib = fl(n . wb), S = fl(oa + ib); the axis is negated iff S < 0.
+//     exact: S_e = n_e . ((pA - cA) + (cB - pB)), cA, cB the exact vertex means
+//     (PlainKernel<mpq>); negated iff S_e < 0.  A float orientation differs
+//     from the exact one only if |S_e| <= |S - S_e|, so only if |S_e| <= B_or:
+//       centroid (convex_polyhedron.hpp: a sequential sum of V vertices, one
+//       division by V): per coordinate |c~ - c| <= gamma_{V-1} sum|v| / V +
+//       u |s~| / V <= (gamma_{V-1} + u (1 + gamma_{V-1})) M <= gamma_V M, M the
+//       largest |coordinate|:   ||c~ - c|| <= sqrt(3) gamma_V M =: E_c
+//       (the overflow path scales by powers of two: the same bound);
+//       |wa - (pA - c~A)| <= u |pA - c~A| <= u |wa| / (1 - u) componentwise, so
+//       ||wa - (pA - cA)|| <= u ||wa|| / (1 - u) + E_cA;
+//       |oa - n . wa| <= gamma_3 sum|n||wa|;
+//       |n . wa - n_e . (pA - cA)| <= delta_n ||wa|| + ||wa - (pA - cA)||  (||n_e|| = 1);
+//       the same for B;  |S - (oa + ib)| <= u (|oa| + |ib|)
+//         <= u (1 + gamma_3) (sum|n||wa| + sum|n||wb|);
+//     => B_or = (gamma_3 + u (1 + gamma_3)) (sum|n||wa| + sum|n||wb|)
+//               + (delta_n + u / (1 - u)) (||wa|| + ||wb||) + E_cA + E_cB + 8 eta
+//     (eta = half the smallest subnormal of F: one per rounded product that
+//     may underflow, six products and the centroid divisions, padded to 8;
+//     evaluated with the smallest subnormal, >= eta).  The
+//     fuzzer decides |S_e| <= B_or exactly, as (N_e . X)^2 <= B_or^2 |N_e|^2
+//     with N_e = dA_e x dB_e and X = (pA - cA) + (cB - pB) (classify.hpp):
+//     outside this band a flipped float orientation is unexplained.
+//
+// (9) The brute force's support check (plain_kernel.hpp edge_separation_full):
+//     along the unit axis n of (4) (unoriented), orientation "+" is accepted iff
+//     both endpoints p of eA have fl(n.p) >= fl(max_A - t_A) and both endpoints
+//     q of eB have fl(n.q) <= fl(min_B + t_B), max_A = max over A of fl(n.v),
+//     min_B likewise, t_P = PlainKernel::support_tolerance(P) (an F value);
+//     "-" is the same with A and B's roles of max and min swapped.  Every
+//     projection is within P_S of the exact n_e . v (P_S = max over the shape's
+//     vertices of (5)'s per-projection bound), and the subtraction rounds once,
+//     so with g = max_e - n_e . p >= 0 the exact depth of an endpoint below its
+//     shape's exact extreme:
+//       accepted  =>  g <= t + 2 P_S + u (|max~| + t)           ("possible")
+//     |max~| the float extreme's magnitude.  The exact brute force accepts only
+//     g = 0.  A float run that accepts a pair the exact one rejects is
+//     explained when every endpoint passes "possible", decided exactly as
+//     (N_e . (v_max - p))^2 <= T^2 |N_e|^2 (classify.hpp support_band).
+//
 // The bounds are evaluated in double.  Their own rounding is covered by the
 // final factor (1 + 2^-30), far above the ~10 double roundings involved.  The
 // exact length |N_e| enters only as a lower bound (a slightly shrunk double).
@@ -225,6 +268,35 @@ inline double side_axis_bound(const ConvexPolyhedron<F>& p, int e, const ConvexP
   double m = 0;
   for (const auto& v : q.vertices()) m = std::max(m, side_bound<F>(uv, t, v, du));
   return m;
+}
+
+/// (8) ||c~ - c|| for the stored centroid of p (sequential sum, one division).
+template <class F>
+inline double centroid_error(const ConvexPolyhedron<F>& p) {
+  return std::sqrt(3.0) * gamma(p.vertex_count(), u_of<F>()) * p.max_abs_coordinate() * kSlack;
+}
+
+/// (8) the orientation bound B_or: n the rounded unit axis, wa = fl(pA - c~A),
+/// wb = fl(c~B - pB), delta_n from (4), ca, cb from centroid_error.
+template <class F>
+inline double orientation_bound(const Vec3<F>& n, const Vec3<F>& wa, const Vec3<F>& wb, double delta_n,
+                                double ca, double cb) {
+  const double u = u_of<F>();
+  const double eta = double(std::numeric_limits<F>::denorm_min());  // >= eta
+  const Vec3<double> nd = d(n), ad = d(wa), bd = d(wb);
+  const double dots = abs_dot(nd, ad) + abs_dot(nd, bd);
+  return ((gamma(3, u) + u * (1 + gamma(3, u))) * dots + (delta_n + u / (1 - u)) * (norm(ad) + norm(bd)) + ca +
+          cb + 8 * eta) *
+         kSlack;
+}
+
+/// (9) the half-width of the "possible" support band of one shape:
+/// t + 2 P_S + u (|max~| + t), with t the kernel's support tolerance
+/// (PlainKernel::support_tolerance), ps = P_S and extreme = |max~| (or |min~|).
+template <class F>
+inline double support_band_width(double t, double ps, double extreme) {
+  const double u = u_of<F>();
+  return (t + 2 * ps + u * (extreme + t)) * kSlack;
 }
 
 /// A lower bound on sqrt(x) for a double x that approximates an exact value to
