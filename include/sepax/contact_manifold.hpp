@@ -53,7 +53,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "clip_polygon.hpp"
@@ -347,13 +349,34 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
 
 /// Closest points of segments p1 + s d1 and p2 + t d2, s, t in [0, 1]
 /// (Ericson, Real-Time Collision Detection, 5.1.9): field operations only.
+/// s and t do not change when d1, d2 and p1 - p2 are scaled together, so for
+/// float and double they are first scaled by the power of two that brings
+/// their largest component into [1, 2): a e - b^2 is of degree 4 in the
+/// coordinates and overflowed (NaN) from about 1e9 (float) / 1e77 (double)
+/// and underflowed to 0 below the inverse.  The scaling is exact (up to
+/// components that become subnormal, far below the largest), so at ordinary
+/// scales the results are bit for bit those of the unscaled formula.
 template <Number T>
 void closest_segment_points(const Vec3<T>& p1, const Vec3<T>& d1, const Vec3<T>& p2, const Vec3<T>& d2, T& s,
                             T& t) {
   const T zero(0), one(1);
   auto clamp01 = [&](const T& x) { return x < zero ? zero : (x > one ? one : x); };
-  const Vec3<T> r(p1 - p2);
-  const T a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r), c = dot(d1, r), b = dot(d1, d2);
+  Vec3<T> r(p1 - p2), u = d1, w = d2;
+  if constexpr (std::is_floating_point_v<T>) {
+    const T m = std::max(detail::max_abs2(u, w), detail::max_abs2(r, r));
+    if (m > T(0) && m <= std::numeric_limits<T>::max()) {
+      const int k = detail::pow2_exponent(m);
+      u = detail::scale_pow2(u, k);
+      w = detail::scale_pow2(w, k);
+      r = detail::scale_pow2(r, k);
+    }
+  }
+  const T a = dot(u, u), e = dot(w, w), f = dot(w, r), c = dot(u, r), b = dot(u, w);
+  if (!(a > zero) || !(e > zero)) {  // a segment of length 0 (or below the scaled range) is its tail
+    s = a > zero ? clamp01(T(-c / a)) : zero;
+    t = e > zero && !(a > zero) ? clamp01(T(f / e)) : zero;
+    return;
+  }
   const T denom = a * e - b * b;
   s = denom > zero ? clamp01(T((b * f - c * e) / denom)) : zero;
   t = (b * s + f) / e;

@@ -289,13 +289,16 @@ std::pair<ConvexPolyhedron<T>, ConvexPolyhedron<T>> config(int which, double s) 
 }
 }  // namespace
 
-TEMPLATE_TEST_CASE("scale invariance: 1e-3 and 1e3 give the same manifold up to scale", "[contact][scale]", float, double) {
-  using T = TestType;
+// The five configurations at each scale in `scales` give the manifold of
+// scale 1, scaled: same kind, feature, ids; depths and positions within a
+// relative tolerance.
+template <class T>
+void check_scaled_manifolds(std::initializer_list<double> scales) {
   for (int which = 0; which < 5; ++which) {
     const auto [a1, b1] = config<T>(which, 1.0);
     const auto m1 = contact_manifold(a1, b1);
     REQUIRE(m1.kind != ContactKind::None);
-    for (double s : {1e-3, 1e3}) {
+    for (double s : scales) {
       INFO("config " << which << " scale " << s);
       const auto [as, bs] = config<T>(which, s);
       const auto ms = contact_manifold(as, bs);
@@ -311,6 +314,20 @@ TEMPLATE_TEST_CASE("scale invariance: 1e-3 and 1e3 give the same manifold up to 
       check_invariants(as, bs, ms);
     }
   }
+}
+
+TEMPLATE_TEST_CASE("scale invariance: 1e-3 and 1e3 give the same manifold up to scale", "[contact][scale]", float, double) {
+  check_scaled_manifolds<TestType>({1e-3, 1e3});
+}
+
+// Extreme scales: squared lengths and cross products leave the range of T
+// here (float: 2^+-55 squared twice is 2^+-220; double: 2^+-400), so this is
+// the scale-safe paths (ConvexPolyhedron planes, scaled_cross, the clip).
+TEMPLATE_TEST_CASE("extreme scales give the same manifold up to scale", "[contact][scale][extreme]", float, double) {
+  if constexpr (std::is_same_v<TestType, float>)
+    check_scaled_manifolds<float>({0x1p-55, 0x1p55, 1e-15, 1e15});
+  else
+    check_scaled_manifolds<double>({0x1p-400, 0x1p400, 1e-120, 1e120});
 }
 
 TEMPLATE_TEST_CASE("speculative margin", "[contact][margin]", float, double) {
@@ -580,4 +597,30 @@ TEMPLATE_TEST_CASE("scale invariance on random overlapping pairs", "[contact][sc
     }
   }
   CHECK(checked >= 40);
+}
+
+TEMPLATE_TEST_CASE("closest_segment_points: scale-free, and a zero-length segment is its tail", "[contact][segments]",
+                   float, double) {
+  using T = TestType;
+  using contact_detail::closest_segment_points;
+  // two crossing segments: x axis from (-1,0,0), and a segment along y at x = 0.25, z = 1
+  T s, t;
+  const double big = std::is_same_v<T, float> ? 0x1p60 : 0x1p500;
+  for (double k : {1.0, big, 1 / big}) {
+    INFO("scale " << k);
+    closest_segment_points(vec_from_double<T>(Vec3<double>(-1, 0, 0) * k), vec_from_double<T>(Vec3<double>(2, 0, 0) * k),
+                           vec_from_double<T>(Vec3<double>(0.25, -1, 1) * k), vec_from_double<T>(Vec3<double>(0, 4, 0) * k), s, t);
+    CHECK(s == T(0.625));
+    CHECK(t == T(0.25));
+  }
+  // zero-length first segment: the point (0.5, 3, 0) against the x segment from the origin
+  closest_segment_points(vec_from_double<T>({0.5, 3, 0}), Vec3<T>(T(0), T(0), T(0)), vec_from_double<T>({0, 0, 0}),
+                         vec_from_double<T>({2, 0, 0}), s, t);
+  CHECK(s == T(0));
+  CHECK(t == T(0.25));
+  // zero-length second segment
+  closest_segment_points(vec_from_double<T>({0, 0, 0}), vec_from_double<T>({2, 0, 0}), vec_from_double<T>({3, 1, 0}),
+                         Vec3<T>(T(0), T(0), T(0)), s, t);
+  CHECK(s == T(1));
+  CHECK(t == T(0));
 }
