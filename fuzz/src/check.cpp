@@ -501,6 +501,10 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
         if (sign_sep_diff(x, *own, Q(bf + S.bound(sat, f))) <= 0) continue;  // does not beat it
         if (skipped && parallel_band<F>(A.edge_dir(ea), B.edge_dir(eb)) == ParallelBand::inside) continue;  // (6)
         if (!skipped && !brute) continue;  // its arc test: classified per pair (2)
+        if (!skipped) {  // the exact brute force measures only exactly supported pairs
+          const EdgeGaps g = exact_edge_gaps(E, ea, eb);
+          if (!exactly_supported(E, g, f, true) && !exactly_supported(E, g, f, false)) continue;
+        }
         bad = "it did not measure " + to_string(f) + " (exact value " + num(sepax::to_double(x)) + ")" +
               (skipped ? " as parallel, outside the band (6)" : ", rejected by its support check");
       }
