@@ -24,7 +24,9 @@
 //
 // ---- Error bounds -------------------------------------------------------------
 // u = unit roundoff of T, γ_k = k u / (1 - k u), η_T = smallest subnormal of T.
-// Per query (O(F + V), no allocation):
+// Per query, O(1) from terms each ConvexPolyhedron computes once, with its
+// planes (compute_derived: max_abs_coordinate, extent, bounds, centroid,
+// normal_conditioning), no allocation:
 //   M_P   max |coordinate| of P (exact);  D_P  bbox diagonal of P;
 //   D     bbox diagonal of A ∪ B  (|p - q| <= D for any two vertices);
 //   δ_P   bound on |n_f - N_f/|N_f|| over faces f of P, where n_f is the stored
@@ -37,7 +39,8 @@
 // error <= γ_3/2 + u, the division u, so |n - Ñ/|Ñ|| <= γ_4; and
 // |x/|x| - y/|y|| <= 2|x - y|/|y|.  With q = γ_4 √2 |ẽ1||ẽ2|/(1-u)^2 + √3 η_T:
 //   δ_f = γ_4 + 2 q / (|Ñ| - q)      (2.5, i.e. "always exact", if |Ñ| <= 2q)
-// and δ_P = max_f δ_f, computed from ρ_f = |ẽ1||ẽ2| / |Ñ| (max ρ, one sqrt).
+// and δ_P = max_f δ_f, computed from ρ_P = max_f ρ_f, ρ_f = |ẽ1||ẽ2| / |Ñ|
+// (ConvexPolyhedron::normal_conditioning, once per shape; normal_error).
 // The same formula bounds the unit edge axis n = fl(normalize(dA x dB)) of an
 // edge pair (δ_e, computed per pair).
 //
@@ -473,46 +476,14 @@ class RobustKernel {
     return std::isfinite(r2) ? r2 : std::numeric_limits<double>::infinity();
   }
 
+  // δ_P from the shape's ρ_P = max_f |ẽ1||ẽ2|/|Ñ| (see the header), which
+  // ConvexPolyhedron computes once per shape when it computes its planes
+  // (normal_conditioning(): the same T differences and cross products of the
+  // plane triples, +infinity when some |Ñ|^2 <= kTinySquared or anything
+  // overflows, which gives kNoBound here).  O(1) per query.
   static double normal_error(const P& p) {
-    if constexpr (std::is_same_v<T, float>) {
-      // The same maximum of r2 = |ẽ1|^2 |ẽ2|^2 / |Ñ|^2 without a division or
-      // a finiteness test per face (this runs for every face of both shapes
-      // on every query): the maximum fraction num/den is tracked by cross
-      // multiplication.  For float inputs every factor is a double square of
-      // a float (<= 3 * 2^256), so num * den < 2^1024 cannot overflow; an
-      // infinite or NaN float difference or cross product, or a tiny |Ñ|,
-      // sets `bad` (then there is no bound: infinity, as before).  The one
-      // division at the end rounds once (relative 2^-53, inside kMargin).
-      double wnum = 0, wden = 1;
-      bool bad = false;
-      const int nf = p.face_count();
-      for (int f = 0; f < nf; ++f) {
-        const auto& t = p.face(f).plane_vertices;
-        const Vec3<T>& v0 = p.vertex(t[0]);
-        const Vec3<T> e1(p.vertex(t[1]) - v0);
-        const Vec3<T> e2(p.vertex(t[2]) - v0);
-        const Vec3<T> c = cross(e1, e2);
-        const double nc2 = squared_norm_d(c);
-        const double num = squared_norm_d(e1) * squared_norm_d(e2);
-        bad |= !(nc2 > kTinySquared && nc2 <= std::numeric_limits<double>::max() &&
-                 num <= std::numeric_limits<double>::max());
-        const bool larger = num * wden > wnum * nc2;
-        wnum = larger ? num : wnum;
-        wden = larger ? nc2 : wden;
-      }
-      if (bad) return kNoBound;
-      return unit_error_from_ratio(std::sqrt(wnum / wden) * kMargin);
-    }
-    double worst = 0;
-    for (int f = 0; f < p.face_count(); ++f) {
-      const auto& t = p.face(f).plane_vertices;
-      const Vec3<T>& v0 = p.vertex(t[0]);
-      const Vec3<T> e1(p.vertex(t[1]) - v0);
-      const Vec3<T> e2(p.vertex(t[2]) - v0);
-      const double r2 = cross_ratio_squared(e1, e2, cross(e1, e2));
-      if (r2 > worst) worst = r2;
-    }
-    return unit_error_from_ratio(std::sqrt(worst) * kMargin);
+    static_assert(P::kNormalTinySquared == kTinySquared);
+    return unit_error_from_ratio(p.normal_conditioning() * kMargin);
   }
 
   static double centroid_error(const P& p) {
