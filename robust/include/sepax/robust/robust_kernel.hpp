@@ -92,9 +92,11 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <type_traits>
 
@@ -104,6 +106,10 @@
 #include <sepax/robust/parallel.hpp>
 #include <sepax/robust/separation_compare.hpp>
 #include <sepax/sat_kernel.hpp>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 /// The SAT loops' per-pair fast paths: inlined into the loop even when the
 /// inliner's size heuristics would not (their exact stages are out of line).
@@ -137,26 +143,28 @@ class RobustKernel {
       const double hi = std::max<double>(a.bounds_max()[c], b.bounds_max()[c]);
       d2 += (hi - lo) * (hi - lo);
     }
-    d_ = std::sqrt(d2) * kMargin;
+    d_ = sqrt_d(d2) * kMargin;
     const double da_n = normal_error(a), db_n = normal_error(b);
-    const double s3 = std::sqrt(3.0) * kMargin;
-    face_err_a_ = (da_n * d_ + gamma(5) * s3 * (ma + mb)) * kMargin + 4 * kEta;
-    face_err_b_ = (db_n * d_ + gamma(5) * s3 * (ma + mb)) * kMargin + 4 * kEta;
-    support_err_a_ = (2 * gamma(3) * s3 * mb + da_n * db) * kMargin + 4 * kEta;  // B's vertices, A's faces
-    support_err_b_ = (2 * gamma(3) * s3 * ma + db_n * da) * kMargin + 4 * kEta;
+    // kG5S3 = γ_5 √3 (1+1e-6), kG3S3x2 = 2 γ_3 √3 (1+1e-6): compile-time constants (see fold)
+    face_err_a_ = (da_n * d_ + kG5S3 * (ma + mb)) * kMargin + 4 * kEta;
+    face_err_b_ = (db_n * d_ + kG5S3 * (ma + mb)) * kMargin + 4 * kEta;
+    support_err_a_ = (kG3S3x2 * mb + da_n * db) * kMargin + 4 * kEta;  // B's vertices, A's faces
+    support_err_b_ = (kG3S3x2 * ma + db_n * da) * kMargin + 4 * kEta;
     arc_err_a_ = (da_n + gamma(5)) * db * kMargin + 2 * kEta;  // A's normals . B's edges
     arc_err_b_ = (db_n + gamma(5)) * da * kMargin + 2 * kEta;
     arc_err_a_t_ = round_up(arc_err_a_);
     arc_err_b_t_ = round_up(arc_err_b_);
     support_err_a_t_ = round_up(support_err_a_);
     support_err_b_t_ = round_up(support_err_b_);
-    edge_abs_ = gamma(8) * (d_ + s3 * (ma + mb)) * kMargin + 8 * kEta;
-    proj_abs_a_ = 2 * gamma(3) * s3 * ma * kMargin + 4 * kEta;
-    proj_abs_b_ = 2 * gamma(3) * s3 * mb * kMargin + 4 * kEta;
+    edge_abs_ = gamma(8) * (d_ + kS3 * (ma + mb)) * kMargin + 8 * kEta;
+    proj_abs_a_ = kG3S3x2 * ma * kMargin + 4 * kEta;
+    proj_abs_b_ = kG3S3x2 * mb * kMargin + 4 * kEta;
     centroid_err_a_ = centroid_error(a);
     centroid_err_b_ = centroid_error(b);
     extent_a_ = da;
     extent_b_ = db;
+    side_span_a_ = extent_a_ + centroid_err_a_;
+    side_span_b_ = extent_b_ + centroid_err_b_;
     lanes_ = a.lanes_bounded() && b.lanes_bounded();
     arc_lane_bound_ = std::max(arc_err_a_t_, arc_err_b_t_);
   }
@@ -427,7 +435,32 @@ class RobustKernel {
   static constexpr double kMargin = 1.0 + 1e-6;
   static constexpr double kNoBound = 2.5;  // |n - n*| <= 2 (1 + γ_4) always
 
-  static constexpr double gamma(int k) { return k * kU / (1.0 - k * kU); }
+  // Compile-time constants.  sepax::robust is compiled with -frounding-math
+  // (CGAL's flag), under which GCC does not fold inexact constant arithmetic:
+  // γ_k, √2, √3 times the margin, ... were recomputed -- divisions and libm
+  // sqrt calls -- on every use, per edge pair.  consteval forces them to
+  // compile time, rounded to nearest: the values the runtime expressions had
+  // (√2 and √3 are the correctly rounded std::numbers constants, which is
+  // what std::sqrt(2.0) and std::sqrt(3.0) return).
+  static consteval double fold(double x) { return x; }
+  static consteval double gamma(int k) { return k * kU / (1.0 - k * kU); }
+  /// γ_k for a k known only at run time (centroid_error).
+  static constexpr double gamma_n(int k) { return k * kU / (1.0 - k * kU); }
+  static constexpr double kS3 = fold(std::numbers::sqrt3 * kMargin);
+  static constexpr double kG5S3 = fold(gamma(5) * kS3);
+  static constexpr double kG3S3x2 = fold(2 * gamma(3) * kS3);
+  // q/|Ñ| = kUnitC ρ (unit_error_from_ratio)
+  static constexpr double kUnitC = fold(gamma(4) * std::numbers::sqrt2 / ((1 - kU) * (1 - kU)));
+
+  // sqrt of a double, the IEEE (correctly rounded) result as std::sqrt, but
+  // inline: under -frounding-math GCC calls libm's sqrt for it.
+  static double sqrt_d(double x) {
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
+#else
+    return std::sqrt(x);
+#endif
+  }
 
   struct EdgeAxis {
     Vec3<T> n;      // fl(normalize(dA x dB)), unoriented (as PlainKernel)
@@ -452,8 +485,7 @@ class RobustKernel {
   // Bound on |n - N/|N|| for n = fl(normalize(fl(e1 x e2))), see the header.
   static double unit_error_from_ratio(double rho) {
     // rho >= |ẽ1||ẽ2|/|Ñ| (already padded); q/|Ñ| = c rho.
-    const double c = gamma(4) * std::sqrt(2.0) / ((1 - kU) * (1 - kU));
-    const double qr = c * rho * kMargin;
+    const double qr = kUnitC * rho * kMargin;
     if (!(qr < 0.5)) return kNoBound;
     return (gamma(4) + 2 * qr / (1 - qr)) * kMargin;
   }
@@ -489,7 +521,7 @@ class RobustKernel {
   static double centroid_error(const P& p) {
     const double k = static_cast<double>(p.vertex_count()) + 1.0;
     if (!(k * kU < 0.25)) return std::numeric_limits<double>::infinity();
-    return std::sqrt(3.0) * gamma(static_cast<int>(k)) * p.max_abs_coordinate() * kMargin * kMargin +
+    return std::numbers::sqrt3 * gamma_n(static_cast<int>(k)) * p.max_abs_coordinate() * fold(kMargin * kMargin) +
            4 * kEta;
   }
 
@@ -520,21 +552,30 @@ class RobustKernel {
     if (std::isfinite(r2)) {
       const T len = std::sqrt(squared_norm(c));
       ax.n = Vec3<T>(c[0] / len, c[1] / len, c[2] / len);
-      ax.delta = unit_error_from_ratio(std::sqrt(r2) * kMargin);
+      ax.delta = unit_error_from_ratio(sqrt_d(r2) * kMargin);
     } else {
-      const auto ce = robust::exact_cross(
-          robust::exact_diff(a_.vertex(a_.edge_head(ea)), a_.vertex(a_.edge_tail(ea))),
-          robust::exact_diff(b_.vertex(b_.edge_head(eb)), b_.vertex(b_.edge_tail(eb))));
-      Vec3<double> cd(robust::approx_double(ce[0]), robust::approx_double(ce[1]),
-                      robust::approx_double(ce[2]));
-      const double m = std::max({std::fabs(cd[0]), std::fabs(cd[1]), std::fabs(cd[2])});
-      if (m > 0) cd /= m;
-      const double len = cd.norm();
-      ax.n = len > 0 ? Vec3<T>(static_cast<T>(cd[0] / len), static_cast<T>(cd[1] / len),
-                               static_cast<T>(cd[2] / len))
-                     : Vec3<T>(T(0), T(0), T(0));
-      ax.delta = kNoBound;
+      ax = exact_edge_axis(ea, eb);
     }
+    return ax;
+  }
+
+  // The T cross product is zero or not finite: the axis from the exact cross
+  // product rounded to double, no bound (out of line: it keeps the hot path's
+  // frame small).
+  SEPAX_ROBUST_COLD EdgeAxis exact_edge_axis(int ea, int eb) const {
+    EdgeAxis ax;
+    const auto ce = robust::exact_cross(
+        robust::exact_diff(a_.vertex(a_.edge_head(ea)), a_.vertex(a_.edge_tail(ea))),
+        robust::exact_diff(b_.vertex(b_.edge_head(eb)), b_.vertex(b_.edge_tail(eb))));
+    Vec3<double> cd(robust::approx_double(ce[0]), robust::approx_double(ce[1]),
+                    robust::approx_double(ce[2]));
+    const double m = std::max({std::fabs(cd[0]), std::fabs(cd[1]), std::fabs(cd[2])});
+    if (m > 0) cd /= m;
+    const double len = cd.norm();
+    ax.n = len > 0 ? Vec3<T>(static_cast<T>(cd[0] / len), static_cast<T>(cd[1] / len),
+                             static_cast<T>(cd[2] / len))
+                   : Vec3<T>(T(0), T(0), T(0));
+    ax.delta = kNoBound;
     return ax;
   }
 
@@ -606,8 +647,8 @@ class RobustKernel {
   int axis_side(const EdgeAxis& ax, int ea, int eb) const {
     const T oa = dot(ax.n, Vec3<T>(a_.vertex(a_.edge_tail(ea)) - a_.centroid()));
     const T ob = dot(ax.n, Vec3<T>(b_.centroid() - b_.vertex(b_.edge_tail(eb))));
-    const double ea_bound = ((ax.delta + gamma(5)) * (extent_a_ + centroid_err_a_) + centroid_err_a_) * kMargin;
-    const double eb_bound = ((ax.delta + gamma(5)) * (extent_b_ + centroid_err_b_) + centroid_err_b_) * kMargin;
+    const double ea_bound = ((ax.delta + gamma(5)) * side_span_a_ + centroid_err_a_) * kMargin;  // side_span = extent + cerr
+    const double eb_bound = ((ax.delta + gamma(5)) * side_span_b_ + centroid_err_b_) * kMargin;
     const double sum = static_cast<double>(oa) + static_cast<double>(ob);
     const double e = ea_bound + eb_bound +
                      0x1p-52 * (std::abs(static_cast<double>(oa)) + std::abs(static_cast<double>(ob))) + 8 * kEta;
@@ -924,6 +965,7 @@ class RobustKernel {
   const P& b_;
   double d_ = 0;
   double extent_a_ = 0, extent_b_ = 0;
+  double side_span_a_ = 0, side_span_b_ = 0;  // extent_* + centroid_err_*
   double face_err_a_ = 0, face_err_b_ = 0;
   double support_err_a_ = 0, support_err_b_ = 0;
   double arc_err_a_ = 0, arc_err_b_ = 0;
