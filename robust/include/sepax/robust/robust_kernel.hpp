@@ -302,9 +302,11 @@ class RobustKernel {
   /// drops a pair only when both sign patterns of a crossing are certainly
   /// violated: some value is beyond the bound arc_lane_bound_ = max(arc_err_a_t_,
   /// arc_err_b_t_) >= the bound of each value (see the header: E_arc, rounded
-  /// up to T) on the wrong side, so its exact sign is wrong as well.  The
-  /// survivors (the crossing pairs and the few within the bounds) go through
-  /// minkowski_face, which decides them exactly.  So the result is exactly
+  /// up to T) on the wrong side, so its exact sign is wrong as well.  A
+  /// survivor whose four values are all beyond the bound with the crossing
+  /// signs (all > bound or all < -bound: every exact sign is certain) is
+  /// accepted as it is; the others (some value within the bound, or NaN) go
+  /// through minkowski_face, which decides them exactly.  So the result is exactly
   /// {eb : minkowski_face(ea, eb)}, with or without FMA contraction (the bound
   /// holds either way).  The lanes need both shapes lanes_bounded() (no
   /// overflow, no NaN); otherwise every pair takes minkowski_face.
@@ -314,7 +316,9 @@ class RobustKernel {
       const int m = simd::arc_candidates<true>(b_, lo, hi, a_.edge_dir(ea), a_.edge_normal(ea, 0),
                                                a_.edge_normal(ea, 1), arc_lane_bound_, out);
       for (int i = 0; i < m; ++i) {
-        if (minkowski_face(ea, out[i])) out[n++] = out[i];
+        const int e = out[i];
+        if (e >= 0) out[n++] = e;                              // certainly crossing
+        else if (minkowski_face(ea, ~e)) out[n++] = ~e;        // some value within the bound
       }
       return n;
     }
