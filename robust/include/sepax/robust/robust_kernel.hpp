@@ -217,9 +217,16 @@ class RobustKernel {
   T support_filter_b() const { return support_err_b_t_; }
   /// Exact sign of N_f . (b_u - b_v), N_f the plane triple's cross product of
   /// face f of A: < 0 when vertex u of B is strictly deeper below f than v.
-  int support_sign_a(int f, int u, int v) const { return face_pair_sign(a_, f, b_.vertex(v), b_.vertex(u)); }
+  /// Out of line (and cold: asked only within the filter): inlined, its
+  /// orientation filter's registers made the traversal's climb loop spill on
+  /// every step although it almost never runs.
+  SEPAX_ROBUST_COLD int support_sign_a(int f, int u, int v) const {
+    return face_pair_sign(a_, f, b_.vertex(v), b_.vertex(u));
+  }
   /// Exact sign of N_f . (a_u - a_v), f a face of B.
-  int support_sign_b(int f, int u, int v) const { return face_pair_sign(b_, f, a_.vertex(v), a_.vertex(u)); }
+  SEPAX_ROBUST_COLD int support_sign_b(int f, int u, int v) const {
+    return face_pair_sign(b_, f, a_.vertex(v), a_.vertex(u));
+  }
 
   /// The bound on |value - exact value| of a separation this kernel returns
   /// for feature f (face_separation_*, face_query_*, edge_separation): the
