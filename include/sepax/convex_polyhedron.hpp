@@ -103,18 +103,20 @@ double triangle_aspect(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
 
 /// A double computed on demand and kept: NaN means "not computed yet".  A
 /// relaxed atomic, so concurrent readers of a const shape may all compute it
-/// and store the same value; copies carry the value (or NaN) over.
+/// and store the same value; copies carry the value (or NaN) over.  noexcept
+/// copies, so that ConvexPolyhedron stays nothrow-movable (containers of
+/// shapes move rather than copy when they grow).
 class LazyDouble {
  public:
   LazyDouble() = default;
-  LazyDouble(const LazyDouble& o) : v_(o.load()) {}
-  LazyDouble& operator=(const LazyDouble& o) {
+  LazyDouble(const LazyDouble& o) noexcept : v_(o.load()) {}
+  LazyDouble& operator=(const LazyDouble& o) noexcept {
     store(o.load());
     return *this;
   }
-  double load() const { return v_.load(std::memory_order_relaxed); }
-  void store(double x) const { v_.store(x, std::memory_order_relaxed); }
-  void reset() const { store(std::numeric_limits<double>::quiet_NaN()); }
+  double load() const noexcept { return v_.load(std::memory_order_relaxed); }
+  void store(double x) const noexcept { v_.store(x, std::memory_order_relaxed); }
+  void reset() const noexcept { store(std::numeric_limits<double>::quiet_NaN()); }
 
  private:
   mutable std::atomic<double> v_{std::numeric_limits<double>::quiet_NaN()};
