@@ -163,8 +163,9 @@ class RobustKernel {
     centroid_err_b_ = centroid_error(b);
     extent_a_ = da;
     extent_b_ = db;
-    side_span_a_ = extent_a_ + centroid_err_a_;
-    side_span_b_ = extent_b_ + centroid_err_b_;
+    d_margin_ = d_ * kMargin;
+    side_span_ = ((extent_a_ + centroid_err_a_) + (extent_b_ + centroid_err_b_)) * kMargin;
+    side_abs_ = (centroid_err_a_ + centroid_err_b_) * kMargin + 8 * kEta;
     lanes_ = a.lanes_bounded() && b.lanes_bounded();
     arc_lane_bound_ = std::max(arc_err_a_t_, arc_err_b_t_);
   }
@@ -471,6 +472,7 @@ class RobustKernel {
   static constexpr double kG3S3x2 = fold(2 * gamma(3) * kS3);
   // q/|Ñ| = kUnitC ρ (unit_error_from_ratio)
   static constexpr double kUnitC = fold(gamma(4) * std::numbers::sqrt2 / ((1 - kU) * (1 - kU)));
+  static constexpr double kUnitCM2 = fold(kUnitC * kMargin * kMargin);
 
   // sqrt of a double, the IEEE (correctly rounded) result as std::sqrt, but
   // inline: under -frounding-math GCC calls libm's sqrt for it.
@@ -510,9 +512,10 @@ class RobustKernel {
   static double padded_extent(const P& p) { return p.extent() * (1.0 + 4 * kU) * kMargin; }
 
   // Bound on |n - N/|N|| for n = fl(normalize(fl(e1 x e2))), see the header.
+  // rho = |ẽ1||ẽ2|/|Ñ| as computed (unpadded); q/|Ñ| = kUnitC rho, and both
+  // (1+1e-6) pads (of rho and of q/|Ñ|) are in kUnitCM2, one product.
   static double unit_error_from_ratio(double rho) {
-    // rho >= |ẽ1||ẽ2|/|Ñ| (already padded); q/|Ñ| = c rho.
-    const double qr = kUnitC * rho * kMargin;
+    const double qr = kUnitCM2 * rho;
     if (!(qr < 0.5)) return kNoBound;
     return (gamma(4) + 2 * qr / (1 - qr)) * kMargin;
   }
@@ -542,7 +545,7 @@ class RobustKernel {
   // overflows, which gives kNoBound here).  O(1) per query.
   static double normal_error(const P& p) {
     static_assert(P::kNormalTinySquared == kTinySquared);
-    return unit_error_from_ratio(p.normal_conditioning() * kMargin);
+    return unit_error_from_ratio(p.normal_conditioning());
   }
 
   static double centroid_error(const P& p) {
@@ -579,7 +582,7 @@ class RobustKernel {
     if (std::isfinite(r2)) {
       const T len = std::sqrt(squared_norm(c));
       ax.n = Vec3<T>(c[0] / len, c[1] / len, c[2] / len);
-      ax.delta = unit_error_from_ratio(sqrt_d(r2) * kMargin);
+      ax.delta = unit_error_from_ratio(sqrt_d(r2));
     } else {
       ax = exact_edge_axis(ea, eb);
     }
@@ -606,7 +609,9 @@ class RobustKernel {
     return ax;
   }
 
-  double edge_value_error(double delta) const { return delta * d_ * kMargin + edge_abs_; }
+  // δ D (1+1e-6) + edge_abs_, with d_margin_ = D (1+1e-6) summed once per
+  // query (a reassociated product: its rounding is inside the margin).
+  double edge_value_error(double delta) const { return delta * d_margin_ + edge_abs_; }
 
   double value_error(const Feature& f) const {
     switch (f.type) {
@@ -674,11 +679,14 @@ class RobustKernel {
   int axis_side(const EdgeAxis& ax, int ea, int eb) const {
     const T oa = dot(ax.n, Vec3<T>(a_.vertex(a_.edge_tail(ea)) - a_.centroid()));
     const T ob = dot(ax.n, Vec3<T>(b_.centroid() - b_.vertex(b_.edge_tail(eb))));
-    const double ea_bound = ((ax.delta + gamma(5)) * side_span_a_ + centroid_err_a_) * kMargin;  // side_span = extent + cerr
-    const double eb_bound = ((ax.delta + gamma(5)) * side_span_b_ + centroid_err_b_) * kMargin;
+    // The sum of the two per-side bounds ((δ + γ_5)(D_P + C_P) + C_P)(1+1e-6)
+    // (centroid_side's), regrouped: (δ + γ_5) side_span_ + side_abs_ with the
+    // per-query sums side_span_ = (D_A + C_A + D_B + C_B)(1+1e-6) and
+    // side_abs_ = (C_A + C_B)(1+1e-6) + 8η (the regrouping's rounding is
+    // inside the margin).
     const double sum = static_cast<double>(oa) + static_cast<double>(ob);
-    const double e = ea_bound + eb_bound +
-                     0x1p-52 * (std::abs(static_cast<double>(oa)) + std::abs(static_cast<double>(ob))) + 8 * kEta;
+    const double e = (ax.delta + gamma(5)) * side_span_ + side_abs_ +
+                     0x1p-52 * (std::abs(static_cast<double>(oa)) + std::abs(static_cast<double>(ob)));
     if (sum > e) return 1;
     if (sum < -e) return -1;
     return axis_side_exact(ea, eb);
@@ -992,7 +1000,8 @@ class RobustKernel {
   const P& b_;
   double d_ = 0;
   double extent_a_ = 0, extent_b_ = 0;
-  double side_span_a_ = 0, side_span_b_ = 0;  // extent_* + centroid_err_*
+  double side_span_ = 0, side_abs_ = 0;        // axis_side's per-query sums
+  double d_margin_ = 0;                        // d_ (1+1e-6)
   double face_err_a_ = 0, face_err_b_ = 0;
   double support_err_a_ = 0, support_err_b_ = 0;
   double arc_err_a_ = 0, arc_err_b_ = 0;
