@@ -64,6 +64,8 @@ struct Lanes {  // portable fallback: one lane
   static V mul(V a, V b) { return a * b; }
   static M lt(V a, V b) { return a < b; }
   static M gt(V a, V b) { return a > b; }
+  static M ge(V a, V b) { return a >= b; }
+  static M le(V a, V b) { return a <= b; }
   static M unord(V a, V b) { return a != a || b != b; }
   static M mand(M a, M b) { return a && b; }
   static M mor(M a, M b) { return a || b; }
@@ -90,6 +92,8 @@ struct Lanes<float> {
   static V mul(V a, V b) { return _mm_mul_ps(a, b); }
   static M lt(V a, V b) { return _mm_cmplt_ps(a, b); }
   static M gt(V a, V b) { return _mm_cmpgt_ps(a, b); }
+  static M ge(V a, V b) { return _mm_cmpge_ps(a, b); }
+  static M le(V a, V b) { return _mm_cmple_ps(a, b); }
   static M unord(V a, V b) { return _mm_cmpunord_ps(a, b); }
   static M mand(M a, M b) { return _mm_and_ps(a, b); }
   static M mor(M a, M b) { return _mm_or_ps(a, b); }
@@ -119,6 +123,8 @@ struct Lanes<double> {
   static V mul(V a, V b) { return _mm_mul_pd(a, b); }
   static M lt(V a, V b) { return _mm_cmplt_pd(a, b); }
   static M gt(V a, V b) { return _mm_cmpgt_pd(a, b); }
+  static M ge(V a, V b) { return _mm_cmpge_pd(a, b); }
+  static M le(V a, V b) { return _mm_cmple_pd(a, b); }
   static M unord(V a, V b) { return _mm_cmpunord_pd(a, b); }
   static M mand(M a, M b) { return _mm_and_pd(a, b); }
   static M mor(M a, M b) { return _mm_or_pd(a, b); }
@@ -197,9 +203,11 @@ SEPAX_SIMD_INLINE inline int arc_candidates(const ConvexPolyhedron<T>& b, int lo
     if constexpr (!kFilter) {
       m = L::mor(L::gt(mn, lo_lim), L::lt(mx, hi_lim));
     } else {
-      m = L::mandnot(L::mand(L::lt(mn, lo_lim), L::gt(mx, hi_lim)), L::eq(mn, mn));
+      // not (min < -bound and max > bound), i.e. min >= -bound or max <=
+      // bound: no value is NaN (lanes_bounded, the precondition), so the
+      // negation is exact and costs what the plain test costs.
+      m = L::mor(L::ge(mn, lo_lim), L::le(mx, hi_lim));
       const unsigned bits = L::bits(m);
-      // (comparisons with NaN are false: a NaN lane is never certain)
       if (bits != 0) certain = L::bits(L::mor(L::gt(mn, hi_lim), L::lt(mx, lo_lim)));
       return bits;
     }
