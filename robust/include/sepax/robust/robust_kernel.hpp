@@ -24,8 +24,8 @@
 //
 // ---- Error bounds -------------------------------------------------------------
 // u = unit roundoff of T, γ_k = k u / (1 - k u), η_T = smallest subnormal of T.
-// Per query, O(1) from terms each ConvexPolyhedron computes once, with its
-// planes (compute_derived: max_abs_coordinate, extent, bounds, centroid,
+// Per query, O(1) from terms each ConvexPolyhedron computes once (with its
+// planes: max_abs_coordinate, extent, bounds, centroid; on first use:
 // normal_conditioning), no allocation:
 //   M_P   max |coordinate| of P (exact);  D_P  bbox diagonal of P;
 //   D     bbox diagonal of A ∪ B  (|p - q| <= D for any two vertices);
@@ -539,8 +539,8 @@ class RobustKernel {
   }
 
   // δ_P from the shape's ρ_P = max_f |ẽ1||ẽ2|/|Ñ| (see the header), which
-  // ConvexPolyhedron computes once per shape when it computes its planes
-  // (normal_conditioning(): the same T differences and cross products of the
+  // ConvexPolyhedron computes once per shape, on first use after its vertices
+  // were set (normal_conditioning(): the same T differences and cross products of the
   // plane triples, +infinity when some |Ñ|^2 <= kTinySquared or anything
   // overflows, which gives kNoBound here).  O(1) per query.
   static double normal_error(const P& p) {
