@@ -7,6 +7,7 @@
 // Gauss map and traversal, which visit axes in different orders, agree.
 #pragma once
 
+#include <concepts>
 #include <cstdint>
 
 #include "sat_kernel.hpp"
@@ -20,16 +21,36 @@ class BestAxis {
 
   /// Offer a candidate; returns true when it became the best.
   bool consider(const K& k, const Separation<T>& s, const Feature& f) {
-    if (!has_) {
-      set(s, f);
-      return true;
+    if constexpr (kBounded) {
+      // The best's error bound is kept: one bound per candidate (the one its
+      // kernel call has just computed, e.g. the cached edge axis), not the
+      // best's recomputed on every comparison.  compare_bounded is compare
+      // with both bounds given: the same filter, the same exact fallback.
+      const double e = k.error_bound(f);
+      if (!has_) {
+        set(s, f);
+        err_ = e;
+        return true;
+      }
+      const int c = k.compare_bounded(s, f, e, sep_, feature_, err_);
+      if (c > 0 || (c == 0 && precedes(f, feature_))) {
+        set(s, f);
+        err_ = e;
+        return true;
+      }
+      return false;
+    } else {
+      if (!has_) {
+        set(s, f);
+        return true;
+      }
+      const int c = k.compare(s, f, sep_, feature_);
+      if (c > 0 || (c == 0 && precedes(f, feature_))) {
+        set(s, f);
+        return true;
+      }
+      return false;
     }
-    const int c = k.compare(s, f, sep_, feature_);
-    if (c > 0 || (c == 0 && precedes(f, feature_))) {
-      set(s, f);
-      return true;
-    }
-    return false;
   }
 
   bool has() const { return has_; }
@@ -56,9 +77,16 @@ class BestAxis {
     has_ = true;
   }
 
+  // Kernels that expose their value error bounds (RobustKernel).
+  static constexpr bool kBounded = requires(const K& k, const Feature& f, const Separation<T>& s, double e) {
+    { k.error_bound(f) } -> std::same_as<double>;
+    { k.compare_bounded(s, f, e, s, f, e) } -> std::same_as<int>;
+  };
+
   bool has_ = false;
   Separation<T> sep_;
   Feature feature_;
+  double err_ = 0;  // kBounded: k.error_bound(feature_)
 };
 
 /// Offers the axes i = 0 .. n-1 of one kind: query(i) is a FaceQuery (a

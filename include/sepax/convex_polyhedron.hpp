@@ -41,6 +41,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -100,6 +101,27 @@ double triangle_aspect(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   return n / l2;
 }
 
+/// A double computed on demand and kept: NaN means "not computed yet".  A
+/// relaxed atomic, so concurrent readers of a const shape may all compute it
+/// and store the same value; copies carry the value (or NaN) over.  noexcept
+/// copies, so that ConvexPolyhedron stays nothrow-movable (containers of
+/// shapes move rather than copy when they grow).
+class LazyDouble {
+ public:
+  LazyDouble() = default;
+  LazyDouble(const LazyDouble& o) noexcept : v_(o.load()) {}
+  LazyDouble& operator=(const LazyDouble& o) noexcept {
+    store(o.load());
+    return *this;
+  }
+  double load() const noexcept { return v_.load(std::memory_order_relaxed); }
+  void store(double x) const noexcept { v_.store(x, std::memory_order_relaxed); }
+  void reset() const noexcept { store(std::numeric_limits<double>::quiet_NaN()); }
+
+ private:
+  mutable std::atomic<double> v_{std::numeric_limits<double>::quiet_NaN()};
+};
+
 }  // namespace detail
 
 /// Plane through three points, normalised when T normalises.
@@ -110,9 +132,9 @@ double triangle_aspect(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
 /// from b - a and c - a scaled by a power of two.  Wherever the unscaled
 /// formula neither overflows nor underflows the normal is bit for bit the one
 /// it gives -- the same planes as before, and the robust kernel's error bound
-/// on them (robust_kernel.hpp, normal_error) still holds.  If b - a or c - a
-/// themselves overflow, the normal is not finite; ConvexPolyhedron reports
-/// that as BadScale.
+/// on them (robust_kernel.hpp, normal_error; normal_conditioning() here)
+/// still holds.  If b - a or c - a themselves overflow, the normal is not
+/// finite; ConvexPolyhedron reports that as BadScale.
 template <Number T>
 inline Plane<T> plane_through(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   Vec3<T> n = scaled_cross(Vec3<T>(b - a), Vec3<T>(c - a));
@@ -292,6 +314,29 @@ class ConvexPolyhedron {
   double extent() const { return extent_; }
   /// max |coordinate| over all vertices, as a double (for filter bounds).
   double max_abs_coordinate() const { return max_abs_; }
+  /// Float and double: ρ_P = max over the faces of |ẽ1||ẽ2| / |Ñ|, ẽ1, ẽ2 the
+  /// plane triple's differences and Ñ their cross product, all rounded to T
+  /// (the values the stored normals come from), evaluated in double; +infinity
+  /// ("no bound") when some Ñ is tiny or something overflows.  A shape-only
+  /// term of the robust kernel's normal error bound δ_P (robust_kernel.hpp,
+  /// "Error bounds"): computed on the first call after the vertices were set
+  /// (from_faces, convert_from, with_vertices) and kept, so robust queries
+  /// pay for it once per shape and plain ones never.  Thread-safe (a relaxed
+  /// atomic; concurrent first calls compute and store the same value).
+  /// +infinity for other T.
+  double normal_conditioning() const {
+    double r = normal_conditioning_.load();
+    if (std::isnan(r)) [[unlikely]] {
+      r = compute_normal_conditioning();
+      normal_conditioning_.store(r);
+    }
+    return r;
+  }
+  /// |Ñ|^2 at or below this counts as tiny in normal_conditioning().
+  static constexpr double kNormalTinySquared = [] {
+    if constexpr (std::is_floating_point_v<T>) return static_cast<double>(std::numeric_limits<T>::min()) * 0x1p40;
+    else return 0.0;
+  }();
 
   // raw arrays, for converters and serialisers
   const std::vector<int>& fan_start() const { return fan_start_; }
@@ -514,6 +559,7 @@ class ConvexPolyhedron {
       const auto pts = plane_points(f);
       planes_.push_back(plane_through(pts[0], pts[1], pts[2]));
     }
+    normal_conditioning_.reset();  // new coordinates: computed again on first use
     // per-edge arrays (after the planes: the normals are copies of theirs)
     const auto ne = static_cast<std::size_t>(edge_count());
     edge_dirs_.clear();
@@ -571,6 +617,76 @@ class ConvexPolyhedron {
         for (const auto& v : vertices_) s = Vec3<T>(s + detail::scale_pow2(v, e));
         centroid_ = detail::scale_pow2(Vec3<T>(s[0] / n, s[1] / n, s[2] / n), -e);
       }
+    }
+  }
+
+  // ρ_P of normal_conditioning(), for the robust kernel's δ_P (derivation in
+  // robust_kernel.hpp, "Error bounds": δ_f = γ_4 + 2q/(|Ñ| - q) with
+  // q/|Ñ| = γ_4 √2 ρ_f/(1-u)^2 per face, so the worst face is the one with the
+  // largest ρ_f = |ẽ1||ẽ2|/|Ñ|).  ẽ1 = fl(v_j - v_i), ẽ2 = fl(v_k - v_i),
+  // Ñ = fl(ẽ1 x ẽ2) in T, as plane_through computes them (see there for the
+  // range where it rescales).  The bound only uses |Ñ| to bound the exact |N|
+  // from below (|N| >= |Ñ| - q), so any evaluation of the cross product with
+  // |Ñ - N| <= q will do, contracted or not.  "Tiny": |Ñ|^2 <=
+  // kNormalTinySquared = 2^40 min(T) (normalisation underflow; the kernel's
+  // margin covers what remains above it, see robust_kernel.hpp).  The back
+  // face of a flat shape is skipped: its normal is exactly the front one
+  // negated (compute_derived) and its exact N is -N_front, so its δ is the
+  // front face's.  This is the loop RobustKernel ran over every face of both
+  // shapes on every query (normal_error) until it moved here.
+  double compute_normal_conditioning() const {
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      auto sq = [](const Vec3<T>& v) {
+        const double x = v[0], y = v[1], z = v[2];
+        return x * x + y * y + z * z;
+      };
+      const int nf = is_flat() ? 1 : face_count();
+      if constexpr (std::is_same_v<T, float>) {
+        // The maximum of r2 = |ẽ1|^2 |ẽ2|^2 / |Ñ|^2 without a division or a
+        // finiteness test per face: the maximum fraction num/den is tracked by
+        // cross multiplication.  Every factor is a double square of a float
+        // (<= 3 * 2^256), so num * den < 2^1024 cannot overflow; an infinite
+        // or NaN difference or cross product, or a tiny |Ñ|, sets `bad`.  The
+        // one division and sqrt at the end round once each (relative 2^-53,
+        // inside the kernel's margin).
+        double wnum = 0, wden = 1;
+        bool bad = false;
+        for (int f = 0; f < nf; ++f) {
+          const auto& t = face(f).plane_vertices;
+          const Vec3<T>& v0 = vertex(t[0]);
+          const Vec3<T> e1(vertex(t[1]) - v0);
+          const Vec3<T> e2(vertex(t[2]) - v0);
+          const double nc2 = sq(cross(e1, e2));
+          const double num = sq(e1) * sq(e2);
+          bad |= !(nc2 > kNormalTinySquared && nc2 <= std::numeric_limits<double>::max() &&
+                   num <= std::numeric_limits<double>::max());
+          const bool larger = num * wden > wnum * nc2;
+          wnum = larger ? num : wnum;
+          wden = larger ? nc2 : wden;
+        }
+        if (bad) return std::numeric_limits<double>::infinity();
+        return std::sqrt(wnum / wden);
+      } else {
+        // double: the squares can overflow, so one ratio per face, infinite
+        // when not finite (never NaN, which a maximum would skip).
+        double worst = 0;
+        for (int f = 0; f < nf; ++f) {
+          const auto& t = face(f).plane_vertices;
+          const Vec3<T>& v0 = vertex(t[0]);
+          const Vec3<T> e1(vertex(t[1]) - v0);
+          const Vec3<T> e2(vertex(t[2]) - v0);
+          const double nc2 = sq(cross(e1, e2));
+          double r2 = std::numeric_limits<double>::infinity();
+          if (nc2 > kNormalTinySquared && std::isfinite(nc2)) {
+            r2 = sq(e1) / nc2 * sq(e2);
+            if (!std::isfinite(r2)) r2 = std::numeric_limits<double>::infinity();
+          }
+          if (r2 > worst) worst = r2;
+        }
+        return std::sqrt(worst);
+      }
+    } else {
+      return std::numeric_limits<double>::infinity();
     }
   }
 
@@ -832,6 +948,7 @@ class ConvexPolyhedron {
   Vec3<T> bmax_ = Vec3<T>(T(0), T(0), T(0));
   double extent_ = 0;
   double max_abs_ = 0;
+  detail::LazyDouble normal_conditioning_;  // NaN until normal_conditioning() computes it
 };
 
 }  // namespace sepax

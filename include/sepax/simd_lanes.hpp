@@ -64,6 +64,8 @@ struct Lanes {  // portable fallback: one lane
   static V mul(V a, V b) { return a * b; }
   static M lt(V a, V b) { return a < b; }
   static M gt(V a, V b) { return a > b; }
+  static M ge(V a, V b) { return a >= b; }
+  static M le(V a, V b) { return a <= b; }
   static M unord(V a, V b) { return a != a || b != b; }
   static M mand(M a, M b) { return a && b; }
   static M mor(M a, M b) { return a || b; }
@@ -90,6 +92,8 @@ struct Lanes<float> {
   static V mul(V a, V b) { return _mm_mul_ps(a, b); }
   static M lt(V a, V b) { return _mm_cmplt_ps(a, b); }
   static M gt(V a, V b) { return _mm_cmpgt_ps(a, b); }
+  static M ge(V a, V b) { return _mm_cmpge_ps(a, b); }
+  static M le(V a, V b) { return _mm_cmple_ps(a, b); }
   static M unord(V a, V b) { return _mm_cmpunord_ps(a, b); }
   static M mand(M a, M b) { return _mm_and_ps(a, b); }
   static M mor(M a, M b) { return _mm_or_ps(a, b); }
@@ -119,6 +123,8 @@ struct Lanes<double> {
   static V mul(V a, V b) { return _mm_mul_pd(a, b); }
   static M lt(V a, V b) { return _mm_cmplt_pd(a, b); }
   static M gt(V a, V b) { return _mm_cmpgt_pd(a, b); }
+  static M ge(V a, V b) { return _mm_cmpge_pd(a, b); }
+  static M le(V a, V b) { return _mm_cmple_pd(a, b); }
   static M unord(V a, V b) { return _mm_cmpunord_pd(a, b); }
   static M mand(M a, M b) { return _mm_and_pd(a, b); }
   static M mor(M a, M b) { return _mm_or_pd(a, b); }
@@ -157,7 +163,11 @@ inline typename L::V dot3(typename L::V x, typename L::V y, typename L::V z, typ
 ///  * kFilter = true, with `bound` >= the error bound of each of the four
 ///    values (beyond it a value's sign is certain): accept unless each pattern
 ///    has a value certainly of the wrong sign, i.e. unless min < -bound and
-///    max > bound.  A superset of the pairs the exact test accepts.
+///    max > bound.  A superset of the pairs the exact test accepts.  An
+///    accepted pair is written as eb when it certainly crosses (min > bound:
+///    all four certainly positive, or max < -bound: all certainly negative)
+///    and as ~eb (negative) when some value is within the bound or NaN: only
+///    those need the caller's exact test.
 template <bool kFilter, class T>
 SEPAX_SIMD_INLINE inline int arc_candidates(const ConvexPolyhedron<T>& b, int lo, int hi, const Vec3<T>& da,
                           const Vec3<T>& na0, const Vec3<T>& na1, T bound, int* out) {
@@ -179,7 +189,9 @@ SEPAX_SIMD_INLINE inline int arc_candidates(const ConvexPolyhedron<T>& b, int lo
   const V p1x = L::set1(T(-na1[0])), p1y = L::set1(T(-na1[1])), p1z = L::set1(T(-na1[2]));
   const V lo_lim = L::set1(kFilter ? T(-bound) : T(0));
   const V hi_lim = L::set1(kFilter ? bound : T(0));
-  // one group of W pairs: the accepted lanes as bits
+  // one group of W pairs: the accepted lanes as bits (kFilter: the certain
+  // ones among them in `certain`, computed only when some lane is accepted)
+  unsigned certain = 0;
   auto group = [&](std::size_t i) SEPAX_SIMD_INLINE {
     const V c = dot3<L>(L::load(n0x + i), L::load(n0y + i), L::load(n0z + i), ax, ay, az);
     const V d = dot3<L>(L::load(n1x + i), L::load(n1y + i), L::load(n1z + i), ax, ay, az);
@@ -191,14 +203,25 @@ SEPAX_SIMD_INLINE inline int arc_candidates(const ConvexPolyhedron<T>& b, int lo
     if constexpr (!kFilter) {
       m = L::mor(L::gt(mn, lo_lim), L::lt(mx, hi_lim));
     } else {
-      m = L::mandnot(L::mand(L::lt(mn, lo_lim), L::gt(mx, hi_lim)), L::eq(mn, mn));
+      // not (min < -bound and max > bound), i.e. min >= -bound or max <=
+      // bound: no value is NaN (lanes_bounded, the precondition), so the
+      // negation is exact and costs what the plain test costs.
+      m = L::mor(L::ge(mn, lo_lim), L::le(mx, hi_lim));
+      const unsigned bits = L::bits(m);
+      if (bits != 0) certain = L::bits(L::mor(L::gt(mn, hi_lim), L::lt(mx, lo_lim)));
+      return bits;
     }
     return L::bits(m);
   };
   int n = 0;
   auto emit = [&](unsigned m, int g) SEPAX_SIMD_INLINE {
     while (m != 0) {
-      out[n++] = g + std::countr_zero(m);
+      const int i = std::countr_zero(m);
+      if constexpr (kFilter) {
+        out[n++] = (certain >> i) & 1u ? g + i : ~(g + i);
+      } else {
+        out[n++] = g + i;
+      }
       m &= m - 1;
     }
   };

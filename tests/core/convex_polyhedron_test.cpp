@@ -15,6 +15,11 @@
 
 using namespace sepax;
 
+// Shapes move (not copy) when a container of them grows: the cached
+// normal_conditioning() must not make the moves throwing.
+static_assert(std::is_nothrow_move_constructible_v<ConvexPolyhedron<float>>);
+static_assert(std::is_nothrow_move_assignable_v<ConvexPolyhedron<double>>);
+
 namespace {
 
 using Faces = std::vector<std::vector<int>>;

@@ -24,7 +24,9 @@
 //
 // ---- Error bounds -------------------------------------------------------------
 // u = unit roundoff of T, γ_k = k u / (1 - k u), η_T = smallest subnormal of T.
-// Per query (O(F + V), no allocation):
+// Per query, O(1) from terms each ConvexPolyhedron computes once (with its
+// planes: max_abs_coordinate, extent, bounds, centroid; on first use:
+// normal_conditioning), no allocation:
 //   M_P   max |coordinate| of P (exact);  D_P  bbox diagonal of P;
 //   D     bbox diagonal of A ∪ B  (|p - q| <= D for any two vertices);
 //   δ_P   bound on |n_f - N_f/|N_f|| over faces f of P, where n_f is the stored
@@ -37,7 +39,8 @@
 // error <= γ_3/2 + u, the division u, so |n - Ñ/|Ñ|| <= γ_4; and
 // |x/|x| - y/|y|| <= 2|x - y|/|y|.  With q = γ_4 √2 |ẽ1||ẽ2|/(1-u)^2 + √3 η_T:
 //   δ_f = γ_4 + 2 q / (|Ñ| - q)      (2.5, i.e. "always exact", if |Ñ| <= 2q)
-// and δ_P = max_f δ_f, computed from ρ_f = |ẽ1||ẽ2| / |Ñ| (max ρ, one sqrt).
+// and δ_P = max_f δ_f, computed from ρ_P = max_f ρ_f, ρ_f = |ẽ1||ẽ2| / |Ñ|
+// (ConvexPolyhedron::normal_conditioning, once per shape; normal_error).
 // The same formula bounds the unit edge axis n = fl(normalize(dA x dB)) of an
 // edge pair (δ_e, computed per pair).
 //
@@ -89,9 +92,11 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <type_traits>
 
@@ -101,6 +106,10 @@
 #include <sepax/robust/parallel.hpp>
 #include <sepax/robust/separation_compare.hpp>
 #include <sepax/sat_kernel.hpp>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 /// The SAT loops' per-pair fast paths: inlined into the loop even when the
 /// inliner's size heuristics would not (their exact stages are out of line).
@@ -134,26 +143,29 @@ class RobustKernel {
       const double hi = std::max<double>(a.bounds_max()[c], b.bounds_max()[c]);
       d2 += (hi - lo) * (hi - lo);
     }
-    d_ = std::sqrt(d2) * kMargin;
+    d_ = sqrt_d(d2) * kMargin;
     const double da_n = normal_error(a), db_n = normal_error(b);
-    const double s3 = std::sqrt(3.0) * kMargin;
-    face_err_a_ = (da_n * d_ + gamma(5) * s3 * (ma + mb)) * kMargin + 4 * kEta;
-    face_err_b_ = (db_n * d_ + gamma(5) * s3 * (ma + mb)) * kMargin + 4 * kEta;
-    support_err_a_ = (2 * gamma(3) * s3 * mb + da_n * db) * kMargin + 4 * kEta;  // B's vertices, A's faces
-    support_err_b_ = (2 * gamma(3) * s3 * ma + db_n * da) * kMargin + 4 * kEta;
+    // kG5S3 = γ_5 √3 (1+1e-6), kG3S3x2 = 2 γ_3 √3 (1+1e-6): compile-time constants (see fold)
+    face_err_a_ = (da_n * d_ + kG5S3 * (ma + mb)) * kMargin + 4 * kEta;
+    face_err_b_ = (db_n * d_ + kG5S3 * (ma + mb)) * kMargin + 4 * kEta;
+    support_err_a_ = (kG3S3x2 * mb + da_n * db) * kMargin + 4 * kEta;  // B's vertices, A's faces
+    support_err_b_ = (kG3S3x2 * ma + db_n * da) * kMargin + 4 * kEta;
     arc_err_a_ = (da_n + gamma(5)) * db * kMargin + 2 * kEta;  // A's normals . B's edges
     arc_err_b_ = (db_n + gamma(5)) * da * kMargin + 2 * kEta;
     arc_err_a_t_ = round_up(arc_err_a_);
     arc_err_b_t_ = round_up(arc_err_b_);
     support_err_a_t_ = round_up(support_err_a_);
     support_err_b_t_ = round_up(support_err_b_);
-    edge_abs_ = gamma(8) * (d_ + s3 * (ma + mb)) * kMargin + 8 * kEta;
-    proj_abs_a_ = 2 * gamma(3) * s3 * ma * kMargin + 4 * kEta;
-    proj_abs_b_ = 2 * gamma(3) * s3 * mb * kMargin + 4 * kEta;
+    edge_abs_ = gamma(8) * (d_ + kS3 * (ma + mb)) * kMargin + 8 * kEta;
+    proj_abs_a_ = kG3S3x2 * ma * kMargin + 4 * kEta;
+    proj_abs_b_ = kG3S3x2 * mb * kMargin + 4 * kEta;
     centroid_err_a_ = centroid_error(a);
     centroid_err_b_ = centroid_error(b);
     extent_a_ = da;
     extent_b_ = db;
+    d_margin_ = d_ * kMargin;
+    side_span_ = ((extent_a_ + centroid_err_a_) + (extent_b_ + centroid_err_b_)) * kMargin;
+    side_abs_ = (centroid_err_a_ + centroid_err_b_) * kMargin + 8 * kEta;
     lanes_ = a.lanes_bounded() && b.lanes_bounded();
     arc_lane_bound_ = std::max(arc_err_a_t_, arc_err_b_t_);
   }
@@ -206,9 +218,16 @@ class RobustKernel {
   T support_filter_b() const { return support_err_b_t_; }
   /// Exact sign of N_f . (b_u - b_v), N_f the plane triple's cross product of
   /// face f of A: < 0 when vertex u of B is strictly deeper below f than v.
-  int support_sign_a(int f, int u, int v) const { return face_pair_sign(a_, f, b_.vertex(v), b_.vertex(u)); }
+  /// Out of line (and cold: asked only within the filter): inlined, its
+  /// orientation filter's registers made the traversal's climb loop spill on
+  /// every step although it almost never runs.
+  SEPAX_ROBUST_COLD int support_sign_a(int f, int u, int v) const {
+    return face_pair_sign(a_, f, b_.vertex(v), b_.vertex(u));
+  }
   /// Exact sign of N_f . (a_u - a_v), f a face of B.
-  int support_sign_b(int f, int u, int v) const { return face_pair_sign(b_, f, a_.vertex(v), a_.vertex(u)); }
+  SEPAX_ROBUST_COLD int support_sign_b(int f, int u, int v) const {
+    return face_pair_sign(b_, f, a_.vertex(v), a_.vertex(u));
+  }
 
   /// The bound on |value - exact value| of a separation this kernel returns
   /// for feature f (face_separation_*, face_query_*, edge_separation): the
@@ -268,8 +287,17 @@ class RobustKernel {
     const T eb_ = arc_err_b_t_;
     // certainly on the same side (filtered signs both +1 or both -1): the
     // common case.  Comparisons with NaN are false, so NaN goes to the exact
-    // stage like any value within the bound.
-    if (((c > eb_) & (d > eb_)) | ((c < -eb_) & (d < -eb_))) return false;
+    // stage like any value within the bound.  With lanes_ (both shapes
+    // lanes_bounded: every normal and direction finite, |x| <= 2^60) c and d
+    // are finite, and the test is min(c, d) > bound or max(c, d) < -bound
+    // (as PlainKernel's, fewer operations than four comparisons).
+    if (lanes_) {
+      const T lo = d < c ? d : c;
+      const T hi = c < d ? d : c;
+      if ((lo > eb_) | (hi < -eb_)) return false;
+    } else if (((c > eb_) & (d > eb_)) | ((c < -eb_) & (d < -eb_))) {
+      return false;
+    }
     if (!(((c > eb_) & (d < -eb_)) | ((c < -eb_) & (d > eb_)))) [[unlikely]]
       return minkowski_face_resolve(ea, eb);
     // cba = -dba, both certain
@@ -291,9 +319,11 @@ class RobustKernel {
   /// drops a pair only when both sign patterns of a crossing are certainly
   /// violated: some value is beyond the bound arc_lane_bound_ = max(arc_err_a_t_,
   /// arc_err_b_t_) >= the bound of each value (see the header: E_arc, rounded
-  /// up to T) on the wrong side, so its exact sign is wrong as well.  The
-  /// survivors (the crossing pairs and the few within the bounds) go through
-  /// minkowski_face, which decides them exactly.  So the result is exactly
+  /// up to T) on the wrong side, so its exact sign is wrong as well.  A
+  /// survivor whose four values are all beyond the bound with the crossing
+  /// signs (all > bound or all < -bound: every exact sign is certain) is
+  /// accepted as it is; the others (some value within the bound, or NaN) go
+  /// through minkowski_face, which decides them exactly.  So the result is exactly
   /// {eb : minkowski_face(ea, eb)}, with or without FMA contraction (the bound
   /// holds either way).  The lanes need both shapes lanes_bounded() (no
   /// overflow, no NaN); otherwise every pair takes minkowski_face.
@@ -303,7 +333,9 @@ class RobustKernel {
       const int m = simd::arc_candidates<true>(b_, lo, hi, a_.edge_dir(ea), a_.edge_normal(ea, 0),
                                                a_.edge_normal(ea, 1), arc_lane_bound_, out);
       for (int i = 0; i < m; ++i) {
-        if (minkowski_face(ea, out[i])) out[n++] = out[i];
+        const int e = out[i];
+        if (e >= 0) out[n++] = e;                              // certainly crossing
+        else if (minkowski_face(ea, ~e)) out[n++] = ~e;        // some value within the bound
       }
       return n;
     }
@@ -424,7 +456,33 @@ class RobustKernel {
   static constexpr double kMargin = 1.0 + 1e-6;
   static constexpr double kNoBound = 2.5;  // |n - n*| <= 2 (1 + γ_4) always
 
-  static constexpr double gamma(int k) { return k * kU / (1.0 - k * kU); }
+  // Compile-time constants.  sepax::robust is compiled with -frounding-math
+  // (CGAL's flag), under which GCC does not fold inexact constant arithmetic:
+  // γ_k, √2, √3 times the margin, ... were recomputed -- divisions and libm
+  // sqrt calls -- on every use, per edge pair.  consteval forces them to
+  // compile time, rounded to nearest: the values the runtime expressions had
+  // (√2 and √3 are the correctly rounded std::numbers constants, which is
+  // what std::sqrt(2.0) and std::sqrt(3.0) return).
+  static consteval double fold(double x) { return x; }
+  static consteval double gamma(int k) { return k * kU / (1.0 - k * kU); }
+  /// γ_k for a k known only at run time (centroid_error).
+  static constexpr double gamma_n(int k) { return k * kU / (1.0 - k * kU); }
+  static constexpr double kS3 = fold(std::numbers::sqrt3 * kMargin);
+  static constexpr double kG5S3 = fold(gamma(5) * kS3);
+  static constexpr double kG3S3x2 = fold(2 * gamma(3) * kS3);
+  // q/|Ñ| = kUnitC ρ (unit_error_from_ratio)
+  static constexpr double kUnitC = fold(gamma(4) * std::numbers::sqrt2 / ((1 - kU) * (1 - kU)));
+  static constexpr double kUnitCM2 = fold(kUnitC * kMargin * kMargin);
+
+  // sqrt of a double, the IEEE (correctly rounded) result as std::sqrt, but
+  // inline: under -frounding-math GCC calls libm's sqrt for it.
+  static double sqrt_d(double x) {
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
+#else
+    return std::sqrt(x);
+#endif
+  }
 
   struct EdgeAxis {
     Vec3<T> n;      // fl(normalize(dA x dB)), unoriented (as PlainKernel)
@@ -437,20 +495,27 @@ class RobustKernel {
     T ref;                  // projection of the edge's tail
   };
 
-  // The smallest T >= x (comparisons in T against a double bound).
+  // The smallest T >= x (comparisons in T against a double bound).  The bounds
+  // are >= 0: the next T above a finite t >= 0 is the one whose bit pattern is
+  // one more (max() goes to infinity, 0 to denorm_min), without libm's
+  // nextafter call (four per query).
   static T round_up(double x) {
     T t = static_cast<T>(x);
-    if (static_cast<double>(t) < x) t = std::nextafter(t, std::numeric_limits<T>::infinity());
+    if (static_cast<double>(t) < x) {
+      using Bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
+      if (t >= T(0)) t = std::bit_cast<T>(static_cast<Bits>(std::bit_cast<Bits>(t) + 1));
+      else t = std::nextafter(t, std::numeric_limits<T>::infinity());
+    }
     return t;
   }
 
   static double padded_extent(const P& p) { return p.extent() * (1.0 + 4 * kU) * kMargin; }
 
   // Bound on |n - N/|N|| for n = fl(normalize(fl(e1 x e2))), see the header.
+  // rho = |ẽ1||ẽ2|/|Ñ| as computed (unpadded); q/|Ñ| = kUnitC rho, and both
+  // (1+1e-6) pads (of rho and of q/|Ñ|) are in kUnitCM2, one product.
   static double unit_error_from_ratio(double rho) {
-    // rho >= |ẽ1||ẽ2|/|Ñ| (already padded); q/|Ñ| = c rho.
-    const double c = gamma(4) * std::sqrt(2.0) / ((1 - kU) * (1 - kU));
-    const double qr = c * rho * kMargin;
+    const double qr = kUnitCM2 * rho;
     if (!(qr < 0.5)) return kNoBound;
     return (gamma(4) + 2 * qr / (1 - qr)) * kMargin;
   }
@@ -473,52 +538,20 @@ class RobustKernel {
     return std::isfinite(r2) ? r2 : std::numeric_limits<double>::infinity();
   }
 
+  // δ_P from the shape's ρ_P = max_f |ẽ1||ẽ2|/|Ñ| (see the header), which
+  // ConvexPolyhedron computes once per shape, on first use after its vertices
+  // were set (normal_conditioning(): the same T differences and cross products of the
+  // plane triples, +infinity when some |Ñ|^2 <= kTinySquared or anything
+  // overflows, which gives kNoBound here).  O(1) per query.
   static double normal_error(const P& p) {
-    if constexpr (std::is_same_v<T, float>) {
-      // The same maximum of r2 = |ẽ1|^2 |ẽ2|^2 / |Ñ|^2 without a division or
-      // a finiteness test per face (this runs for every face of both shapes
-      // on every query): the maximum fraction num/den is tracked by cross
-      // multiplication.  For float inputs every factor is a double square of
-      // a float (<= 3 * 2^256), so num * den < 2^1024 cannot overflow; an
-      // infinite or NaN float difference or cross product, or a tiny |Ñ|,
-      // sets `bad` (then there is no bound: infinity, as before).  The one
-      // division at the end rounds once (relative 2^-53, inside kMargin).
-      double wnum = 0, wden = 1;
-      bool bad = false;
-      const int nf = p.face_count();
-      for (int f = 0; f < nf; ++f) {
-        const auto& t = p.face(f).plane_vertices;
-        const Vec3<T>& v0 = p.vertex(t[0]);
-        const Vec3<T> e1(p.vertex(t[1]) - v0);
-        const Vec3<T> e2(p.vertex(t[2]) - v0);
-        const Vec3<T> c = cross(e1, e2);
-        const double nc2 = squared_norm_d(c);
-        const double num = squared_norm_d(e1) * squared_norm_d(e2);
-        bad |= !(nc2 > kTinySquared && nc2 <= std::numeric_limits<double>::max() &&
-                 num <= std::numeric_limits<double>::max());
-        const bool larger = num * wden > wnum * nc2;
-        wnum = larger ? num : wnum;
-        wden = larger ? nc2 : wden;
-      }
-      if (bad) return kNoBound;
-      return unit_error_from_ratio(std::sqrt(wnum / wden) * kMargin);
-    }
-    double worst = 0;
-    for (int f = 0; f < p.face_count(); ++f) {
-      const auto& t = p.face(f).plane_vertices;
-      const Vec3<T>& v0 = p.vertex(t[0]);
-      const Vec3<T> e1(p.vertex(t[1]) - v0);
-      const Vec3<T> e2(p.vertex(t[2]) - v0);
-      const double r2 = cross_ratio_squared(e1, e2, cross(e1, e2));
-      if (r2 > worst) worst = r2;
-    }
-    return unit_error_from_ratio(std::sqrt(worst) * kMargin);
+    static_assert(P::kNormalTinySquared == kTinySquared);
+    return unit_error_from_ratio(p.normal_conditioning());
   }
 
   static double centroid_error(const P& p) {
     const double k = static_cast<double>(p.vertex_count()) + 1.0;
     if (!(k * kU < 0.25)) return std::numeric_limits<double>::infinity();
-    return std::sqrt(3.0) * gamma(static_cast<int>(k)) * p.max_abs_coordinate() * kMargin * kMargin +
+    return std::numbers::sqrt3 * gamma_n(static_cast<int>(k)) * p.max_abs_coordinate() * fold(kMargin * kMargin) +
            4 * kEta;
   }
 
@@ -549,25 +582,36 @@ class RobustKernel {
     if (std::isfinite(r2)) {
       const T len = std::sqrt(squared_norm(c));
       ax.n = Vec3<T>(c[0] / len, c[1] / len, c[2] / len);
-      ax.delta = unit_error_from_ratio(std::sqrt(r2) * kMargin);
+      ax.delta = unit_error_from_ratio(sqrt_d(r2));
     } else {
-      const auto ce = robust::exact_cross(
-          robust::exact_diff(a_.vertex(a_.edge_head(ea)), a_.vertex(a_.edge_tail(ea))),
-          robust::exact_diff(b_.vertex(b_.edge_head(eb)), b_.vertex(b_.edge_tail(eb))));
-      Vec3<double> cd(robust::approx_double(ce[0]), robust::approx_double(ce[1]),
-                      robust::approx_double(ce[2]));
-      const double m = std::max({std::fabs(cd[0]), std::fabs(cd[1]), std::fabs(cd[2])});
-      if (m > 0) cd /= m;
-      const double len = cd.norm();
-      ax.n = len > 0 ? Vec3<T>(static_cast<T>(cd[0] / len), static_cast<T>(cd[1] / len),
-                               static_cast<T>(cd[2] / len))
-                     : Vec3<T>(T(0), T(0), T(0));
-      ax.delta = kNoBound;
+      ax = exact_edge_axis(ea, eb);
     }
     return ax;
   }
 
-  double edge_value_error(double delta) const { return delta * d_ * kMargin + edge_abs_; }
+  // The T cross product is zero or not finite: the axis from the exact cross
+  // product rounded to double, no bound (out of line: it keeps the hot path's
+  // frame small).
+  SEPAX_ROBUST_COLD EdgeAxis exact_edge_axis(int ea, int eb) const {
+    EdgeAxis ax;
+    const auto ce = robust::exact_cross(
+        robust::exact_diff(a_.vertex(a_.edge_head(ea)), a_.vertex(a_.edge_tail(ea))),
+        robust::exact_diff(b_.vertex(b_.edge_head(eb)), b_.vertex(b_.edge_tail(eb))));
+    Vec3<double> cd(robust::approx_double(ce[0]), robust::approx_double(ce[1]),
+                    robust::approx_double(ce[2]));
+    const double m = std::max({std::fabs(cd[0]), std::fabs(cd[1]), std::fabs(cd[2])});
+    if (m > 0) cd /= m;
+    const double len = cd.norm();
+    ax.n = len > 0 ? Vec3<T>(static_cast<T>(cd[0] / len), static_cast<T>(cd[1] / len),
+                             static_cast<T>(cd[2] / len))
+                   : Vec3<T>(T(0), T(0), T(0));
+    ax.delta = kNoBound;
+    return ax;
+  }
+
+  // δ D (1+1e-6) + edge_abs_, with d_margin_ = D (1+1e-6) summed once per
+  // query (a reassociated product: its rounding is inside the margin).
+  double edge_value_error(double delta) const { return delta * d_margin_ + edge_abs_; }
 
   double value_error(const Feature& f) const {
     switch (f.type) {
@@ -635,11 +679,14 @@ class RobustKernel {
   int axis_side(const EdgeAxis& ax, int ea, int eb) const {
     const T oa = dot(ax.n, Vec3<T>(a_.vertex(a_.edge_tail(ea)) - a_.centroid()));
     const T ob = dot(ax.n, Vec3<T>(b_.centroid() - b_.vertex(b_.edge_tail(eb))));
-    const double ea_bound = ((ax.delta + gamma(5)) * (extent_a_ + centroid_err_a_) + centroid_err_a_) * kMargin;
-    const double eb_bound = ((ax.delta + gamma(5)) * (extent_b_ + centroid_err_b_) + centroid_err_b_) * kMargin;
+    // The sum of the two per-side bounds ((δ + γ_5)(D_P + C_P) + C_P)(1+1e-6)
+    // (centroid_side's), regrouped: (δ + γ_5) side_span_ + side_abs_ with the
+    // per-query sums side_span_ = (D_A + C_A + D_B + C_B)(1+1e-6) and
+    // side_abs_ = (C_A + C_B)(1+1e-6) + 8η (the regrouping's rounding is
+    // inside the margin).
     const double sum = static_cast<double>(oa) + static_cast<double>(ob);
-    const double e = ea_bound + eb_bound +
-                     0x1p-52 * (std::abs(static_cast<double>(oa)) + std::abs(static_cast<double>(ob))) + 8 * kEta;
+    const double e = (ax.delta + gamma(5)) * side_span_ + side_abs_ +
+                     0x1p-52 * (std::abs(static_cast<double>(oa)) + std::abs(static_cast<double>(ob)));
     if (sum > e) return 1;
     if (sum < -e) return -1;
     return axis_side_exact(ea, eb);
@@ -953,6 +1000,8 @@ class RobustKernel {
   const P& b_;
   double d_ = 0;
   double extent_a_ = 0, extent_b_ = 0;
+  double side_span_ = 0, side_abs_ = 0;        // axis_side's per-query sums
+  double d_margin_ = 0;                        // d_ (1+1e-6)
   double face_err_a_ = 0, face_err_b_ = 0;
   double support_err_a_ = 0, support_err_b_ = 0;
   double arc_err_a_ = 0, arc_err_b_ = 0;
