@@ -212,6 +212,10 @@ class Builder {
     Plane<T> pl;
     bool alive = true;
     std::vector<int> conflict;
+    // float T: points above this face by at most eps (on it within the
+    // tolerance).  They are not outside, but they are not inside either: when
+    // the face is replaced they are tested against the new faces again.
+    std::vector<int> on;
   };
 
   const Vec3<T>& Q(int i) const { return q_[sz(i)]; }
@@ -376,12 +380,68 @@ class Builder {
   }
 
   // Assign p to the first of faces [first, end) it is above by more than eps.
+  // Float T: otherwise, if p is above any of them (by at most eps), keep it
+  // on the one it is highest above; only a point below all of them is
+  // dropped.  (A point within eps above a face is on the hull now, but a
+  // later eye can replace that face by faces tilted away from it: a new face
+  // through a short horizon edge and an eye barely above the old plane,
+  // extrapolated across a wide thin face, can leave the point hundreds of
+  // eps outside.  Dropping such points was what lost them.)
   void assign(int p, int first) {
+    [[maybe_unused]] int on_face = -1;
+    [[maybe_unused]] T on_height(0);
     for (std::size_t f = sz(first); f < tris_.size(); ++f) {
-      if (tris_[f].alive && height(tris_[f].pl, p) > eps_) {
+      if (!tris_[f].alive) continue;
+      const T h = height(tris_[f].pl, p);
+      if (h > eps_) {
         tris_[f].conflict.push_back(p);
         return;
       }
+      if constexpr (!exact) {
+        if (h > on_height) {
+          on_height = h;
+          on_face = static_cast<int>(f);
+        }
+      }
+    }
+    if constexpr (!exact) {
+      if (on_face >= 0) tris_[sz(on_face)].on.push_back(p);
+    }
+  }
+
+  // Float T, after the conflict lists are empty: a point kept on a face (at
+  // most eps above it) was only ever tested against the faces created with
+  // that face, but later cones may have replaced a neighbouring face it was
+  // also (within eps) above by a face tilted below it.  Test every such
+  // point against every live face; one more than eps above any face goes
+  // back to that face's conflict list and the quickhull loop runs again.
+  // Each round adds a vertex or drops an eye, so the rounds terminate.
+  bool sweep() {
+    if constexpr (exact) {
+      return false;
+    } else {
+      std::vector<int> live;
+      for (std::size_t f = 0; f < tris_.size(); ++f)
+        if (tris_[f].alive && !is_zero(tris_[f].pl.normal)) live.push_back(static_cast<int>(f));
+      bool moved = false;
+      for (int f : live) {
+        std::vector<int>& on = tris_[sz(f)].on;
+        std::size_t keep = 0;
+        for (std::size_t i = 0; i < on.size(); ++i) {
+          const int p = on[i];
+          int out = -1;
+          for (std::size_t k = 0; k < live.size() && out < 0; ++k)
+            if (height(tris_[sz(live[k])].pl, p) > eps_) out = live[k];
+          if (out >= 0) {
+            tris_[sz(out)].conflict.push_back(p);
+            moved = true;
+          } else {
+            on[keep++] = p;
+          }
+        }
+        on.resize(keep);
+      }
+      return moved;
     }
   }
 
@@ -407,9 +467,20 @@ class Builder {
     for (int p : active)
       if (p != a && p != b && p != c && p != d) assign(p, 0);
 
+    do {
+      expand();
+    } while (sweep());
+    return merge_and_build(reject);
+  }
+
+  // Quickhull until every conflict list is empty.
+  void expand() {
     std::vector<int> visible, stack, mark, touched;
-    for (std::size_t fi = 0; fi < tris_.size(); ++fi) {
-      if (!tris_[fi].alive || tris_[fi].conflict.empty()) continue;
+    for (std::size_t fi = 0; fi < tris_.size();) {
+      if (!tris_[fi].alive || tris_[fi].conflict.empty()) {
+        ++fi;
+        continue;
+      }
       // eye: the conflict point farthest above this face
       auto& cf = tris_[fi].conflict;
       std::size_t best = 0;
@@ -486,8 +557,8 @@ class Builder {
       if (!simple) {
         if constexpr (exact) throw std::logic_error("convex_hull: non-simple horizon (a bug)");
         // Float only: rounding made the visible region not a disk.  The eye
-        // is then nearly on the hull; drop it (its distance outside counts in
-        // the measured bound of docs/hull.md).
+        // is then nearly on the hull; drop it and go on with this face's
+        // other conflict points (fi is still alive).
         continue;
       }
       // cone the horizon to the eye
@@ -509,10 +580,11 @@ class Builder {
         t.alive = false;
         std::vector<int> pts = std::move(t.conflict);
         t.conflict.clear();
+        pts.insert(pts.end(), t.on.begin(), t.on.end());
+        t.on.clear();
         for (int p : pts) assign(p, first_new);
       }
     }
-    return merge_and_build(reject);
   }
 
   // ---- merging triangles into faces -------------------------------------------
@@ -610,43 +682,51 @@ class Builder {
       g.degenerate = is_zero(t.pl.normal);
       if constexpr (!exact) g.area = T(2) * number_traits<T>::sqrt(tri_area2(t)) * t.pl.normal;
     }
-    // Plane merges until nothing changes.
-    for (bool changed = true; changed;) {
-      changed = false;
-      for (int f : live) {
-        for (int i = 0; i < 3; ++i) {
-          const int x = find(f), y = find(tris_[sz(f)].nb[sz(i)]);
-          if (x == y || groups_[sz(x)].degenerate || groups_[sz(y)].degenerate) continue;
-          if (coplanar(groups_[sz(x)], groups_[sz(y)])) {
-            unite(x, y);
-            changed = true;
+    // Plane merges until nothing changes; then zero-area triangles join a
+    // neighbouring face, and if any did, plane merges again: a zero-area
+    // triangle between two coplanar faces kept them apart, and once it has
+    // joined one of them they are adjacent (left unmerged, validation would
+    // refuse the pair and the clean-up would drop a real corner).
+    for (bool joined = true; joined;) {
+      joined = false;
+      for (bool changed = true; changed;) {
+        changed = false;
+        for (int f : live) {
+          for (int i = 0; i < 3; ++i) {
+            const int x = find(f), y = find(tris_[sz(f)].nb[sz(i)]);
+            if (x == y || groups_[sz(x)].degenerate || groups_[sz(y)].degenerate) continue;
+            if (coplanar(groups_[sz(x)], groups_[sz(y)])) {
+              unite(x, y);
+              changed = true;
+            }
           }
         }
       }
-    }
-    // Zero-area triangles join the face across their longest edge.
-    for (bool changed = true; changed;) {
-      changed = false;
-      for (int f : live) {
-        if (!groups_[sz(find(f))].degenerate) continue;
-        const Tri& t = tris_[sz(f)];
-        int li = 0;
-        T ll(-1);
-        for (int i = 0; i < 3; ++i) {
-          const T l = squared_norm(Vec3<T>(Q(t.v[sz((i + 1) % 3)]) - Q(t.v[sz(i)])));
-          if (l > ll) {
-            ll = l;
-            li = i;
+      // Zero-area triangles join the face across their longest edge.
+      for (bool changed = true; changed;) {
+        changed = false;
+        for (int f : live) {
+          if (!groups_[sz(find(f))].degenerate) continue;
+          const Tri& t = tris_[sz(f)];
+          int li = 0;
+          T ll(-1);
+          for (int i = 0; i < 3; ++i) {
+            const T l = squared_norm(Vec3<T>(Q(t.v[sz((i + 1) % 3)]) - Q(t.v[sz(i)])));
+            if (l > ll) {
+              ll = l;
+              li = i;
+            }
           }
-        }
-        int target = find(t.nb[sz(li)]);
-        if (groups_[sz(target)].degenerate) {
-          for (int i = 0; i < 3; ++i)
-            if (!groups_[sz(find(t.nb[sz(i)]))].degenerate) target = find(t.nb[sz(i)]);
-        }
-        if (!groups_[sz(target)].degenerate) {
-          unite(target, find(f));
-          changed = true;
+          int target = find(t.nb[sz(li)]);
+          if (groups_[sz(target)].degenerate) {
+            for (int i = 0; i < 3; ++i)
+              if (!groups_[sz(find(t.nb[sz(i)]))].degenerate) target = find(t.nb[sz(i)]);
+          }
+          if (!groups_[sz(target)].degenerate) {
+            unite(target, find(f));
+            changed = true;
+            joined = true;
+          }
         }
       }
     }
@@ -724,13 +804,24 @@ class Builder {
       l = std::move(kept);
     }
     // Every corner strictly convex; otherwise reject the middle of the three
-    // points (it is within tolerance of the segment of the other two).
+    // points (it is within tolerance of the segment of the other two).  The
+    // other two are its witnesses: a point is not rejected in a round where
+    // it witnesses another rejection, nor when one of its own witnesses is
+    // rejected (two near-duplicate points at a real corner each fail the
+    // corner test with the other as the middle; rejecting both would lose
+    // the corner).  Such rejections wait for the next round; the first
+    // failing corner of a round is always rejected, so rounds still progress.
+    std::vector<char> rejected(q_.size(), 0), witness(q_.size(), 0);
+    for (int r : reject) rejected[sz(r)] = 1;
     for (std::size_t li = 0; li < loops.size(); ++li) {
       const auto& l = loops[li];
       const Group& g = groups_[sz(loop_group[li])];
       const std::size_t n = l.size();
       if (n < 3) {
-        for (int v : l) reject.push_back(v);
+        for (int v : l) {
+          reject.push_back(v);
+          rejected[sz(v)] = 1;
+        }
         if (reject.empty()) throw std::logic_error("convex_hull: empty face (a bug)");
         continue;
       }
@@ -754,6 +845,10 @@ class Builder {
         if (lab >= lbc && lab >= lca) mid = pc;
         if (lbc >= lab && lbc >= lca) mid = pa;
         if (lca >= lab && lca >= lbc) mid = pb;
+        const int w1 = mid == pa ? pb : pa, w2 = mid == pc ? pb : pc;
+        if (witness[sz(mid)] || rejected[sz(w1)] || rejected[sz(w2)] || rejected[sz(mid)]) continue;
+        rejected[sz(mid)] = 1;
+        witness[sz(w1)] = witness[sz(w2)] = 1;
         reject.push_back(mid);
       }
     }
@@ -764,7 +859,17 @@ class Builder {
     }
     if constexpr (!exact) {
       for (auto& l : loops) start_at_best_apex(l);
-      prevalidate(loops, reject);
+      // Adjacent faces that validation would see as coplanar are merged
+      // (and the loops extracted again) rather than losing a vertex: the
+      // smaller face's "least significant" vertex can be a real corner.
+      // Every round merges two groups, so this terminates.
+      std::vector<std::pair<int, int>> merges;
+      prevalidate(loops, reject, false, &merges);
+      if (!merges.empty()) {
+        reject.clear();
+        for (const auto& [f, g] : merges) unite(loop_group[sz(f)], loop_group[sz(g)]);
+        return extract(live, reject);
+      }
       if (!reject.empty()) return std::nullopt;
     }
     // Output: compact vertex numbering, original input coordinates.
@@ -853,7 +958,7 @@ class Builder {
   }
 
   void prevalidate(const std::vector<std::vector<int>>& loops, std::vector<int>& reject,
-                   bool flat = false) {
+                   bool flat = false, std::vector<std::pair<int, int>>* merges = nullptr) {
     std::vector<int> used;
     for (const auto& l : loops) used.insert(used.end(), l.begin(), l.end());
     std::sort(used.begin(), used.end());
@@ -924,6 +1029,10 @@ class Builder {
         bool coplanar = true;
         for (int v : loops[sz(g)])
           coplanar = coplanar && abs_of(T(dot(planes[f].normal, X(v)) - planes[f].offset)) <= copl_tol;
+        if (coplanar && merges != nullptr) {
+          merges->emplace_back(static_cast<int>(f), g);
+          break;
+        }
         if (coplanar) bad[loops[f].size() <= loops[sz(g)].size() ? f : sz(g)] = 1;
       }
     }
