@@ -82,20 +82,68 @@ class Builder {
     check_input();
     weld();
     // Build, and rebuild without the points the clean-up pass rejects.
+    // Float T: then check every point against the result; points outside
+    // by more than repair_tol are pinned (made vertices whenever they are
+    // above the hull at all) and put back, and the hull is rebuilt, for a
+    // bounded number of repair rounds.
     std::vector<char> removed(pts_.size(), 0);
-    for (;;) {
-      std::vector<int> active;
-      for (std::size_t i = 0; i < pts_.size(); ++i)
-        if (!removed[i]) active.push_back(static_cast<int>(i));
-      std::vector<int> reject;
-      auto result = build(active, reject);
-      if (result) return std::move(*result);
-      if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
-      for (int r : reject) removed[sz(r)] = 1;
+    pinned_.assign(pts_.size(), 0);
+    std::optional<ConvexPolyhedron<T>> best;
+    double best_out = 0;
+    for (int repairs = 0;; ++repairs) {
+      std::optional<ConvexPolyhedron<T>> result;
+      for (;;) {
+        std::vector<int> active;
+        for (std::size_t i = 0; i < pts_.size(); ++i)
+          if (!removed[i]) active.push_back(static_cast<int>(i));
+        std::vector<int> reject;
+        result = build(active, reject);
+        if (result) break;
+        if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
+        for (int r : reject) removed[sz(r)] = 1;
+      }
+      if constexpr (exact) {
+        return std::move(*result);
+      } else {
+        std::vector<int> outside;
+        const double out = outside_points(*result, outside);
+        if (!best || out < best_out) {
+          best = std::move(result);
+          best_out = out;
+        }
+        if (outside.empty() || repairs == max_repairs) return std::move(*best);
+        for (int p : outside) {
+          removed[sz(p)] = 0;
+          pinned_[sz(p)] = 1;
+        }
+      }
     }
   }
 
- private:
+  static constexpr int max_repairs = 8;
+  static constexpr double repair_tol = 2.0;  // x coplanar * extent
+
+  // Float T: the welded points more than repair_tol * eps above a face plane
+  // of h (evaluated as a user would, on the input coordinates; plus their
+  // rounding); returns the largest height in units of eps.
+  double outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside) const {
+    double max_abs = 0;
+    for (std::size_t i = 0; i < pts_.size(); ++i)
+      for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(X(static_cast<int>(i))[c])));
+    const double e = to_double(eps_);
+    const double slack = 8.0 * number_traits<T>::unit_roundoff * max_abs;
+    double worst = 0;
+    for (std::size_t i = 0; i < pts_.size(); ++i) {
+      double hp = -1e300;
+      for (int f = 0; f < h.face_count(); ++f)
+        hp = std::max(hp, to_double(T(dot(h.plane(f).normal, X(static_cast<int>(i))) - h.plane(f).offset)));
+      hp -= slack;
+      worst = std::max(worst, hp / e);
+      if (hp > repair_tol * e) outside.push_back(static_cast<int>(i));
+    }
+    return worst;
+  }
+
   // ---- input, tolerances, welding -------------------------------------------------
 
   static constexpr bool exact = number_traits<T>::is_exact;
@@ -345,7 +393,8 @@ class Builder {
     if constexpr (!exact) {
       start_at_best_apex(hull);
       std::vector<int> back(hull.rbegin(), hull.rend());
-      prevalidate({hull, back}, reject, true);
+      std::vector<std::vector<int>> both{hull, back};
+      prevalidate(both, reject, true);
       if (!reject.empty()) return std::nullopt;
     }
     std::vector<Vec3<T>> loop;
@@ -393,7 +442,7 @@ class Builder {
     for (std::size_t f = sz(first); f < tris_.size(); ++f) {
       if (!tris_[f].alive) continue;
       const T h = height(tris_[f].pl, p);
-      if (h > eps_) {
+      if (h > threshold(p)) {
         tris_[f].conflict.push_back(p);
         return;
       }
@@ -406,6 +455,17 @@ class Builder {
     }
     if constexpr (!exact) {
       if (on_face >= 0) tris_[sz(on_face)].on.push_back(p);
+    }
+  }
+
+  // How far above a face p must be to be outside it: eps, or 0 for a point
+  // pinned by a repair round (it becomes a vertex whenever it is outside).
+  T threshold(int p) const {
+    if constexpr (exact) {
+      (void)p;
+      return T(0);
+    } else {
+      return pinned_[sz(p)] ? T(0) : eps_;
     }
   }
 
@@ -431,7 +491,7 @@ class Builder {
           const int p = on[i];
           int out = -1;
           for (std::size_t k = 0; k < live.size() && out < 0; ++k)
-            if (height(tris_[sz(live[k])].pl, p) > eps_) out = live[k];
+            if (height(tris_[sz(live[k])].pl, p) > threshold(p)) out = live[k];
           if (out >= 0) {
             tris_[sz(out)].conflict.push_back(p);
             moved = true;
@@ -470,6 +530,8 @@ class Builder {
     do {
       expand();
     } while (sweep());
+    nomerge_.assign(tris_.size(), 0);
+    splits_ = 0;
     return merge_and_build(reject);
   }
 
@@ -517,8 +579,12 @@ class Builder {
         }
         // A zero-area triangle has no plane: it joins the visible region when
         // two of its neighbours are visible (so it never becomes an island).
+        // So does a triangle whose plane the eye is exactly on: otherwise the
+        // two cone triangles over its edges fold over it (the vertex between
+        // those edges is enclosed; integer grids).
         for (int f : touched) {
-          if (mark[sz(f)] != 2 || !is_zero(tris_[sz(f)].pl.normal)) continue;
+          if (mark[sz(f)] != 2) continue;
+          if (!is_zero(tris_[sz(f)].pl.normal) && height(tris_[sz(f)].pl, eye) < T(0)) continue;
           int nvis = 0;
           for (int nbf : tris_[sz(f)].nb) nvis += mark[sz(nbf)] == 1;
           if (nvis >= 2) {
@@ -594,7 +660,15 @@ class Builder {
     Vec3<T> area = Vec3<T>(T(0), T(0), T(0));  // float: sum of triangle cross products
     Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};  // (initialised: groups_ copies Group{})
     bool degenerate = false;  // a single zero-area triangle
+    std::vector<int> splits;  // sorted ids of the split faces its triangles came from
   };
+
+  // Groups holding triangles of the same split face may not merge again.
+  static bool split_apart(const Group& a, const Group& b) {
+    for (int x : a.splits)
+      if (std::binary_search(b.splits.begin(), b.splits.end(), x)) return true;
+    return false;
+  }
 
   // |(v1 - v0) x (v2 - v0)|^2 / 4, from the edge lengths (Heron), accurate
   // for thin triangles where the cross product is not.
@@ -659,6 +733,12 @@ class Builder {
     std::set_union(gx.verts.begin(), gx.verts.end(), gy.verts.begin(), gy.verts.end(),
                    std::back_inserter(vs));
     gx.verts = std::move(vs);
+    if (!gy.splits.empty()) {
+      std::vector<int> sp;
+      std::set_union(gx.splits.begin(), gx.splits.end(), gy.splits.begin(), gy.splits.end(),
+                     std::back_inserter(sp));
+      gx.splits = std::move(sp);
+    }
     if constexpr (!exact) gx.area = Vec3<T>(gx.area + gy.area);
     if (gx.degenerate && !gy.degenerate) gx.pl = gy.pl;
     gx.degenerate = gx.degenerate && gy.degenerate;
@@ -680,6 +760,7 @@ class Builder {
       std::sort(g.verts.begin(), g.verts.end());
       g.pl = t.pl;
       g.degenerate = is_zero(t.pl.normal);
+      if (nomerge_[sz(f)] != 0) g.splits = {nomerge_[sz(f)]};
       if constexpr (!exact) g.area = T(2) * number_traits<T>::sqrt(tri_area2(t)) * t.pl.normal;
     }
     // Plane merges until nothing changes; then zero-area triangles join a
@@ -695,6 +776,7 @@ class Builder {
           for (int i = 0; i < 3; ++i) {
             const int x = find(f), y = find(tris_[sz(f)].nb[sz(i)]);
             if (x == y || groups_[sz(x)].degenerate || groups_[sz(y)].degenerate) continue;
+            if (split_apart(groups_[sz(x)], groups_[sz(y)])) continue;
             if (coplanar(groups_[sz(x)], groups_[sz(y)])) {
               unite(x, y);
               changed = true;
@@ -863,8 +945,32 @@ class Builder {
       // (and the loops extracted again) rather than losing a vertex: the
       // smaller face's "least significant" vertex can be a real corner.
       // Every round merges two groups, so this terminates.
+      //
+      // A merged face that fails planarity or convexity as validation sees
+      // it (a twisted sliver quad between two near-duplicate pairs, say) is
+      // split back into its triangles, which may not merge again, rather
+      // than losing a vertex.  Every split marks more triangles, so this
+      // terminates too.
       std::vector<std::pair<int, int>> merges;
-      prevalidate(loops, reject, false, &merges);
+      std::vector<int> split;
+      prevalidate(loops, reject, false, &merges, &loop_group, &split);
+      std::unordered_map<int, std::vector<int>> members;  // group -> live triangles
+      for (int f : live) members[find(f)].push_back(f);
+      bool any_split = false;
+      for (int f : split) {
+        std::vector<int>& m = members[loop_group[sz(f)]];
+        int plain = 0;
+        for (int t : m) plain += !is_zero(tris_[sz(t)].pl.normal) && nomerge_[sz(t)] == 0;
+        if (plain < 2) continue;
+        ++splits_;
+        for (int t : m)
+          if (nomerge_[sz(t)] == 0) nomerge_[sz(t)] = splits_;
+        any_split = true;
+      }
+      if (any_split) {
+        reject.clear();
+        return merge_and_build(reject);
+      }
       if (!merges.empty()) {
         reject.clear();
         for (const auto& [f, g] : merges) unite(loop_group[sz(f)], loop_group[sz(g)]);
@@ -957,8 +1063,17 @@ class Builder {
     return best;
   }
 
-  void prevalidate(const std::vector<std::vector<int>>& loops, std::vector<int>& reject,
-                   bool flat = false, std::vector<std::pair<int, int>>* merges = nullptr) {
+  // Solids also get: merges, adjacent faces that validation would see as
+  // coplanar (and not split apart); split, faces that fail only planarity,
+  // convexity or a reflex corner (not a zero or sliver plane triangle).
+  //
+  // A face whose loop fails only because of where it starts (validation's
+  // plane triple has its apex at the first vertex: for a twisted sliver
+  // quad, one start gives a plane all four vertices are within tolerance of,
+  // another does not) is started at the first corner that passes instead.
+  void prevalidate(std::vector<std::vector<int>>& loops, std::vector<int>& reject,
+                   bool flat = false, std::vector<std::pair<int, int>>* merges = nullptr,
+                   const std::vector<int>* loop_group = nullptr, std::vector<int>* split = nullptr) {
     std::vector<int> used;
     for (const auto& l : loops) used.insert(used.end(), l.begin(), l.end());
     std::sort(used.begin(), used.end());
@@ -988,7 +1103,9 @@ class Builder {
     }
     std::vector<char> bad(loops.size(), 0);
     for (std::size_t f = 0; f < loops.size(); ++f) {
-      const auto& l = loops[f];
+     for (std::size_t rot = 0; rot < (flat ? 1 : loops[f].size()); ++rot) {
+      std::vector<int> l = loops[f];
+      std::rotate(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(rot), l.end());
       std::vector<Vec3<T>> pts;
       for (int v : l) pts.push_back(X(v));
       auto t = plane_triple(pts);
@@ -1002,13 +1119,14 @@ class Builder {
              static_cast<int>(n - 1 - sz(t0[1]))};
       }
       const Plane<T> pl = plane_through(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]);
-      planes.push_back(pl);
+      if (rot == 0) planes.push_back(pl);
       auto h = [&](int v) { return T(dot(pl.normal, X(v)) - pl.offset); };
       bool ok = !is_zero(pl.normal);
       if constexpr (!exact) {  // (validation: aspect > sliver; here with a factor 2 margin)
         ok = ok && detail::triangle_aspect(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]) >
                        2 * Tolerances<T>::sliver;
       }
+      const bool shape_ok = ok;
       for (int v : l) ok = ok && abs_of(h(v)) <= plan_tol;
       for (int v : used) ok = ok && h(v) <= conv_tol;
       // corners as validation sees them: no reflex turn about this normal
@@ -1019,7 +1137,20 @@ class Builder {
         const T lab = length(ab);
         ok = lab > T(0) && !(dot(pl.normal, cross(ab, bc)) < -(conv_tol * lab));
       }
-      if (!ok) bad[f] = 1;
+      if (ok) {
+        bad[f] = 0;
+        loops[f] = std::move(l);
+        planes[f] = pl;
+        break;
+      }
+      if (rot == 0) {
+        bad[f] = 1;
+        if (shape_ok && split != nullptr) split->push_back(static_cast<int>(f));
+      }
+     }
+    }
+    if (split != nullptr) {
+      std::erase_if(*split, [&](int f) { return !bad[sz(f)]; });
     }
     for (std::size_t f = 0; f < loops.size() && !flat; ++f) {
       if (bad[f]) continue;
@@ -1029,7 +1160,8 @@ class Builder {
         bool coplanar = true;
         for (int v : loops[sz(g)])
           coplanar = coplanar && abs_of(T(dot(planes[f].normal, X(v)) - planes[f].offset)) <= copl_tol;
-        if (coplanar && merges != nullptr) {
+        if (coplanar && merges != nullptr &&
+            !split_apart(groups_[sz((*loop_group)[f])], groups_[sz((*loop_group)[sz(g)])])) {
           merges->emplace_back(static_cast<int>(f), g);
           break;
         }
@@ -1076,6 +1208,9 @@ class Builder {
   std::vector<int> active_;  // the points of the current build
   Vec3<T> base_normal_;      // normal of its initial triangle
   std::vector<Group> groups_;
+  std::vector<char> pinned_;  // float: points a repair round put back
+  std::vector<int> nomerge_;  // triangle -> id of the face it was split from (0: none)
+  int splits_ = 0;
 };
 
 }  // namespace hull_detail
