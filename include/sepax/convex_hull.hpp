@@ -391,10 +391,24 @@ class Builder {
                                                    std::string(exact ? "" : " (within tolerance)"));
     }
     if constexpr (!exact) {
+      // Start at the best-conditioned corner, or if validation would refuse
+      // that (a slab up to flat*extent thick is off the plane triple by more
+      // than the planarity tolerance from some starts), at the first corner
+      // it accepts, rather than losing a vertex.
       start_at_best_apex(hull);
-      std::vector<int> back(hull.rbegin(), hull.rend());
-      std::vector<std::vector<int>> both{hull, back};
-      prevalidate(both, reject, true);
+      for (std::size_t rot = 0; rot < hull.size(); ++rot) {
+        std::vector<int> front = hull;
+        std::rotate(front.begin(), front.begin() + static_cast<std::ptrdiff_t>(rot), front.end());
+        std::vector<std::vector<int>> both{front, std::vector<int>(front.rbegin(), front.rend())};
+        std::vector<int> r;
+        prevalidate(both, r, true);
+        if (rot == 0) reject = r;
+        if (r.empty()) {
+          reject.clear();
+          hull = std::move(front);
+          break;
+        }
+      }
       if (!reject.empty()) return std::nullopt;
     }
     std::vector<Vec3<T>> loop;
@@ -528,7 +542,13 @@ class Builder {
       if (p != a && p != b && p != c && p != d) assign(p, 0);
 
     do {
-      expand();
+      // (a step whose visible region was widened can leave points on
+      // conflict lists of faces the pass is already past)
+      for (bool pending = true; pending;) {
+        expand();
+        pending = false;
+        for (const Tri& t : tris_) pending = pending || (t.alive && !t.conflict.empty());
+      }
     } while (sweep());
     nomerge_.assign(tris_.size(), 0);
     splits_ = 0;
@@ -561,6 +581,7 @@ class Builder {
       mark.resize(tris_.size(), 0);
       touched.assign(1, static_cast<int>(fi));
       visible.clear();
+      bool forced = false;
       stack.assign(1, static_cast<int>(fi));
       mark[fi] = 1;
       for (;;) {
@@ -579,17 +600,23 @@ class Builder {
         }
         // A zero-area triangle has no plane: it joins the visible region when
         // two of its neighbours are visible (so it never becomes an island).
-        // So does a triangle whose plane the eye is exactly on: otherwise the
-        // two cone triangles over its edges fold over it (the vertex between
-        // those edges is enclosed; integer grids).
+        // So does a triangle whose plane the eye is (within eps) on: otherwise
+        // the two cone triangles over its edges fold over it, enclosing the
+        // vertex between those edges (integer grids: 3000..9000 x eps out).
+        // The eye may be below such a face, so the quickhull lemma (a point
+        // above a visible face is inside the new hull or above a new face)
+        // does not hold for it: its points, and the vertices the step
+        // removes, are then tested against every live face.
         for (int f : touched) {
           if (mark[sz(f)] != 2) continue;
-          if (!is_zero(tris_[sz(f)].pl.normal) && height(tris_[sz(f)].pl, eye) < T(0)) continue;
+          const bool flat_tri = is_zero(tris_[sz(f)].pl.normal);
+          if (!flat_tri && height(tris_[sz(f)].pl, eye) < -eps_) continue;
           int nvis = 0;
           for (int nbf : tris_[sz(f)].nb) nvis += mark[sz(nbf)] == 1;
           if (nvis >= 2) {
             mark[sz(f)] = 1;
             stack.push_back(f);
+            if (!flat_tri && !(height(tris_[sz(f)].pl, eye) > T(0))) forced = true;
           }
         }
         if (stack.empty()) break;
@@ -640,7 +667,21 @@ class Builder {
         Tri& o = tris_[sz(out)];
         o.nb[sz(edge_index(o, horizon[sz(j)][1]))] = first_new + j;
       }
-      // re-distribute the visible faces' conflict points
+      // re-distribute the visible faces' conflict points, and their vertices
+      // that are no longer on the surface (inside in exact arithmetic; float:
+      // tested like any other point)
+      if constexpr (!exact) {
+        std::vector<int> gone;
+        for (int f : visible)
+          for (int v : tris_[sz(f)].v) gone.push_back(v);
+        std::sort(gone.begin(), gone.end());
+        gone.erase(std::unique(gone.begin(), gone.end()), gone.end());
+        for (int v : gone) {
+          bool kept = v == eye;
+          for (const auto& hz : horizon) kept = kept || hz[0] == v;
+          if (!kept) assign(v, forced ? 0 : first_new);
+        }
+      }
       for (int f : visible) {
         Tri& t = tris_[sz(f)];
         t.alive = false;
@@ -648,7 +689,7 @@ class Builder {
         t.conflict.clear();
         pts.insert(pts.end(), t.on.begin(), t.on.end());
         t.on.clear();
-        for (int p : pts) assign(p, first_new);
+        for (int p : pts) assign(p, forced ? 0 : first_new);
       }
     }
   }
