@@ -134,6 +134,7 @@ class Builder {
     const double slack = 8.0 * number_traits<T>::unit_roundoff * max_abs;
     double worst = 0;
     for (std::size_t i = 0; i < pts_.size(); ++i) {
+      if (out_vertex_[i]) continue;  // (the pre-check held it within conv_tol = 2 eps)
       double hp = -1e300;
       for (int f = 0; f < h.face_count(); ++f)
         hp = std::max(hp, to_double(T(dot(h.plane(f).normal, X(static_cast<int>(i))) - h.plane(f).offset)));
@@ -412,7 +413,11 @@ class Builder {
       if (!reject.empty()) return std::nullopt;
     }
     std::vector<Vec3<T>> loop;
-    for (int i : hull) loop.push_back(in_[sz(pts_[sz(i)])]);
+    out_vertex_.assign(pts_.size(), 0);
+    for (int i : hull) {
+      loop.push_back(in_[sz(pts_[sz(i)])]);
+      out_vertex_[sz(i)] = 1;
+    }
     return finish([&] { return ConvexPolyhedron<T>::polygon(std::move(loop)); });
   }
 
@@ -1022,6 +1027,9 @@ class Builder {
     // Output: compact vertex numbering, original input coordinates.
     std::unordered_map<int, int> index;
     std::vector<Vec3<T>> verts;
+    out_vertex_.assign(pts_.size(), 0);
+    for (const auto& l : loops)
+      for (int v : l) out_vertex_[sz(v)] = 1;
     std::vector<std::vector<int>> faces;
     for (const auto& l : loops) {
       std::vector<int> face;
@@ -1250,6 +1258,7 @@ class Builder {
   Vec3<T> base_normal_;      // normal of its initial triangle
   std::vector<Group> groups_;
   std::vector<char> pinned_;  // float: points a repair round put back
+  std::vector<char> out_vertex_;  // vertices of the last output
   std::vector<int> nomerge_;  // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
 };
