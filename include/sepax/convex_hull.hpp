@@ -357,7 +357,22 @@ class Builder {
     int k = 0;
     for (int i = 1; i < 3; ++i)
       if (abs_of(n[i]) > abs_of(n[k])) k = i;
-    const int u = (k + 1) % 3, w = (k + 2) % 3;
+    // Sort along the in-plane axis the points spread most on: the tolerant
+    // turn test below only drops points between their neighbours in sort
+    // order, so for a needle sorted across its width (by its tiny
+    // coordinate first) it dropped one end of the needle (half the extent).
+    int u = (k + 1) % 3, w = (k + 2) % 3;
+    {
+      auto spread = [&](int c) {
+        T lo = Q(active[0])[c], hi = lo;
+        for (int i : active) {
+          lo = std::min(lo, Q(i)[c]);
+          hi = std::max(hi, Q(i)[c]);
+        }
+        return T(hi - lo);
+      };
+      if (spread(w) > spread(u)) std::swap(u, w);
+    }
     std::vector<int> pts = active;
     std::sort(pts.begin(), pts.end(), [&](int i, int j) {
       if (Q(i)[u] != Q(j)[u]) return Q(i)[u] < Q(j)[u];
@@ -1095,15 +1110,25 @@ class Builder {
     std::rotate(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(best), l.end());
   }
 
+  // The vertex whose removal loses the least: the one nearest the segment
+  // between its neighbours (the segment, not the line: a needle's tip is
+  // near the line through two points behind it, but far from them).
   int least_significant(const std::vector<int>& l) const {
     const std::size_t n = l.size();
     int best = l[0];
     T best_d(-1);
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec3<T> e(Q(l[(i + 1) % n]) - Q(l[(i + n - 1) % n]));
-      const Vec3<T> c = cross(e, Vec3<T>(Q(l[i]) - Q(l[(i + n - 1) % n])));
+      const Vec3<T> a = Q(l[(i + n - 1) % n]), b = Q(l[(i + 1) % n]), v = Q(l[i]);
+      const Vec3<T> e(b - a), av(v - a), bv(v - b);
       const T el = length(e);
-      const T d = el > T(0) ? T(length(c) / el) : T(0);
+      T d;
+      if (!(el > T(0)) || dot(av, e) <= T(0)) {
+        d = length(av);
+      } else if (dot(bv, e) >= T(0)) {
+        d = length(bv);
+      } else {
+        d = T(length(cross(e, av)) / el);
+      }
       if (best_d < T(0) || d < best_d) {
         best_d = d;
         best = l[i];
