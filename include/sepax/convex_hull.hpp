@@ -131,6 +131,7 @@ class Builder {
     }
   }
 
+ private:
   static constexpr int max_repairs = 8;
   static constexpr double repair_tol = 2.0;  // x coplanar * extent
 
@@ -631,9 +632,10 @@ class Builder {
         }
         // A zero-area triangle has no plane: it joins the visible region when
         // two of its neighbours are visible (so it never becomes an island).
-        // So does a triangle whose plane the eye is (within eps) on: otherwise
-        // the two cone triangles over its edges fold over it, enclosing the
-        // vertex between those edges (integer grids: 3000..9000 x eps out).
+        // Float T: so does a triangle whose plane the eye is (within eps)
+        // on: otherwise the two cone triangles over its edges fold over it,
+        // enclosing the vertex between those edges (integer grids: 3000..9000
+        // x eps out).
         // The eye may be below such a face, so the quickhull lemma (a point
         // above a visible face is inside the new hull or above a new face)
         // does not hold for it: its points, and the vertices the step
@@ -641,7 +643,7 @@ class Builder {
         for (int f : touched) {
           if (mark[sz(f)] != 2) continue;
           const bool flat_tri = is_zero(tris_[sz(f)].pl.normal);
-          if (!flat_tri && height(tris_[sz(f)].pl, eye) < -eps_) continue;
+          if (!flat_tri && (exact || height(tris_[sz(f)].pl, eye) < -eps_)) continue;
           int nvis = 0;
           for (int nbf : tris_[sz(f)].nb) nvis += mark[sz(nbf)] == 1;
           if (nvis >= 2) {
