@@ -15,8 +15,11 @@
 //   3. Quickhull on triangles: every face keeps a conflict list of the points
 //      more than coplanar*extent above it (exact T: strictly above); the
 //      farthest point of a face is added, the faces it sees are removed and
-//      the horizon is coned to it.  A point that is above no face by more than
-//      the tolerance is dropped (it is inside or within tolerance of the hull).
+//      the horizon is coned to it.  Float T: a point 0..eps above a face is
+//      kept on it and re-tested when the face is replaced; when no conflicts
+//      are left every kept point is tested against every face (one more than
+//      eps above goes back to a conflict list).  Only a point below every
+//      face it was tested against is dropped.
 //   4. Merge: adjacent triangles are grouped into faces.  Exact T: a group is a
 //      maximal set of exactly coplanar triangles.  Float T: two groups merge
 //      when either one sees every vertex of the other (not shared with it)
@@ -32,11 +35,19 @@
 //      Float T then checks the result the way ConvexPolyhedron validation
 //      will (same plane triples, half the tolerances) after starting each
 //      loop at its best-conditioned corner; a face that would fail loses its
-//      least significant vertex and the hull is rebuilt.  Every rebuild
-//      removes at least one point, so the builder terminates.
+//      least significant vertex and the hull is rebuilt -- unless another
+//      start of the loop passes, or the face is two faces validation sees as
+//      coplanar (merged), or a merged face that can be split back into its
+//      triangles.  Every rebuild removes at least one point, every merge or
+//      split changes the faces, so the builder terminates.
 //   6. Build through ConvexPolyhedron<T>::from_faces, so the result is
 //      validated.  A builder output failing validation is a builder bug and is
 //      reported as std::logic_error, not as InvalidInput.
+//   7. Float T: check every point that is not a vertex against the result's
+//      planes; points more than 2 x eps above one are put back, pinned (a
+//      pinned point is outside a face as soon as it is above it) and the hull
+//      rebuilt, at most max_repairs times, keeping the best result
+//      (docs/hull.md: every point within 64 x eps, measured worst 42).
 //
 // Float T computes every decision on the points translated by the centre of
 // their bounding box (so an offset from the origin does not cost precision);
@@ -82,20 +93,70 @@ class Builder {
     check_input();
     weld();
     // Build, and rebuild without the points the clean-up pass rejects.
+    // Float T: then check every point against the result; points outside
+    // by more than repair_tol are pinned (made vertices whenever they are
+    // above the hull at all) and put back, and the hull is rebuilt, for a
+    // bounded number of repair rounds.
     std::vector<char> removed(pts_.size(), 0);
-    for (;;) {
-      std::vector<int> active;
-      for (std::size_t i = 0; i < pts_.size(); ++i)
-        if (!removed[i]) active.push_back(static_cast<int>(i));
-      std::vector<int> reject;
-      auto result = build(active, reject);
-      if (result) return std::move(*result);
-      if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
-      for (int r : reject) removed[sz(r)] = 1;
+    pinned_.assign(pts_.size(), 0);
+    std::optional<ConvexPolyhedron<T>> best;
+    double best_out = 0;
+    for (int repairs = 0;; ++repairs) {
+      std::optional<ConvexPolyhedron<T>> result;
+      for (;;) {
+        std::vector<int> active;
+        for (std::size_t i = 0; i < pts_.size(); ++i)
+          if (!removed[i]) active.push_back(static_cast<int>(i));
+        std::vector<int> reject;
+        result = build(active, reject);
+        if (result) break;
+        if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
+        for (int r : reject) removed[sz(r)] = 1;
+      }
+      if constexpr (exact) {
+        return std::move(*result);
+      } else {
+        std::vector<int> outside;
+        const double out = outside_points(*result, outside);
+        if (!best || out < best_out) {
+          best = std::move(result);
+          best_out = out;
+        }
+        if (outside.empty() || repairs == max_repairs) return std::move(*best);
+        for (int p : outside) {
+          removed[sz(p)] = 0;
+          pinned_[sz(p)] = 1;
+        }
+      }
     }
   }
 
  private:
+  static constexpr int max_repairs = 8;
+  static constexpr double repair_tol = 2.0;  // x coplanar * extent
+
+  // Float T: the welded points more than repair_tol * eps above a face plane
+  // of h (evaluated as a user would, on the input coordinates; plus their
+  // rounding); returns the largest height in units of eps.
+  double outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside) const {
+    double max_abs = 0;
+    for (std::size_t i = 0; i < pts_.size(); ++i)
+      for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(X(static_cast<int>(i))[c])));
+    const double e = to_double(eps_);
+    const double slack = 8.0 * number_traits<T>::unit_roundoff * max_abs;
+    double worst = 0;
+    for (std::size_t i = 0; i < pts_.size(); ++i) {
+      if (out_vertex_[i]) continue;  // (the pre-check held it within conv_tol = 2 eps)
+      double hp = -1e300;
+      for (int f = 0; f < h.face_count(); ++f)
+        hp = std::max(hp, to_double(T(dot(h.plane(f).normal, X(static_cast<int>(i))) - h.plane(f).offset)));
+      hp -= slack;
+      worst = std::max(worst, hp / e);
+      if (hp > repair_tol * e) outside.push_back(static_cast<int>(i));
+    }
+    return worst;
+  }
+
   // ---- input, tolerances, welding -------------------------------------------------
 
   static constexpr bool exact = number_traits<T>::is_exact;
@@ -212,6 +273,10 @@ class Builder {
     Plane<T> pl;
     bool alive = true;
     std::vector<int> conflict;
+    // float T: points above this face by at most eps (on it within the
+    // tolerance).  They are not outside, but they are not inside either: when
+    // the face is replaced they are tested against the new faces again.
+    std::vector<int> on;
   };
 
   const Vec3<T>& Q(int i) const { return q_[sz(i)]; }
@@ -304,7 +369,22 @@ class Builder {
     int k = 0;
     for (int i = 1; i < 3; ++i)
       if (abs_of(n[i]) > abs_of(n[k])) k = i;
-    const int u = (k + 1) % 3, w = (k + 2) % 3;
+    // Sort along the in-plane axis the points spread most on: the tolerant
+    // turn test below only drops points between their neighbours in sort
+    // order, so for a needle sorted across its width (by its tiny
+    // coordinate first) it dropped one end of the needle (half the extent).
+    int u = (k + 1) % 3, w = (k + 2) % 3;
+    {
+      auto spread = [&](int c) {
+        T lo = Q(active[0])[c], hi = lo;
+        for (int i : active) {
+          lo = std::min(lo, Q(i)[c]);
+          hi = std::max(hi, Q(i)[c]);
+        }
+        return T(hi - lo);
+      };
+      if (spread(w) > spread(u)) std::swap(u, w);
+    }
     std::vector<int> pts = active;
     std::sort(pts.begin(), pts.end(), [&](int i, int j) {
       if (Q(i)[u] != Q(j)[u]) return Q(i)[u] < Q(j)[u];
@@ -339,13 +419,32 @@ class Builder {
                                                    std::string(exact ? "" : " (within tolerance)"));
     }
     if constexpr (!exact) {
+      // Start at the best-conditioned corner, or if validation would refuse
+      // that (a slab up to flat*extent thick is off the plane triple by more
+      // than the planarity tolerance from some starts), at the first corner
+      // it accepts, rather than losing a vertex.
       start_at_best_apex(hull);
-      std::vector<int> back(hull.rbegin(), hull.rend());
-      prevalidate({hull, back}, reject, true);
+      for (std::size_t rot = 0; rot < hull.size(); ++rot) {
+        std::vector<int> front = hull;
+        std::rotate(front.begin(), front.begin() + static_cast<std::ptrdiff_t>(rot), front.end());
+        std::vector<std::vector<int>> both{front, std::vector<int>(front.rbegin(), front.rend())};
+        std::vector<int> r;
+        prevalidate(both, r, true);
+        if (rot == 0) reject = r;
+        if (r.empty()) {
+          reject.clear();
+          hull = std::move(front);
+          break;
+        }
+      }
       if (!reject.empty()) return std::nullopt;
     }
     std::vector<Vec3<T>> loop;
-    for (int i : hull) loop.push_back(in_[sz(pts_[sz(i)])]);
+    out_vertex_.assign(pts_.size(), 0);
+    for (int i : hull) {
+      loop.push_back(in_[sz(pts_[sz(i)])]);
+      out_vertex_[sz(i)] = 1;
+    }
     return finish([&] { return ConvexPolyhedron<T>::polygon(std::move(loop)); });
   }
 
@@ -376,12 +475,79 @@ class Builder {
   }
 
   // Assign p to the first of faces [first, end) it is above by more than eps.
+  // Float T: otherwise, if p is above any of them (by at most eps), keep it
+  // on the one it is highest above; only a point below all of them is
+  // dropped.  (A point within eps above a face is on the hull now, but a
+  // later eye can replace that face by faces tilted away from it: a new face
+  // through a short horizon edge and an eye barely above the old plane,
+  // extrapolated across a wide thin face, can leave the point hundreds of
+  // eps outside.  Dropping such points was what lost them.)
   void assign(int p, int first) {
+    [[maybe_unused]] int on_face = -1;
+    [[maybe_unused]] T on_height(0);
     for (std::size_t f = sz(first); f < tris_.size(); ++f) {
-      if (tris_[f].alive && height(tris_[f].pl, p) > eps_) {
+      if (!tris_[f].alive) continue;
+      const T h = height(tris_[f].pl, p);
+      if (h > threshold(p)) {
         tris_[f].conflict.push_back(p);
         return;
       }
+      if constexpr (!exact) {
+        if (h > on_height) {
+          on_height = h;
+          on_face = static_cast<int>(f);
+        }
+      }
+    }
+    if constexpr (!exact) {
+      if (on_face >= 0) tris_[sz(on_face)].on.push_back(p);
+    }
+  }
+
+  // How far above a face p must be to be outside it: eps, or 0 for a point
+  // pinned by a repair round (it becomes a vertex whenever it is outside).
+  T threshold(int p) const {
+    if constexpr (exact) {
+      (void)p;
+      return T(0);
+    } else {
+      return pinned_[sz(p)] ? T(0) : eps_;
+    }
+  }
+
+  // Float T, after the conflict lists are empty: a point kept on a face (at
+  // most eps above it) was only ever tested against the faces created with
+  // that face, but later cones may have replaced a neighbouring face it was
+  // also (within eps) above by a face tilted below it.  Test every such
+  // point against every live face; one more than eps above any face goes
+  // back to that face's conflict list and the quickhull loop runs again.
+  // Each round adds a vertex or drops an eye, so the rounds terminate.
+  bool sweep() {
+    if constexpr (exact) {
+      return false;
+    } else {
+      std::vector<int> live;
+      for (std::size_t f = 0; f < tris_.size(); ++f)
+        if (tris_[f].alive && !is_zero(tris_[f].pl.normal)) live.push_back(static_cast<int>(f));
+      bool moved = false;
+      for (int f : live) {
+        std::vector<int>& on = tris_[sz(f)].on;
+        std::size_t keep = 0;
+        for (std::size_t i = 0; i < on.size(); ++i) {
+          const int p = on[i];
+          int out = -1;
+          for (std::size_t k = 0; k < live.size() && out < 0; ++k)
+            if (height(tris_[sz(live[k])].pl, p) > threshold(p)) out = live[k];
+          if (out >= 0) {
+            tris_[sz(out)].conflict.push_back(p);
+            moved = true;
+          } else {
+            on[keep++] = p;
+          }
+        }
+        on.resize(keep);
+      }
+      return moved;
     }
   }
 
@@ -407,9 +573,28 @@ class Builder {
     for (int p : active)
       if (p != a && p != b && p != c && p != d) assign(p, 0);
 
+    do {
+      // (a step whose visible region was widened can leave points on
+      // conflict lists of faces the pass is already past)
+      for (bool pending = true; pending;) {
+        expand();
+        pending = false;
+        for (const Tri& t : tris_) pending = pending || (t.alive && !t.conflict.empty());
+      }
+    } while (sweep());
+    nomerge_.assign(tris_.size(), 0);
+    splits_ = 0;
+    return merge_and_build(reject);
+  }
+
+  // Quickhull until every conflict list is empty.
+  void expand() {
     std::vector<int> visible, stack, mark, touched;
-    for (std::size_t fi = 0; fi < tris_.size(); ++fi) {
-      if (!tris_[fi].alive || tris_[fi].conflict.empty()) continue;
+    for (std::size_t fi = 0; fi < tris_.size();) {
+      if (!tris_[fi].alive || tris_[fi].conflict.empty()) {
+        ++fi;
+        continue;
+      }
       // eye: the conflict point farthest above this face
       auto& cf = tris_[fi].conflict;
       std::size_t best = 0;
@@ -428,6 +613,7 @@ class Builder {
       mark.resize(tris_.size(), 0);
       touched.assign(1, static_cast<int>(fi));
       visible.clear();
+      bool forced = false;
       stack.assign(1, static_cast<int>(fi));
       mark[fi] = 1;
       for (;;) {
@@ -446,13 +632,24 @@ class Builder {
         }
         // A zero-area triangle has no plane: it joins the visible region when
         // two of its neighbours are visible (so it never becomes an island).
+        // Float T: so does a triangle whose plane the eye is (within eps)
+        // on: otherwise the two cone triangles over its edges fold over it,
+        // enclosing the vertex between those edges (integer grids: 3000..9000
+        // x eps out).
+        // The eye may be below such a face, so the quickhull lemma (a point
+        // above a visible face is inside the new hull or above a new face)
+        // does not hold for it: its points, and the vertices the step
+        // removes, are then tested against every live face.
         for (int f : touched) {
-          if (mark[sz(f)] != 2 || !is_zero(tris_[sz(f)].pl.normal)) continue;
+          if (mark[sz(f)] != 2) continue;
+          const bool flat_tri = is_zero(tris_[sz(f)].pl.normal);
+          if (!flat_tri && (exact || height(tris_[sz(f)].pl, eye) < -eps_)) continue;
           int nvis = 0;
           for (int nbf : tris_[sz(f)].nb) nvis += mark[sz(nbf)] == 1;
           if (nvis >= 2) {
             mark[sz(f)] = 1;
             stack.push_back(f);
+            if (!flat_tri && !(height(tris_[sz(f)].pl, eye) > T(0))) forced = true;
           }
         }
         if (stack.empty()) break;
@@ -486,8 +683,8 @@ class Builder {
       if (!simple) {
         if constexpr (exact) throw std::logic_error("convex_hull: non-simple horizon (a bug)");
         // Float only: rounding made the visible region not a disk.  The eye
-        // is then nearly on the hull; drop it (its distance outside counts in
-        // the measured bound of docs/hull.md).
+        // is then nearly on the hull; drop it and go on with this face's
+        // other conflict points (fi is still alive).
         continue;
       }
       // cone the horizon to the eye
@@ -503,16 +700,31 @@ class Builder {
         Tri& o = tris_[sz(out)];
         o.nb[sz(edge_index(o, horizon[sz(j)][1]))] = first_new + j;
       }
-      // re-distribute the visible faces' conflict points
+      // re-distribute the visible faces' conflict points, and their vertices
+      // that are no longer on the surface (inside in exact arithmetic; float:
+      // tested like any other point)
+      if constexpr (!exact) {
+        std::vector<int> gone;
+        for (int f : visible)
+          for (int v : tris_[sz(f)].v) gone.push_back(v);
+        std::sort(gone.begin(), gone.end());
+        gone.erase(std::unique(gone.begin(), gone.end()), gone.end());
+        for (int v : gone) {
+          bool kept = v == eye;
+          for (const auto& hz : horizon) kept = kept || hz[0] == v;
+          if (!kept) assign(v, forced ? 0 : first_new);
+        }
+      }
       for (int f : visible) {
         Tri& t = tris_[sz(f)];
         t.alive = false;
         std::vector<int> pts = std::move(t.conflict);
         t.conflict.clear();
-        for (int p : pts) assign(p, first_new);
+        pts.insert(pts.end(), t.on.begin(), t.on.end());
+        t.on.clear();
+        for (int p : pts) assign(p, forced ? 0 : first_new);
       }
     }
-    return merge_and_build(reject);
   }
 
   // ---- merging triangles into faces -------------------------------------------
@@ -522,7 +734,15 @@ class Builder {
     Vec3<T> area = Vec3<T>(T(0), T(0), T(0));  // float: sum of triangle cross products
     Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};  // (initialised: groups_ copies Group{})
     bool degenerate = false;  // a single zero-area triangle
+    std::vector<int> splits;  // sorted ids of the split faces its triangles came from
   };
+
+  // Groups holding triangles of the same split face may not merge again.
+  static bool split_apart(const Group& a, const Group& b) {
+    for (int x : a.splits)
+      if (std::binary_search(b.splits.begin(), b.splits.end(), x)) return true;
+    return false;
+  }
 
   // |(v1 - v0) x (v2 - v0)|^2 / 4, from the edge lengths (Heron), accurate
   // for thin triangles where the cross product is not.
@@ -587,6 +807,12 @@ class Builder {
     std::set_union(gx.verts.begin(), gx.verts.end(), gy.verts.begin(), gy.verts.end(),
                    std::back_inserter(vs));
     gx.verts = std::move(vs);
+    if (!gy.splits.empty()) {
+      std::vector<int> sp;
+      std::set_union(gx.splits.begin(), gx.splits.end(), gy.splits.begin(), gy.splits.end(),
+                     std::back_inserter(sp));
+      gx.splits = std::move(sp);
+    }
     if constexpr (!exact) gx.area = Vec3<T>(gx.area + gy.area);
     if (gx.degenerate && !gy.degenerate) gx.pl = gy.pl;
     gx.degenerate = gx.degenerate && gy.degenerate;
@@ -608,45 +834,55 @@ class Builder {
       std::sort(g.verts.begin(), g.verts.end());
       g.pl = t.pl;
       g.degenerate = is_zero(t.pl.normal);
+      if (nomerge_[sz(f)] != 0) g.splits = {nomerge_[sz(f)]};
       if constexpr (!exact) g.area = T(2) * number_traits<T>::sqrt(tri_area2(t)) * t.pl.normal;
     }
-    // Plane merges until nothing changes.
-    for (bool changed = true; changed;) {
-      changed = false;
-      for (int f : live) {
-        for (int i = 0; i < 3; ++i) {
-          const int x = find(f), y = find(tris_[sz(f)].nb[sz(i)]);
-          if (x == y || groups_[sz(x)].degenerate || groups_[sz(y)].degenerate) continue;
-          if (coplanar(groups_[sz(x)], groups_[sz(y)])) {
-            unite(x, y);
-            changed = true;
+    // Plane merges until nothing changes; then zero-area triangles join a
+    // neighbouring face, and if any did, plane merges again: a zero-area
+    // triangle between two coplanar faces kept them apart, and once it has
+    // joined one of them they are adjacent (left unmerged, validation would
+    // refuse the pair and the clean-up would drop a real corner).
+    for (bool joined = true; joined;) {
+      joined = false;
+      for (bool changed = true; changed;) {
+        changed = false;
+        for (int f : live) {
+          for (int i = 0; i < 3; ++i) {
+            const int x = find(f), y = find(tris_[sz(f)].nb[sz(i)]);
+            if (x == y || groups_[sz(x)].degenerate || groups_[sz(y)].degenerate) continue;
+            if (split_apart(groups_[sz(x)], groups_[sz(y)])) continue;
+            if (coplanar(groups_[sz(x)], groups_[sz(y)])) {
+              unite(x, y);
+              changed = true;
+            }
           }
         }
       }
-    }
-    // Zero-area triangles join the face across their longest edge.
-    for (bool changed = true; changed;) {
-      changed = false;
-      for (int f : live) {
-        if (!groups_[sz(find(f))].degenerate) continue;
-        const Tri& t = tris_[sz(f)];
-        int li = 0;
-        T ll(-1);
-        for (int i = 0; i < 3; ++i) {
-          const T l = squared_norm(Vec3<T>(Q(t.v[sz((i + 1) % 3)]) - Q(t.v[sz(i)])));
-          if (l > ll) {
-            ll = l;
-            li = i;
+      // Zero-area triangles join the face across their longest edge.
+      for (bool changed = true; changed;) {
+        changed = false;
+        for (int f : live) {
+          if (!groups_[sz(find(f))].degenerate) continue;
+          const Tri& t = tris_[sz(f)];
+          int li = 0;
+          T ll(-1);
+          for (int i = 0; i < 3; ++i) {
+            const T l = squared_norm(Vec3<T>(Q(t.v[sz((i + 1) % 3)]) - Q(t.v[sz(i)])));
+            if (l > ll) {
+              ll = l;
+              li = i;
+            }
           }
-        }
-        int target = find(t.nb[sz(li)]);
-        if (groups_[sz(target)].degenerate) {
-          for (int i = 0; i < 3; ++i)
-            if (!groups_[sz(find(t.nb[sz(i)]))].degenerate) target = find(t.nb[sz(i)]);
-        }
-        if (!groups_[sz(target)].degenerate) {
-          unite(target, find(f));
-          changed = true;
+          int target = find(t.nb[sz(li)]);
+          if (groups_[sz(target)].degenerate) {
+            for (int i = 0; i < 3; ++i)
+              if (!groups_[sz(find(t.nb[sz(i)]))].degenerate) target = find(t.nb[sz(i)]);
+          }
+          if (!groups_[sz(target)].degenerate) {
+            unite(target, find(f));
+            changed = true;
+            joined = true;
+          }
         }
       }
     }
@@ -724,13 +960,24 @@ class Builder {
       l = std::move(kept);
     }
     // Every corner strictly convex; otherwise reject the middle of the three
-    // points (it is within tolerance of the segment of the other two).
+    // points (it is within tolerance of the segment of the other two).  The
+    // other two are its witnesses: a point is not rejected in a round where
+    // it witnesses another rejection, nor when one of its own witnesses is
+    // rejected (two near-duplicate points at a real corner each fail the
+    // corner test with the other as the middle; rejecting both would lose
+    // the corner).  Such rejections wait for the next round; the first
+    // failing corner of a round is always rejected, so rounds still progress.
+    std::vector<char> rejected(q_.size(), 0), witness(q_.size(), 0);
+    for (int r : reject) rejected[sz(r)] = 1;
     for (std::size_t li = 0; li < loops.size(); ++li) {
       const auto& l = loops[li];
       const Group& g = groups_[sz(loop_group[li])];
       const std::size_t n = l.size();
       if (n < 3) {
-        for (int v : l) reject.push_back(v);
+        for (int v : l) {
+          reject.push_back(v);
+          rejected[sz(v)] = 1;
+        }
         if (reject.empty()) throw std::logic_error("convex_hull: empty face (a bug)");
         continue;
       }
@@ -754,6 +1001,10 @@ class Builder {
         if (lab >= lbc && lab >= lca) mid = pc;
         if (lbc >= lab && lbc >= lca) mid = pa;
         if (lca >= lab && lca >= lbc) mid = pb;
+        const int w1 = mid == pa ? pb : pa, w2 = mid == pc ? pb : pc;
+        if (witness[sz(mid)] || rejected[sz(w1)] || rejected[sz(w2)] || rejected[sz(mid)]) continue;
+        rejected[sz(mid)] = 1;
+        witness[sz(w1)] = witness[sz(w2)] = 1;
         reject.push_back(mid);
       }
     }
@@ -764,12 +1015,49 @@ class Builder {
     }
     if constexpr (!exact) {
       for (auto& l : loops) start_at_best_apex(l);
-      prevalidate(loops, reject);
+      // Adjacent faces that validation would see as coplanar are merged
+      // (and the loops extracted again) rather than losing a vertex: the
+      // smaller face's "least significant" vertex can be a real corner.
+      // Every round merges two groups, so this terminates.
+      //
+      // A merged face that fails planarity or convexity as validation sees
+      // it (a twisted sliver quad between two near-duplicate pairs, say) is
+      // split back into its triangles, which may not merge again, rather
+      // than losing a vertex.  Every split marks more triangles, so this
+      // terminates too.
+      std::vector<std::pair<int, int>> merges;
+      std::vector<int> split;
+      prevalidate(loops, reject, false, &merges, &loop_group, &split);
+      std::unordered_map<int, std::vector<int>> members;  // group -> live triangles
+      for (int f : live) members[find(f)].push_back(f);
+      bool any_split = false;
+      for (int f : split) {
+        std::vector<int>& m = members[loop_group[sz(f)]];
+        int plain = 0;
+        for (int t : m) plain += !is_zero(tris_[sz(t)].pl.normal) && nomerge_[sz(t)] == 0;
+        if (plain < 2) continue;
+        ++splits_;
+        for (int t : m)
+          if (nomerge_[sz(t)] == 0) nomerge_[sz(t)] = splits_;
+        any_split = true;
+      }
+      if (any_split) {
+        reject.clear();
+        return merge_and_build(reject);
+      }
+      if (!merges.empty()) {
+        reject.clear();
+        for (const auto& [f, g] : merges) unite(loop_group[sz(f)], loop_group[sz(g)]);
+        return extract(live, reject);
+      }
       if (!reject.empty()) return std::nullopt;
     }
     // Output: compact vertex numbering, original input coordinates.
     std::unordered_map<int, int> index;
     std::vector<Vec3<T>> verts;
+    out_vertex_.assign(pts_.size(), 0);
+    for (const auto& l : loops)
+      for (int v : l) out_vertex_[sz(v)] = 1;
     std::vector<std::vector<int>> faces;
     for (const auto& l : loops) {
       std::vector<int> face;
@@ -835,15 +1123,25 @@ class Builder {
     std::rotate(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(best), l.end());
   }
 
+  // The vertex whose removal loses the least: the one nearest the segment
+  // between its neighbours (the segment, not the line: a needle's tip is
+  // near the line through two points behind it, but far from them).
   int least_significant(const std::vector<int>& l) const {
     const std::size_t n = l.size();
     int best = l[0];
     T best_d(-1);
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec3<T> e(Q(l[(i + 1) % n]) - Q(l[(i + n - 1) % n]));
-      const Vec3<T> c = cross(e, Vec3<T>(Q(l[i]) - Q(l[(i + n - 1) % n])));
+      const Vec3<T> a = Q(l[(i + n - 1) % n]), b = Q(l[(i + 1) % n]), v = Q(l[i]);
+      const Vec3<T> e(b - a), av(v - a), bv(v - b);
       const T el = length(e);
-      const T d = el > T(0) ? T(length(c) / el) : T(0);
+      T d;
+      if (!(el > T(0)) || dot(av, e) <= T(0)) {
+        d = length(av);
+      } else if (dot(bv, e) >= T(0)) {
+        d = length(bv);
+      } else {
+        d = T(length(cross(e, av)) / el);
+      }
       if (best_d < T(0) || d < best_d) {
         best_d = d;
         best = l[i];
@@ -852,8 +1150,17 @@ class Builder {
     return best;
   }
 
-  void prevalidate(const std::vector<std::vector<int>>& loops, std::vector<int>& reject,
-                   bool flat = false) {
+  // Solids also get: merges, adjacent faces that validation would see as
+  // coplanar (and not split apart); split, faces that fail only planarity,
+  // convexity or a reflex corner (not a zero or sliver plane triangle).
+  //
+  // A face whose loop fails only because of where it starts (validation's
+  // plane triple has its apex at the first vertex: for a twisted sliver
+  // quad, one start gives a plane all four vertices are within tolerance of,
+  // another does not) is started at the first corner that passes instead.
+  void prevalidate(std::vector<std::vector<int>>& loops, std::vector<int>& reject,
+                   bool flat = false, std::vector<std::pair<int, int>>* merges = nullptr,
+                   const std::vector<int>* loop_group = nullptr, std::vector<int>* split = nullptr) {
     std::vector<int> used;
     for (const auto& l : loops) used.insert(used.end(), l.begin(), l.end());
     std::sort(used.begin(), used.end());
@@ -883,7 +1190,9 @@ class Builder {
     }
     std::vector<char> bad(loops.size(), 0);
     for (std::size_t f = 0; f < loops.size(); ++f) {
-      const auto& l = loops[f];
+     for (std::size_t rot = 0; rot < (flat ? 1 : loops[f].size()); ++rot) {
+      std::vector<int> l = loops[f];
+      std::rotate(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(rot), l.end());
       std::vector<Vec3<T>> pts;
       for (int v : l) pts.push_back(X(v));
       auto t = plane_triple(pts);
@@ -897,13 +1206,14 @@ class Builder {
              static_cast<int>(n - 1 - sz(t0[1]))};
       }
       const Plane<T> pl = plane_through(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]);
-      planes.push_back(pl);
+      if (rot == 0) planes.push_back(pl);
       auto h = [&](int v) { return T(dot(pl.normal, X(v)) - pl.offset); };
       bool ok = !is_zero(pl.normal);
       if constexpr (!exact) {  // (validation: aspect > sliver; here with a factor 2 margin)
         ok = ok && detail::triangle_aspect(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]) >
                        2 * Tolerances<T>::sliver;
       }
+      const bool shape_ok = ok;
       for (int v : l) ok = ok && abs_of(h(v)) <= plan_tol;
       for (int v : used) ok = ok && h(v) <= conv_tol;
       // corners as validation sees them: no reflex turn about this normal
@@ -914,7 +1224,20 @@ class Builder {
         const T lab = length(ab);
         ok = lab > T(0) && !(dot(pl.normal, cross(ab, bc)) < -(conv_tol * lab));
       }
-      if (!ok) bad[f] = 1;
+      if (ok) {
+        bad[f] = 0;
+        loops[f] = std::move(l);
+        planes[f] = pl;
+        break;
+      }
+      if (rot == 0) {
+        bad[f] = 1;
+        if (shape_ok && split != nullptr) split->push_back(static_cast<int>(f));
+      }
+     }
+    }
+    if (split != nullptr) {
+      std::erase_if(*split, [&](int f) { return !bad[sz(f)]; });
     }
     for (std::size_t f = 0; f < loops.size() && !flat; ++f) {
       if (bad[f]) continue;
@@ -924,6 +1247,11 @@ class Builder {
         bool coplanar = true;
         for (int v : loops[sz(g)])
           coplanar = coplanar && abs_of(T(dot(planes[f].normal, X(v)) - planes[f].offset)) <= copl_tol;
+        if (coplanar && merges != nullptr &&
+            !split_apart(groups_[sz((*loop_group)[f])], groups_[sz((*loop_group)[sz(g)])])) {
+          merges->emplace_back(static_cast<int>(f), g);
+          break;
+        }
         if (coplanar) bad[loops[f].size() <= loops[sz(g)].size() ? f : sz(g)] = 1;
       }
     }
@@ -967,6 +1295,10 @@ class Builder {
   std::vector<int> active_;  // the points of the current build
   Vec3<T> base_normal_;      // normal of its initial triangle
   std::vector<Group> groups_;
+  std::vector<char> pinned_;  // float: points a repair round put back
+  std::vector<char> out_vertex_;  // vertices of the last output
+  std::vector<int> nomerge_;  // triangle -> id of the face it was split from (0: none)
+  int splits_ = 0;
 };
 
 }  // namespace hull_detail

@@ -340,36 +340,35 @@ std::vector<Vec3<double>> random_point_set(std::mt19937& rng, int kind) {
   return p;
 }
 
-}  // namespace
-
-TEMPLATE_TEST_CASE("stress: 1000 hard point sets each give a validated hull or a clear error",
-                   "[hull][stress]", float, double) {
-  using T = TestType;
-  std::mt19937 rng(2024);
+// Every set of one stream of the generator above: a validated hull whose
+// points are all within 64 x coplanar*extent of it (no outliers allowed), or a
+// legitimate error.  Returns the worst point outside, in coplanar*extent.
+template <class T>
+double stress_stream(unsigned seed, int count) {
+  std::mt19937 rng(seed);
   int solids = 0, flats = 0, errors = 0;
   double worst = -1e300;
-  for (int iter = 0; iter < 1000; ++iter) {
+  for (int iter = 0; iter < count; ++iter) {
     const int kind = iter % 9;
     const auto pts = to_t<T>(random_point_set(rng, kind));
-    INFO("iteration " << iter << " kind " << kind << " points " << pts.size());
+    INFO("seed " << seed << " iteration " << iter << " kind " << kind << " points " << pts.size());
     try {
       const auto h = convex_hull(pts);
       check_valid(h);
       CHECK(vertices_are_inputs(h, pts));
       const double out = max_outside(h, pts);
-      worst = std::max(worst, out);
-      // Every point within 64 * coplanar * extent of the hull: the documented
-      // bound for degenerate sets (slabs and needles whose thickness is near
-      // the tolerances lose their least significant points so that the hull
-      // validates; see docs/hull.md).  Well-shaped sets are held to 1 x
-      // coplanar in the sphere test above.
-      double limit = 64.0;
+      // The documented bound (docs/hull.md): every point within
+      // 64 x coplanar*extent of every face plane, for every set (measured
+      // worst over 12 x 10000 sets: 42 double, 9 float).  The only addition
+      // is the rounding of evaluating the planes on coordinates up to
+      // 1e4 extents from the origin, 64 u max|x|.
       double max_abs = 0;
       for (const auto& p : pts)
         for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(p[c])));
-      limit += 64 * number_traits<T>::unit_roundoff * max_abs /
-               (Tolerances<T>::coplanar * h.extent());
-      CHECK(out <= limit);
+      const double rounding = 64 * number_traits<T>::unit_roundoff * max_abs /
+                              (Tolerances<T>::coplanar * h.extent());
+      worst = std::max(worst, out - rounding);
+      CHECK(out <= 64.0 + rounding);
       (h.is_flat() ? flats : solids)++;
     } catch (const InvalidInput& e) {
       // Only degenerate kinds may legitimately be rejected; and float cannot
@@ -394,8 +393,26 @@ TEMPLATE_TEST_CASE("stress: 1000 hard point sets each give a validated hull or a
       ++errors;
     }
   }
-  WARN("solids " << solids << ", flat " << flats << ", rejected " << errors
-                 << ", worst point outside " << worst << " x coplanar*extent");
-  CHECK(solids > (1000 - errors) / 2);
+  WARN("seed " << seed << ": solids " << solids << ", flat " << flats << ", rejected " << errors
+               << ", worst point outside " << worst << " x coplanar*extent");
+  CHECK(solids > (count - errors) / 2);
   CHECK(flats > 0);
+  return worst;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("stress: 1000 hard point sets each give a validated hull or a clear error",
+                   "[hull][stress]", float, double) {
+  stress_stream<TestType>(2024, 1000);
+}
+
+// Issue 2: about 0.1% of the sets of these streams (double; 0.03% float) had
+// a point more than 64 x coplanar*extent outside the hull (worst 0.2 x
+// extent: seed 1 iteration 3074, a cluster of near-duplicates; seed 2
+// iteration 1424, a thin slab, 296 x).  Every set of both streams is now
+// held to the bound.
+TEMPLATE_TEST_CASE("stress: the 2 x 10000 sets that lost points (issue 2) all keep them",
+                   "[hull][stress]", float, double) {
+  for (unsigned seed : {1u, 2u}) stress_stream<TestType>(seed, 10000);
 }

@@ -1,0 +1,169 @@
+// Stress run (not a unit test) for convex_hull<float/double>: the point-set
+// generator of tests/core/convex_hull_test.cpp (copied: nine kinds of hard
+// sets, scales 1e-6..1e6, offsets 1e4 x extent), streams of `count` sets per
+// seed.  Per type and seed it prints the sets whose worst point is more than
+// 1, 4 and 64 x coplanar*extent above a face plane (after subtracting the
+// rounding of evaluating planes far from the origin, 64 u max|x|, as the
+// unit test does), the worst one, and the same for the support gap: the
+// largest difference of the support functions of the points and of the hull
+// over ~300 directions (a lower bound on their Hausdorff distance).  Sets
+// above `report` are listed.  docs/hull.md quotes its output.
+//   g++ -std=c++20 -O2 -I include -I /usr/include/eigen3 docs/hull_stress.cpp -o /tmp/hull_stress
+//   /tmp/hull_stress both 1 12 10000        # [float|double|both] first_seed last_seed count [only_iter report]
+#include <sepax/convex_hull.hpp>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <vector>
+#include <string>
+using namespace sepax;
+namespace {
+template <class T>
+std::vector<Vec3<T>> to_t(const std::vector<Vec3<double>>& pts) {
+  std::vector<Vec3<T>> out;
+  for (const auto& p : pts) out.push_back(vec_cast<T>(p));
+  return out;
+}
+template <class T>
+double max_outside(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts) {
+  double worst = -1e300;
+  for (int f = 0; f < h.face_count(); ++f)
+    for (const auto& p : pts) worst = std::max(worst, to_double(T(dot(h.plane(f).normal, p) - h.plane(f).offset)));
+  return worst / (Tolerances<T>::coplanar * h.extent());
+}
+std::vector<Vec3<double>> sphere_points(int n, std::mt19937& rng) {
+  std::normal_distribution<double> nd;
+  std::vector<Vec3<double>> v;
+  for (int i = 0; i < n; ++i) {
+    Vec3<double> p(nd(rng), nd(rng), nd(rng));
+    v.push_back(p / p.norm());
+  }
+  return v;
+}
+
+// Point sets of many kinds, at many scales and offsets.
+std::vector<Vec3<double>> random_point_set(std::mt19937& rng, int kind) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> count(4, 80);
+  std::vector<Vec3<double>> p;
+  const int n = count(rng);
+  switch (kind) {
+    case 0:  // uniform in a box
+      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), u(rng));
+      break;
+    case 1:  // on a sphere
+      p = sphere_points(n, rng);
+      break;
+    case 2: {  // near-coplanar cluster: thickness around the tolerances
+      const double t = std::pow(10.0, -4.0 - 8.0 * std::abs(u(rng)));
+      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), t * u(rng));
+      break;
+    }
+    case 3: {  // sliver: a thin slab with a few points off it
+      const double t = std::pow(10.0, -1.0 - 8.0 * std::abs(u(rng)));
+      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), i % 7 == 0 ? t : 0.0);
+      break;
+    }
+    case 4: {  // needle
+      const double r = std::pow(10.0, -2.0 - 8.0 * std::abs(u(rng)));
+      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), r * u(rng), r * u(rng));
+      break;
+    }
+    case 5: {  // near-duplicates around a few centres
+      std::vector<Vec3<double>> centres;
+      for (int i = 0; i < 6; ++i) centres.emplace_back(u(rng), u(rng), u(rng));
+      const double j = std::pow(10.0, -6.0 - 8.0 * std::abs(u(rng)));
+      for (int i = 0; i < n; ++i)
+        p.push_back(centres[static_cast<std::size_t>(i) % centres.size()] +
+                    j * Vec3<double>(u(rng), u(rng), u(rng)));
+      break;
+    }
+    case 6: {  // integer grid points (exact coplanarity everywhere)
+      std::uniform_int_distribution<int> g(-3, 3);
+      for (int i = 0; i < n; ++i) p.emplace_back(g(rng), g(rng), g(rng));
+      break;
+    }
+    case 7: {  // sphere with clusters of near-coplanar points on its faces
+      p = sphere_points(12, rng);
+      for (int i = 0; i < n; ++i) {
+        const auto& c = p[static_cast<std::size_t>(i) % 12];
+        p.push_back(c + 1e-9 * Vec3<double>(u(rng), u(rng), u(rng)));
+      }
+      break;
+    }
+    default: {  // points on two nearly parallel planes
+      const double t = std::pow(10.0, -1.0 - 10.0 * std::abs(u(rng)));
+      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), (i % 2) * (1.0 + t * u(rng)));
+      break;
+    }
+  }
+  // random scale 1e-6..1e6 and sometimes an offset of 1e4 * scale
+  const double scale = std::pow(10.0, 6.0 * u(rng));
+  const Vec3<double> off = (u(rng) > 0 ? 1e4 : 0.0) * scale * Vec3<double>(1, -0.5, 0.25);
+  for (auto& q : p) q = q * scale + off;
+  return p;
+}
+
+}
+// Lower bound on the Hausdorff distance between conv(points) and the hull
+// (the hull's vertices are input points, so it is inside conv(points)): the
+// largest support difference over many directions, in units of eps.
+template <class T>
+double support_gap(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts) {
+  std::vector<Vec3<double>> dirs;
+  std::mt19937 r(5);
+  std::normal_distribution<double> nd;
+  for (int i = 0; i < 300; ++i) { Vec3<double> d(nd(r), nd(r), nd(r)); dirs.push_back(d / d.norm()); }
+  for (int c = 0; c < 3; ++c) for (double s : {-1.0, 1.0}) { Vec3<double> d(0, 0, 0); d[c] = s; dirs.push_back(d); }
+  for (int f = 0; f < h.face_count(); ++f) dirs.push_back(vec_to_double(h.plane(f).normal).normalized());
+  double worst = 0;
+  for (const auto& d : dirs) {
+    double mp = -1e300, mh = -1e300;
+    for (const auto& p : pts) mp = std::max(mp, d.dot(vec_to_double(p)));
+    for (const auto& v : h.vertices()) mh = std::max(mh, d.dot(vec_to_double(v)));
+    worst = std::max(worst, mp - mh);
+  }
+  return worst / (Tolerances<T>::coplanar * h.extent());
+}
+template <class T>
+void run(unsigned seed, int iters, int only, double report) {
+  std::mt19937 rng(seed);
+  int over64 = 0, over4=0, over1=0, n=0, err=0, lerr=0; double worst = -1e300; int worst_it=-1; double gworst = -1e300; int gworst_it = -1, gover64 = 0, gover4 = 0;
+  for (int iter = 0; iter < iters; ++iter) {
+    const int kind = iter % 9;
+    const auto pts = to_t<T>(random_point_set(rng, kind));
+    if (only >= 0 && iter != only) continue;
+    try {
+      const auto h = convex_hull(pts);
+      double out = max_outside(h, pts);
+      double max_abs = 0;
+      for (const auto& p : pts) for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(p[c])));
+      double allow = 64 * number_traits<T>::unit_roundoff * max_abs / (Tolerances<T>::coplanar * h.extent());
+      double o = out - allow;   // excess beyond the offset allowance
+      const double gap = support_gap(h, pts) - allow;
+      if (gap > gworst) { gworst = gap; gworst_it = iter; }
+      if (gap > 64) ++gover64;
+      if (gap > 4) ++gover4;
+      ++n;
+      if (o > 64) ++over64;
+      if (o > 4) ++over4;
+      if (o > 1) ++over1;
+      if (o > worst) { worst = o; worst_it = iter; }
+      if (o > report || gap > report) std::printf("  %s seed %u iter %d kind %d n %zu out %.3g allow %.3g flat %d gap %.3g\n", sizeof(T)==4?"float":"double", seed, iter, kind, pts.size(), out, allow, (int)h.is_flat(), gap);
+    } catch (const InvalidInput&) { ++err; }
+    catch (const std::logic_error& e) { ++lerr; std::printf("  LOGIC %s seed %u iter %d: %s\n", sizeof(T)==4?"float":"double", seed, iter, e.what()); }
+  }
+  std::printf("%s seed %u: %d hulls, %d errors, %d logic; >1: %d, >4: %d, >64: %d; worst %.3g (iter %d); support gap >4: %d >64: %d worst %.3g (iter %d)\n", sizeof(T)==4?"float":"double", seed, n, err, lerr, over1, over4, over64, worst, worst_it, gover4, gover64, gworst, gworst_it);
+}
+int main(int argc, char** argv) {
+  const std::string type = argc > 1 ? argv[1] : "both";
+  const unsigned s0 = argc > 2 ? unsigned(std::atoi(argv[2])) : 1, s1 = argc > 3 ? unsigned(std::atoi(argv[3])) : 3;
+  const int iters = argc > 4 ? std::atoi(argv[4]) : 10000;
+  const int only = argc > 5 ? std::atoi(argv[5]) : -1;
+  const double report = argc > 6 ? std::atof(argv[6]) : 64;
+  for (unsigned s = s0; s <= s1; ++s) {
+    if (type != "double") run<float>(s, iters, only, report);
+    if (type != "float") run<double>(s, iters, only, report);
+  }
+}
