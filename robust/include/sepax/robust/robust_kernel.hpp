@@ -129,6 +129,17 @@ struct Robust {};
 template <class T>
 concept RobustFloat = std::is_same_v<T, float> || std::is_same_v<T, double>;
 
+namespace detail {
+/// γ_k = k u / (1 - k u) for T's unit roundoff u.  Used only in RobustKernel's
+/// static constexpr members, which are constant-evaluated (see "Compile-time
+/// constants" there).
+template <class T>
+constexpr double gamma_constant(int k) {
+  constexpr double u = number_traits<T>::unit_roundoff;
+  return k * u / (1.0 - k * u);
+}
+}  // namespace detail
+
 template <RobustFloat T>
 class RobustKernel {
  public:
@@ -145,18 +156,18 @@ class RobustKernel {
     }
     d_ = sqrt_d(d2) * kMargin;
     const double da_n = normal_error(a), db_n = normal_error(b);
-    // kG5S3 = γ_5 √3 (1+1e-6), kG3S3x2 = 2 γ_3 √3 (1+1e-6): compile-time constants (see fold)
+    // kG5S3 = γ_5 √3 (1+1e-6), kG3S3x2 = 2 γ_3 √3 (1+1e-6): compile-time constants (see "Compile-time constants")
     face_err_a_ = (da_n * d_ + kG5S3 * (ma + mb)) * kMargin + 4 * kEta;
     face_err_b_ = (db_n * d_ + kG5S3 * (ma + mb)) * kMargin + 4 * kEta;
     support_err_a_ = (kG3S3x2 * mb + da_n * db) * kMargin + 4 * kEta;  // B's vertices, A's faces
     support_err_b_ = (kG3S3x2 * ma + db_n * da) * kMargin + 4 * kEta;
-    arc_err_a_ = (da_n + gamma(5)) * db * kMargin + 2 * kEta;  // A's normals . B's edges
-    arc_err_b_ = (db_n + gamma(5)) * da * kMargin + 2 * kEta;
+    arc_err_a_ = (da_n + kG5) * db * kMargin + 2 * kEta;  // A's normals . B's edges
+    arc_err_b_ = (db_n + kG5) * da * kMargin + 2 * kEta;
     arc_err_a_t_ = round_up(arc_err_a_);
     arc_err_b_t_ = round_up(arc_err_b_);
     support_err_a_t_ = round_up(support_err_a_);
     support_err_b_t_ = round_up(support_err_b_);
-    edge_abs_ = gamma(8) * (d_ + kS3 * (ma + mb)) * kMargin + 8 * kEta;
+    edge_abs_ = kG8 * (d_ + kS3 * (ma + mb)) * kMargin + 8 * kEta;
     proj_abs_a_ = kG3S3x2 * ma * kMargin + 4 * kEta;
     proj_abs_b_ = kG3S3x2 * mb * kMargin + 4 * kEta;
     centroid_err_a_ = centroid_error(a);
@@ -457,22 +468,26 @@ class RobustKernel {
   static constexpr double kNoBound = 2.5;  // |n - n*| <= 2 (1 + γ_4) always
 
   // Compile-time constants.  sepax::robust is compiled with -frounding-math
-  // (CGAL's flag), under which GCC does not fold inexact constant arithmetic:
-  // γ_k, √2, √3 times the margin, ... were recomputed -- divisions and libm
-  // sqrt calls -- on every use, per edge pair.  consteval forces them to
-  // compile time, rounded to nearest: the values the runtime expressions had
-  // (√2 and √3 are the correctly rounded std::numbers constants, which is
-  // what std::sqrt(2.0) and std::sqrt(3.0) return).
-  static consteval double fold(double x) { return x; }
-  static consteval double gamma(int k) { return k * kU / (1.0 - k * kU); }
+  // (CGAL's flag), under which GCC does not fold inexact constant arithmetic
+  // in ordinary expressions: γ_k, √2, √3 times the margin, ... were
+  // recomputed -- divisions and libm sqrt calls -- on every use, per edge
+  // pair.  As static constexpr members they are constant-evaluated (both
+  // compilers must), rounded to nearest: the values the runtime expressions
+  // had (√2 and √3 are the correctly rounded std::numbers constants, which is
+  // what std::sqrt(2.0) and std::sqrt(3.0) return).  Runtime code uses these
+  // members, never the expressions.
   /// γ_k for a k known only at run time (centroid_error).
   static constexpr double gamma_n(int k) { return k * kU / (1.0 - k * kU); }
-  static constexpr double kS3 = fold(std::numbers::sqrt3 * kMargin);
-  static constexpr double kG5S3 = fold(gamma(5) * kS3);
-  static constexpr double kG3S3x2 = fold(2 * gamma(3) * kS3);
+  static constexpr double kMargin2 = kMargin * kMargin;
+  static constexpr double kG4 = detail::gamma_constant<T>(4);
+  static constexpr double kG5 = detail::gamma_constant<T>(5);
+  static constexpr double kG8 = detail::gamma_constant<T>(8);
+  static constexpr double kS3 = std::numbers::sqrt3 * kMargin;
+  static constexpr double kG5S3 = kG5 * kS3;
+  static constexpr double kG3S3x2 = 2 * detail::gamma_constant<T>(3) * kS3;
   // q/|Ñ| = kUnitC ρ (unit_error_from_ratio)
-  static constexpr double kUnitC = fold(gamma(4) * std::numbers::sqrt2 / ((1 - kU) * (1 - kU)));
-  static constexpr double kUnitCM2 = fold(kUnitC * kMargin * kMargin);
+  static constexpr double kUnitC = kG4 * std::numbers::sqrt2 / ((1 - kU) * (1 - kU));
+  static constexpr double kUnitCM2 = kUnitC * kMargin * kMargin;
 
   // sqrt of a double, the IEEE (correctly rounded) result as std::sqrt, but
   // inline: under -frounding-math GCC calls libm's sqrt for it.
@@ -517,7 +532,7 @@ class RobustKernel {
   static double unit_error_from_ratio(double rho) {
     const double qr = kUnitCM2 * rho;
     if (!(qr < 0.5)) return kNoBound;
-    return (gamma(4) + 2 * qr / (1 - qr)) * kMargin;
+    return (kG4 + 2 * qr / (1 - qr)) * kMargin;
   }
 
   // Norms below this (squared, in T units) risk underflow in the normalisation.
@@ -551,8 +566,7 @@ class RobustKernel {
   static double centroid_error(const P& p) {
     const double k = static_cast<double>(p.vertex_count()) + 1.0;
     if (!(k * kU < 0.25)) return std::numeric_limits<double>::infinity();
-    return std::numbers::sqrt3 * gamma_n(static_cast<int>(k)) * p.max_abs_coordinate() * fold(kMargin * kMargin) +
-           4 * kEta;
+    return std::numbers::sqrt3 * gamma_n(static_cast<int>(k)) * p.max_abs_coordinate() * kMargin2 + 4 * kEta;
   }
 
   static Separation<T> height(const Plane<T>& pl, const Vec3<T>& p) {
@@ -663,7 +677,7 @@ class RobustKernel {
   int centroid_side(const P& p, int v, const EdgeAxis& ax, double cerr, double extent, int ea,
                     int eb) const {
     const T o = dot(ax.n, Vec3<T>(p.vertex(v) - p.centroid()));
-    const double e = ((ax.delta + gamma(5)) * (extent + cerr) + cerr) * kMargin + 4 * kEta;
+    const double e = ((ax.delta + kG5) * (extent + cerr) + cerr) * kMargin + 4 * kEta;
     if (static_cast<double>(o) > e) return 1;
     if (static_cast<double>(o) < -e) return -1;
     return centroid_side_exact(p, v, ea, eb);
@@ -685,7 +699,7 @@ class RobustKernel {
     // side_abs_ = (C_A + C_B)(1+1e-6) + 8η (the regrouping's rounding is
     // inside the margin).
     const double sum = static_cast<double>(oa) + static_cast<double>(ob);
-    const double e = (ax.delta + gamma(5)) * side_span_ + side_abs_ +
+    const double e = (ax.delta + kG5) * side_span_ + side_abs_ +
                      0x1p-52 * (std::abs(static_cast<double>(oa)) + std::abs(static_cast<double>(ob)));
     if (sum > e) return 1;
     if (sum < -e) return -1;
