@@ -1,6 +1,7 @@
 // Stress run (not a unit test) for convex_hull<float/double>: the point-set
-// generator of tests/core/convex_hull_test.cpp (copied: nine kinds of hard
-// sets, scales 1e-6..1e6, offsets 1e4 x extent), streams of `count` sets per
+// generator of tests/core/convex_hull_test.cpp (tests/core/hull_point_sets.hpp,
+// shared: nine kinds of hard sets, scales 1e-6..1e6, offsets 1e4 x extent),
+// streams of `count` sets per
 // seed.  Per type and seed it prints the sets whose worst point is more than
 // 1, 4 and 64 x coplanar*extent above a face plane (after subtracting the
 // rounding of evaluating planes far from the origin, 64 u max|x|, as the
@@ -11,6 +12,7 @@
 //   g++ -std=c++20 -O2 -I include -I /usr/include/eigen3 docs/hull_stress.cpp -o /tmp/hull_stress
 //   /tmp/hull_stress both 1 12 10000        # [float|double|both] first_seed last_seed count [only_iter report]
 #include <sepax/convex_hull.hpp>
+#include "../tests/core/hull_point_sets.hpp"
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,94 +20,7 @@
 #include <vector>
 #include <string>
 using namespace sepax;
-namespace {
-template <class T>
-std::vector<Vec3<T>> to_t(const std::vector<Vec3<double>>& pts) {
-  std::vector<Vec3<T>> out;
-  for (const auto& p : pts) out.push_back(vec_cast<T>(p));
-  return out;
-}
-template <class T>
-double max_outside(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts) {
-  double worst = -1e300;
-  for (int f = 0; f < h.face_count(); ++f)
-    for (const auto& p : pts) worst = std::max(worst, to_double(T(dot(h.plane(f).normal, p) - h.plane(f).offset)));
-  return worst / (Tolerances<T>::coplanar * h.extent());
-}
-std::vector<Vec3<double>> sphere_points(int n, std::mt19937& rng) {
-  std::normal_distribution<double> nd;
-  std::vector<Vec3<double>> v;
-  for (int i = 0; i < n; ++i) {
-    Vec3<double> p(nd(rng), nd(rng), nd(rng));
-    v.push_back(p / p.norm());
-  }
-  return v;
-}
-
-// Point sets of many kinds, at many scales and offsets.
-std::vector<Vec3<double>> random_point_set(std::mt19937& rng, int kind) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::uniform_int_distribution<int> count(4, 80);
-  std::vector<Vec3<double>> p;
-  const int n = count(rng);
-  switch (kind) {
-    case 0:  // uniform in a box
-      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), u(rng));
-      break;
-    case 1:  // on a sphere
-      p = sphere_points(n, rng);
-      break;
-    case 2: {  // near-coplanar cluster: thickness around the tolerances
-      const double t = std::pow(10.0, -4.0 - 8.0 * std::abs(u(rng)));
-      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), t * u(rng));
-      break;
-    }
-    case 3: {  // sliver: a thin slab with a few points off it
-      const double t = std::pow(10.0, -1.0 - 8.0 * std::abs(u(rng)));
-      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), i % 7 == 0 ? t : 0.0);
-      break;
-    }
-    case 4: {  // needle
-      const double r = std::pow(10.0, -2.0 - 8.0 * std::abs(u(rng)));
-      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), r * u(rng), r * u(rng));
-      break;
-    }
-    case 5: {  // near-duplicates around a few centres
-      std::vector<Vec3<double>> centres;
-      for (int i = 0; i < 6; ++i) centres.emplace_back(u(rng), u(rng), u(rng));
-      const double j = std::pow(10.0, -6.0 - 8.0 * std::abs(u(rng)));
-      for (int i = 0; i < n; ++i)
-        p.push_back(centres[static_cast<std::size_t>(i) % centres.size()] +
-                    j * Vec3<double>(u(rng), u(rng), u(rng)));
-      break;
-    }
-    case 6: {  // integer grid points (exact coplanarity everywhere)
-      std::uniform_int_distribution<int> g(-3, 3);
-      for (int i = 0; i < n; ++i) p.emplace_back(g(rng), g(rng), g(rng));
-      break;
-    }
-    case 7: {  // sphere with clusters of near-coplanar points on its faces
-      p = sphere_points(12, rng);
-      for (int i = 0; i < n; ++i) {
-        const auto& c = p[static_cast<std::size_t>(i) % 12];
-        p.push_back(c + 1e-9 * Vec3<double>(u(rng), u(rng), u(rng)));
-      }
-      break;
-    }
-    default: {  // points on two nearly parallel planes
-      const double t = std::pow(10.0, -1.0 - 10.0 * std::abs(u(rng)));
-      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), (i % 2) * (1.0 + t * u(rng)));
-      break;
-    }
-  }
-  // random scale 1e-6..1e6 and sometimes an offset of 1e4 * scale
-  const double scale = std::pow(10.0, 6.0 * u(rng));
-  const Vec3<double> off = (u(rng) > 0 ? 1e4 : 0.0) * scale * Vec3<double>(1, -0.5, 0.25);
-  for (auto& q : p) q = q * scale + off;
-  return p;
-}
-
-}
+using namespace sepax::hull_sets;
 // Lower bound on the Hausdorff distance between conv(points) and the hull
 // (the hull's vertices are input points, so it is inside conv(points)): the
 // largest support difference over many directions, in units of eps.

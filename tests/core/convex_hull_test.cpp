@@ -12,30 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "hull_point_sets.hpp"
+
 using namespace sepax;
+using namespace sepax::hull_sets;
 
 namespace {
-
-template <class T>
-std::vector<Vec3<T>> to_t(const std::vector<Vec3<double>>& pts) {
-  std::vector<Vec3<T>> out;
-  for (const auto& p : pts) out.push_back(vec_cast<T>(p));
-  return out;
-}
-
-// Largest height of any input point above any face plane, in units of
-// coplanar * extent of the hull.
-template <class T>
-double max_outside(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts) {
-  double worst = -1e300;
-  for (int f = 0; f < h.face_count(); ++f) {
-    for (const auto& p : pts) {
-      const double d = to_double(T(dot(h.plane(f).normal, p) - h.plane(f).offset));
-      worst = std::max(worst, d);
-    }
-  }
-  return worst / (Tolerances<T>::coplanar * h.extent());
-}
 
 // Re-validate from scratch (from_faces) and check basic invariants.
 template <class T>
@@ -60,16 +42,6 @@ bool vertices_are_inputs(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>
 std::vector<Vec3<double>> cube_corners(double s) {
   std::vector<Vec3<double>> v;
   for (int i = 0; i < 8; ++i) v.emplace_back(i & 1 ? s : -s, i & 2 ? s : -s, i & 4 ? s : -s);
-  return v;
-}
-
-std::vector<Vec3<double>> sphere_points(int n, std::mt19937& rng) {
-  std::normal_distribution<double> nd;
-  std::vector<Vec3<double>> v;
-  for (int i = 0; i < n; ++i) {
-    Vec3<double> p(nd(rng), nd(rng), nd(rng));
-    v.push_back(p / p.norm());
-  }
   return v;
 }
 
@@ -277,70 +249,7 @@ TEST_CASE("double hull far from the origin", "[hull]") {
 
 namespace {
 
-// Point sets of many kinds, at many scales and offsets.
-std::vector<Vec3<double>> random_point_set(std::mt19937& rng, int kind) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::uniform_int_distribution<int> count(4, 80);
-  std::vector<Vec3<double>> p;
-  const int n = count(rng);
-  switch (kind) {
-    case 0:  // uniform in a box
-      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), u(rng));
-      break;
-    case 1:  // on a sphere
-      p = sphere_points(n, rng);
-      break;
-    case 2: {  // near-coplanar cluster: thickness around the tolerances
-      const double t = std::pow(10.0, -4.0 - 8.0 * std::abs(u(rng)));
-      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), t * u(rng));
-      break;
-    }
-    case 3: {  // sliver: a thin slab with a few points off it
-      const double t = std::pow(10.0, -1.0 - 8.0 * std::abs(u(rng)));
-      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), i % 7 == 0 ? t : 0.0);
-      break;
-    }
-    case 4: {  // needle
-      const double r = std::pow(10.0, -2.0 - 8.0 * std::abs(u(rng)));
-      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), r * u(rng), r * u(rng));
-      break;
-    }
-    case 5: {  // near-duplicates around a few centres
-      std::vector<Vec3<double>> centres;
-      for (int i = 0; i < 6; ++i) centres.emplace_back(u(rng), u(rng), u(rng));
-      const double j = std::pow(10.0, -6.0 - 8.0 * std::abs(u(rng)));
-      for (int i = 0; i < n; ++i)
-        p.push_back(centres[static_cast<std::size_t>(i) % centres.size()] +
-                    j * Vec3<double>(u(rng), u(rng), u(rng)));
-      break;
-    }
-    case 6: {  // integer grid points (exact coplanarity everywhere)
-      std::uniform_int_distribution<int> g(-3, 3);
-      for (int i = 0; i < n; ++i) p.emplace_back(g(rng), g(rng), g(rng));
-      break;
-    }
-    case 7: {  // sphere with clusters of near-coplanar points on its faces
-      p = sphere_points(12, rng);
-      for (int i = 0; i < n; ++i) {
-        const auto& c = p[static_cast<std::size_t>(i) % 12];
-        p.push_back(c + 1e-9 * Vec3<double>(u(rng), u(rng), u(rng)));
-      }
-      break;
-    }
-    default: {  // points on two nearly parallel planes
-      const double t = std::pow(10.0, -1.0 - 10.0 * std::abs(u(rng)));
-      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), (i % 2) * (1.0 + t * u(rng)));
-      break;
-    }
-  }
-  // random scale 1e-6..1e6 and sometimes an offset of 1e4 * scale
-  const double scale = std::pow(10.0, 6.0 * u(rng));
-  const Vec3<double> off = (u(rng) > 0 ? 1e4 : 0.0) * scale * Vec3<double>(1, -0.5, 0.25);
-  for (auto& q : p) q = q * scale + off;
-  return p;
-}
-
-// Every set of one stream of the generator above: a validated hull whose
+// Every set of one stream of random_point_set (hull_point_sets.hpp): a validated hull whose
 // points are all within 64 x coplanar*extent of it (no outliers allowed), or a
 // legitimate error.  Returns the worst point outside, in coplanar*extent.
 template <class T>

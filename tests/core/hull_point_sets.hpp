@@ -1,0 +1,110 @@
+// The hull tests' point-set generators and measures, shared by
+// tests/core/convex_hull_test.cpp and the stress run docs/hull_stress.cpp (so
+// the stress run measures exactly the sets the unit test holds to the bound).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <sepax/convex_polyhedron.hpp>
+#include <sepax/tolerances.hpp>
+
+namespace sepax::hull_sets {
+
+template <class T>
+std::vector<Vec3<T>> to_t(const std::vector<Vec3<double>>& pts) {
+  std::vector<Vec3<T>> out;
+  for (const auto& p : pts) out.push_back(vec_cast<T>(p));
+  return out;
+}
+
+// Largest height of any input point above any face plane, in units of
+// coplanar * extent of the hull.
+template <class T>
+inline double max_outside(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts) {
+  double worst = -1e300;
+  for (int f = 0; f < h.face_count(); ++f) {
+    for (const auto& p : pts) {
+      const double d = to_double(T(dot(h.plane(f).normal, p) - h.plane(f).offset));
+      worst = std::max(worst, d);
+    }
+  }
+  return worst / (Tolerances<T>::coplanar * h.extent());
+}
+
+inline std::vector<Vec3<double>> sphere_points(int n, std::mt19937& rng) {
+  std::normal_distribution<double> nd;
+  std::vector<Vec3<double>> v;
+  for (int i = 0; i < n; ++i) {
+    Vec3<double> p(nd(rng), nd(rng), nd(rng));
+    v.push_back(p / p.norm());
+  }
+  return v;
+}
+
+// Point sets of many kinds, at many scales and offsets.
+inline std::vector<Vec3<double>> random_point_set(std::mt19937& rng, int kind) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> count(4, 80);
+  std::vector<Vec3<double>> p;
+  const int n = count(rng);
+  switch (kind) {
+    case 0:  // uniform in a box
+      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), u(rng));
+      break;
+    case 1:  // on a sphere
+      p = sphere_points(n, rng);
+      break;
+    case 2: {  // near-coplanar cluster: thickness around the tolerances
+      const double t = std::pow(10.0, -4.0 - 8.0 * std::abs(u(rng)));
+      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), t * u(rng));
+      break;
+    }
+    case 3: {  // sliver: a thin slab with a few points off it
+      const double t = std::pow(10.0, -1.0 - 8.0 * std::abs(u(rng)));
+      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), i % 7 == 0 ? t : 0.0);
+      break;
+    }
+    case 4: {  // needle
+      const double r = std::pow(10.0, -2.0 - 8.0 * std::abs(u(rng)));
+      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), r * u(rng), r * u(rng));
+      break;
+    }
+    case 5: {  // near-duplicates around a few centres
+      std::vector<Vec3<double>> centres;
+      for (int i = 0; i < 6; ++i) centres.emplace_back(u(rng), u(rng), u(rng));
+      const double j = std::pow(10.0, -6.0 - 8.0 * std::abs(u(rng)));
+      for (int i = 0; i < n; ++i)
+        p.push_back(centres[static_cast<std::size_t>(i) % centres.size()] +
+                    j * Vec3<double>(u(rng), u(rng), u(rng)));
+      break;
+    }
+    case 6: {  // integer grid points (exact coplanarity everywhere)
+      std::uniform_int_distribution<int> g(-3, 3);
+      for (int i = 0; i < n; ++i) p.emplace_back(g(rng), g(rng), g(rng));
+      break;
+    }
+    case 7: {  // sphere with clusters of near-coplanar points on its faces
+      p = sphere_points(12, rng);
+      for (int i = 0; i < n; ++i) {
+        const auto& c = p[static_cast<std::size_t>(i) % 12];
+        p.push_back(c + 1e-9 * Vec3<double>(u(rng), u(rng), u(rng)));
+      }
+      break;
+    }
+    default: {  // points on two nearly parallel planes
+      const double t = std::pow(10.0, -1.0 - 10.0 * std::abs(u(rng)));
+      for (int i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng), (i % 2) * (1.0 + t * u(rng)));
+      break;
+    }
+  }
+  // random scale 1e-6..1e6 and sometimes an offset of 1e4 * scale
+  const double scale = std::pow(10.0, 6.0 * u(rng));
+  const Vec3<double> off = (u(rng) > 0 ? 1e4 : 0.0) * scale * Vec3<double>(1, -0.5, 0.25);
+  for (auto& q : p) q = q * scale + off;
+  return p;
+}
+
+}  // namespace sepax::hull_sets
