@@ -640,6 +640,17 @@ class ConvexPolyhedron {
         const double x = v[0], y = v[1], z = v[2];
         return x * x + y * y + z * z;
       };
+      // |ẽ1|^2, |ẽ2|^2 and |Ñ|^2 of face f's plane triple, in double
+      struct Squares {
+        double e1, e2, n;
+      };
+      auto squares = [&](int f) {
+        const auto& t = face(f).plane_vertices;
+        const Vec3<T>& v0 = vertex(t[0]);
+        const Vec3<T> e1(vertex(t[1]) - v0);
+        const Vec3<T> e2(vertex(t[2]) - v0);
+        return Squares{sq(e1), sq(e2), sq(cross(e1, e2))};
+      };
       const int nf = is_flat() ? 1 : face_count();
       if constexpr (std::is_same_v<T, float>) {
         // The maximum of r2 = |ẽ1|^2 |ẽ2|^2 / |Ñ|^2 without a division or a
@@ -652,12 +663,9 @@ class ConvexPolyhedron {
         double wnum = 0, wden = 1;
         bool bad = false;
         for (int f = 0; f < nf; ++f) {
-          const auto& t = face(f).plane_vertices;
-          const Vec3<T>& v0 = vertex(t[0]);
-          const Vec3<T> e1(vertex(t[1]) - v0);
-          const Vec3<T> e2(vertex(t[2]) - v0);
-          const double nc2 = sq(cross(e1, e2));
-          const double num = sq(e1) * sq(e2);
+          const Squares q = squares(f);
+          const double nc2 = q.n;
+          const double num = q.e1 * q.e2;
           bad |= !(nc2 > kNormalTinySquared && nc2 <= std::numeric_limits<double>::max() &&
                    num <= std::numeric_limits<double>::max());
           const bool larger = num * wden > wnum * nc2;
@@ -671,14 +679,11 @@ class ConvexPolyhedron {
         // when not finite (never NaN, which a maximum would skip).
         double worst = 0;
         for (int f = 0; f < nf; ++f) {
-          const auto& t = face(f).plane_vertices;
-          const Vec3<T>& v0 = vertex(t[0]);
-          const Vec3<T> e1(vertex(t[1]) - v0);
-          const Vec3<T> e2(vertex(t[2]) - v0);
-          const double nc2 = sq(cross(e1, e2));
+          const Squares q = squares(f);
+          const double nc2 = q.n;
           double r2 = std::numeric_limits<double>::infinity();
           if (nc2 > kNormalTinySquared && std::isfinite(nc2)) {
-            r2 = sq(e1) / nc2 * sq(e2);
+            r2 = q.e1 / nc2 * q.e2;
             if (!std::isfinite(r2)) r2 = std::numeric_limits<double>::infinity();
           }
           if (r2 > worst) worst = r2;

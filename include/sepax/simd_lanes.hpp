@@ -66,10 +66,8 @@ struct Lanes {  // portable fallback: one lane
   static M gt(V a, V b) { return a > b; }
   static M ge(V a, V b) { return a >= b; }
   static M le(V a, V b) { return a <= b; }
-  static M unord(V a, V b) { return a != a || b != b; }
   static M mand(M a, M b) { return a && b; }
   static M mor(M a, M b) { return a || b; }
-  static M mandnot(M a, M b) { return !a && b; }  // ~a & b
   static V select(M m, V a, V b) { return m ? a : b; }
   static V min_lt(V h, V m) { return h < m ? h : m; }  // h if h < m, else m
   static V max_gt(V h, V m) { return h > m ? h : m; }  // h if h > m, else m
@@ -94,10 +92,8 @@ struct Lanes<float> {
   static M gt(V a, V b) { return _mm_cmpgt_ps(a, b); }
   static M ge(V a, V b) { return _mm_cmpge_ps(a, b); }
   static M le(V a, V b) { return _mm_cmple_ps(a, b); }
-  static M unord(V a, V b) { return _mm_cmpunord_ps(a, b); }
   static M mand(M a, M b) { return _mm_and_ps(a, b); }
   static M mor(M a, M b) { return _mm_or_ps(a, b); }
-  static M mandnot(M a, M b) { return _mm_andnot_ps(a, b); }
   static V select(M m, V a, V b) { return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b)); }
   // minps(a, b) = a < b ? a : b and maxps(a, b) = a > b ? a : b, per lane
   static V min_lt(V h, V m) { return _mm_min_ps(h, m); }
@@ -125,10 +121,8 @@ struct Lanes<double> {
   static M gt(V a, V b) { return _mm_cmpgt_pd(a, b); }
   static M ge(V a, V b) { return _mm_cmpge_pd(a, b); }
   static M le(V a, V b) { return _mm_cmple_pd(a, b); }
-  static M unord(V a, V b) { return _mm_cmpunord_pd(a, b); }
   static M mand(M a, M b) { return _mm_and_pd(a, b); }
   static M mor(M a, M b) { return _mm_or_pd(a, b); }
-  static M mandnot(M a, M b) { return _mm_andnot_pd(a, b); }
   static V select(M m, V a, V b) { return _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b)); }
   static V min_lt(V h, V m) { return _mm_min_pd(h, m); }
   static V max_gt(V h, V m) { return _mm_max_pd(h, m); }
