@@ -514,7 +514,7 @@ ContactManifold<T> contact_manifold(const ConvexPolyhedron<T>& a, const ConvexPo
   }
   if (opt.margin < 0) {
     throw InvalidInput(ErrorCode::BadScale, "contact_manifold: the speculative margin " +
-                                                std::to_string(opt.margin) + " is negative");
+                                                format_number(opt.margin) + " is negative");
   }
   ContactManifold<T> m;
   m.feature = sat.feature;

@@ -5,6 +5,7 @@
 // file line) in plain words.
 #pragma once
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -36,6 +37,14 @@ class InvalidInput : public std::invalid_argument {
  private:
   ErrorCode code_;
 };
+
+/// A number for an error message: "%.9g", so 1e-20 and 1.7e30 read as such
+/// (std::to_string prints "%f": "0.000000" and thirty digits).
+inline std::string format_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", x);
+  return buf;
+}
 
 inline const char* to_string(ErrorCode c) {
   switch (c) {

@@ -132,7 +132,7 @@ class Polygon2 {
       double m = 0;
       for (const auto& p : v_) m = std::max({m, std::abs(to_double(p[0])), std::abs(to_double(p[1]))});
       if (!number_traits<T>::is_finite(static_cast<T>(m * m * 4.0)))
-        fail(ErrorCode::BadScale, "coordinates up to " + std::to_string(m) + " overflow " +
+        fail(ErrorCode::BadScale, "coordinates up to " + format_number(m) + " overflow " +
                                       std::string(number_traits<T>::name) + " in edge products");
     }
     // Orientation: twice the signed area, exact for exact T.

@@ -437,6 +437,9 @@ TEST_CASE("bad input to contact_manifold", "[contact][errors]") {
   ManifoldOptions opt;
   opt.margin = -1;
   CHECK_THROWS_AS(contact_manifold(a, b, sat, opt), InvalidInput);
+  // The message shows the value as written, not std::to_string's "-0.000000".
+  opt.margin = -1e-20;
+  CHECK_THROWS_WITH(contact_manifold(a, b, sat, opt), Catch::Matchers::Contains("margin -1e-20 is negative"));
   opt.margin = std::nan("");
   CHECK_THROWS_AS(contact_manifold(a, b, sat, opt), InvalidInput);
   sat.feature = Feature::face_a(17, 0);
