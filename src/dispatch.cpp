@@ -10,6 +10,8 @@
 
 #ifdef SEPAX_HAVE_FUZZ
 #include <sepax/fuzz/cli.hpp>
+
+#include "commands/audit_command.hpp"
 #endif
 
 namespace sepax::cli {
@@ -27,7 +29,7 @@ constexpr Verb kVerbs[] = {
     {"render", &render_main, "draw two shapes, their contacts and overlaid Gauss maps as SVG"},
 #ifdef SEPAX_HAVE_FUZZ
     {"fuzz", &sepax::fuzz::fuzz_main, "random differential testing of the SATs (see 'sepax fuzz --help')"},
-    {"audit", &sepax::fuzz::audit_main, "audit float results against exact arithmetic (see 'sepax audit --help')"},
+    {"audit", &audit_main, "audit float results against exact arithmetic (see 'sepax audit --help')"},
 #endif
     {"help", &help_main, "this message"},
 };

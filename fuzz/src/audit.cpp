@@ -323,17 +323,22 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
   for (const auto& n : notes) out << "  - " << n << "\n";
 }
 
-int audit_usage(const std::string& msg) {
+int print_audit_usage(const std::string& msg, const std::string& shapes_help) {
   std::cerr << "sepax audit: " << msg << "\n"
             << "usage: sepax audit A B [--pose tx ty tz [qw qx qy qz]] [--type float|double]\n"
             << "       sepax audit --case FILE [--type float|double]\n"
-            << "shapes: cube, box:HX,HY,HZ, tetra, prism:N, polygon:N, triangle (the pose applies to B)\n";
+            << "shapes: " << shapes_help << " (the pose applies to B)\n";
   return 2;
 }
 
 }  // namespace
 
 int audit_main(int argc, char** argv) {
+  return audit_main(argc, argv, &builtin_shape, "cube, box:HX,HY,HZ, tetra, prism:N, polygon:N, triangle");
+}
+
+int audit_main(int argc, char** argv, const ShapeLoader& load, const std::string& shapes_help) {
+  const auto audit_usage = [&](const std::string& msg) { return print_audit_usage(msg, shapes_help); };
   std::vector<std::string> shapes_args;
   std::string case_file, type = "float";
   double t[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
@@ -381,8 +386,8 @@ int audit_main(int argc, char** argv) {
       c = read_case_file(case_file);
     } else {
       if (shapes_args.size() != 2) return audit_usage("needs two shapes A and B");
-      c.a = builtin_shape(shapes_args[0]);
-      c.b = posed(builtin_shape(shapes_args[1]), t, q);
+      c.a = load(shapes_args[0]);
+      c.b = posed(load(shapes_args[1]), t, q);
       c.family = "audit";
     }
     if (type == "float") audit_as<float>(c, std::cout);
