@@ -3,17 +3,14 @@
 // them to float, and names the file in every error.
 #include <catch2/catch.hpp>
 
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <sepax/error.hpp>
 
+#include "cli/cli_test_support.hpp"
 #include "commands/audit_command.hpp"
 #include "io/shape_source.hpp"
 
@@ -22,10 +19,8 @@ using namespace sepax::cli;
 
 namespace {
 
-struct Run {
-  int status;
-  std::string out, err;
-};
+using Run = test::CommandRun;
+using test::temp_file;
 
 // audit_main prints to std::cout / std::cerr: capture both.
 Run audit(std::vector<std::string> args) {
@@ -39,13 +34,6 @@ Run audit(std::vector<std::string> args) {
   std::cout.rdbuf(old_out);
   std::cerr.rdbuf(old_err);
   return {s, out.str(), err.str()};
-}
-
-std::string temp_file(const std::string& name, const std::string& text) {
-  const auto p =
-      std::filesystem::temp_directory_path() / ("sepax_audit_test_" + std::to_string(::getpid()) + "_" + name);
-  std::ofstream(p, std::ios::binary) << text;
-  return p.string();
 }
 
 }  // namespace

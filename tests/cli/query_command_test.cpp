@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 
+#include "cli/cli_test_support.hpp"
 #include "commands/query_command.hpp"
 #include "commands/sat_runner.hpp"
 #include "io/shape_source.hpp"
@@ -20,10 +21,8 @@ using namespace sepax::cli;
 
 namespace {
 
-struct Run {
-  int status;
-  std::string out, err;
-};
+using Run = test::CommandRun;
+using test::temp_file;
 
 Run query(const std::vector<std::string>& args, const std::string& stdin_text = "") {
   std::istringstream in(stdin_text);
@@ -36,12 +35,6 @@ Run info(const std::vector<std::string>& args) {
   std::ostringstream out, err;
   const int s = run_info(args, out, err);
   return {s, out.str(), err.str()};
-}
-
-std::string temp_file(const std::string& name, const std::string& text) {
-  const auto p = std::filesystem::temp_directory_path() / ("sepax_query_test_" + std::to_string(::getpid()) + "_" + name);
-  std::ofstream(p, std::ios::binary) << text;
-  return p.string();
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <sepax/error.hpp>
 #include <sepax/shapes.hpp>
 
+#include "cli/cli_test_support.hpp"
 #include "io/shape_source.hpp"
 
 using namespace sepax;
@@ -23,23 +24,6 @@ ConvexPolyhedron<double> built(const io::ShapeData& d) {
   return ConvexPolyhedron<double>::from_faces(d.vertices, d.faces);
 }
 
-struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    path = std::filesystem::temp_directory_path() /
-           ("sepax_shape_source_test_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-  std::string write(const std::string& name, const std::string& text) const {
-    const auto p = path / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p.string();
-  }
-};
 
 }  // namespace
 
@@ -94,7 +78,7 @@ TEST_CASE("shape source: bad built-in parameters are clear errors", "[shapes]") 
 }
 
 TEST_CASE("shape source: files are read by extension", "[shapes]") {
-  TempDir dir;
+  const test::TempDir dir("sepax_shape_source_test");
   const std::string off = dir.write("c.OFF",
                                     "OFF\n4 4 6\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n"
                                     "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
