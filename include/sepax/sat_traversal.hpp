@@ -164,21 +164,28 @@ class Traversal {
     if (faces<true>(st, 0)) return best_.result(k_, stats_, true);
     if (faces<false>(st, fa)) return best_.result(k_, stats_, true);
     const int ne = wa_.edge_count();
+    const int* sa = &st[0];  // faces of A (arc() updates them through st)
+    std::int64_t pruned = 0;
+    bool stop = false;
     for (int ea = 0; ea < ne; ++ea) {
       // Both ends in the closed region of the same unique support vertex:
       // the region is convex, the arc stays inside, no crossing.
-      const int s0 = st[wa_.edge_face(ea, 0)], s1 = st[wa_.edge_face(ea, 1)];
-      if ((s0 >> 2) == (s1 >> 2)) {
-        if ((s0 & s1 & kCertified) && !((s0 | s1) & kTie)) continue;
-        // both climbs cut off at the same vertex x: both heights of x are
-        // known to be below the best (arc_below_best with x)
-        if (!((s0 | s1) & kCertified) && prune_arcs_ && best_nonpositive()) {
-          ++ts_.pruned_arcs;
-          continue;
-        }
+      const int f0 = wa_.edge_face(ea, 0), f1 = wa_.edge_face(ea, 1);
+      const int s0 = sa[f0], s1 = sa[f1];
+      if ((s0 >> 2) == (s1 >> 2) && (s0 & s1 & kCertified) && !((s0 | s1) & kTie)) continue;
+      // (both climbs cut off at the same vertex x: both heights of x are
+      // known to be below the best; arc_below_best answers at once)
+      if (arc_below_best(s0, s1, f0, f1)) {
+        ++pruned;
+        continue;
       }
-      if (arc(st, ea)) return best_.result(k_, stats_, true);
+      if (arc(st, ea, f0, f1)) {
+        stop = true;
+        break;
+      }
     }
+    ts_.pruned_arcs += pruned;
+    if (stop) return best_.result(k_, stats_, true);
     if (scan_side_axes(k_, best_, stats_, opt_)) return best_.result(k_, stats_, true);
     return best_.result(k_, stats_, false);
   }
@@ -444,8 +451,8 @@ class Traversal {
         const T gu = dot(n, vs[u]);
         ++evals;
         const T d = gu - gv;
-        if (!(d < -W)) {
-          if (d > W) continue;
+        if (d > W) continue;  // the common case: u certainly higher
+        if (!(d < -W)) {      // within the filter (or NaN): exactly
           const int c = exact_vs<OfA>(f, u, v, d);
           if (c > 0) continue;
           if (c == 0) {
@@ -608,25 +615,27 @@ class Traversal {
     const GaussMapWalk& w = OfA ? wa_ : wb_;
     const int* order = w.face_order().data();
     const int* parent = w.face_parent().data();
-    const int nf = w.face_count();
+    const int nf = static_cast<int>(w.face_order().size());  // every face (BFS of a connected map)
     if constexpr (kFast) {
       const Plane<T>* planes = (OfA ? k_.a() : k_.b()).planes().data();
       const Vec3<T>* vs = (OfA ? k_.b() : k_.a()).vertices().data();
       std::int64_t pruned = 0;
       bool stop = false;
+      int* sb = &st[base];  // this shape's per-face states
       int i = 0;
       for (; i < nf; ++i) {
         const int f = order[i];
-        const int seed = parent[i] >= 0 ? st[base + parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
+        // the BFS root (i = 0, parent -1) is seeded by step 0
+        const int seed = i > 0 ? sb[parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
         // most faces stop at their seed: decided here, without the climb's call
         const Plane<T>& pl = planes[f];
         if (face_below_best<OfA>(f, seed, T(dot(pl.normal, vs[seed]) - pl.offset))) {
-          st[base + f] = seed << 2;
+          sb[f] = seed << 2;
           ++pruned;
           continue;
         }
         const int s = climb_fast<OfA>(f, seed, true, false);
-        st[base + f] = s;
+        sb[f] = s;
         if (!(s & kCertified)) {
           ++pruned;
           continue;
@@ -678,7 +687,7 @@ class Traversal {
   }
   // == signs(ea, eb).minkowski_face(), through the kernel's early-out form
   // when it has one (the same decision from the same values).
-  bool crosses(int ea, int eb) {
+  SEPAX_TRAVERSAL_INLINE bool crosses(int ea, int eb) {
     if constexpr (HasMinkowskiFace<K>) {
       ++ts_.arc_tests;
       ++stats_.edge_pairs;
@@ -730,32 +739,26 @@ class Traversal {
   // prunes exactly where exact arithmetic prunes.
   // A face whose climb was cut off has its stored vertex's height exactly
   // below an earlier best, hence below the current one: not asked again.
-  bool arc_below_best(int s0, int s1, int f0, int f1) {
+  SEPAX_TRAVERSAL_INLINE bool arc_below_best(int s0, int s1, int f0, int f1) {
     if (!prune_arcs_ || !best_nonpositive()) return false;
-    auto below = [&](int f, int x) { return face_below_best<true>(f, x); };
     const int x0 = s0 >> 2, x1 = s1 >> 2;
     if (!(s0 & kCertified)) {
       if (!(s1 & kCertified) && x0 == x1) return true;  // both known below, same x
-      if (below(f1, x0)) return true;                     // x = x0
-      return !(s1 & kCertified) && x1 != x0 && below(f0, x1);  // x = x1
+      if (face_below_best<true>(f1, x0)) return true;   // x = x0
+      return !(s1 & kCertified) && x1 != x0 && face_below_best<true>(f0, x1);  // x = x1
     }
-    if (!(s1 & kCertified)) return below(f0, x1);        // x = x1
-    return below(f0, x0) && below(f1, x0);               // x = x0
+    if (!(s1 & kCertified)) return face_below_best<true>(f0, x1);  // x = x1
+    return face_below_best<true>(f0, x0) && face_below_best<true>(f1, x0);  // x = x0
   }
 
-  bool crossing_below_best(int f0, int f1, int v) {
+  SEPAX_TRAVERSAL_INLINE bool crossing_below_best(int f0, int f1, int v) {
     return prune_arcs_ && best_nonpositive() && face_below_best<true>(f0, v) && face_below_best<true>(f1, v);
   }
 
-  bool arc(FaceScratch& st, int ea) {
-    const int f0 = wa_.edge_face(ea, 0), f1 = wa_.edge_face(ea, 1);
-    int s0 = st[f0], s1 = st[f1];
-    if (arc_below_best(s0, s1, f0, f1)) {
-      ++ts_.pruned_arcs;
-      return false;
-    }
-    s0 = certify(st, f0);
-    s1 = certify(st, f1);
+  // Arc ea from face f0 to face f1 of A, not pruned by arc_below_best.
+  bool arc(FaceScratch& st, int ea, int f0, int f1) {
+    int s0 = certify(st, f0);
+    int s1 = certify(st, f1);
     bool forward;
     int v;
     if (!(s0 & kTie)) {
