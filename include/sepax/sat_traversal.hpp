@@ -172,9 +172,16 @@ class Traversal {
       // the region is convex, the arc stays inside, no crossing.
       const int f0 = wa_.edge_face(ea, 0), f1 = wa_.edge_face(ea, 1);
       const int s0 = sa[f0], s1 = sa[f1];
-      if ((s0 >> 2) == (s1 >> 2) && (s0 & s1 & kCertified) && !((s0 | s1) & kTie)) continue;
-      // (both climbs cut off at the same vertex x: both heights of x are
-      // known to be below the best; arc_below_best answers at once)
+      if (s0 == s1) {
+        // the same unique support vertex, certified at both ends
+        if ((s0 & 3) == kCertified) continue;
+        // both climbs cut off at the same vertex x: both heights of x are
+        // known to be below the best (arc_below_best with x)
+        if ((s0 & 3) == 0 && prune_arcs_ && best_nonpositive()) {
+          ++pruned;
+          continue;
+        }
+      }
       if (arc_below_best(s0, s1, f0, f1)) {
         ++pruned;
         continue;
