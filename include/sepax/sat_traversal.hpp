@@ -278,10 +278,12 @@ class Traversal {
   //    already makes a difference beyond it certain), and +1 when h - best >
   //    cut.  t = fl(best - cut) is within |t| 2^-53 of the real best - cut (one
   //    double subtraction, nothing to contract).  below(t) moves t down by
-  //    ~(|t| 2^-20 + 2^-140) in double (3 roundings, relative 2^-53 each) and
-  //    rounds to T (nearest: off by at most max(|x| 2^-24, 2^-150)), so
-  //    below(t) < t - |t| 2^-53 <= best - cut for every finite t (the 2^-140
-  //    covers 0 and the subnormal range); h < lo then implies best - h > cut
+  //    ~(|t| 2^-20 + 2^-140) in double (at most 3 roundings, relative 2^-53
+  //    each; fewer under FMA contraction; the product by 2^-20 is exact) and
+  //    rounds to T (in any rounding mode off by at most one T spacing,
+  //    max(|x| 2^-23, 2^-149)), so below(t) < t - |t| 2^-53 <= best - cut
+  //    for every finite t (the 2^-140 covers 0 and the subnormal range;
+  //    for T = double the conversion is exact); h < lo then implies best - h > cut
   //    in real arithmetic: the exact comparison is < 0, compare_bounded's
   //    answer.  above(t) likewise for hi ("not below").  best is a finite T
   //    value, so best - cut never rounds up past the largest T.
