@@ -88,6 +88,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <concepts>
 #include <cstdint>
 #include <limits>
@@ -163,26 +164,44 @@ class Traversal {
     if (faces<true>(st, 0)) return best_.result(k_, stats_, true);
     if (faces<false>(st, fa)) return best_.result(k_, stats_, true);
     const int ne = wa_.edge_count();
+    const int* sa = &st[0];  // faces of A (arc() updates them through st)
+    std::int64_t pruned = 0;
+    bool stop = false;
     for (int ea = 0; ea < ne; ++ea) {
       // Both ends in the closed region of the same unique support vertex:
       // the region is convex, the arc stays inside, no crossing.
-      const int s0 = st[wa_.edge_face(ea, 0)], s1 = st[wa_.edge_face(ea, 1)];
-      if ((s0 >> 2) == (s1 >> 2)) {
-        if ((s0 & s1 & kCertified) && !((s0 | s1) & kTie)) continue;
+      const int f0 = wa_.edge_face(ea, 0), f1 = wa_.edge_face(ea, 1);
+      const int s0 = sa[f0], s1 = sa[f1];
+      if (s0 == s1) {
+        // the same unique support vertex, certified at both ends
+        if ((s0 & 3) == kCertified) continue;
         // both climbs cut off at the same vertex x: both heights of x are
         // known to be below the best (arc_below_best with x)
-        if (!((s0 | s1) & kCertified) && prune_arcs_ && best_nonpositive()) {
-          ++ts_.pruned_arcs;
+        if ((s0 & 3) == 0 && prune_arcs_ && best_nonpositive()) {
+          ++pruned;
           continue;
         }
       }
-      if (arc(st, ea)) return best_.result(k_, stats_, true);
+      if (arc_below_best(s0, s1, f0, f1)) {
+        ++pruned;
+        continue;
+      }
+      if (arc(st, ea, f0, f1)) {
+        stop = true;
+        break;
+      }
     }
+    ts_.pruned_arcs += pruned;
+    if (stop) return best_.result(k_, stats_, true);
     if (scan_side_axes(k_, best_, stats_, opt_)) return best_.result(k_, stats_, true);
     return best_.result(k_, stats_, false);
   }
 
  private:
+  // face_below_best's threshold type (T for float/double; unused otherwise).
+  using Thr = std::conditional_t<std::is_floating_point_v<T>, T, float>;
+  static constexpr Thr kNegInf = -std::numeric_limits<Thr>::infinity();
+
   // Per-face state bits (below the vertex index).
   static constexpr int kTie = 1;        // the deepest set has more than one vertex
   static constexpr int kCertified = 2;  // the vertex is the support vertex (else: a
@@ -241,18 +260,49 @@ class Traversal {
   // Face f's height h = fl(fl(n_f.x) - offset) of vertex x (bit for bit the
   // kernel's face_separation value before its sign snap, which compare()
   // does not need: the value is within the kernel's error bound either way)
-  // is exactly below the best.  kBounded: one subtraction against the
-  // precomputed filter width; within it, compare_bounded decides exactly.
+  // is exactly below the best.  One or two T comparisons against thresholds
+  // kept with the best (set_thresholds()): h < lo  implies the exact answer
+  // "below", h > hi implies "not below"; only between them (or NaN) the
+  // kernel decides (compare_bounded: its filter, exact within it).  Without a
+  // best lo = hi = -inf: every finite h is "not below".
   template <bool OfA>
   SEPAX_TRAVERSAL_INLINE bool face_below_best(int f, int x, T h) {
-    if (!best_.has()) return false;
-    if constexpr (kBounded) {
-      const double d = static_cast<double>(best_.separation().num) - static_cast<double>(h);
-      const double cut = OfA ? cut_a_ : cut_b_;
-      if (d > cut) return true;
-      if (d < -cut) return false;
+    if (h < (OfA ? lo_a_ : lo_b_)) return true;
+    if (h > (OfA ? hi_a_ : hi_b_)) return false;
+    return best_.has() && vs_best(Separation<T>{h, T(1)}, face_feature<OfA>(f, x)) < 0;
+  }
+
+  // Thresholds of face_below_best after the best changed.
+  //  * kBounded: compare_bounded(h, best) is -1 without its exact fallback
+  //    when best - h > cut (cut = compare_width of the two error bounds, which
+  //    already makes a difference beyond it certain), and +1 when h - best >
+  //    cut.  t = fl(best - cut) is within |t| 2^-53 of the real best - cut (one
+  //    double subtraction, nothing to contract).  below(t) moves t down by
+  //    ~(|t| 2^-20 + 2^-140) in double (at most 3 roundings, relative 2^-53
+  //    each; fewer under FMA contraction; the product by 2^-20 is exact) and
+  //    rounds to T (in any rounding mode off by at most one T spacing,
+  //    max(|x| 2^-23, 2^-149)), so below(t) < t - |t| 2^-53 <= best - cut
+  //    for every finite t (the 2^-140 covers 0 and the subnormal range;
+  //    for T = double the conversion is exact); h < lo then implies best - h > cut
+  //    in real arithmetic: the exact comparison is < 0, compare_bounded's
+  //    answer.  above(t) likewise for hi ("not below").  best is a finite T
+  //    value, so best - cut never rounds up past the largest T.
+  //  * plain float/double: compare() of two normalised values is the
+  //    comparison of the T numbers: lo = hi = best (equal, NaN: compare()).
+  static Thr below(double t) { return static_cast<Thr>(t - (std::abs(t) * 0x1p-20 + 0x1p-140)); }
+  static Thr above(double t) { return static_cast<Thr>(t + (std::abs(t) * 0x1p-20 + 0x1p-140)); }
+  void set_thresholds() {
+    if constexpr (kFast) {
+      if constexpr (kBounded) {
+        const double b = static_cast<double>(best_.separation().num);
+        lo_a_ = below(b - cut_a_);
+        hi_a_ = above(b + cut_a_);
+        lo_b_ = below(b - cut_b_);
+        hi_b_ = above(b + cut_b_);
+      } else {
+        lo_a_ = hi_a_ = lo_b_ = hi_b_ = best_.separation().num;
+      }
     }
-    return vs_best(Separation<T>{h, T(1)}, face_feature<OfA>(f, x)) < 0;
   }
   // The same for any kernel (height from the kernel).
   template <bool OfA>
@@ -277,6 +327,7 @@ class Traversal {
         cut_a_ = k_.compare_width(k_.error_bound(Feature::face_a(0, 0)), best_err_);
         cut_b_ = k_.compare_width(k_.error_bound(Feature::face_b(0, 0)), best_err_);
       }
+      set_thresholds();
       best_sign_ = 2;
     }
   }
@@ -409,8 +460,8 @@ class Traversal {
         const T gu = dot(n, vs[u]);
         ++evals;
         const T d = gu - gv;
-        if (!(d < -W)) {
-          if (d > W) continue;
+        if (d > W) continue;  // the common case: u certainly higher
+        if (!(d < -W)) {      // within the filter (or NaN): exactly
           const int c = exact_vs<OfA>(f, u, v, d);
           if (c > 0) continue;
           if (c == 0) {
@@ -571,32 +622,58 @@ class Traversal {
   template <bool OfA>
   bool faces(FaceScratch& st, int base) {
     const GaussMapWalk& w = OfA ? wa_ : wb_;
-    const auto& order = w.face_order();
-    const auto& parent = w.face_parent();
-    for (std::size_t i = 0; i < order.size(); ++i) {
-      const int f = order[i];
-      const int seed = parent[i] >= 0 ? st[base + parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
-      ++stats_.face_axes;
-      int s;
-      if constexpr (kFast) {
+    const int* order = w.face_order().data();
+    const int* parent = w.face_parent().data();
+    const int nf = static_cast<int>(w.face_order().size());  // every face (BFS of a connected map)
+    if constexpr (kFast) {
+      const Plane<T>* planes = (OfA ? k_.a() : k_.b()).planes().data();
+      const Vec3<T>* vs = (OfA ? k_.b() : k_.a()).vertices().data();
+      std::int64_t pruned = 0;
+      bool stop = false;
+      int* sb = &st[base];  // this shape's per-face states
+      int i = 0;
+      for (; i < nf; ++i) {
+        const int f = order[i];
+        // the BFS root (i = 0, parent -1) is seeded by step 0
+        const int seed = i > 0 ? sb[parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
         // most faces stop at their seed: decided here, without the climb's call
-        if (face_below_best<OfA>(f, seed)) {
-          st[base + f] = seed << 2;
+        const Plane<T>& pl = planes[f];
+        if (face_below_best<OfA>(f, seed, T(dot(pl.normal, vs[seed]) - pl.offset))) {
+          sb[f] = seed << 2;
+          ++pruned;
+          continue;
+        }
+        const int s = climb_fast<OfA>(f, seed, true, false);
+        sb[f] = s;
+        if (!(s & kCertified)) {
+          ++pruned;
+          continue;
+        }
+        if (offer_face<OfA>(f, s >> 2)) {
+          stop = true;
+          break;
+        }
+      }
+      const int done = stop ? i + 1 : nf;  // faces processed
+      stats_.face_axes += done;
+      ts_.height_evals += done;  // each face's seed height, taken here
+      ts_.pruned_faces += pruned;
+      return stop;
+    } else {
+      for (int i = 0; i < nf; ++i) {
+        const int f = order[i];
+        const int seed = parent[i] >= 0 ? st[base + parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
+        ++stats_.face_axes;
+        const int s = climb<OfA>(f, seed, true);
+        st[base + f] = s;
+        if (!(s & kCertified)) {
           ++ts_.pruned_faces;
           continue;
         }
-        s = climb_fast<OfA>(f, seed, true, false);
-      } else {
-        s = climb<OfA>(f, seed, true);
+        if (offer_face<OfA>(f, s >> 2)) return true;
       }
-      st[base + f] = s;
-      if (!(s & kCertified)) {
-        ++ts_.pruned_faces;
-        continue;
-      }
-      if (offer_face<OfA>(f, s >> 2)) return true;
+      return false;
     }
-    return false;
   }
 
   // The support state of face f of A, climbed to the support vertex if the
@@ -619,7 +696,7 @@ class Traversal {
   }
   // == signs(ea, eb).minkowski_face(), through the kernel's early-out form
   // when it has one (the same decision from the same values).
-  bool crosses(int ea, int eb) {
+  SEPAX_TRAVERSAL_INLINE bool crosses(int ea, int eb) {
     if constexpr (HasMinkowskiFace<K>) {
       ++ts_.arc_tests;
       ++stats_.edge_pairs;
@@ -671,32 +748,26 @@ class Traversal {
   // prunes exactly where exact arithmetic prunes.
   // A face whose climb was cut off has its stored vertex's height exactly
   // below an earlier best, hence below the current one: not asked again.
-  bool arc_below_best(int s0, int s1, int f0, int f1) {
+  SEPAX_TRAVERSAL_INLINE bool arc_below_best(int s0, int s1, int f0, int f1) {
     if (!prune_arcs_ || !best_nonpositive()) return false;
-    auto below = [&](int f, int x) { return face_below_best<true>(f, x); };
     const int x0 = s0 >> 2, x1 = s1 >> 2;
     if (!(s0 & kCertified)) {
       if (!(s1 & kCertified) && x0 == x1) return true;  // both known below, same x
-      if (below(f1, x0)) return true;                     // x = x0
-      return !(s1 & kCertified) && x1 != x0 && below(f0, x1);  // x = x1
+      if (face_below_best<true>(f1, x0)) return true;   // x = x0
+      return !(s1 & kCertified) && x1 != x0 && face_below_best<true>(f0, x1);  // x = x1
     }
-    if (!(s1 & kCertified)) return below(f0, x1);        // x = x1
-    return below(f0, x0) && below(f1, x0);               // x = x0
+    if (!(s1 & kCertified)) return face_below_best<true>(f0, x1);  // x = x1
+    return face_below_best<true>(f0, x0) && face_below_best<true>(f1, x0);  // x = x0
   }
 
-  bool crossing_below_best(int f0, int f1, int v) {
+  SEPAX_TRAVERSAL_INLINE bool crossing_below_best(int f0, int f1, int v) {
     return prune_arcs_ && best_nonpositive() && face_below_best<true>(f0, v) && face_below_best<true>(f1, v);
   }
 
-  bool arc(FaceScratch& st, int ea) {
-    const int f0 = wa_.edge_face(ea, 0), f1 = wa_.edge_face(ea, 1);
-    int s0 = st[f0], s1 = st[f1];
-    if (arc_below_best(s0, s1, f0, f1)) {
-      ++ts_.pruned_arcs;
-      return false;
-    }
-    s0 = certify(st, f0);
-    s1 = certify(st, f1);
+  // Arc ea from face f0 to face f1 of A, not pruned by arc_below_best.
+  bool arc(FaceScratch& st, int ea, int f0, int f1) {
+    int s0 = certify(st, f0);
+    int s1 = certify(st, f1);
     bool forward;
     int v;
     if (!(s0 & kTie)) {
@@ -846,6 +917,8 @@ class Traversal {
   BestAxis<K> best_;
   double best_err_ = 0;  // k.error_bound of the best's feature (kBounded)
   double cut_a_ = 0, cut_b_ = 0;  // compare_width of a face of A / B against the best
+  // face_below_best's thresholds (kFast; see set_thresholds())
+  Thr lo_a_ = kNegInf, hi_a_ = kNegInf, lo_b_ = kNegInf, hi_b_ = kNegInf;
   int best_sign_ = 2;    // k.sign of the best, 2 = not known yet
   SatStats stats_;
 };
