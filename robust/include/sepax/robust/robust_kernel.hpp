@@ -63,7 +63,8 @@
 // (centroid side) fl(n.fl(p - c̃)) vs n*.(p - c) with c the exact mean:
 //   the stored centroid c̃ is a sequential sum and a division, |c̃ - c| <=
 //   √3 γ_{V+1} M_P =: C_P; the error is <= (δ_e + γ_5)(D_P + C_P) + C_P.
-// (parallel)     parallel.hpp's own filter.
+// (parallel)     a finite axis bound δ_e proves eA x eB != 0 (edges_parallel);
+//                otherwise parallel.hpp's own filter.
 // Every bound is computed in double and multiplied by (1 + 1e-6), which covers
 // the rounding of the bound computation itself (relative 1e-15), the
 // (1 + γ_4) factors for float (relative 3e-7) and the absolute underflow terms
