@@ -262,7 +262,12 @@ SEPAX_SIMD_INLINE inline Support<T> support_scan(const ConvexPolyhedron<T>& q, c
   const V step = L::set1(T(W));
   auto visit = [&](V h) SEPAX_SIMD_INLINE {
     const M lt = L::lt(h, m1);
-    if constexpr (kSecond) m2 = L::min_lt(L::max_gt(h, m1), m2);  // the larger of (h, m1), if below m2
+    // the larger of (h, m1), if below m2.  min_lt(m2, t) rather than
+    // min_lt(t, m2): the same value (no NaN; on equal values the two differ at
+    // most in the sign of a zero, which no caller can see: it only subtracts
+    // and compares), and minps can then write m2's register in place (one
+    // register copy less per group).
+    if constexpr (kSecond) m2 = L::min_lt(m2, L::max_gt(h, m1));
     idx = L::select(lt, cur, idx);
     m1 = L::min_lt(h, m1);
     cur = L::add(cur, step);

@@ -6,6 +6,7 @@
 // built to produce exact ties, exact zeros and exactly parallel edges.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 #include <sstream>
 
@@ -391,4 +392,87 @@ TEMPLATE_TEST_CASE("robust batched arc test = exact arc test, pair by pair", "[r
   CHECK(mismatches == 0);
   CHECK(with_lanes == static_cast<int>(cases.size()) - 1);
   CHECK(accepted > 500);
+}
+
+// edges_parallel decides most pairs by the edge axis's error bound (a finite
+// delta proves the exact cross product non-zero) and the rest by
+// robust::parallel; either way it must be the exact parallelism, whatever the
+// state of the kernel's axis cache (asked before and after edge_separation of
+// the same pair, and after other pairs).
+TEMPLATE_TEST_CASE("robust edges_parallel = exact parallelism, pair by pair", "[robust][kernel][parallel]", float,
+                   double) {
+  using T = TestType;
+  std::vector<std::pair<ConvexPolyhedron<T>, ConvexPolyhedron<T>>> cases;
+  const auto box = shapes::box<T>(1.0, 1.0, 1.0);
+  cases.emplace_back(box, translated(shapes::box<T>(0.5, 1.0, 0.75), v3<T>(0.5, 0.25, 1.5)));
+  cases.emplace_back(box, translated(shapes::prism<T>(12, 1.0, 1.0), v3<T>(1.0, 0.0, 2.0)));
+  // edge directions (1, eps, 0) against the box's (1, 0, 0): parallel only
+  // for eps = 0; tiny eps make the T cross product tiny or zero
+  for (T eps : {T(0), std::numeric_limits<T>::denorm_min(), std::numeric_limits<T>::min(), T(0x1p-60),
+                T(0x1p-30), std::numeric_limits<T>::epsilon(), T(0.25)}) {
+    cases.emplace_back(box, ConvexPolyhedron<T>::polygon({v3<T>(-0.5, 0, 1), v3<T>(0.5, eps, 1), v3<T>(0, 1, 1)}));
+    cases.emplace_back(ConvexPolyhedron<T>::polygon({v3<T>(3, 1, -2), v3<T>(4, T(1) + eps, -2), v3<T>(3, 2, -2)}),
+                       box);
+  }
+  // exactly parallel edges p0p1 and 3p0 3p1 (all exact in T) whose T
+  // differences round (the edge spans more bits than T holds), so the T cross
+  // product of the rounded directions is non-zero although the exact one is 0
+  {
+    // v with digits - 2 significant bits, so 3 v is exact in T
+    auto short_mantissa = [](double v) {
+      int e = 0;
+      (void)std::frexp(v, &e);
+      const int m = std::numeric_limits<T>::digits - 2;
+      return std::ldexp(std::floor(std::ldexp(v, m - e)), e - m);
+    };
+    const Vec3<T> p0 = v3<T>(short_mantissa(0.1), short_mantissa(0.23), short_mantissa(0.37));
+    const Vec3<T> p1 = v3<T>(1000.5, 2001.25, 2999.75);
+    const Vec3<T> r = v3<T>(-3, 700, 11);
+    const auto a = ConvexPolyhedron<T>::polygon({p0, p1, r});
+    const auto b = ConvexPolyhedron<T>::polygon({Vec3<T>(T(3) * p0), Vec3<T>(T(3) * p1), v3<T>(5, -9, 4000)});
+    CHECK(squared_norm(cross(Vec3<T>(p1 - p0), Vec3<T>(T(3) * p1 - T(3) * p0))) > T(0));
+    cases.emplace_back(a, b);
+  }
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int n : {8, 16, 32}) {
+    const auto ha = random_sphere_hull<T>(rng, n);
+    const auto hb = random_sphere_hull<T>(rng, n);
+    for (double scale : {1.0, 1e-4, 1e4}) {
+      cases.emplace_back(posed(ha, random_rotation(rng), Vec3<double>(0, 0, 0), scale),
+                         posed(hb, random_rotation(rng), Vec3<double>(u(rng), u(rng), u(rng)) * scale, scale));
+    }
+    // a hull against its own translate: every edge has an exactly parallel partner
+    cases.emplace_back(ha, translated(ha, v3<T>(0.5, 0.25, 0)));
+  }
+  int mismatches = 0;
+  long parallel = 0, pairs = 0;
+  for (const auto& [a, b] : cases) {
+    const auto ae = ConvexPolyhedron<mpq_class>::convert_from(a);
+    const auto be = ConvexPolyhedron<mpq_class>::convert_from(b);
+    const PlainKernel<mpq_class> ke(ae, be);
+    const RobustKernel<T> k(a, b);
+    for (int ea = 0; ea < a.edge_count(); ++ea) {
+      for (int eb = 0; eb < b.edge_count(); ++eb) {
+        const bool exact = ke.edges_parallel(ea, eb);
+        const bool first = k.edges_parallel(ea, eb);  // cache: the previous pair (or none)
+        const bool again = k.edges_parallel(ea, eb);  // cache: this pair
+        bool after = again;
+        if (!exact) {
+          (void)k.edge_separation(ea, eb);
+          after = k.edges_parallel(ea, eb);
+        }
+        if (first != exact || again != exact || after != exact) {
+          ++mismatches;
+          INFO("ea " << ea << " eb " << eb << " exact " << exact << " robust " << first << again << after);
+          CHECK(first == exact);
+        }
+        parallel += exact;
+        ++pairs;
+      }
+    }
+  }
+  CHECK(mismatches == 0);
+  CHECK(parallel > 100);
+  CHECK(parallel < pairs);
 }

@@ -63,7 +63,8 @@
 // (centroid side) fl(n.fl(p - c̃)) vs n*.(p - c) with c the exact mean:
 //   the stored centroid c̃ is a sequential sum and a division, |c̃ - c| <=
 //   √3 γ_{V+1} M_P =: C_P; the error is <= (δ_e + γ_5)(D_P + C_P) + C_P.
-// (parallel)     parallel.hpp's own filter.
+// (parallel)     a finite axis bound δ_e proves eA x eB != 0 (edges_parallel);
+//                otherwise parallel.hpp's own filter.
 // Every bound is computed in double and multiplied by (1 + 1e-6), which covers
 // the rounding of the bound computation itself (relative 1e-15), the
 // (1 + γ_4) factors for float (relative 3e-7) and the absolute underflow terms
@@ -111,12 +112,16 @@
 #include <emmintrin.h>
 #endif
 
-/// The SAT loops' per-pair fast paths: inlined into the loop even when the
-/// inliner's size heuristics would not (their exact stages are out of line).
+/// The SAT loops' per-pair and per-face fast paths: inlined into the loop even
+/// when the inliner's size heuristics would not (their exact stages are out of
+/// line).  SEPAX_ROBUST_NOINLINE: a rare slow path kept out of such a loop
+/// (not cold: the brute force takes it on every edge pair).
 #if defined(__GNUC__) || defined(__clang__)
 #define SEPAX_ROBUST_INLINE [[gnu::always_inline]]
+#define SEPAX_ROBUST_NOINLINE [[gnu::noinline]]
 #else
 #define SEPAX_ROBUST_INLINE
+#define SEPAX_ROBUST_NOINLINE
 #endif
 
 namespace sepax {
@@ -184,12 +189,12 @@ class RobustKernel {
   const ConvexPolyhedron<T>& a() const { return a_; }
   const ConvexPolyhedron<T>& b() const { return b_; }
 
-  FaceQuery<T> face_query_a(int f) const {
+  SEPAX_ROBUST_INLINE FaceQuery<T> face_query_a(int f) const {
     FaceQuery<T> q = face_query(a_, f, b_, support_err_a_);
     q.separation = snap(q.separation.num, face_err_a_, Feature::face_a(f, q.support_vertex));
     return q;
   }
-  FaceQuery<T> face_query_b(int f) const {
+  SEPAX_ROBUST_INLINE FaceQuery<T> face_query_b(int f) const {
     FaceQuery<T> q = face_query(b_, f, a_, support_err_b_);
     q.separation = snap(q.separation.num, face_err_b_, Feature::face_b(q.support_vertex, f));
     return q;
@@ -380,7 +385,29 @@ class RobustKernel {
   }
 
  public:
+  /// Exact: (head_A - tail_A) x (head_B - tail_B) == 0.  The edge pair's
+  /// unit axis (edge_axis, which edge_separation needs next anyway) decides
+  /// it first: a bounded axis (delta < kNoBound) means |Ñ| > 2q, q >= |Ñ - N|
+  /// the bound of the header's "δ_f" derivation (Ñ = fl(ẽA x ẽB), N the exact
+  /// cross product of the exact edge vectors), so |N| >= |Ñ| - q > 0: the
+  /// edges are certainly not parallel.  (unit_error_from_ratio returns a
+  /// finite delta only for q/|Ñ| < 1/2, computed with the (1+1e-6)^2 pad that
+  /// covers the rounding of ρ; with or without FMA, as the axis bound.)
+  /// Otherwise -- the T cross product tiny, zero or not finite, or too close
+  /// to its error -- robust::parallel decides, as before; the degenerate axis
+  /// is then not computed here (exact_edge_axis would be the costly path for
+  /// exactly parallel edges, which robust::parallel decides cheaply).
   bool edges_parallel(int ea, int eb) const {
+    if (ea != axis_cache_.ea || eb != axis_cache_.eb) {
+      const Vec3<T> c = cross(a_.edge_dir(ea), b_.edge_dir(eb));
+      const double r2 = cross_ratio_squared(a_.edge_dir(ea), b_.edge_dir(eb), c);
+      if (std::isfinite(r2)) {
+        axis_cache_.ea = ea;
+        axis_cache_.eb = eb;
+        axis_cache_.axis = float_edge_axis(c, r2);
+      }
+    }
+    if (ea == axis_cache_.ea && eb == axis_cache_.eb && axis_cache_.axis.delta < kNoBound) return false;
     return robust::parallel(a_.vertex(a_.edge_tail(ea)), a_.vertex(a_.edge_head(ea)),
                             b_.vertex(b_.edge_tail(eb)), b_.vertex(b_.edge_head(eb)), &fallbacks_);
   }
@@ -392,7 +419,7 @@ class RobustKernel {
     if (axis_side(ax, ea, eb) < 0) n = Vec3<T>(-n);
     const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
     const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
-    return snap(dot(n, Vec3<T>(pb - pa)), edge_value_error(ax.delta), Feature::edges(ea, eb));
+    return snap(dot(n, diff(pb, pa)), edge_value_error(ax.delta), Feature::edges(ea, eb));
   }
 
   std::optional<Separation<T>> edge_separation_full(int ea, int eb) const {
@@ -529,10 +556,16 @@ class RobustKernel {
   // Bound on |n - N/|N|| for n = fl(normalize(fl(e1 x e2))), see the header.
   // rho = |ẽ1||ẽ2|/|Ñ| as computed (unpadded); q/|Ñ| = kUnitC rho, and both
   // (1+1e-6) pads (of rho and of q/|Ñ|) are in kUnitCM2, one product.
+  //
+  // 2 qr/(1 - qr) is bounded without a division (a long-latency divsd per
+  // Minkowski pair, on the way to the pair's value bound): for 0 <= x < 1/2,
+  // (1 + 2x)(1 - x) = 1 + x(1 - 2x) >= 1, so x/(1 - x) <= x(1 + 2x), an upper
+  // bound looser by at most 2x^2 (x ~ 1e-7 for a well-conditioned axis).  Its
+  // own few roundings (relative 1e-16) are inside the (1+1e-6) margin.
   static double unit_error_from_ratio(double rho) {
     const double qr = kUnitCM2 * rho;
     if (!(qr < 0.5)) return kNoBound;
-    return (kG4 + 2 * qr / (1 - qr)) * kMargin;
+    return (kG4 + 2 * qr * (1 + 2 * qr)) * kMargin;
   }
 
   // Norms below this (squared, in T units) risk underflow in the normalisation.
@@ -569,6 +602,12 @@ class RobustKernel {
     return std::numbers::sqrt3 * gamma_n(static_cast<int>(k)) * p.max_abs_coordinate() * kMargin2 + 4 * kEta;
   }
 
+  // p - q, one subtraction per coordinate: the value of Vec3<T>(p - q), which
+  // g++ -O3 compiled to an out-of-line Eigen call (as PlainKernel::diff).
+  static Vec3<T> diff(const Vec3<T>& p, const Vec3<T>& q) {
+    return Vec3<T>(T(p[0] - q[0]), T(p[1] - q[1]), T(p[2] - q[2]));
+  }
+
   static Separation<T> height(const Plane<T>& pl, const Vec3<T>& p) {
     return Separation<T>{T(dot(pl.normal, p) - pl.offset), T(1)};
   }
@@ -578,9 +617,15 @@ class RobustKernel {
   // parallel in T but not exactly), the axis is computed from the exact cross
   // product rounded to double (a value for reporting; every decision about it
   // then goes exact because delta is kNoBound).
-  EdgeAxis edge_axis(int ea, int eb) const {
-    // compare()/sign()/axis() of a feature follow its edge_separation call
-    if (ea == axis_cache_.ea && eb == axis_cache_.eb) return axis_cache_.axis;
+  // compare()/sign()/axis()/error_bound() of a feature follow its
+  // edges_parallel/edge_separation calls: the cache hit is inline (it was an
+  // out-of-line call, twice per Minkowski pair), the miss is not.
+  SEPAX_ROBUST_INLINE EdgeAxis edge_axis(int ea, int eb) const {
+    if (ea == axis_cache_.ea && eb == axis_cache_.eb) [[likely]] return axis_cache_.axis;
+    return cache_edge_axis(ea, eb);
+  }
+
+  SEPAX_ROBUST_NOINLINE EdgeAxis cache_edge_axis(int ea, int eb) const {
     axis_cache_.ea = ea;
     axis_cache_.eb = eb;
     axis_cache_.axis = compute_edge_axis(ea, eb);
@@ -594,12 +639,20 @@ class RobustKernel {
     const double r2 = cross_ratio_squared(da, db, c);
     EdgeAxis ax;
     if (std::isfinite(r2)) {
-      const T len = std::sqrt(squared_norm(c));
-      ax.n = Vec3<T>(c[0] / len, c[1] / len, c[2] / len);
-      ax.delta = unit_error_from_ratio(sqrt_d(r2));
+      ax = float_edge_axis(c, r2);
     } else {
       ax = exact_edge_axis(ea, eb);
     }
+    return ax;
+  }
+
+  // The axis from the T cross product c = fl(dA x dB) and its finite ratio
+  // r2 = cross_ratio_squared(dA, dB, c).
+  static EdgeAxis float_edge_axis(const Vec3<T>& c, double r2) {
+    EdgeAxis ax;
+    const T len = std::sqrt(squared_norm(c));
+    ax.n = Vec3<T>(c[0] / len, c[1] / len, c[2] / len);
+    ax.delta = unit_error_from_ratio(sqrt_d(r2));
     return ax;
   }
 
@@ -676,7 +729,7 @@ class RobustKernel {
   // sign of n* . (p.vertex(v) - exact mean of p's vertices), n* = eA x eB.
   int centroid_side(const P& p, int v, const EdgeAxis& ax, double cerr, double extent, int ea,
                     int eb) const {
-    const T o = dot(ax.n, Vec3<T>(p.vertex(v) - p.centroid()));
+    const T o = dot(ax.n, diff(p.vertex(v), p.centroid()));
     const double e = ((ax.delta + kG5) * (extent + cerr) + cerr) * kMargin + 4 * kEta;
     if (static_cast<double>(o) > e) return 1;
     if (static_cast<double>(o) < -e) return -1;
@@ -691,8 +744,8 @@ class RobustKernel {
   // bound is centroid_side's, the double sum of two T values adds at most
   // 2^-52 (|oa| + |ob|); exact fallback otherwise.
   int axis_side(const EdgeAxis& ax, int ea, int eb) const {
-    const T oa = dot(ax.n, Vec3<T>(a_.vertex(a_.edge_tail(ea)) - a_.centroid()));
-    const T ob = dot(ax.n, Vec3<T>(b_.centroid() - b_.vertex(b_.edge_tail(eb))));
+    const T oa = dot(ax.n, diff(a_.vertex(a_.edge_tail(ea)), a_.centroid()));
+    const T ob = dot(ax.n, diff(b_.centroid(), b_.vertex(b_.edge_tail(eb))));
     // The sum of the two per-side bounds ((δ + γ_5)(D_P + C_P) + C_P)(1+1e-6)
     // (centroid_side's), regrouped: (δ + γ_5) side_span_ + side_abs_ with the
     // per-query sums side_span_ = (D_A + C_A + D_B + C_B)(1+1e-6) and
