@@ -286,6 +286,8 @@ class Builder {
     double best = 1e300;
     bool above = false;  // above a face at the nearest distance (within rounding)
     for (const auto& fc : faces) {
+      const double h = dot(fc.n, x) - fc.off;
+      if (std::abs(h) > best * (1 + 1e-9)) continue;  // (the polygon is no nearer than its plane)
       bool inside = true;
       double d = 1e300;
       const std::size_t n = fc.v.size();
@@ -298,7 +300,6 @@ class Builder {
         const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
         d = std::min(d, std::sqrt(squared_norm(Vec3<double>(ax - t * e))));
       }
-      const double h = dot(fc.n, x) - fc.off;
       if (inside) d = std::abs(h);
       if (d < best * (1 - 1e-9)) {
         best = d;
