@@ -7,8 +7,10 @@
 // rounding of evaluating planes far from the origin, 64 u max|x|, as the
 // unit test does), the worst one, and the same for the support gap: the
 // largest difference of the support functions of the points and of the hull
-// over ~300 directions (a lower bound on their Hausdorff distance).  Sets
-// above `report` are listed.  docs/hull.md quotes its output.
+// over ~300 directions (a lower bound on their Hausdorff distance), and the
+// Euclidean distance of the farthest point from the hull (max_distance in
+// hull_point_sets.hpp, the measure the unit test asserts; "dist" below).
+// Sets above `report` are listed.  docs/hull.md quotes its output.
 //   g++ -std=c++20 -O2 -I include -I /usr/include/eigen3 docs/hull_stress.cpp -o /tmp/hull_stress
 //   /tmp/hull_stress both 1 12 10000        # [float|double|both] first_seed last_seed count [only_iter report]
 #include <sepax/convex_hull.hpp>
@@ -45,6 +47,7 @@ template <class T>
 void run(unsigned seed, int iters, int only, double report) {
   std::mt19937 rng(seed);
   int over64 = 0, over4=0, over1=0, n=0, err=0, lerr=0; double worst = -1e300; int worst_it=-1; double gworst = -1e300; int gworst_it = -1, gover64 = 0, gover4 = 0;
+  double dworst = -1e300; int dworst_it = -1, dover64 = 0, dover4 = 0;
   for (int iter = 0; iter < iters; ++iter) {
     const int kind = iter % 9;
     const auto pts = to_t<T>(random_point_set(rng, kind));
@@ -59,17 +62,21 @@ void run(unsigned seed, int iters, int only, double report) {
       const double gap = support_gap(h, pts) - allow;
       if (gap > gworst) { gworst = gap; gworst_it = iter; }
       if (gap > 64) ++gover64;
+      const double dist = max_distance(h, pts) - allow;
+      if (dist > dworst) { dworst = dist; dworst_it = iter; }
+      if (dist > 64) ++dover64;
+      if (dist > 4) ++dover4;
       if (gap > 4) ++gover4;
       ++n;
       if (o > 64) ++over64;
       if (o > 4) ++over4;
       if (o > 1) ++over1;
       if (o > worst) { worst = o; worst_it = iter; }
-      if (o > report || gap > report) std::printf("  %s seed %u iter %d kind %d n %zu out %.3g allow %.3g flat %d gap %.3g\n", sizeof(T)==4?"float":"double", seed, iter, kind, pts.size(), out, allow, (int)h.is_flat(), gap);
+      if (o > report || gap > report || dist > report) std::printf("  %s seed %u iter %d kind %d n %zu out %.3g allow %.3g flat %d gap %.3g dist %.3g verts %d\n", sizeof(T)==4?"float":"double", seed, iter, kind, pts.size(), out, allow, (int)h.is_flat(), gap, dist, h.vertex_count());
     } catch (const InvalidInput&) { ++err; }
     catch (const std::logic_error& e) { ++lerr; std::printf("  LOGIC %s seed %u iter %d: %s\n", sizeof(T)==4?"float":"double", seed, iter, e.what()); }
   }
-  std::printf("%s seed %u: %d hulls, %d errors, %d logic; >1: %d, >4: %d, >64: %d; worst %.3g (iter %d); support gap >4: %d >64: %d worst %.3g (iter %d)\n", sizeof(T)==4?"float":"double", seed, n, err, lerr, over1, over4, over64, worst, worst_it, gover4, gover64, gworst, gworst_it);
+  std::printf("%s seed %u: %d hulls, %d errors, %d logic; >1: %d, >4: %d, >64: %d; worst %.3g (iter %d); support gap >4: %d >64: %d worst %.3g (iter %d); dist >4: %d >64: %d worst %.3g (iter %d)\n", sizeof(T)==4?"float":"double", seed, n, err, lerr, over1, over4, over64, worst, worst_it, gover4, gover64, gworst, gworst_it, dover4, dover64, dworst, dworst_it);
 }
 int main(int argc, char** argv) {
   const std::string type = argc > 1 ? argv[1] : "both";

@@ -43,11 +43,22 @@
 //   6. Build through ConvexPolyhedron<T>::from_faces, so the result is
 //      validated.  A builder output failing validation is a builder bug and is
 //      reported as std::logic_error, not as InvalidInput.
-//   7. Float T: check every point that is not a vertex against the result's
-//      planes; points more than 2 x eps above one are put back, pinned (a
-//      pinned point is outside a face as soon as it is above it) and the hull
-//      rebuilt, at most max_repairs times, keeping the best result
-//      (docs/hull.md: every point within 64 x eps, measured worst 42).
+//   7. Float T: check every point that is not a vertex against the result:
+//      its height above the planes and its Euclidean distance from the face
+//      polygons; points more than 2 x eps out are put back, pinned and the
+//      hull rebuilt, at most max_repairs times, keeping the best result.  A
+//      pinned point is outside a face as soon as it is above it; two faces
+//      are not merged when that would leave a pinned vertex inside a face or
+//      on only those two faces far (> 2 eps) from the segment between its
+//      neighbours (a fold: on a needle or thin slab every face is within eps
+//      of every vertex), and faces that already fold over one are split back
+//      into their triangles; a pinned point is rejected by the clean-up only
+//      when nothing else can be.  If no round keeps every point within 2 eps,
+//      the initial simplex (which holds the segment between the farthest
+//      pair: a needle's two tips) is returned when it is nearer every point
+//      than the best round.  (docs/hull.md: every point within
+//      hull_outside_bound = 64 x eps of every face plane; and of the hull,
+//      Euclidean, except thin slabs.)
 //
 // Float T computes every decision on the points translated by the centre of
 // their bounding box (so an offset from the origin does not cost precision);
@@ -80,6 +91,13 @@
 
 namespace sepax {
 
+/// float/double: how far outside its hull an input point may be, in units of
+/// Tolerances<T>::coplanar * extent (docs/hull.md, "Guarantees"): its height
+/// above any face plane, for every point set; and its Euclidean distance from
+/// the hull, for every set except slabs a few eps thick (measured, not
+/// proven; docs/hull.md gives the numbers and the exceptions).
+inline constexpr double hull_outside_bound = 64;
+
 namespace hull_detail {
 
 inline std::size_t sz(int i) { return static_cast<std::size_t>(i); }
@@ -99,30 +117,69 @@ class Builder {
     // bounded number of repair rounds.
     std::vector<char> removed(pts_.size(), 0);
     pinned_.assign(pts_.size(), 0);
-    std::optional<ConvexPolyhedron<T>> best;
-    double best_out = 0;
+    // best: nearest every point (height or Euclidean distance, whichever is
+    // larger); best_h: lowest heights, returned instead when best's heights
+    // exceed both height_safe and best_h's (the plane bound is kept first).
+    std::optional<ConvexPolyhedron<T>> best, best_h;
+    double best_out = 0, best_height = 0, best_h_height = 0;
     for (int repairs = 0;; ++repairs) {
       std::optional<ConvexPolyhedron<T>> result;
-      for (;;) {
-        std::vector<int> active;
-        for (std::size_t i = 0; i < pts_.size(); ++i)
-          if (!removed[i]) active.push_back(static_cast<int>(i));
-        std::vector<int> reject;
-        result = build(active, reject);
-        if (result) break;
-        if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
-        for (int r : reject) removed[sz(r)] = 1;
+      bool failed = false;  // a repair round's rebuild lost too many points
+      try {
+        for (;;) {
+          std::vector<int> active;
+          for (std::size_t i = 0; i < pts_.size(); ++i)
+            if (!removed[i]) active.push_back(static_cast<int>(i));
+          std::vector<int> reject;
+          result = build(active, reject);
+          if (result) break;
+          if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
+          for (int r : reject) removed[sz(r)] = 1;
+        }
+      } catch (const InvalidInput&) {
+        // (a repair round may reject points until the rest is Collinear or
+        // too few: keep the best earlier round)
+        if (!best) throw;
+        failed = true;
       }
       if constexpr (exact) {
         return std::move(*result);
       } else {
         std::vector<int> outside;
-        const double out = outside_points(*result, outside);
-        if (!best || out < best_out) {
-          best = std::move(result);
-          best_out = out;
+        if (!failed) {
+          double height = 0;
+          const double out = outside_points(*result, outside, height);
+          if (!best_h || height < best_h_height) {
+            best_h = result;
+            best_h_height = height;
+          }
+          if (!best || out < best_out) {
+            best = std::move(result);
+            best_out = out;
+            best_height = height;
+          }
         }
-        if (outside.empty() || repairs == max_repairs) return std::move(*best);
+        if (failed || outside.empty() || repairs == max_repairs) {
+          if (best_out > repair_tol) {
+            // The rounds could not keep every point near the hull (a needle
+            // a few eps thick, whose faces all fold within eps): the initial
+            // simplex contains the segment between the farthest pair, so
+            // it may be nearer every point than the best round.
+            std::vector<int> none;
+            if (auto t = simplex_hull()) {
+              double t_height = 0;
+              const double t_out = outside_points(*t, none, t_height);
+              if (t_out < best_out) {
+                best = std::move(t);
+                best_out = t_out;
+                best_height = t_height;
+              }
+            }
+          }
+          if (best_height > height_safe && best_height > best_h_height) return std::move(*best_h);
+          return std::move(*best);
+        }
+        any_pinned_ = true;
         for (int p : outside) {
           removed[sz(p)] = 0;
           pinned_[sz(p)] = 1;
@@ -134,27 +191,125 @@ class Builder {
  private:
   static constexpr int max_repairs = 8;
   static constexpr double repair_tol = 2.0;  // x coplanar * extent
+  static constexpr double far_tol = 2.0;     // x coplanar * extent (pinned vertices, below)
+  // x coplanar * extent: a result nearer every point (Euclidean) is returned
+  // only if its plane heights are at most this, or no worse than the lowest
+  // of any round (the height bound, hull_outside_bound, is kept first)
+  static constexpr double height_safe = 32.0;  // half of hull_outside_bound
 
   // Float T: the welded points more than repair_tol * eps above a face plane
   // of h (evaluated as a user would, on the input coordinates; plus their
-  // rounding); returns the largest height in units of eps.
-  double outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside) const {
+  // rounding) or that far from its face polygons (polygon_distance: a point
+  // within eps of two planes of a thin wedge can be far beyond its edge);
+  // returns the largest of either in units of eps, and in height the
+  // largest height alone.
+  double outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside,
+                        double& height) const {
     double max_abs = 0;
     for (std::size_t i = 0; i < pts_.size(); ++i)
       for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(X(static_cast<int>(i))[c])));
     const double e = to_double(eps_);
     const double slack = 8.0 * number_traits<T>::unit_roundoff * max_abs;
     double worst = 0;
+    const std::vector<PolygonFace> faces = polygon_faces(h);
     for (std::size_t i = 0; i < pts_.size(); ++i) {
       if (out_vertex_[i]) continue;  // (the pre-check held it within conv_tol = 2 eps)
       double hp = -1e300;
       for (int f = 0; f < h.face_count(); ++f)
         hp = std::max(hp, to_double(T(dot(h.plane(f).normal, X(static_cast<int>(i))) - h.plane(f).offset)));
       hp -= slack;
+      height = std::max(height, hp / e);
+      hp = std::max(hp, polygon_distance(faces, h.is_flat(), vec_to_double(Q(static_cast<int>(i)))) - slack);
       worst = std::max(worst, hp / e);
       if (hp > repair_tol * e) outside.push_back(static_cast<int>(i));
     }
     return worst;
+  }
+
+  // Float T: the tetrahedron of the first build's initial simplex (the
+  // farthest pair, the point farthest from their line, the point farthest
+  // from that plane), validated; none if the set was flat or it fails.
+  std::optional<ConvexPolyhedron<T>> simplex_hull() {
+    if (simplex_[0] < 0) return std::nullopt;
+    auto [a, b, c, d] = simplex_;
+    if (height(plane_through(Q(a), Q(b), Q(c)), d) > T(0)) std::swap(b, c);
+    std::vector<Vec3<T>> verts{X(a), X(b), X(c), X(d)};
+    const std::vector<std::vector<int>> faces{{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
+    try {
+      auto h = ConvexPolyhedron<T>::from_faces(std::move(verts), faces);
+      out_vertex_.assign(pts_.size(), 0);
+      for (int v : {a, b, c, d}) out_vertex_[sz(v)] = 1;
+      return h;
+    } catch (const InvalidInput&) {
+      return std::nullopt;
+    }
+  }
+
+  // Float T: the faces of an output polyhedron as polygons in double, on the
+  // local coordinates, with Newell normals (well conditioned for thin faces).
+  struct PolygonFace {
+    std::vector<Vec3<double>> v;
+    Vec3<double> n;
+    double off = 0;
+  };
+  std::vector<PolygonFace> polygon_faces(const ConvexPolyhedron<T>& h) const {
+    const Vec3<double> c = vec_to_double(centre_);
+    std::vector<PolygonFace> faces;
+    for (int f = 0; f < h.face_count(); ++f) {
+      PolygonFace fc;
+      for (int v : h.face_vertices(f)) fc.v.push_back(Vec3<double>(vec_to_double(h.vertex(v)) - c));
+      Vec3<double> n(0, 0, 0), m(0, 0, 0);
+      for (std::size_t i = 0; i < fc.v.size(); ++i) {
+        const Vec3<double>& a = fc.v[i];
+        const Vec3<double>& b = fc.v[(i + 1) % fc.v.size()];
+        n += Vec3<double>((a[1] - b[1]) * (a[2] + b[2]), (a[2] - b[2]) * (a[0] + b[0]),
+                          (a[0] - b[0]) * (a[1] + b[1]));
+        m += a;
+      }
+      const double len = std::sqrt(squared_norm(n));
+      if (len > 0) n = n / len;
+      fc.n = n;
+      fc.off = dot(n, Vec3<double>(m / static_cast<double>(fc.v.size())));
+      faces.push_back(std::move(fc));
+    }
+    return faces;
+  }
+
+  // Euclidean distance of x from the polyhedron given by faces: the distance
+  // to the nearest face polygon (its height if it projects inside the
+  // polygon, else the distance to the nearest edge), or 0 if x is below that
+  // face (inside).  (Not "below every face plane": the plane of a tiny face
+  // is poorly determined far from it, and a point deep inside can be above
+  // it.)  A flat polygon is always measured to its polygon.
+  static double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
+                                 const Vec3<double>& x) {
+    double best = 1e300;
+    bool above = false;  // above a face at the nearest distance (within rounding)
+    for (const auto& fc : faces) {
+      const double h = dot(fc.n, x) - fc.off;
+      if (std::abs(h) > best * (1 + 1e-9)) continue;  // (the polygon is no nearer than its plane)
+      bool inside = true;
+      double d = 1e300;
+      const std::size_t n = fc.v.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const Vec3<double>& a = fc.v[i];
+        const Vec3<double>& b = fc.v[(i + 1) % n];
+        const Vec3<double> e(b - a), ax(x - a);
+        if (dot(cross(e, fc.n), ax) > 0) inside = false;
+        const double l2 = squared_norm(e);
+        const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
+        d = std::min(d, std::sqrt(squared_norm(Vec3<double>(ax - t * e))));
+      }
+      if (inside) d = std::abs(h);
+      if (d < best * (1 - 1e-9)) {
+        best = d;
+        above = h > 0;
+      } else if (d <= best * (1 + 1e-9)) {
+        best = std::min(best, d);
+        above = above || h > 0;
+      }
+    }
+    return flat || above ? best : 0.0;
   }
 
   // ---- input, tolerances, welding -------------------------------------------------
@@ -355,6 +510,7 @@ class Builder {
       }
     }
     if (d < 0 || best_d <= flat_) return polygon(active, base.normal, reject);
+    if (simplex_[0] < 0) simplex_ = {a, b, c, d};
     active_ = active;
     base_normal_ = base.normal;
     return solid(active, a, b, c, d, reject);
@@ -826,6 +982,11 @@ class Builder {
       if (tris_[f].alive) live.push_back(static_cast<int>(f));
     parent_.assign(tris_.size(), 0);
     std::iota(parent_.begin(), parent_.end(), 0);
+    if constexpr (!exact) {
+      star_.assign(q_.size(), {});
+      for (int f : live)
+        for (int v : tris_[sz(f)].v) star_[sz(v)].push_back(f);
+    }
     groups_.assign(tris_.size(), Group{});
     for (int f : live) {
       const Tri& t = tris_[sz(f)];
@@ -851,7 +1012,7 @@ class Builder {
             const int x = find(f), y = find(tris_[sz(f)].nb[sz(i)]);
             if (x == y || groups_[sz(x)].degenerate || groups_[sz(y)].degenerate) continue;
             if (split_apart(groups_[sz(x)], groups_[sz(y)])) continue;
-            if (coplanar(groups_[sz(x)], groups_[sz(y)])) {
+            if (coplanar(groups_[sz(x)], groups_[sz(y)]) && !strands_vertex(x, y)) {
               unite(x, y);
               changed = true;
             }
@@ -953,6 +1114,35 @@ class Builder {
     std::unordered_map<int, int> degree;
     for (const auto& l : loops)
       for (int v : l) ++degree[v];
+    if constexpr (!exact) {
+      // ... unless a repair round pinned them (they were far from the hull
+      // without them) and they are more than far_tol * eps from the segment
+      // between their neighbours: then the two faces met at a fold, merged
+      // within eps over a real corner (on a needle or thin slab every face
+      // is within eps of every vertex: the tip of a needle, a third of its
+      // length, was lost this way).  The faces it is on are split back into
+      // their triangles (which may not merge again) and merged again.
+      // Every split marks more triangles, so this terminates; a face that
+      // cannot be split any more drops the vertex.
+      std::vector<int> fold_groups;
+      for (std::size_t li = 0; li < loops.size(); ++li) {
+        const auto& l = loops[li];
+        const std::size_t n = l.size();
+        for (std::size_t i = 0; i < n; ++i) {
+          if (degree[l[i]] >= 3 || !pinned_[sz(l[i])]) continue;
+          std::size_t a = (i + n - 1) % n, b = (i + 1) % n;
+          while (a != i && degree[l[a]] < 3) a = (a + n - 1) % n;
+          while (b != i && degree[l[b]] < 3) b = (b + 1) % n;
+          if (a == i || b == i) continue;
+          if (segment_distance(l[i], l[a], l[b]) > far_tol * to_double(eps_))
+            fold_groups.push_back(loop_group[li]);
+        }
+      }
+      if (split_groups(live, fold_groups)) {
+        reject.clear();
+        return merge_and_build(reject);
+      }
+    }
     for (auto& l : loops) {
       std::vector<int> kept;
       for (int v : l)
@@ -968,6 +1158,7 @@ class Builder {
     // the corner).  Such rejections wait for the next round; the first
     // failing corner of a round is always rejected, so rounds still progress.
     std::vector<char> rejected(q_.size(), 0), witness(q_.size(), 0);
+    [[maybe_unused]] int pinned_fallback = -1;
     for (int r : reject) rejected[sz(r)] = 1;
     for (std::size_t li = 0; li < loops.size(); ++li) {
       const auto& l = loops[li];
@@ -1003,11 +1194,20 @@ class Builder {
         if (lca >= lab && lca >= lbc) mid = pb;
         const int w1 = mid == pa ? pb : pa, w2 = mid == pc ? pb : pc;
         if (witness[sz(mid)] || rejected[sz(w1)] || rejected[sz(w2)] || rejected[sz(mid)]) continue;
+        if constexpr (!exact) {
+          // a point a repair round pinned (it was far from the hull without
+          // it) is rejected only if nothing else is
+          if (pinned_[sz(mid)]) {
+            if (pinned_fallback < 0) pinned_fallback = mid;
+            continue;
+          }
+        }
         rejected[sz(mid)] = 1;
         witness[sz(w1)] = witness[sz(w2)] = 1;
         reject.push_back(mid);
       }
     }
+    if (reject.empty() && pinned_fallback >= 0) reject.push_back(pinned_fallback);
     if (!reject.empty()) {
       std::sort(reject.begin(), reject.end());
       reject.erase(std::unique(reject.begin(), reject.end()), reject.end());
@@ -1028,20 +1228,9 @@ class Builder {
       std::vector<std::pair<int, int>> merges;
       std::vector<int> split;
       prevalidate(loops, reject, false, &merges, &loop_group, &split);
-      std::unordered_map<int, std::vector<int>> members;  // group -> live triangles
-      for (int f : live) members[find(f)].push_back(f);
-      bool any_split = false;
-      for (int f : split) {
-        std::vector<int>& m = members[loop_group[sz(f)]];
-        int plain = 0;
-        for (int t : m) plain += !is_zero(tris_[sz(t)].pl.normal) && nomerge_[sz(t)] == 0;
-        if (plain < 2) continue;
-        ++splits_;
-        for (int t : m)
-          if (nomerge_[sz(t)] == 0) nomerge_[sz(t)] = splits_;
-        any_split = true;
-      }
-      if (any_split) {
+      std::vector<int> split_ids;
+      for (int f : split) split_ids.push_back(loop_group[sz(f)]);
+      if (split_groups(live, split_ids)) {
         reject.clear();
         return merge_and_build(reject);
       }
@@ -1069,6 +1258,94 @@ class Builder {
       faces.push_back(std::move(face));
     }
     return finish([&] { return ConvexPolyhedron<T>::from_faces(std::move(verts), faces); });
+  }
+
+  // Float T: would merging groups x and y (roots) leave a vertex they share
+  // on only two faces (so that it is dropped as the middle of an edge) while
+  // it is more than far_tol * eps from the segment between its neighbours
+  // along that edge?  On a needle or thin slab every face is within eps of
+  // every vertex, and such merges folded faces over a real corner (the tip
+  // of a needle, a third of its length).
+  bool strands_vertex(int x, int y) {
+    if constexpr (exact) {
+      (void)x;
+      (void)y;
+      return false;
+    } else {
+    if (!any_pinned_) return false;
+    const Group& gx = groups_[sz(x)];
+    const Group& gy = groups_[sz(y)];
+    std::vector<int> shared;
+    std::set_intersection(gx.verts.begin(), gx.verts.end(), gy.verts.begin(), gy.verts.end(),
+                          std::back_inserter(shared));
+    auto group = [&](int t) {
+      const int g = find(t);
+      return g == y ? x : g;
+    };
+    for (int v : shared) {
+      if (!pinned_[sz(v)]) continue;
+      std::vector<int> gs;
+      for (int t : star_[sz(v)]) gs.push_back(group(t));
+      std::sort(gs.begin(), gs.end());
+      gs.erase(std::unique(gs.begin(), gs.end()), gs.end());
+      if (gs.size() == 1) return true;  // it would be inside a face
+      if (gs.size() != 2) continue;
+      // its neighbours along the boundary between the two faces
+      std::vector<int> ends;
+      for (int t : star_[sz(v)]) {
+        const Tri& tr = tris_[sz(t)];
+        for (int i = 0; i < 3; ++i) {
+          const int u = tr.v[sz(i)], w = tr.v[sz((i + 1) % 3)];
+          if (u != v) continue;
+          if (group(t) != group(tr.nb[sz(i)])) ends.push_back(w);
+        }
+        for (int i = 0; i < 3; ++i) {
+          const int u = tr.v[sz(i)], w = tr.v[sz((i + 1) % 3)];
+          if (w != v) continue;
+          if (group(t) != group(tr.nb[sz(i)])) ends.push_back(u);
+        }
+      }
+      std::sort(ends.begin(), ends.end());
+      ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+      if (ends.size() != 2) continue;
+      if (segment_distance(v, ends[0], ends[1]) > far_tol * to_double(eps_)) return true;
+    }
+    return false;
+    }
+  }
+
+  // Split groups (ids of their root triangles) back into their triangles,
+  // which may not merge with each other again; a group with fewer than two
+  // plain (non-zero-area) unsplit triangles is left alone.  True if any was
+  // split.
+  bool split_groups(const std::vector<int>& live, std::vector<int> ids) {
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    if (ids.empty()) return false;
+    std::unordered_map<int, std::vector<int>> members;  // group -> live triangles
+    for (int f : live) members[find(f)].push_back(f);
+    bool any_split = false;
+    for (int g : ids) {
+      std::vector<int>& m = members[g];
+      int plain = 0;
+      for (int t : m) plain += !is_zero(tris_[sz(t)].pl.normal) && nomerge_[sz(t)] == 0;
+      if (plain < 2) continue;
+      ++splits_;
+      for (int t : m)
+        if (nomerge_[sz(t)] == 0) nomerge_[sz(t)] = splits_;
+      any_split = true;
+    }
+    return any_split;
+  }
+
+  // Euclidean distance of point v from the segment between points a and b
+  // (double, on the local coordinates; exact conversion for float).
+  double segment_distance(int v, int a, int b) const {
+    const Vec3<double> x = vec_to_double(Q(v)), pa = vec_to_double(Q(a)), pb = vec_to_double(Q(b));
+    const Vec3<double> e(pb - pa), ax(x - pa);
+    const double l2 = squared_norm(e);
+    const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
+    return std::sqrt(squared_norm(Vec3<double>(ax - t * e)));
   }
 
   // ---- float only: check what ConvexPolyhedron validation will check ----------
@@ -1130,6 +1407,7 @@ class Builder {
     const std::size_t n = l.size();
     int best = l[0];
     T best_d(-1);
+    bool best_pin = false;
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3<T> a = Q(l[(i + n - 1) % n]), b = Q(l[(i + 1) % n]), v = Q(l[i]);
       const Vec3<T> e(b - a), av(v - a), bv(v - b);
@@ -1142,9 +1420,12 @@ class Builder {
       } else {
         d = T(length(cross(e, av)) / el);
       }
-      if (best_d < T(0) || d < best_d) {
+      // (a point a repair round pinned only if every vertex of the face is)
+      const bool pin = !exact && pinned_[sz(l[i])];
+      if (best_d < T(0) || (pin == best_pin ? d < best_d : best_pin)) {
         best_d = d;
         best = l[i];
+        best_pin = pin;
       }
     }
     return best;
@@ -1293,10 +1574,13 @@ class Builder {
   std::vector<Tri> tris_;
   std::vector<int> parent_;
   std::vector<int> active_;  // the points of the current build
+  std::array<int, 4> simplex_{-1, -1, -1, -1};  // the first build's initial simplex
   Vec3<T> base_normal_;      // normal of its initial triangle
   std::vector<Group> groups_;
   std::vector<char> pinned_;  // float: points a repair round put back
+  bool any_pinned_ = false;
   std::vector<char> out_vertex_;  // vertices of the last output
+  std::vector<std::vector<int>> star_;  // float: vertex -> live triangles around it
   std::vector<int> nomerge_;  // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
 };

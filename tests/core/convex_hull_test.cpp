@@ -109,6 +109,7 @@ TEMPLATE_TEST_CASE("hull of random points on a sphere", "[hull]", float, double)
       CHECK(h.vertex_count() <= n);
       CHECK(vertices_are_inputs(h, pts));
       CHECK(max_outside(h, pts) <= 1.0);
+      CHECK(max_distance(h, pts) <= 1.0);
       // points on a sphere are all extreme: only near-coincident ones may go
       if (n <= 16) CHECK(h.vertex_count() == n);
     }
@@ -244,19 +245,22 @@ TEST_CASE("double hull far from the origin", "[hull]") {
     CHECK(h.face_count() == ref.face_count());
     check_valid(h);
     CHECK(max_outside(h, pts) <= 1.0);
+    CHECK(max_distance(h, pts) <= 1.0);
   }
 }
 
 namespace {
 
 // Every set of one stream of random_point_set (hull_point_sets.hpp): a validated hull whose
-// points are all within 64 x coplanar*extent of it (no outliers allowed), or a
-// legitimate error.  Returns the worst point outside, in coplanar*extent.
+// points are all within hull_outside_bound (64) x coplanar*extent of every face
+// plane, and, except for the thin slabs of kinds 2 and 3, within that
+// Euclidean distance of the hull (no outliers allowed), or a legitimate
+// error.  Returns the worst point outside a plane, in coplanar*extent.
 template <class T>
 double stress_stream(unsigned seed, int count) {
   std::mt19937 rng(seed);
-  int solids = 0, flats = 0, errors = 0;
-  double worst = -1e300;
+  int solids = 0, flats = 0, errors = 0, slabs_far = 0;
+  double worst = -1e300, worst_dist = -1e300;
   for (int iter = 0; iter < count; ++iter) {
     const int kind = iter % 9;
     const auto pts = to_t<T>(random_point_set(rng, kind));
@@ -277,7 +281,19 @@ double stress_stream(unsigned seed, int count) {
       const double rounding = 64 * number_traits<T>::unit_roundoff * max_abs /
                               (Tolerances<T>::coplanar * h.extent());
       worst = std::max(worst, out - rounding);
-      CHECK(out <= 64.0 + rounding);
+      CHECK(out <= hull_outside_bound + rounding);
+      // Euclidean: a point within eps of two planes of a thin wedge can be
+      // far beyond its edge (a needle 4.4 eps thick lost a third of its
+      // length, docs/hull.md).  Needles (kind 4) and every other kind are
+      // held to the bound; thin slabs (kinds 2, 3: 0.2-0.5% of their sets,
+      // docs/hull.md "Known limits") are counted, not asserted.
+      const double dist = max_distance(h, pts);
+      if (kind == 2 || kind == 3) {
+        slabs_far += dist > hull_outside_bound + rounding;
+      } else {
+        worst_dist = std::max(worst_dist, dist - rounding);
+        CHECK(dist <= hull_outside_bound + rounding);
+      }
       (h.is_flat() ? flats : solids)++;
     } catch (const InvalidInput& e) {
       // Only degenerate kinds may legitimately be rejected; and float cannot
@@ -303,7 +319,9 @@ double stress_stream(unsigned seed, int count) {
     }
   }
   WARN("seed " << seed << ": solids " << solids << ", flat " << flats << ", rejected " << errors
-               << ", worst point outside " << worst << " x coplanar*extent");
+               << ", worst point outside " << worst << " x coplanar*extent; worst distance "
+               << worst_dist << " (kinds other than 2, 3); thin slabs beyond the bound: "
+               << slabs_far);
   CHECK(solids > (count - errors) / 2);
   CHECK(flats > 0);
   return worst;
@@ -324,4 +342,22 @@ TEMPLATE_TEST_CASE("stress: 1000 hard point sets each give a validated hull or a
 TEMPLATE_TEST_CASE("stress: the 2 x 10000 sets that lost points (issue 2) all keep them",
                    "[hull][stress]", float, double) {
   for (unsigned seed : {1u, 2u}) stress_stream<TestType>(seed, 10000);
+}
+
+// The worked example of docs/hull.md: a needle of 70 points, radius 4.4 eps,
+// whose hull had 4 vertices and lost a third of its length (0.53 x extent:
+// the tip, in the initial simplex, was folded into two faces merged within
+// eps and dropped as the middle of an edge).  Every point is now within the
+// bound of the hull.
+TEST_CASE("the needle of docs/hull.md keeps its length", "[hull][stress]") {
+  std::mt19937 rng(2);
+  std::vector<Vec3<double>> pts;
+  for (int iter = 0; iter <= 2722; ++iter) pts = random_point_set(rng, iter % 9);
+  REQUIRE(pts.size() == 70);
+  const auto h = convex_hull(pts);
+  check_valid(h);
+  const double dist = max_distance(h, pts);
+  INFO("vertices " << h.vertex_count() << ", farthest point " << dist << " x coplanar*extent");
+  CHECK(dist <= hull_outside_bound);
+  CHECK(max_outside(h, pts) <= hull_outside_bound);
 }

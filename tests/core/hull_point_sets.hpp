@@ -34,6 +34,73 @@ inline double max_outside(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T
   return worst / (Tolerances<T>::coplanar * h.extent());
 }
 
+// Largest Euclidean distance of any input point from the hull (the solid, or
+// the flat polygon), in units of coplanar * extent of the hull.  Computed in
+// double on coordinates relative to the first vertex (an offset from the
+// origin costs no precision): a point's distance is its distance to the
+// nearest face polygon (its height over the face if it projects inside the
+// polygon, else the distance to the nearest edge segment), or 0 if it is
+// below that face (inside; not "below every face plane": the plane of a
+// tiny face is poorly determined far from it).  Face normals are Newell
+// normals of the loops in double (well conditioned for thin faces, unlike
+// a vertex triple).
+template <class T>
+inline double max_distance(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts) {
+  const Vec3<double> o = vec_to_double(h.vertex(0));
+  auto rel = [&](const Vec3<T>& p) { return Vec3<double>(vec_to_double(p) - o); };
+  struct Face {
+    std::vector<Vec3<double>> v;
+    Vec3<double> n;
+    double off;
+  };
+  std::vector<Face> faces;
+  for (int f = 0; f < h.face_count(); ++f) {
+    Face fc;
+    for (int v : h.face_vertices(f)) fc.v.push_back(rel(h.vertex(v)));
+    Vec3<double> n(0, 0, 0), c(0, 0, 0);
+    for (std::size_t i = 0; i < fc.v.size(); ++i) {
+      const Vec3<double>& a = fc.v[i];
+      const Vec3<double>& b = fc.v[(i + 1) % fc.v.size()];
+      n += Vec3<double>((a[1] - b[1]) * (a[2] + b[2]), (a[2] - b[2]) * (a[0] + b[0]),
+                        (a[0] - b[0]) * (a[1] + b[1]));
+      c += a;
+    }
+    fc.n = n / n.norm();
+    fc.off = fc.n.dot(c / double(fc.v.size()));
+    faces.push_back(std::move(fc));
+  }
+  double worst = 0;
+  for (const auto& q : pts) {
+    const Vec3<double> p = rel(q);
+    double best = 1e300;
+    bool above = false;
+    for (const auto& fc : faces) {
+      bool inside = true;
+      double d = 1e300;
+      for (std::size_t i = 0; i < fc.v.size(); ++i) {
+        const Vec3<double>& a = fc.v[i];
+        const Vec3<double>& b = fc.v[(i + 1) % fc.v.size()];
+        const Vec3<double> e = b - a;
+        if (dot(cross(e, fc.n), Vec3<double>(p - a)) > 0) inside = false;
+        const double l2 = e.squaredNorm();
+        const double t = l2 > 0 ? std::clamp((p - a).dot(e) / l2, 0.0, 1.0) : 0.0;
+        d = std::min(d, (p - (a + t * e)).norm());
+      }
+      const double ht = fc.n.dot(p) - fc.off;
+      if (inside) d = std::abs(ht);
+      if (d < best * (1 - 1e-9)) {
+        best = d;
+        above = ht > 0;
+      } else if (d <= best * (1 + 1e-9)) {
+        best = std::min(best, d);
+        above = above || ht > 0;
+      }
+    }
+    if (h.is_flat() || above) worst = std::max(worst, best);
+  }
+  return worst / (Tolerances<T>::coplanar * h.extent());
+}
+
 inline std::vector<Vec3<double>> sphere_points(int n, std::mt19937& rng) {
   std::normal_distribution<double> nd;
   std::vector<Vec3<double>> v;
