@@ -348,7 +348,7 @@ class Builder {
       if (!std::isfinite(extent_) || !std::isfinite(extent_ * extent_ * extent_ * 8.0) ||
           !number_traits<T>::is_finite(static_cast<T>(extent_ * extent_ * 4.0))) {
         throw InvalidInput(ErrorCode::BadScale,
-                           "convex_hull: the point set's extent " + std::to_string(extent_) +
+                           "convex_hull: the point set's extent " + format_number(extent_) +
                                " overflows " + std::string(number_traits<T>::name) +
                                " in plane computations");
       }
