@@ -56,9 +56,14 @@
 //      when nothing else can be.  If no round keeps every point within 2 eps,
 //      the initial simplex (which holds the segment between the farthest
 //      pair: a needle's two tips) is returned when it is nearer every point
-//      than the best round.  (docs/hull.md: every point within
+//      than the best round.  If the points are within
+//      hull_slab_half_thickness (63) x eps of a face plane of the best
+//      round and it (or its shadow on that plane) is more than 32 eps from
+//      a point, the flat polygon of the points projected onto the slab's
+//      mid-plane is returned when nearer every point (its vertices are
+//      projections, not input points).  (docs/hull.md: every point within
 //      hull_outside_bound = 64 x eps of every face plane; and of the hull,
-//      Euclidean, except thin slabs.)
+//      Euclidean, except slabs more than 2 x 63 eps thick.)
 //
 // Float T computes every decision on the points translated by the centre of
 // their bounding box (so an offset from the origin does not cost precision);
@@ -94,8 +99,9 @@ namespace sepax {
 /// float/double: how far outside its hull an input point may be, in units of
 /// Tolerances<T>::coplanar * extent (docs/hull.md, "Guarantees"): its height
 /// above any face plane, for every point set; and its Euclidean distance from
-/// the hull, for every set except slabs a few eps thick (measured, not
-/// proven; docs/hull.md gives the numbers and the exceptions).
+/// the hull, for every set except slabs more than 2 x hull_slab_half_thickness
+/// thick (measured, not proven; docs/hull.md gives the numbers and the
+/// exceptions).
 inline constexpr double hull_outside_bound = 64;
 
 /// float/double: a point set whose repair rounds failed (docs/hull.md) and
