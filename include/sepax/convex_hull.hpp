@@ -285,7 +285,8 @@ class Builder {
   // Float T, the slab fallback (run() above).  Whether the welded points
   // are within slab_max * eps of one plane: the plane of h's largest face
   // (one O(n) pass; a well-shaped set stops here), then, if they are within
-  // twice that of it, the face plane across which they spread least.  nrm
+  // twice that of it, the face or coordinate plane across which they spread
+  // least (a coordinate plane if within 2 eps of the least).  nrm
   // is its unit normal, [lo, hi] the points' range of heights along it.
   bool thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& nrm, double& lo, double& hi) const {
     const double e = to_double(eps_);
@@ -317,6 +318,21 @@ class Builder {
       width(fc.n, l, u);
       if (u - l < hi - lo) {
         nrm = fc.n;
+        lo = l;
+        hi = u;
+      }
+    }
+    // A coordinate plane nearly as thin is preferred: projections onto it
+    // share one coordinate exactly, so they stay coplanar in T (far from
+    // the origin, float rounding of projections onto a tilted plane is
+    // more than the planarity tolerance).
+    for (int c = 0; c < 3; ++c) {
+      Vec3<double> n(0, 0, 0);
+      n[c] = 1;
+      double l = 0, u = 0;
+      width(n, l, u);
+      if (u - l <= hi - lo + 2 * e) {
+        nrm = n;
         lo = l;
         hi = u;
       }

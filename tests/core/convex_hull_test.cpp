@@ -296,7 +296,7 @@ double stress_stream(unsigned seed, int count) {
       // length, docs/hull.md).  Needles (kind 4), every other kind and the
       // slabs (kinds 2, 3) thinner than 2 x hull_slab_half_thickness are
       // held to the bound; thicker slabs (docs/hull.md "Known limits": 14
-      // of 119 458 double and 3 of 67 757 float sets of seeds 1..12, slabs
+      // of 119 458 double and 1 of 67 757 float sets of seeds 1..12, slabs
       // 126..151 eps thick) are counted, not asserted.
       const double dist = max_distance(h, pts);
       if ((kind == 2 || kind == 3) && width > 2 * hull_slab_half_thickness) {
