@@ -56,9 +56,14 @@
 //      when nothing else can be.  If no round keeps every point within 2 eps,
 //      the initial simplex (which holds the segment between the farthest
 //      pair: a needle's two tips) is returned when it is nearer every point
-//      than the best round.  (docs/hull.md: every point within
+//      than the best round.  If the points are within
+//      hull_slab_half_thickness (63) x eps of a face plane of the best
+//      round and it (or its shadow on that plane) is more than 32 eps from
+//      a point, the flat polygon of the points projected onto the slab's
+//      mid-plane is returned when nearer every point (its vertices are
+//      projections, not input points).  (docs/hull.md: every point within
 //      hull_outside_bound = 64 x eps of every face plane; and of the hull,
-//      Euclidean, except thin slabs.)
+//      Euclidean, except slabs more than 2 x 63 eps thick.)
 //
 // Float T computes every decision on the points translated by the centre of
 // their bounding box (so an offset from the origin does not cost precision);
@@ -94,9 +99,18 @@ namespace sepax {
 /// float/double: how far outside its hull an input point may be, in units of
 /// Tolerances<T>::coplanar * extent (docs/hull.md, "Guarantees"): its height
 /// above any face plane, for every point set; and its Euclidean distance from
-/// the hull, for every set except slabs a few eps thick (measured, not
-/// proven; docs/hull.md gives the numbers and the exceptions).
+/// the hull, for every set except slabs more than 2 x hull_slab_half_thickness
+/// thick (measured, not proven; docs/hull.md gives the numbers and the
+/// exceptions).
 inline constexpr double hull_outside_bound = 64;
+
+/// float/double: a point set whose repair rounds failed (docs/hull.md) and
+/// that lies within this many coplanar * extent of one plane (a slab up to
+/// twice as thick) is returned as the flat polygon of its points projected
+/// onto the slab's mid-plane, whose vertices are then not input points.
+/// One less than hull_outside_bound: every point is within its height (at
+/// most this) of that polygon, and the rest is left for rounding.
+inline constexpr double hull_slab_half_thickness = hull_outside_bound - 1;
 
 namespace hull_detail {
 
@@ -176,6 +190,26 @@ class Builder {
               }
             }
           }
+          // A slab thinner than the bound whose rim corners every round
+          // folded away (or whose rim faces are so nearly parallel that a
+          // point beyond the rim is below both their planes, so the check
+          // above saw it inside: measured here by the slab's shadow, the
+          // points projected onto its plane against the projected hull):
+          // the flat polygon of the projections onto the slab's mid-plane
+          // is within the half-thickness of every point, in height and in
+          // distance.
+          Vec3<double> nrm(0, 0, 0);
+          double lo = 0, hi = 0;
+          if (thin_plane(*best, nrm, lo, hi)) {
+            const double gap = std::max(best_out, shadow_out(*best, nrm));
+            if (gap > height_safe) {
+              std::vector<int> none;
+              if (auto s = projected_slab(nrm, lo, hi)) {
+                double s_height = 0;
+                if (outside_points(*s, none, s_height) < gap) return std::move(*s);
+              }
+            }
+          }
           if (best_height > height_safe && best_height > best_h_height) return std::move(*best_h);
           return std::move(*best);
         }
@@ -196,6 +230,9 @@ class Builder {
   // only if its plane heights are at most this, or no worse than the lowest
   // of any round (the height bound, hull_outside_bound, is kept first)
   static constexpr double height_safe = 32.0;  // half of hull_outside_bound
+  // x coplanar * extent: the largest half-thickness of a slab replaced by
+  // its projected polygon (that polygon's height and distance bound)
+  static constexpr double slab_max = hull_slab_half_thickness;
 
   // Float T: the welded points more than repair_tol * eps above a face plane
   // of h (evaluated as a user would, on the input coordinates; plus their
@@ -245,12 +282,196 @@ class Builder {
     }
   }
 
+  // Float T, the slab fallback (run() above).  Whether the welded points
+  // are within slab_max * eps of one plane: the plane of h's largest face
+  // (one O(n) pass; a well-shaped set stops here), then, if they are within
+  // twice that of it, the face or coordinate plane across which they spread
+  // least (a coordinate plane if within 2 eps of the least).  nrm
+  // is its unit normal, [lo, hi] the points' range of heights along it.
+  bool thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& nrm, double& lo, double& hi) const {
+    const double e = to_double(eps_);
+    const std::vector<PolygonFace> faces = polygon_faces(h);
+    auto width = [&](const Vec3<double>& n, double& l, double& u) {
+      l = 1e300;
+      u = -1e300;
+      for (std::size_t i = 0; i < pts_.size(); ++i) {
+        const double t = dot(n, vec_to_double(Q(static_cast<int>(i))));
+        l = std::min(l, t);
+        u = std::max(u, t);
+      }
+    };
+    std::size_t big = faces.size();
+    double big_area = -1;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      if (faces[f].area > big_area && squared_norm(faces[f].n) > 0) {
+        big_area = faces[f].area;
+        big = f;
+      }
+    }
+    if (big == faces.size()) return false;
+    width(faces[big].n, lo, hi);
+    if (hi - lo > 4 * slab_max * e) return false;
+    nrm = faces[big].n;
+    for (const auto& fc : faces) {
+      if (squared_norm(fc.n) == 0) continue;
+      double l = 0, u = 0;
+      width(fc.n, l, u);
+      if (u - l < hi - lo) {
+        nrm = fc.n;
+        lo = l;
+        hi = u;
+      }
+    }
+    // A coordinate plane nearly as thin is preferred: projections onto it
+    // share one coordinate exactly, so they stay coplanar in T (far from
+    // the origin, float rounding of projections onto a tilted plane is
+    // more than the planarity tolerance).
+    for (int c = 0; c < 3; ++c) {
+      Vec3<double> n(0, 0, 0);
+      n[c] = 1;
+      double l = 0, u = 0;
+      width(n, l, u);
+      if (u - l <= hi - lo + 2 * e) {
+        nrm = n;
+        lo = l;
+        hi = u;
+      }
+    }
+    return hi - lo <= 2 * slab_max * e;
+  }
+
+  // Float T: how far (in units of eps) the points' shadow on a plane (unit
+  // normal nrm) reaches beyond the shadow of h's vertices: the largest
+  // signed distance of a projected point beyond an edge of the 2D hull of
+  // the projected vertices (a lower bound on its distance from h).
+  double shadow_out(const ConvexPolyhedron<T>& h, const Vec3<double>& nrm) const {
+    const auto [ax, bx] = plane_basis(nrm);
+    const Vec3<double> c = vec_to_double(centre_);
+    std::vector<std::array<double, 2>> v;
+    for (const auto& x : h.vertices()) {
+      const Vec3<double> l(vec_to_double(x) - c);
+      v.push_back({dot(ax, l), dot(bx, l)});
+    }
+    std::vector<std::size_t> loop = hull_2d(v, 0.0);
+    if (loop.size() < 3) return 1e300;
+    double worst = 0;
+    for (std::size_t i = 0; i < pts_.size(); ++i) {
+      const Vec3<double> x = vec_to_double(Q(static_cast<int>(i)));
+      const std::array<double, 2> p{dot(ax, x), dot(bx, x)};
+      double out = -1e300;
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        const auto& a = v[loop[k]];
+        const auto& b = v[loop[(k + 1) % loop.size()]];
+        const double ex = b[0] - a[0], ey = b[1] - a[1];
+        const double len = std::hypot(ex, ey);
+        if (len > 0) out = std::max(out, (ex * (p[1] - a[1]) - ey * (p[0] - a[0])) / -len);
+      }
+      worst = std::max(worst, out);
+    }
+    return worst / to_double(eps_);
+  }
+
+  // An orthonormal basis of the plane with unit normal n.
+  static std::pair<Vec3<double>, Vec3<double>> plane_basis(const Vec3<double>& n) {
+    int k = 0;
+    for (int c = 1; c < 3; ++c)
+      if (std::abs(n[c]) < std::abs(n[k])) k = c;
+    Vec3<double> ax(0, 0, 0);
+    ax[k] = 1;
+    ax = Vec3<double>(ax - dot(ax, n) * n);
+    ax = Vec3<double>(ax / std::sqrt(squared_norm(ax)));
+    return {ax, cross(n, ax)};
+  }
+
+  // Counter-clockwise 2D hull (Andrew's monotone chain) of p, indices into
+  // p; a corner whose neighbours' line passes within tol of it (either end
+  // point within tol of the other edge's line) is dropped.
+  static std::vector<std::size_t> hull_2d(const std::vector<std::array<double, 2>>& p, double tol) {
+    const std::size_t n = p.size();
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return p[i] < p[j]; });
+    auto left = [&](std::size_t i0, std::size_t i1, std::size_t i2) {
+      const double ex = p[i1][0] - p[i0][0], ey = p[i1][1] - p[i0][1];
+      const double fx = p[i2][0] - p[i1][0], fy = p[i2][1] - p[i1][1];
+      const double len = std::max(std::hypot(ex, ey), std::hypot(fx, fy));
+      return ex * fy - ey * fx > tol * len;
+    };
+    std::vector<std::size_t> loop;
+    for (int pass = 0; pass < 2 && n > 0; ++pass) {
+      const std::size_t base = loop.size();
+      for (std::size_t idx = 0; idx < n; ++idx) {
+        const std::size_t q = pass == 0 ? order[idx] : order[n - 1 - idx];
+        while (loop.size() >= base + 2 && !left(loop[loop.size() - 2], loop.back(), q)) loop.pop_back();
+        loop.push_back(q);
+      }
+      loop.pop_back();
+    }
+    return loop;
+  }
+
+  // Float T: the flat double-sided polygon of the welded points projected
+  // onto the plane dot(nrm, x) = (lo + hi) / 2 (thin_plane), their 2D hull
+  // in double with a corner within eps of its neighbours' line dropped, as
+  // the flat builder does; validated (the first start of the loop
+  // validation accepts).  Its vertices are projections, not input points;
+  // every point is within its height, at most (hi - lo) / 2, of the
+  // polygon.  None if validation refuses every start.
+  std::optional<ConvexPolyhedron<T>> projected_slab(const Vec3<double>& nrm, double lo, double hi) {
+    const double e = to_double(eps_);
+    const std::size_t n = pts_.size();
+    const double mid = (lo + hi) / 2;
+    const auto [ax, bx] = plane_basis(nrm);
+    std::vector<std::array<double, 2>> p2(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3<double> x = vec_to_double(Q(static_cast<int>(i)));
+      p2[i] = {dot(ax, x), dot(bx, x)};
+    }
+    const std::vector<std::size_t> loop = hull_2d(p2, e);
+    if (loop.size() < 3) return std::nullopt;
+    std::vector<Vec3<T>> verts;
+    for (std::size_t i : loop) {
+      const Vec3<double> x(p2[i][0] * ax + p2[i][1] * bx + mid * nrm);
+      verts.push_back(Vec3<T>(vec_cast<T>(x) + centre_));
+    }
+    for (std::size_t rot = 0; rot < verts.size(); ++rot) {
+      std::vector<Vec3<T>> v = verts;
+      std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(rot), v.end());
+      // Rounding the projections to T moved them off their plane by up to
+      // u |x| (more than the planarity tolerance once a plane triple's
+      // tilt is extrapolated, for float far from the origin): project the
+      // other vertices again, in double, onto the plane of the rounded
+      // triple validation will use, and round them once more.
+      const auto tri = plane_triple(v);
+      const Vec3<double> p0(vec_to_double(v[sz(tri[0])]) - vec_to_double(centre_));
+      const Vec3<double> tn = cross(Vec3<double>(vec_to_double(v[sz(tri[1])]) - vec_to_double(centre_) - p0),
+                                    Vec3<double>(vec_to_double(v[sz(tri[2])]) - vec_to_double(centre_) - p0));
+      const double tl2 = squared_norm(tn);
+      if (tl2 > 0) {
+        for (std::size_t i = 0; i < v.size(); ++i) {
+          if (static_cast<int>(i) == tri[0] || static_cast<int>(i) == tri[1] || static_cast<int>(i) == tri[2]) continue;
+          const Vec3<double> x(vec_to_double(v[i]) - vec_to_double(centre_));
+          const Vec3<double> y(x - (dot(tn, Vec3<double>(x - p0)) / tl2) * tn);
+          v[i] = Vec3<T>(vec_cast<T>(y) + centre_);
+        }
+      }
+      try {
+        auto r = ConvexPolyhedron<T>::polygon(std::move(v));
+        out_vertex_.assign(pts_.size(), 0);  // (no input point is a vertex)
+        return r;
+      } catch (const InvalidInput&) {
+      }
+    }
+    return std::nullopt;
+  }
+
   // Float T: the faces of an output polyhedron as polygons in double, on the
   // local coordinates, with Newell normals (well conditioned for thin faces).
   struct PolygonFace {
     std::vector<Vec3<double>> v;
     Vec3<double> n;
     double off = 0;
+    double area = 0;
   };
   std::vector<PolygonFace> polygon_faces(const ConvexPolyhedron<T>& h) const {
     const Vec3<double> c = vec_to_double(centre_);
@@ -269,6 +490,7 @@ class Builder {
       const double len = std::sqrt(squared_norm(n));
       if (len > 0) n = n / len;
       fc.n = n;
+      fc.area = len / 2;
       fc.off = dot(n, Vec3<double>(m / static_cast<double>(fc.v.size())));
       faces.push_back(std::move(fc));
     }

@@ -253,13 +253,13 @@ namespace {
 
 // Every set of one stream of random_point_set (hull_point_sets.hpp): a validated hull whose
 // points are all within hull_outside_bound (64) x coplanar*extent of every face
-// plane, and, except for the thin slabs of kinds 2 and 3, within that
-// Euclidean distance of the hull (no outliers allowed), or a legitimate
-// error.  Returns the worst point outside a plane, in coplanar*extent.
+// plane, and, except for the slabs of kinds 2 and 3 more than
+// 2 x hull_slab_half_thickness thick, within that Euclidean distance of the
+// hull (no outliers allowed), or a legitimate error.  Returns the worst point outside a plane, in coplanar*extent.
 template <class T>
 double stress_stream(unsigned seed, int count) {
   std::mt19937 rng(seed);
-  int solids = 0, flats = 0, errors = 0, slabs_far = 0;
+  int solids = 0, flats = 0, errors = 0, slabs_far = 0, projected = 0;
   double worst = -1e300, worst_dist = -1e300;
   for (int iter = 0; iter < count; ++iter) {
     const int kind = iter % 9;
@@ -268,7 +268,16 @@ double stress_stream(unsigned seed, int count) {
     try {
       const auto h = convex_hull(pts);
       check_valid(h);
-      CHECK(vertices_are_inputs(h, pts));
+      // A slab thinner than 2 x hull_slab_half_thickness x coplanar*extent
+      // whose repair rounds failed is returned as the flat polygon of its
+      // points projected onto its mid-plane (docs/hull.md); every other
+      // hull's vertices are input points.
+      const double width = min_face_width(h, pts);
+      if (!vertices_are_inputs(h, pts)) {
+        ++projected;
+        CHECK(h.is_flat());
+        CHECK(width <= 2 * hull_slab_half_thickness);
+      }
       const double out = max_outside(h, pts);
       // The documented bound (docs/hull.md): every point within
       // 64 x coplanar*extent of every face plane, for every set (measured
@@ -284,11 +293,13 @@ double stress_stream(unsigned seed, int count) {
       CHECK(out <= hull_outside_bound + rounding);
       // Euclidean: a point within eps of two planes of a thin wedge can be
       // far beyond its edge (a needle 4.4 eps thick lost a third of its
-      // length, docs/hull.md).  Needles (kind 4) and every other kind are
-      // held to the bound; thin slabs (kinds 2, 3: 0.2-0.5% of their sets,
-      // docs/hull.md "Known limits") are counted, not asserted.
+      // length, docs/hull.md).  Needles (kind 4), every other kind and the
+      // slabs (kinds 2, 3) thinner than 2 x hull_slab_half_thickness are
+      // held to the bound; thicker slabs (docs/hull.md "Known limits": 14
+      // of 119 458 double and 1 of 67 757 float sets of seeds 1..12, slabs
+      // 126..151 eps thick) are counted, not asserted.
       const double dist = max_distance(h, pts);
-      if (kind == 2 || kind == 3) {
+      if ((kind == 2 || kind == 3) && width > 2 * hull_slab_half_thickness) {
         slabs_far += dist > hull_outside_bound + rounding;
       } else {
         worst_dist = std::max(worst_dist, dist - rounding);
@@ -320,8 +331,8 @@ double stress_stream(unsigned seed, int count) {
   }
   WARN("seed " << seed << ": solids " << solids << ", flat " << flats << ", rejected " << errors
                << ", worst point outside " << worst << " x coplanar*extent; worst distance "
-               << worst_dist << " (kinds other than 2, 3); thin slabs beyond the bound: "
-               << slabs_far);
+               << worst_dist << " (all but slabs thicker than the bound); those beyond it: "
+               << slabs_far << "; projected slabs " << projected);
   CHECK(solids > (count - errors) / 2);
   CHECK(flats > 0);
   return worst;

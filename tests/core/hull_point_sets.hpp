@@ -101,6 +101,38 @@ inline double max_distance(const ConvexPolyhedron<T>& h, const std::vector<Vec3<
   return worst / (Tolerances<T>::coplanar * h.extent());
 }
 
+// Thickness of the point set across the thinnest of the hull's face planes:
+// the smallest, over the faces of h, of the spread of the points' heights
+// along the face's Newell normal (double, relative to the first vertex), in
+// units of coplanar * extent of the hull.  At least the set's true
+// thickness; a slab's thickness when h has a face parallel to it (its flat
+// polygon, or its top or bottom).
+template <class T>
+inline double min_face_width(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts) {
+  const Vec3<double> o = vec_to_double(h.vertex(0));
+  double best = 1e300;
+  for (int f = 0; f < h.face_count(); ++f) {
+    const auto& fv = h.face_vertices(f);
+    Vec3<double> n(0, 0, 0);
+    for (std::size_t i = 0; i < fv.size(); ++i) {
+      const Vec3<double> a = vec_to_double(h.vertex(fv[i])) - o;
+      const Vec3<double> b = vec_to_double(h.vertex(fv[(i + 1) % fv.size()])) - o;
+      n += Vec3<double>((a[1] - b[1]) * (a[2] + b[2]), (a[2] - b[2]) * (a[0] + b[0]),
+                        (a[0] - b[0]) * (a[1] + b[1]));
+    }
+    if (n.norm() == 0) continue;
+    n /= n.norm();
+    double lo = 1e300, hi = -1e300;
+    for (const auto& p : pts) {
+      const double t = n.dot(vec_to_double(p) - o);
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    }
+    best = std::min(best, hi - lo);
+  }
+  return best / (Tolerances<T>::coplanar * h.extent());
+}
+
 inline std::vector<Vec3<double>> sphere_points(int n, std::mt19937& rng) {
   std::normal_distribution<double> nd;
   std::vector<Vec3<double>> v;
