@@ -397,15 +397,25 @@ class Builder {
       const double len = std::max(std::hypot(ex, ey), std::hypot(fx, fy));
       return ex * fy - ey * fx > tol * len;
     };
-    std::vector<std::size_t> loop;
+    return monotone_chain(order, left);
+  }
+
+  // Andrew's monotone chain: the counter-clockwise loop of the points that
+  // `order` lists, sorted (lower chain forwards, upper chain backwards); a
+  // corner stays only while left(previous, corner, next) holds.  Shared by
+  // the flat builder (polygon) and the slab fallback (hull_2d).
+  template <class I, class Left>
+  static std::vector<I> monotone_chain(const std::vector<I>& order, Left left) {
+    const std::size_t n = order.size();
+    std::vector<I> loop;
     for (int pass = 0; pass < 2 && n > 0; ++pass) {
       const std::size_t base = loop.size();
       for (std::size_t idx = 0; idx < n; ++idx) {
-        const std::size_t q = pass == 0 ? order[idx] : order[n - 1 - idx];
+        const I q = pass == 0 ? order[idx] : order[n - 1 - idx];
         while (loop.size() >= base + 2 && !left(loop[loop.size() - 2], loop.back(), q)) loop.pop_back();
         loop.push_back(q);
       }
-      loop.pop_back();
+      loop.pop_back();  // the last point of each chain is the first of the next
     }
     return loop;
   }
@@ -782,16 +792,7 @@ class Builder {
         return t > eps_ * nlen * len;
       }
     };
-    std::vector<int> hull;
-    for (int pass = 0; pass < 2; ++pass) {
-      const std::size_t base = hull.size();
-      for (std::size_t idx = 0; idx < pts.size(); ++idx) {
-        const int p = pass == 0 ? pts[idx] : pts[pts.size() - 1 - idx];
-        while (hull.size() >= base + 2 && !left(hull[hull.size() - 2], hull.back(), p)) hull.pop_back();
-        hull.push_back(p);
-      }
-      hull.pop_back();  // last point of this chain is the first of the next
-    }
+    std::vector<int> hull = monotone_chain(pts, left);
     if (hull.size() < 3) {
       throw InvalidInput(ErrorCode::Collinear, "convex_hull: all points lie on one line" +
                                                    std::string(exact ? "" : " (within tolerance)"));
