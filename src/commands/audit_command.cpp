@@ -16,8 +16,7 @@ namespace sepax::cli {
 
 fuzz::ShapeSpec audit_shape(const std::string& spec, std::ostream& note) {
   const io::ShapeData d = io::load_shape(spec);
-  std::vector<Vec3<double>> rounded = d.vertices;
-  fuzz::ShapeSpec tmp{rounded, {}};
+  fuzz::ShapeSpec tmp{d.vertices, {}};
   fuzz::round_to_float(tmp);
   std::size_t changed = 0;
   for (std::size_t i = 0; i < d.vertices.size(); ++i) {
