@@ -2,7 +2,8 @@
 //
 // build_shape<T>: ShapeData (double coordinates) -> ConvexPolyhedron<T>.
 //
-//   face list, no pose   ConvexPolyhedron<T>::from_faces on the coordinates
+//   face list, no pose   (one face: the double-sided polygon, closed_faces())
+//                        ConvexPolyhedron<T>::from_faces on the coordinates
 //                        converted to T (exactly for exact T), validated in T
 //                        (exact checks for exact T)
 //   face list, posed     validated in double, the pose applied to the double
@@ -66,6 +67,14 @@ std::vector<Vec3<T>> converted(const std::vector<Vec3<double>>& v) {
   return out;
 }
 
+/// The face list to build: a file with a single face is that face as a
+/// double-sided polygon (sepax's flat shape: the loop and the same loop
+/// reversed), so a file holding one triangle is the double-sided triangle.
+inline std::vector<std::vector<int>> closed_faces(const io::ShapeData& s) {
+  if (s.faces.size() != 1) return s.faces;
+  return {s.faces[0], std::vector<int>(s.faces[0].rbegin(), s.faces[0].rend())};
+}
+
 template <Number T>
 ConvexPolyhedron<T> build_unnamed(const io::ShapeData& s, const Pose* pose) {
   if (s.kind == io::ShapeData::Kind::Points) {
@@ -80,8 +89,8 @@ ConvexPolyhedron<T> build_unnamed(const io::ShapeData& s, const Pose* pose) {
     throw InvalidInput(ErrorCode::Parse, "this build of sepax has no hull builder (sepax/convex_hull.hpp)");
 #endif
   }
-  if (!pose) return ConvexPolyhedron<T>::from_faces(converted<T>(s.vertices), s.faces);
-  const auto base = ConvexPolyhedron<double>::from_faces(s.vertices, s.faces);
+  if (!pose) return ConvexPolyhedron<T>::from_faces(converted<T>(s.vertices), closed_faces(s));
+  const auto base = ConvexPolyhedron<double>::from_faces(s.vertices, closed_faces(s));
   std::vector<Vec3<double>> moved;
   moved.reserve(s.vertices.size());
   for (const auto& p : base.vertices()) moved.push_back(pose->apply(p));

@@ -182,6 +182,15 @@ TEST_CASE("query: files and built-ins give the same answer", "[query]") {
   CHECK(a.status == 0);
   CHECK(a.out == b.out);
   std::filesystem::remove(off);
+  // a file with one face is that face, double-sided: the built-in triangle
+  const std::string obj = temp_file("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  for (const char* number : {"float", "exact"}) {
+    const Run c = query({obj, "cube", "--pose", "0.25", "0.25", "0.5", "--json", "--number", number});
+    const Run d = query({"triangle", "cube", "--pose", "0.25", "0.25", "0.5", "--json", "--number", number});
+    CHECK(c.status == 0);
+    CHECK(c.out == d.out);
+  }
+  std::filesystem::remove(obj);
 }
 
 TEST_CASE("query: --batch reads JSON lines from stdin or a file", "[query]") {
