@@ -41,7 +41,7 @@ fuzz::ShapeSpec audit_shape(const std::string& spec, std::ostream& note) {
       throw InvalidInput(e.code(), d.name + ": " + e.what());
     }
   }
-  tmp.faces = d.faces;
+  tmp.faces = d.closed_faces();
   return tmp;
 }
 

@@ -2,7 +2,7 @@
 //
 // build_shape<T>: ShapeData (double coordinates) -> ConvexPolyhedron<T>.
 //
-//   face list, no pose   (one face: the double-sided polygon, closed_faces())
+//   face list, no pose   (one face: the double-sided polygon, ShapeData::closed_faces)
 //                        ConvexPolyhedron<T>::from_faces on the coordinates
 //                        converted to T (exactly for exact T), validated in T
 //                        (exact checks for exact T)
@@ -25,6 +25,7 @@
 #include <vector>
 
 #include <sepax/convex_polyhedron.hpp>
+#include <sepax/error.hpp>
 
 #include "commands/pose.hpp"
 #include "io/shape_data.hpp"
@@ -59,20 +60,26 @@ inline std::string located_message(const io::ShapeData& s, const std::string& me
   return line ? s.name + ":" + std::to_string(line) + ": " + message : s.name + ": " + message;
 }
 
+/// The coordinates in T.  A finite double that T cannot hold (1e300 in
+/// float) is an error naming the point, not an infinity for the validation
+/// to call non-finite.
 template <Number T>
-std::vector<Vec3<T>> converted(const std::vector<Vec3<double>>& v) {
+std::vector<Vec3<T>> converted(const io::ShapeData& s, const std::vector<Vec3<double>>& v) {
   std::vector<Vec3<T>> out;
   out.reserve(v.size());
-  for (const auto& p : v) out.push_back(vec_from_double<T>(p));
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    out.push_back(vec_from_double<T>(v[i]));
+    for (int c = 0; c < 3; ++c) {
+      if (!number_traits<T>::is_finite(out.back()[c])) {
+        throw InvalidInput(ErrorCode::BadScale,
+                           std::string("coordinate ") + "xyz"[c] + " of " +
+                               (s.kind == io::ShapeData::Kind::Points ? "point " : "vertex ") + std::to_string(i) +
+                               " (" + format_number(v[i][c]) + ") is beyond the range of " +
+                               std::string(number_traits<T>::name));
+      }
+    }
+  }
   return out;
-}
-
-/// The face list to build: a file with a single face is that face as a
-/// double-sided polygon (sepax's flat shape: the loop and the same loop
-/// reversed), so a file holding one triangle is the double-sided triangle.
-inline std::vector<std::vector<int>> closed_faces(const io::ShapeData& s) {
-  if (s.faces.size() != 1) return s.faces;
-  return {s.faces[0], std::vector<int>(s.faces[0].rbegin(), s.faces[0].rend())};
 }
 
 template <Number T>
@@ -83,14 +90,14 @@ ConvexPolyhedron<T> build_unnamed(const io::ShapeData& s, const Pose* pose) {
     if (pose) {
       for (auto& p : pts) p = pose->apply(p);
     }
-    return convex_hull<T>(converted<T>(pts));
+    return convex_hull<T>(converted<T>(s, pts));
 #else
     (void)pose;
     throw InvalidInput(ErrorCode::Parse, "this build of sepax has no hull builder (sepax/convex_hull.hpp)");
 #endif
   }
-  if (!pose) return ConvexPolyhedron<T>::from_faces(converted<T>(s.vertices), closed_faces(s));
-  const auto base = ConvexPolyhedron<double>::from_faces(s.vertices, closed_faces(s));
+  if (!pose) return ConvexPolyhedron<T>::from_faces(converted<T>(s, s.vertices), s.closed_faces());
+  const auto base = ConvexPolyhedron<double>::from_faces(s.vertices, s.closed_faces());
   std::vector<Vec3<double>> moved;
   moved.reserve(s.vertices.size());
   for (const auto& p : base.vertices()) moved.push_back(pose->apply(p));

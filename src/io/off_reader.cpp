@@ -68,7 +68,9 @@ ShapeData read_off(std::istream& in, const std::string& name) {
   const long long nf = parse_count(r, counts[1], "the face count", kMaxCount);
   if (counts.size() == 3) (void)parse_count(r, counts[2], "the edge count", 3 * kMaxCount);
   if (nv < 3) r.fail("the file declares " + std::to_string(nv) + " vertices; a polyhedron needs at least 3");
-  if (nf < 2) r.fail("the file declares " + std::to_string(nf) + " faces; a polyhedron needs at least 2");
+  if (nf < 1) {
+    r.fail("the file declares 0 faces; a shape needs at least 1 (one face is a double-sided polygon)");
+  }
 
   for (long long i = 0; i < nv; ++i) {
     if (!next_tokens()) {

@@ -21,6 +21,14 @@ struct ShapeData {
   std::vector<Vec3<double>> vertices;   // Faces: the vertices; Points: the point set
   std::vector<std::vector<int>> faces;  // Faces only: 0-based vertex indices, CCW from outside
   std::vector<std::size_t> face_lines;  // Faces read from a file: the line of each face (0 if none)
+
+  /// The face list to build: a single face is that face as a double-sided
+  /// polygon (sepax's flat shape: the loop and the same loop reversed), so a
+  /// file holding one triangle is the double-sided triangle.
+  std::vector<std::vector<int>> closed_faces() const {
+    if (faces.size() != 1) return faces;
+    return {faces[0], std::vector<int>(faces[0].rbegin(), faces[0].rend())};
+  }
 };
 
 }  // namespace sepax::cli::io

@@ -64,6 +64,16 @@ TEST_CASE("audit: a points file and an OFF file, as for sepax query", "[audit]")
   CHECK(builtin.out == r.out);
 }
 
+TEST_CASE("audit: a file with one face is that polygon, double-sided", "[audit]") {
+  const std::string obj = temp_file("tri1.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const Run r = audit({obj, "cube", "--pose", "0.25", "0.25", "1"});
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("A: 3 vertices, 3 edges, 2 faces (double-sided polygon"));
+  const Run builtin = audit({"triangle", "cube", "--pose", "0.25", "0.25", "1"});
+  CHECK(builtin.status == 0);
+  CHECK(builtin.out == r.out);
+}
+
 TEST_CASE("audit: coordinates are rounded to float, with a note", "[audit]") {
   const std::string tri = temp_file("tri01.xyz", "0.1 0 0\n1 0 0\n0 1 0.3\n");
   const Run r = audit({tri, "cube"});

@@ -189,6 +189,42 @@ TEST_CASE("shape builder: face-list errors name the file and the line of the fac
   CHECK_THROWS_WITH(shape_counts(d3, NumberKind::Exact), Catch::StartsWith("inward.off"));
 }
 
+TEST_CASE("shape builder: a coordinate beyond float's range is named, not called non-finite", "[runner]") {
+  std::istringstream in(
+      "OFF\n4 4 6\n1 1 1\n1 -1 -1\n-1 1e300 -1\n-1 -1 1\n"
+      "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+  const auto d = io::read_off(in, "big.off");
+  CHECK_THROWS_WITH(shape_counts(d, NumberKind::Float),
+                    Catch::StartsWith("big.off: coordinate y of vertex 2 (1e+300) is beyond the range of float"));
+  io::ShapeData pts;
+  pts.kind = io::ShapeData::Kind::Points;
+  pts.name = "big.pts";
+  pts.vertices = {{0, 0, 0}, {4e38, 0, 0}, {0, 4e38, 0}, {0, 0, -4e38}};
+  CHECK_THROWS_WITH(shape_counts(pts, NumberKind::Float),
+                    Catch::StartsWith("big.pts: coordinate x of point 1 (4e+38) is beyond the range of float"));
+  // double holds it: a tetrahedron
+  CHECK(shape_counts(pts, NumberKind::Double).faces == 4);
+}
+
+TEST_CASE("shape builder: a single face is that polygon, double-sided", "[runner]") {
+  std::istringstream in("OFF\n4 1 4\n0 0 0\n2 0 0\n2 1 0\n0 1 0\n4 0 1 2 3\n");
+  const auto d = io::read_off(in, "quad.off");
+  for (auto n : {NumberKind::Float, NumberKind::Double, NumberKind::Exact}) {
+    INFO(name(n));
+    const ShapeCounts c = shape_counts(d, n);
+    CHECK(c.vertices == 4);
+    CHECK(c.edges == 4);
+    CHECK(c.faces == 2);
+  }
+  const auto q = build_shape<double>(d);
+  CHECK(q.is_flat());
+  CHECK(q.plane(0).normal.z() > 0);  // the loop as given is the front face
+  CHECK(q.plane(1).normal.z() < 0);
+  // two faces that are not a closed surface are still an error
+  std::istringstream in2("OFF\n4 2 0\n0 0 0\n2 0 0\n2 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  CHECK_THROWS_AS(shape_counts(io::read_off(in2, "two.off"), NumberKind::Double), InvalidInput);
+}
+
 TEST_CASE("shape builder: a posed exact shape has exactly the posed double coordinates", "[runner]") {
   const auto prism = io::builtin_shape("prism:7");
   std::mt19937 rng(3);
