@@ -182,26 +182,48 @@ class ConvexPolyhedron {
   /// are recomputed in T.  No geometric re-validation: the exact image of a
   /// float polyhedron may have faces that are planar only up to float rounding,
   /// and sepax defines each face's plane by its plane triple exactly so that
-  /// float and exact runs see "the same inputs".
+  /// float and exact runs see "the same inputs".  The range is checked as for
+  /// from_faces (a double shape beyond float's range is BadScale, not
+  /// infinities).
   template <Number U>
   static ConvexPolyhedron convert_from(const ConvexPolyhedron<U>& other) {
     ConvexPolyhedron p;
     p.vertices_.reserve(other.vertex_count());
-    for (const auto& v : other.vertices()) p.vertices_.push_back(vec_cast<T>(v));
+    for (const auto& v : other.vertices()) {
+      p.vertices_.push_back(vec_cast<T>(v));
+      for (int c = 0; c < 3; ++c) {
+        if (!number_traits<T>::is_finite(p.vertices_.back()[c]) && number_traits<U>::is_finite(v[c])) {
+          fail(ErrorCode::BadScale, std::string("coordinate ") + "xyz"[c] + " of vertex " +
+                                        std::to_string(p.vertices_.size() - 1) + " (" +
+                                        num_str(number_traits<U>::to_double(v[c])) + ") is beyond the range of " +
+                                        std::string(number_traits<T>::name));
+        }
+      }
+    }
     p.half_edges_ = other.half_edges();
     p.faces_ = other.faces();
     p.fan_start_ = other.fan_start();
     p.fan_ = other.fan();
+    p.check_coordinates();
     p.compute_derived();
+    p.check_new_range();
     return p;
   }
 
   /// Same topology with new vertex positions (for rigid motions: the caller
   /// guarantees the new positions are a rigid image of the old ones).
+  /// Throws InvalidInput: NonFinite (a NaN or infinite coordinate), BadScale
+  /// (float/double: coordinates beyond the range check_range() documents).
   ConvexPolyhedron with_vertices(std::vector<Vec3<T>> vertices) const {
     ConvexPolyhedron p = *this;
     p.vertices_ = std::move(vertices);
+    if (p.vertices_.size() != vertices_.size()) {
+      fail(ErrorCode::BadIndex, "with_vertices: " + std::to_string(p.vertices_.size()) + " vertices for a shape of " +
+                                    std::to_string(vertices_.size()));
+    }
+    p.check_coordinates();
     p.compute_derived();
+    p.check_new_range();
     return p;
   }
 
@@ -796,6 +818,17 @@ class ConvexPolyhedron {
   double triple_aspect(int f) const {
     const auto& t = face(f).plane_vertices;
     return detail::triangle_aspect(vertex(t[0]), vertex(t[1]), vertex(t[2]));
+  }
+
+  // convert_from and with_vertices: no geometric re-validation, but the new
+  // coordinates must be finite (check_coordinates, before the planes) and, for
+  // float/double, within check_range()'s range, or the planes and every SAT
+  // on them would be infinities and NaN.
+  void check_new_range() {
+    if constexpr (!number_traits<T>::is_exact) {
+      if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
+      check_range();
+    }
   }
 
   void validate_geometry() {

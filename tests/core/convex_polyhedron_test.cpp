@@ -402,6 +402,46 @@ TEMPLATE_TEST_CASE("scale: out-of-range input gets BadScale naming the problem",
   CHECK(!contains(f.message, "zero area"));
 }
 
+TEMPLATE_TEST_CASE("scale: with_vertices and convert_from check the new coordinates", "[polyhedron][scale][errors]",
+                   float, double) {
+  using T = TestType;
+  const auto cube = ConvexPolyhedron<T>::from_faces(cube_vertices<T>(), cube_faces);
+  auto code_of = [](auto&& make) {
+    try {
+      (void)make();
+    } catch (const InvalidInput& e) {
+      return std::make_pair(e.code(), std::string(e.what()));
+    }
+    return std::make_pair(ErrorCode::Parse, std::string("no error"));
+  };
+  // a rigid image moved beyond the range: BadScale, not infinite planes
+  const T far = static_cast<T>(static_cast<double>(std::numeric_limits<T>::max()) / 4);
+  auto moved = cube.vertices();
+  for (auto& q : moved) q[0] += far;
+  auto e = code_of([&] { return cube.with_vertices(moved); });
+  CHECK(e.first == ErrorCode::BadScale);
+  CHECK(contains(e.second, "out of range"));
+  moved = cube.vertices();
+  moved[3][1] = std::numeric_limits<T>::quiet_NaN();
+  e = code_of([&] { return cube.with_vertices(moved); });
+  CHECK(e.first == ErrorCode::NonFinite);
+  CHECK(contains(e.second, "vertex 3"));
+  moved.pop_back();
+  e = code_of([&] { return cube.with_vertices(moved); });
+  CHECK(e.first == ErrorCode::BadIndex);
+  // a valid image converts without a change
+  CHECK(ConvexPolyhedron<float>::convert_from(cube).vertex_count() == 8);
+  // a double shape beyond float's range names the coordinate
+  if constexpr (std::is_same_v<T, double>) {
+    auto big = cube.vertices();
+    for (auto& q : big) q *= 1e300;
+    const auto huge = ConvexPolyhedron<double>::from_faces(big, cube_faces);
+    e = code_of([&] { return ConvexPolyhedron<float>::convert_from(huge); });
+    CHECK(e.first == ErrorCode::BadScale);
+    CHECK(contains(e.second, "beyond the range of float"));
+  }
+}
+
 // ---- sliver faces: zero area up to rounding -----------------------------------
 
 TEMPLATE_TEST_CASE("validation: a face that is zero-area only up to rounding is refused",
