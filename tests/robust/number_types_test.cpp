@@ -12,6 +12,11 @@
 #include <gmpxx.h>
 
 #include <sepax/robust/number_types.hpp>
+#include <sepax/separation.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace {
 
@@ -52,4 +57,71 @@ TEST_CASE("Epeck::FT decides signs exactly near zero", "[robust][number_types]")
   CHECK(CGAL::sign(FT(0.1) * FT(3) - FT(0.1) - FT(0.1) - FT(0.1)) == CGAL::ZERO);
   CHECK(CGAL::sign(FT(1) / FT(3) * FT(3) - FT(1)) == CGAL::ZERO);
   CHECK(FT(1) / FT(10) * FT(10) == FT(1));
+}
+
+TEST_CASE("GMP rationals convert to the nearest double", "[robust][number_types]") {
+  // IEEE division is correctly rounded: p / q in double is the double nearest
+  // to the rational p/q.  mpq_get_d truncates, so about half of these differ.
+  std::uint64_t x = 88172645463325252ull;
+  int truncated_differs = 0;
+  for (int i = 0; i < 2000; ++i) {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    const double p = static_cast<double>(static_cast<std::int64_t>(x % 2000001) - 1000000);
+    const double q = static_cast<double>(x / 2000001 % 999983 + 1);
+    const mpq_class r = mpq_class(p) / mpq_class(q);
+    CHECK(sepax::number_traits<mpq_class>::to_double(r) == p / q);
+    CHECK(sepax::number_traits<CGAL::Gmpq>::to_double(CGAL::Gmpq(p) / CGAL::Gmpq(q)) == p / q);
+    truncated_differs += r.get_d() != p / q;
+  }
+  CHECK(truncated_differs > 100);  // the test can tell the two apart
+  CHECK(sepax::number_traits<mpq_class>::to_double(mpq_class(1e308) * 4) == std::numeric_limits<double>::infinity());
+}
+
+TEST_CASE("exact separations convert to double without spurious overflow", "[robust][number_types]") {
+  using sepax::Separation;
+  using Q = mpq_class;
+  // value = num / sqrt(norm2)
+  CHECK(to_double(Separation<Q>{Q(3), Q(4)}) == 1.5);
+  CHECK(to_double(Separation<Q>{Q(-3), Q(4)}) == -1.5);
+  CHECK(to_double(Separation<Q>{Q(0), Q(4)}) == 0.0);
+  // num and norm2 beyond double's range, the value not: 1e308 and 1e200
+  CHECK(to_double(Separation<Q>{Q(1e308) * 4, Q(16)}) == 1e308);
+  // (a few roundings: within 2 ulp)
+  auto near = [](double v, double want) { return std::abs(v - want) <= 4 * std::numeric_limits<double>::epsilon() * std::abs(want); };
+  const Q big = Q(1e200) * Q(1e200) * Q(1e200) * Q(1e200);  // norm2 ~ 1e800, num ~ 1e600
+  CHECK(near(to_double(Separation<Q>{Q(1e200) * Q(1e200) * Q(1e200), big}), 1e200));
+  CHECK(near(to_double(Separation<Q>{-Q(1e200) * Q(1e200) * Q(1e200), big}), -1e200));
+  // and tiny: norm2 ~ 1e-1200, num ~ 1e-900, value 1e-300
+  const Q tiny = Q(1e-300) * Q(1e-300);
+  CHECK(near(to_double(Separation<Q>{Q(1e-300) * Q(1e-300) * Q(1e-300), tiny * tiny}), 1e-300));
+  // the nearest double where value^2 is a normal double: against MPFR at
+  // 300 bits, rounded once more to 53 (the odds that this second rounding
+  // matters are about 2^-247 per value)
+  auto nearest = [](const Q& num, const Q& n2) {
+    mpfr_t a, b;
+    mpfr_init2(a, 300);
+    mpfr_init2(b, 300);
+    mpfr_set_q(b, n2.get_mpq_t(), MPFR_RNDN);
+    mpfr_rec_sqrt(b, b, MPFR_RNDN);
+    mpfr_set_q(a, num.get_mpq_t(), MPFR_RNDN);
+    mpfr_mul(a, a, b, MPFR_RNDN);
+    const double d = mpfr_get_d(a, MPFR_RNDN);
+    mpfr_clear(a);
+    mpfr_clear(b);
+    return d;
+  };
+  int plain_differs = 0;
+  for (int n2 = 2; n2 < 400; ++n2) {
+    for (const Q& num : {Q(7), Q(-2, 5), Q(12345, 677)}) {
+      const double v = to_double(Separation<Q>{num, Q(n2)});
+      CHECK(v == nearest(num, Q(n2)));
+      plain_differs += v != num.get_d() / std::sqrt(static_cast<double>(n2));
+    }
+  }
+  CHECK(plain_differs > 10);  // the naive quotient is not always the nearest
+  // the tetrahedron's face against the point (0.2, 0.2, 0.2) in doubles
+  const Q p(0.2);
+  CHECK(to_double(Separation<Q>{3 * p - 1, Q(3)}) == nearest(3 * p - 1, Q(3)));
 }

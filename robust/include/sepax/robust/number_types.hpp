@@ -11,11 +11,14 @@
 // | CORE::Expr (CGAL's CORE)   | yes   | yes  | yes        | exact sqrt: normalised separations     |
 //
 // from_double is exact for all of them (a double is a dyadic rational).
-// to_double is for reporting only.  Eigen::NumTraits for mpq_class is
+// to_double is for reporting only; for the GMP rationals it is the nearest
+// double (GMP's mpq_get_d, behind CGAL::Gmpq's too, truncates: every exact
+// value printed one ulp towards zero, below the double run's).  Eigen::NumTraits for mpq_class is
 // provided here (CGAL provides it for its own types).
 #pragma once
 
 #include <gmpxx.h>
+#include <mpfr.h>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Lazy_exact_nt.h>
@@ -48,6 +51,18 @@ struct NumTraits<mpq_class> : GenericNumTraits<mpq_class> {
 namespace sepax {
 
 namespace detail {
+/// The double nearest to q, ties to even (MPFR rounds the rational once to
+/// 53 bits; only below 2^-1022, in double's subnormal range, is the result
+/// rounded a second time).  Beyond double's range: +-infinity.
+inline double nearest_double(mpq_srcptr q) {
+  mpfr_t f;
+  mpfr_init2(f, 53);
+  mpfr_set_q(f, q, MPFR_RNDN);
+  const double d = mpfr_get_d(f, MPFR_RNDN);
+  mpfr_clear(f);
+  return d;
+}
+
 struct exact_rational_traits {
   static constexpr bool is_exact = true;
   static constexpr bool has_sqrt = false;
@@ -60,7 +75,7 @@ template <>
 struct number_traits<mpq_class> : detail::exact_rational_traits {
   static constexpr std::string_view name = "mpq";
   static mpq_class from_double(double d) { return mpq_class(d); }
-  static double to_double(const mpq_class& x) { return x.get_d(); }
+  static double to_double(const mpq_class& x) { return detail::nearest_double(x.get_mpq_t()); }
   static bool is_finite(const mpq_class&) { return true; }
 };
 
@@ -68,7 +83,7 @@ template <>
 struct number_traits<CGAL::Gmpq> : detail::exact_rational_traits {
   static constexpr std::string_view name = "gmpq";
   static CGAL::Gmpq from_double(double d) { return CGAL::Gmpq(d); }
-  static double to_double(const CGAL::Gmpq& x) { return CGAL::to_double(x); }
+  static double to_double(const CGAL::Gmpq& x) { return detail::nearest_double(x.mpq()); }
   static bool is_finite(const CGAL::Gmpq&) { return true; }
 };
 
