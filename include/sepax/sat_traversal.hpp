@@ -88,6 +88,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <concepts>
 #include <cstdint>
@@ -167,28 +168,52 @@ class Traversal {
     const int* sa = &st[0];  // faces of A (arc() updates them through st)
     std::int64_t pruned = 0;
     bool stop = false;
-    for (int ea = 0; ea < ne; ++ea) {
-      // Both ends in the closed region of the same unique support vertex:
-      // the region is convex, the arc stays inside, no crossing.
-      const int f0 = wa_.edge_face(ea, 0), f1 = wa_.edge_face(ea, 1);
-      const int s0 = sa[f0], s1 = sa[f1];
-      if (s0 == s1) {
-        // the same unique support vertex, certified at both ends
-        if ((s0 & 3) == kCertified) continue;
-        // both climbs cut off at the same vertex x: both heights of x are
-        // known to be below the best (arc_below_best with x)
-        if ((s0 & 3) == 0 && prune_arcs_ && best_nonpositive()) {
+    // Arcs in chunks of 64.  First, without a data-dependent branch (its
+    // outcome varies from arc to arc and a mispredicted branch costs more
+    // than the test), the arcs that steps 1 and 2 already settle are marked:
+    // both ends with the same state, and
+    //  * the same unique support vertex, certified at both ends: both ends
+    //    are in the closed region of that vertex, which is convex, so the arc
+    //    stays inside it: no crossing;
+    //  * or both climbs cut off at the same vertex x and the best <= 0: both
+    //    heights of x are exactly below the best (arc_below_best with x).
+    //    best_nonpositive() is asked once per chunk; the best only grows, so
+    //    heights below an earlier best are below every later one, and an arc
+    //    whose Minkowski faces are all below a best <= 0 stays pruned.
+    // The other arcs go through the full test, on their current states.
+    // Both passes are kernel decisions, so the exact walk marks the same arcs.
+    for (int base = 0; base < ne && !stop; base += 64) {
+      const int end = ne - base < 64 ? ne : base + 64;
+      const int prunable = prune_arcs_ && best_nonpositive() ? 1 : 0;
+      std::uint64_t settled = 0;
+      for (int ea = base; ea < end; ++ea) {
+        const int s0 = sa[wa_.edge_face(ea, 0)], s1 = sa[wa_.edge_face(ea, 1)];
+        const int kind = s0 & 3;
+        const int cut = static_cast<int>(kind == 0) & prunable;
+        const int skip = static_cast<int>(s0 == s1) & (static_cast<int>(kind == kCertified) | cut);
+        settled |= static_cast<std::uint64_t>(skip) << (ea - base);
+        pruned += static_cast<int>(s0 == s1) & cut;
+      }
+      const std::uint64_t all = end - base == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << (end - base)) - 1;
+      for (std::uint64_t todo = ~settled & all; todo != 0; todo &= todo - 1) {
+        const int ea = base + std::countr_zero(todo);
+        const int f0 = wa_.edge_face(ea, 0), f1 = wa_.edge_face(ea, 1);
+        const int s0 = sa[f0], s1 = sa[f1];
+        if (s0 == s1) {
+          if ((s0 & 3) == kCertified) continue;
+          if ((s0 & 3) == 0 && prune_arcs_ && best_nonpositive()) {
+            ++pruned;
+            continue;
+          }
+        }
+        if (arc_below_best(s0, s1, f0, f1)) {
           ++pruned;
           continue;
         }
-      }
-      if (arc_below_best(s0, s1, f0, f1)) {
-        ++pruned;
-        continue;
-      }
-      if (arc(st, ea, f0, f1)) {
-        stop = true;
-        break;
+        if (arc(st, ea, f0, f1)) {
+          stop = true;
+          break;
+        }
       }
     }
     ts_.pruned_arcs += pruned;
