@@ -114,7 +114,8 @@ const char* builtin_shapes_help() {
          "  prism:N            regular N-gon prism around z, circumradius 1, z in [-1,1]\n"
          "  polygon:N          double-sided regular N-gon in the plane z = 0, circumradius 1\n"
          "  triangle           double-sided triangle (0,0,0), (1,0,0), (0,1,0)\n"
-         "  FILE.off, FILE.obj face lists; FILE.pts, FILE.xyz, FILE.txt: points (hulled)\n";
+         "  FILE.off, FILE.obj face lists (one face: a double-sided polygon);\n"
+         "                     FILE.pts, FILE.xyz, FILE.txt: points (hulled)\n";
 }
 
 }  // namespace sepax::cli::io
