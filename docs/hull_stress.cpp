@@ -10,7 +10,9 @@
 // over ~300 directions (a lower bound on their Hausdorff distance), and the
 // Euclidean distance of the farthest point from the hull (max_distance in
 // hull_point_sets.hpp, the measure the unit test asserts; "dist" below).
-// Sets above `report` are listed.  docs/hull.md quotes its output.
+// Sets above `report` are listed; and per seed the hulls with vertices that
+// are not input points (projected slabs, flat; tents, solid: docs/hull.md).
+// docs/hull.md quotes its output.
 //   g++ -std=c++20 -O2 -I include -I /usr/include/eigen3 docs/hull_stress.cpp -o /tmp/hull_stress
 //   /tmp/hull_stress both 1 12 10000        # [float|double|both] first_seed last_seed count [only_iter report]
 #include <sepax/convex_hull.hpp>
@@ -48,6 +50,7 @@ void run(unsigned seed, int iters, int only, double report) {
   std::mt19937 rng(seed);
   int over64 = 0, over4=0, over1=0, n=0, err=0, lerr=0; double worst = -1e300; int worst_it=-1; double gworst = -1e300; int gworst_it = -1, gover64 = 0, gover4 = 0;
   double dworst = -1e300; int dworst_it = -1, dover64 = 0, dover4 = 0;
+  int synthetic_flat = 0, synthetic_solid = 0;  // hulls with vertices that are not input points
   for (int iter = 0; iter < iters; ++iter) {
     const int kind = iter % 9;
     const auto pts = to_t<T>(random_point_set(rng, kind));
@@ -68,6 +71,13 @@ void run(unsigned seed, int iters, int only, double report) {
       if (dist > 4) ++dover4;
       if (gap > 4) ++gover4;
       ++n;
+      bool inputs = true;
+      for (const auto& v : h.vertices()) {
+        bool found = false;
+        for (const auto& p : pts) found = found || p == v;
+        inputs = inputs && found;
+      }
+      if (!inputs) ++(h.is_flat() ? synthetic_flat : synthetic_solid);
       if (o > 64) ++over64;
       if (o > 4) ++over4;
       if (o > 1) ++over1;
@@ -76,7 +86,7 @@ void run(unsigned seed, int iters, int only, double report) {
     } catch (const InvalidInput&) { ++err; }
     catch (const std::logic_error& e) { ++lerr; std::printf("  LOGIC %s seed %u iter %d: %s\n", sizeof(T)==4?"float":"double", seed, iter, e.what()); }
   }
-  std::printf("%s seed %u: %d hulls, %d errors, %d logic; >1: %d, >4: %d, >64: %d; worst %.3g (iter %d); support gap >4: %d >64: %d worst %.3g (iter %d); dist >4: %d >64: %d worst %.3g (iter %d)\n", sizeof(T)==4?"float":"double", seed, n, err, lerr, over1, over4, over64, worst, worst_it, gover4, gover64, gworst, gworst_it, dover4, dover64, dworst, dworst_it);
+  std::printf("%s seed %u: %d hulls, %d errors, %d logic; >1: %d, >4: %d, >64: %d; worst %.3g (iter %d); support gap >4: %d >64: %d worst %.3g (iter %d); dist >4: %d >64: %d worst %.3g (iter %d); projected slabs %d, tents %d\n", sizeof(T)==4?"float":"double", seed, n, err, lerr, over1, over4, over64, worst, worst_it, gover4, gover64, gworst, gworst_it, dover4, dover64, dworst, dworst_it, synthetic_flat, synthetic_solid);
 }
 int main(int argc, char** argv) {
   const std::string type = argc > 1 ? argv[1] : "both";

@@ -61,9 +61,13 @@
 //      round and it (or its shadow on that plane) is more than 32 eps from
 //      a point, the flat polygon of the points projected onto the slab's
 //      mid-plane is returned when nearer every point (its vertices are
-//      projections, not input points).  (docs/hull.md: every point within
-//      hull_outside_bound = 64 x eps of every face plane; and of the hull,
-//      Euclidean, except slabs more than 2 x 63 eps thick.)
+//      projections, not input points).  If the result would still leave a
+//      point more than 32 eps out (a slab corner whose rim faces validation
+//      cannot tell apart), the hull of the points plus a copy of each lost
+//      point lifted hull_tent_lift (8) x eps into the slab (a "tent") is
+//      returned when it keeps every point within 2 eps.  (docs/hull.md:
+//      every point within hull_outside_bound = 64 x eps of every face
+//      plane, and of the hull, Euclidean, for every set measured.)
 //
 // Float T computes every decision on the points translated by the centre of
 // their bounding box (so an offset from the origin does not cost precision);
@@ -98,10 +102,8 @@ namespace sepax {
 
 /// float/double: how far outside its hull an input point may be, in units of
 /// Tolerances<T>::coplanar * extent (docs/hull.md, "Guarantees"): its height
-/// above any face plane, for every point set; and its Euclidean distance from
-/// the hull, for every set except slabs more than 2 x hull_slab_half_thickness
-/// thick (measured, not proven; docs/hull.md gives the numbers and the
-/// exceptions).
+/// above any face plane, and its Euclidean distance from the hull (measured
+/// over every stress set, not proven; docs/hull.md gives the numbers).
 inline constexpr double hull_outside_bound = 64;
 
 /// float/double: a point set whose repair rounds failed (docs/hull.md) and
@@ -111,6 +113,15 @@ inline constexpr double hull_outside_bound = 64;
 /// One less than hull_outside_bound: every point is within its height (at
 /// most this) of that polygon, and the rest is left for rounding.
 inline constexpr double hull_slab_half_thickness = hull_outside_bound - 1;
+
+/// float/double: a point set whose repair rounds lost a slab corner
+/// (docs/hull.md, "Slab corners") is returned as the hull of its points
+/// plus a copy of each lost point moved this many coplanar * extent into
+/// the slab; those copies are vertices that are not input points, and the
+/// result reaches at most this far beyond the points' hull.  Eight: above
+/// the merge tolerance (1) and validation's coplanar-face tolerance (1/4)
+/// with room for the rim's own rise near the corner (a few eps at most).
+inline constexpr double hull_tent_lift = 8;
 
 namespace hull_detail {
 
@@ -210,8 +221,31 @@ class Builder {
               }
             }
           }
-          if (best_height > height_safe && best_height > best_h_height) return std::move(*best_h);
-          return std::move(*best);
+          std::optional<ConvexPolyhedron<T>>& chosen =
+              best_height > height_safe && best_height > best_h_height ? best_h : best;
+          // A slab corner that every round lost (below, tent_hull): if the
+          // result would leave a point more than height_safe out, the hull
+          // of the points plus a copy of each point it loses, lifted
+          // tent_lift * eps into the slab, when nearer every point and its
+          // shadow on the slab's plane holds every point's shadow (the
+          // distance check above can miss a lost needle tip: the tent is
+          // for slabs).
+          if (best_out > height_safe && tent_) {
+            std::vector<int> none;
+            double c_height = 0;
+            out_vertex_.assign(pts_.size(), 0);  // (measure every point)
+            const double c_out = outside_points(*chosen, none, c_height);
+            Vec3<double> t_nrm(0, 0, 0);
+            if (c_out > height_safe) {
+              if (auto t = tent_hull(*chosen, t_nrm)) {
+                double t_height = 0;
+                const double t_out = std::max(outside_points(*t, none, t_height), shadow_out(*t, t_nrm));
+                if (t_out <= repair_tol && (t_height <= height_safe || t_height <= c_height))
+                  return std::move(*t);
+              }
+            }
+          }
+          return std::move(*chosen);
         }
         any_pinned_ = true;
         for (int p : outside) {
@@ -233,6 +267,76 @@ class Builder {
   // x coplanar * extent: the largest half-thickness of a slab replaced by
   // its projected polygon (that polygon's height and distance bound)
   static constexpr double slab_max = hull_slab_half_thickness;
+  // x coplanar * extent: how far tent_hull lifts a lost corner into the slab
+  // (and so how far its result may reach beyond the points' hull)
+  static constexpr double tent_lift = hull_tent_lift;
+
+  // Float T, the tent fallback (run() above): when every round, the
+  // simplex and the slab polygon leave a point more than repair_tol out,
+  // the hull of the input points plus, for each such point p, the point
+  // p + tent_lift * eps * m, m the unit normal of the thinnest direction
+  // of the set (the face normal of h across which the points spread
+  // least) pointing from p's side towards the middle of that spread; built
+  // by a second Builder (which does not try a tent itself), so validated.
+  //
+  // Why (docs/hull.md, "Slab corners"): on a slab whose rim faces rise
+  // inward with slope t/d (thickness t, a few hundred eps, over a rim
+  // width d of a good part of the extent), the two rim faces at a bottom
+  // corner whose turn is small are within a fraction of eps of coplanar:
+  // validation refuses them as adjacent coplanar faces (coplanar/4), and
+  // merged they leave the corner on two faces only (bottom and rim), so it
+  // must go, far beyond the bottom's edge (the rim's edge on the bottom is
+  // horizontally undetermined by eps * d / t).  No polyhedron with input
+  // points as vertices keeps it.  The lifted copy p' sees the rim faces at
+  // p (it is tent_lift * eps above them; they rise by much less than that
+  // between p and its neighbours) and not the bottom; its cone makes two
+  // near-vertical faces through the bottom edges at p (their far vertices
+  // are as far apart as p is from its neighbours' segment: not coplanar)
+  // and rim faces, so p keeps three faces and p' at least three.  Every
+  // input point is inside the result (it contains the points' hull); the
+  // result reaches at most tent_lift * eps beyond it (p' is that far from
+  // p).  None if the second build fails.
+  std::optional<ConvexPolyhedron<T>> tent_hull(const ConvexPolyhedron<T>& h, Vec3<double>& nrm) {
+    std::vector<int> lost;
+    double lost_height = 0;
+    out_vertex_.assign(pts_.size(), 0);  // (measure every point)
+    outside_points(h, lost, lost_height);
+    if (lost.empty()) return std::nullopt;
+    const std::vector<PolygonFace> faces = polygon_faces(h);
+    double lo = 0, hi = 0, spread = 1e300;
+    for (const auto& fc : faces) {
+      if (squared_norm(fc.n) == 0) continue;
+      double l = 1e300, u = -1e300;
+      for (std::size_t i = 0; i < pts_.size(); ++i) {
+        const double t = dot(fc.n, vec_to_double(Q(static_cast<int>(i))));
+        l = std::min(l, t);
+        u = std::max(u, t);
+      }
+      if (u - l < spread) {
+        spread = u - l;
+        nrm = fc.n;
+        lo = l;
+        hi = u;
+      }
+    }
+    if (!(spread < 1e300)) return std::nullopt;
+    const double lift = tent_lift * to_double(eps_), mid = (lo + hi) / 2;
+    std::vector<Vec3<T>> aug(in_.begin(), in_.end());
+    for (int p : lost) {
+      const double hp = dot(nrm, vec_to_double(Q(p)));
+      const Vec3<double> m = hp < mid ? nrm : Vec3<double>(-nrm);
+      aug.push_back(vec_cast<T>(Vec3<double>(vec_to_double(X(p)) + lift * m)));
+    }
+    Builder<T> second(std::span<const Vec3<T>>(aug.data(), aug.size()));
+    second.tent_ = false;
+    try {
+      auto r = second.run();
+      out_vertex_.assign(pts_.size(), 0);  // (its vertices are measured too)
+      return r;
+    } catch (const InvalidInput&) {
+      return std::nullopt;
+    }
+  }
 
   // Float T: the welded points more than repair_tol * eps above a face plane
   // of h (evaluated as a user would, on the input coordinates; plus their
@@ -1343,11 +1447,12 @@ class Builder {
       // between their neighbours: then the two faces met at a fold, merged
       // within eps over a real corner (on a needle or thin slab every face
       // is within eps of every vertex: the tip of a needle, a third of its
-      // length, was lost this way).  The faces it is on are split back into
-      // their triangles (which may not merge again) and merged again.
+      // length, was lost this way).  The less planar of the two faces it is
+      // on (fold_choice) is split back into its triangles (which may not
+      // merge again) and the faces merged again.
       // Every split marks more triangles, so this terminates; a face that
       // cannot be split any more drops the vertex.
-      std::vector<int> fold_groups;
+      std::map<int, std::vector<int>> folds;  // stranded pinned vertex -> its groups
       for (std::size_t li = 0; li < loops.size(); ++li) {
         const auto& l = loops[li];
         const std::size_t n = l.size();
@@ -1358,10 +1463,10 @@ class Builder {
           while (b != i && degree[l[b]] < 3) b = (b + 1) % n;
           if (a == i || b == i) continue;
           if (segment_distance(l[i], l[a], l[b]) > far_tol * to_double(eps_))
-            fold_groups.push_back(loop_group[li]);
+            folds[l[i]].push_back(loop_group[li]);
         }
       }
-      if (split_groups(live, fold_groups)) {
+      if (split_groups(live, fold_choice(live, folds))) {
         reject.clear();
         return merge_and_build(reject);
       }
@@ -1535,6 +1640,48 @@ class Builder {
     }
     return false;
     }
+  }
+
+  // Float T: which faces to split at folds (vertex -> the groups it is
+  // on).  Of the two faces a stranded pinned vertex is on, only the one
+  // that is less planar (the larger height of one of its vertices above or
+  // below its fitted plane) is split, if it can be (two or more plain
+  // unsplit triangles; else the other).  A vertex on two faces, while
+  // being a corner of both, means one of them bends over it: on a slab,
+  // the exactly planar bottom and a rim face merged from two triangles
+  // within eps of each other's plane (they fold over the corner).
+  // Splitting the planar face as well made its triangles unable to merge
+  // again, and validation then saw them as coplanar neighbours, which cost
+  // a corner each (7 of one set's 8 bottom corners).  If the less planar
+  // face folds again after its split, the next pass finds it unsplittable
+  // and splits the other, so no fold is left standing.
+  std::vector<int> fold_choice(const std::vector<int>& live, const std::map<int, std::vector<int>>& folds) {
+    std::vector<int> ids;
+    if (folds.empty()) return ids;
+    std::unordered_map<int, int> plain;  // group -> plain unsplit triangles
+    for (int f : live)
+      plain[find(f)] += !is_zero(tris_[sz(f)].pl.normal) && nomerge_[sz(f)] == 0;
+    auto bend = [&](int g) {
+      const Group& gr = groups_[sz(g)];
+      double d = 0;
+      for (int v : gr.verts) d = std::max(d, std::abs(to_double(height(gr.pl, v))));
+      return d;
+    };
+    for (const auto& [v, gs0] : folds) {
+      std::vector<int> gs = gs0;
+      std::sort(gs.begin(), gs.end());
+      gs.erase(std::unique(gs.begin(), gs.end()), gs.end());
+      std::vector<std::pair<double, int>> order;
+      for (int g : gs) order.emplace_back(-bend(g), g);
+      std::sort(order.begin(), order.end());
+      for (const auto& [negd, g] : order) {
+        if (plain[g] >= 2) {
+          ids.push_back(g);
+          break;
+        }
+      }
+    }
+    return ids;
   }
 
   // Split groups (ids of their root triangles) back into their triangles,
@@ -1806,6 +1953,7 @@ class Builder {
   std::vector<std::vector<int>> star_;  // float: vertex -> live triangles around it
   std::vector<int> nomerge_;  // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
+  bool tent_ = true;  // float: may try tent_hull (not in the second build)
 };
 
 }  // namespace hull_detail
