@@ -337,24 +337,26 @@ class RobustKernel {
   /// arc_err_b_t_) >= the bound of each value (see the header: E_arc, rounded
   /// up to T) on the wrong side, so its exact sign is wrong as well.  A
   /// survivor whose four values are all beyond the bound with the crossing
-  /// signs (all > bound or all < -bound: every exact sign is certain) is
-  /// accepted as it is; the others (some value within the bound, or NaN) go
-  /// through minkowski_face, which decides them exactly.  So the result is exactly
+  /// signs (all > bound or all < -bound: every exact sign is certain)
+  /// crosses.  When every survivor of the batch is certain (the common case:
+  /// the lanes report it as one flag), the survivors are the answer, with
+  /// no per-pair code after the lanes (a second pass over them cost a
+  /// mispredicted loop exit per edge of A).  Otherwise (some value within the
+  /// bound, or NaN) every survivor goes through minkowski_face, which decides
+  /// exactly (the certain ones cost it only its filters, which pass: their
+  /// per-side bounds are <= arc_lane_bound_).  So the result is exactly
   /// {eb : minkowski_face(ea, eb)}, with or without FMA contraction (the bound
   /// holds either way).  The lanes need both shapes lanes_bounded() (no
   /// overflow, no NaN); otherwise every pair takes minkowski_face.
   SEPAX_ROBUST_INLINE int minkowski_faces(int ea, int lo, int hi, int* out) const {
-    int n = 0;
     if (lanes_) {
+      bool uncertain;
       const int m = simd::arc_candidates<true>(b_, lo, hi, a_.edge_dir(ea), a_.edge_normal(ea, 0),
-                                               a_.edge_normal(ea, 1), arc_lane_bound_, out);
-      for (int i = 0; i < m; ++i) {
-        const int e = out[i];
-        if (e >= 0) out[n++] = e;                              // certainly crossing
-        else if (minkowski_face(ea, ~e)) out[n++] = ~e;        // some value within the bound
-      }
-      return n;
+                                               a_.edge_normal(ea, 1), arc_lane_bound_, out, &uncertain);
+      if (!uncertain) [[likely]] return m;
+      return minkowski_faces_resolve(ea, m, out);
     }
+    int n = 0;
     for (int eb = lo; eb < hi; ++eb) {
       if (minkowski_face(ea, eb)) out[n++] = eb;
     }
@@ -362,6 +364,16 @@ class RobustKernel {
   }
 
  private:
+  // The lane candidates out[0, m) of a batch with some uncertain pair, each
+  // decided by minkowski_face (exact); the crossing ones kept, in order.
+  SEPAX_ROBUST_COLD int minkowski_faces_resolve(int ea, int m, int* out) const {
+    int n = 0;
+    for (int i = 0; i < m; ++i) {
+      if (minkowski_face(ea, out[i])) out[n++] = out[i];
+    }
+    return n;
+  }
+
   // minkowski_face with some needed sign within its bound: the same sequence
   // (cba, dba, then adc, bdc only if cba, dba are strictly opposite), each
   // sign filtered and decided exactly when uncertain.
