@@ -153,10 +153,16 @@ class RobustKernel {
   RobustKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) : a_(a), b_(b) {
     const double ma = a.max_abs_coordinate(), mb = b.max_abs_coordinate();
     const double da = padded_extent(a), db = padded_extent(b);
+    // min/max without jumps (minsd/maxsd): the bounding boxes' order is
+    // random per query, and std::min/max compiled to compare-and-branch
+    // (about 3 mispredicted branches per query).  No NaN in the bounds of a
+    // valid shape; with one, minsd/maxsd return one of the operands and the
+    // bound below is NaN or not, as with std::min/max (a NaN bound sends every
+    // decision to the exact stage).
     double d2 = 0;
     for (int c = 0; c < 3; ++c) {
-      const double lo = std::min<double>(a.bounds_min()[c], b.bounds_min()[c]);
-      const double hi = std::max<double>(a.bounds_max()[c], b.bounds_max()[c]);
+      const double lo = min_d(a.bounds_min()[c], b.bounds_min()[c]);
+      const double hi = max_d(a.bounds_max()[c], b.bounds_max()[c]);
       d2 += (hi - lo) * (hi - lo);
     }
     d_ = sqrt_d(d2) * kMargin;
@@ -183,7 +189,7 @@ class RobustKernel {
     side_span_ = ((extent_a_ + centroid_err_a_) + (extent_b_ + centroid_err_b_)) * kMargin;
     side_abs_ = (centroid_err_a_ + centroid_err_b_) * kMargin + 8 * kEta;
     lanes_ = a.lanes_bounded() && b.lanes_bounded();
-    arc_lane_bound_ = std::max(arc_err_a_t_, arc_err_b_t_);
+    arc_lane_bound_ = arc_err_a_t_ < arc_err_b_t_ ? arc_err_b_t_ : arc_err_a_t_;
   }
 
   const ConvexPolyhedron<T>& a() const { return a_; }
@@ -258,13 +264,22 @@ class RobustKernel {
   /// sign.
   double compare_width(double ex, double ey) const { return (ex + ey) * kMargin; }
 
+  ///
+  /// The filter comes before the test fx == fy (whose short-circuit jumps on
+  /// the features' fields mispredicted several times per query): for one
+  /// feature both values are within their bounds ex, ey of the same exact
+  /// separation, so |x - y| <= ex + ey (in exact arithmetic; d and bound carry
+  /// the (1+1e-6) margin of compare_width) and the filter never answers
+  /// +-1 for it -- the features are compared only when the filter does not
+  /// decide, as before for every pair of distinct features, with the same
+  /// answer.
   int compare_bounded(const Separation<T>& x, const Feature& fx, double ex, const Separation<T>& y,
                       const Feature& fy, double ey) const {
-    if (fx == fy) return 0;
     const double bound = compare_width(ex, ey);
     const double d = static_cast<double>(x.num) - static_cast<double>(y.num);
     if (d > bound) return 1;
     if (d < -bound) return -1;
+    if (fx == fy) return 0;
     return compare_exact(fx, fy);
   }
 
@@ -427,10 +442,15 @@ class RobustKernel {
   Separation<T> edge_separation(int ea, int eb) const {
     projection_rule_ = false;
     const EdgeAxis ax = edge_axis(ea, eb);
-    Vec3<T> n = ax.n;
-    if (axis_side(ax, ea, eb) < 0) n = Vec3<T>(-n);
     const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
     const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
+    // The orientation flips the axis's sign bits (the same n as -n, hence
+    // PlainKernel's value, bit for bit) without a jump: the side is a coin
+    // toss per pair (about half the Minkowski pairs flip), and the jump
+    // mispredicted at the end of the pair's longest chains (the axis: sqrt,
+    // divisions; its bound: division, sqrt).
+    const bool flip = axis_side(ax, ea, eb) < 0;
+    const Vec3<T> n(negate_if(ax.n[0], flip), negate_if(ax.n[1], flip), negate_if(ax.n[2], flip));
     return snap(dot(n, diff(pb, pa)), edge_value_error(ax.delta), Feature::edges(ea, eb));
   }
 
@@ -465,12 +485,13 @@ class RobustKernel {
     return snap((plus ? sp : sm).num, edge_value_error(ax.delta), Feature::edges(ea, eb));
   }
 
+  // The filter first, then fx == fy: see compare_bounded.
   int compare(const Separation<T>& x, const Feature& fx, const Separation<T>& y, const Feature& fy) const {
-    if (fx == fy) return 0;
     const double bound = (value_error(fx) + value_error(fy)) * kMargin;
     const double d = static_cast<double>(x.num) - static_cast<double>(y.num);
     if (d > bound) return 1;
     if (d < -bound) return -1;
+    if (fx == fy) return 0;
     return compare_exact(fx, fy);
   }
 
@@ -538,6 +559,23 @@ class RobustKernel {
 #endif
   }
 
+  // x < y ? x : y and x > y ? x : y as one minsd/maxsd (GCC compiled
+  // std::min/max of the constructor's converted floats to jumps).
+  static double min_d(double x, double y) {
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(x), _mm_set_sd(y)));
+#else
+    return x < y ? x : y;
+#endif
+  }
+  static double max_d(double x, double y) {
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_set_sd(y)));
+#else
+    return x > y ? x : y;
+#endif
+  }
+
   struct EdgeAxis {
     Vec3<T> n;      // fl(normalize(dA x dB)), unoriented (as PlainKernel)
     double delta;   // bound on |n - n*/|n*||
@@ -553,14 +591,17 @@ class RobustKernel {
   // are >= 0: the next T above a finite t >= 0 is the one whose bit pattern is
   // one more (max() goes to infinity, 0 to denorm_min), without libm's
   // nextafter call (four per query).
+  // Whether the conversion rounded down is a coin toss per bound, so the
+  // step is added without a jump (it was ~1.4 mispredicted branches per
+  // query): + 0 or + 1 on the bit pattern of t >= 0 (x NaN: t is NaN, the
+  // comparison false, NaN stays).  A negative t (never for these bounds)
+  // takes nextafter.
   static T round_up(double x) {
-    T t = static_cast<T>(x);
-    if (static_cast<double>(t) < x) {
-      using Bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
-      if (t >= T(0)) t = std::bit_cast<T>(static_cast<Bits>(std::bit_cast<Bits>(t) + 1));
-      else t = std::nextafter(t, std::numeric_limits<T>::infinity());
-    }
-    return t;
+    using Bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
+    const T t = static_cast<T>(x);
+    if (!(t >= T(0))) [[unlikely]]
+      return static_cast<double>(t) < x ? std::nextafter(t, std::numeric_limits<T>::infinity()) : t;
+    return std::bit_cast<T>(static_cast<Bits>(std::bit_cast<Bits>(t) + static_cast<Bits>(static_cast<double>(t) < x)));
   }
 
   static double padded_extent(const P& p) { return p.extent() * (1.0 + 4 * kU) * kMargin; }
@@ -612,6 +653,13 @@ class RobustKernel {
     const double k = static_cast<double>(p.vertex_count()) + 1.0;
     if (!(k * kU < 0.25)) return std::numeric_limits<double>::infinity();
     return std::numbers::sqrt3 * gamma_n(static_cast<int>(k)) * p.max_abs_coordinate() * kMargin2 + 4 * kEta;
+  }
+
+  // neg ? -v : v (the sign bit flipped: -v, as unary minus), without a jump.
+  static T negate_if(T v, bool neg) {
+    using Bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
+    constexpr int kSignShift = static_cast<int>(sizeof(T)) * 8 - 1;
+    return std::bit_cast<T>(static_cast<Bits>(std::bit_cast<Bits>(v) ^ (static_cast<Bits>(neg) << kSignShift)));
   }
 
   // p - q, one subtraction per coordinate: the value of Vec3<T>(p - q), which
@@ -766,9 +814,11 @@ class RobustKernel {
     const double sum = static_cast<double>(oa) + static_cast<double>(ob);
     const double e = (ax.delta + kG5) * side_span_ + side_abs_ +
                      0x1p-52 * (std::abs(static_cast<double>(oa)) + std::abs(static_cast<double>(ob)));
-    if (sum > e) return 1;
-    if (sum < -e) return -1;
-    return axis_side_exact(ea, eb);
+    // the filtered sign as a value (no jump on the sign itself, see
+    // edge_separation); 0 (within the bound, or NaN) goes exact
+    const int s = static_cast<int>(sum > e) - static_cast<int>(sum < -e);
+    if (s == 0) [[unlikely]] return axis_side_exact(ea, eb);
+    return s;
   }
 
   // sign( V_A V_B n*.(pA - pB) + V_A n*.Sum(B) - V_B n*.Sum(A) ): the rule
