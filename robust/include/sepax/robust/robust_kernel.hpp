@@ -196,12 +196,12 @@ class RobustKernel {
   const ConvexPolyhedron<T>& b() const { return b_; }
 
   SEPAX_ROBUST_INLINE FaceQuery<T> face_query_a(int f) const {
-    FaceQuery<T> q = face_query(a_, f, b_, support_err_a_);
+    FaceQuery<T> q = face_query(a_, f, b_, support_err_a_, support_err_a_t_);
     q.separation = snap(q.separation.num, face_err_a_, Feature::face_a(f, q.support_vertex));
     return q;
   }
   SEPAX_ROBUST_INLINE FaceQuery<T> face_query_b(int f) const {
-    FaceQuery<T> q = face_query(b_, f, a_, support_err_b_);
+    FaceQuery<T> q = face_query(b_, f, a_, support_err_b_, support_err_b_t_);
     q.separation = snap(q.separation.num, face_err_b_, Feature::face_b(q.support_vertex, f));
     return q;
   }
@@ -1019,7 +1019,9 @@ class RobustKernel {
   // shapes with more than kScalarSupportMax vertices, lanes_bounded), else
   // the scalar loop.
   static constexpr int kScalarSupportMax = 4;
-  SEPAX_ROBUST_INLINE FaceQuery<T> face_query(const P& p, int f, const P& q, double w) const {
+  // w: W_P of the header's "(support)"; wt: W_P rounded up to T (the
+  // uniqueness check in T: see below).
+  SEPAX_ROBUST_INLINE FaceQuery<T> face_query(const P& p, int f, const P& q, double w, T wt) const {
     const Plane<T>& pl = p.plane(f);
     const auto& vs = q.vertices();
     const int nv = static_cast<int>(vs.size());
@@ -1043,7 +1045,14 @@ class RobustKernel {
       }
     }
     T hb = m;  // n.v at best (the value PlainKernel reports)
-    if (!(static_cast<double>(second) - static_cast<double>(m) > w)) [[unlikely]] {
+    // Unique beyond the bound: second - m > W, checked in T.  Rounding is
+    // monotone and wt >= W is a T value, so fl(second - m) > wt implies
+    // second - m > wt >= W (a subtraction: nothing to contract).  An
+    // overflow to +inf is an exact difference beyond wt as well; NaN fails
+    // the test.  Two conversions to double less per face than the check in
+    // double; it fails wherever that one did (and within a rounding of the
+    // bound a little more often: those faces take resolve_support, exact).
+    if (!(T(second - m) > wt)) [[unlikely]] {
       best = resolve_support(p, f, q, m, w);
       hb = dot(pl.normal, vs[static_cast<std::size_t>(best)]);
     }
