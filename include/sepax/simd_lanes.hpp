@@ -162,8 +162,10 @@ inline typename L::V dot3(typename L::V x, typename L::V y, typename L::V z, typ
 ///    pair is not certainly crossing (neither min > bound: all four certainly
 ///    positive, nor max < -bound: all certainly negative), i.e. has a value
 ///    within the bound: only then does the caller need its exact test, on
-///    the accepted pairs.  The flag is an OR of lane masks over the groups
-///    (no per-group jump, no per-pair code); padding lanes are left out.
+///    the accepted pairs (uncertain must not be null).  The flag is ORed
+///    over the groups with an accepted lane only, inside the jump that skips
+///    the other groups' emit (no extra jump, no per-pair code); padding lanes
+///    are left out.
 template <bool kFilter, class T>
 SEPAX_SIMD_INLINE inline int arc_candidates(const ConvexPolyhedron<T>& b, int lo, int hi, const Vec3<T>& da,
                           const Vec3<T>& na0, const Vec3<T>& na1, T bound, int* out,
