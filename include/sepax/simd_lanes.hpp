@@ -157,17 +157,21 @@ inline typename L::V dot3(typename L::V x, typename L::V y, typename L::V z, typ
 ///  * kFilter = true, with `bound` >= the error bound of each of the four
 ///    values (beyond it a value's sign is certain): accept unless each pattern
 ///    has a value certainly of the wrong sign, i.e. unless min < -bound and
-///    max > bound.  A superset of the pairs the exact test accepts.  An
-///    accepted pair is written as eb when it certainly crosses (min > bound:
-///    all four certainly positive, or max < -bound: all certainly negative)
-///    and as ~eb (negative) when some value is within the bound or NaN: only
-///    those need the caller's exact test.
+///    max > bound.  A superset of the pairs the exact test accepts, written
+///    as eb like the exact ones.  *uncertain is set to whether some accepted
+///    pair is not certainly crossing (neither min > bound: all four certainly
+///    positive, nor max < -bound: all certainly negative), i.e. has a value
+///    within the bound: only then does the caller need its exact test, on
+///    the accepted pairs (uncertain must not be null).  The flag is ORed
+///    over the groups with an accepted lane only, inside the jump that skips
+///    the other groups' emit (no extra jump, no per-pair code); padding lanes
+///    are left out.
 template <bool kFilter, class T>
 SEPAX_SIMD_INLINE inline int arc_candidates(const ConvexPolyhedron<T>& b, int lo, int hi, const Vec3<T>& da,
-                          const Vec3<T>& na0, const Vec3<T>& na1, T bound, int* out) {
+                          const Vec3<T>& na0, const Vec3<T>& na1, T bound, int* out,
+                          bool* uncertain = nullptr) {
   using L = Lanes<T>;
   using V = typename L::V;
-  using M = typename L::M;
   constexpr int W = L::width;
   const T* n0x = b.lane_edge(0);
   const T* n0y = b.lane_edge(1);
@@ -183,48 +187,49 @@ SEPAX_SIMD_INLINE inline int arc_candidates(const ConvexPolyhedron<T>& b, int lo
   const V p1x = L::set1(T(-na1[0])), p1y = L::set1(T(-na1[1])), p1z = L::set1(T(-na1[2]));
   const V lo_lim = L::set1(kFilter ? T(-bound) : T(0));
   const V hi_lim = L::set1(kFilter ? bound : T(0));
-  // one group of W pairs: the accepted lanes as bits (kFilter: the certain
-  // ones among them in `certain`, computed only when some lane is accepted)
-  unsigned certain = 0;
-  auto group = [&](std::size_t i) SEPAX_SIMD_INLINE {
+  // one group of W pairs: the accepted lanes among `live` as bits.  kFilter:
+  // the accepted lanes that are not certain are added to `unc`; computed only
+  // for a group with some accepted lane (the jump is the one that skips the
+  // group's emit: most groups have none, and then cost what the plain test
+  // costs).
+  unsigned unc = 0;
+  auto group = [&](std::size_t i, [[maybe_unused]] unsigned live) SEPAX_SIMD_INLINE {
     const V c = dot3<L>(L::load(n0x + i), L::load(n0y + i), L::load(n0z + i), ax, ay, az);
     const V d = dot3<L>(L::load(n1x + i), L::load(n1y + i), L::load(n1z + i), ax, ay, az);
     const V a = dot3<L>(L::load(dx + i), L::load(dy + i), L::load(dz + i), p0x, p0y, p0z);
     const V e = dot3<L>(L::load(dx + i), L::load(dy + i), L::load(dz + i), p1x, p1y, p1z);
     const V mn = L::min_lt(L::min_lt(c, a), L::min_lt(d, e));
     const V mx = L::max_gt(L::max_gt(c, a), L::max_gt(d, e));
-    M m;
     if constexpr (!kFilter) {
-      m = L::mor(L::gt(mn, lo_lim), L::lt(mx, hi_lim));
+      return L::bits(L::mor(L::gt(mn, lo_lim), L::lt(mx, hi_lim)));
     } else {
       // not (min < -bound and max > bound), i.e. min >= -bound or max <=
       // bound: no value is NaN (lanes_bounded, the precondition), so the
       // negation is exact and costs what the plain test costs.
-      m = L::mor(L::ge(mn, lo_lim), L::le(mx, hi_lim));
-      const unsigned bits = L::bits(m);
-      if (bits != 0) certain = L::bits(L::mor(L::gt(mn, hi_lim), L::lt(mx, lo_lim)));
+      const unsigned bits = L::bits(L::mor(L::ge(mn, lo_lim), L::le(mx, hi_lim))) & live;
+      // certain: min > bound or max < -bound
+      if (bits != 0) unc |= bits & ~L::bits(L::mor(L::gt(mn, hi_lim), L::lt(mx, lo_lim)));
       return bits;
     }
-    return L::bits(m);
   };
   int n = 0;
   auto emit = [&](unsigned m, int g) SEPAX_SIMD_INLINE {
     while (m != 0) {
-      const int i = std::countr_zero(m);
-      if constexpr (kFilter) {
-        out[n++] = (certain >> i) & 1u ? g + i : ~(g + i);
-      } else {
-        out[n++] = g + i;
-      }
+      out[n++] = g + std::countr_zero(m);
       m &= m - 1;
     }
   };
+  constexpr unsigned kAll = (1u << W) - 1u;
   const int full = lo + (hi - lo) / W * W;
   for (int g = lo; g < full; g += W) {
-    const unsigned m = group(static_cast<std::size_t>(g));
+    const unsigned m = group(static_cast<std::size_t>(g), kAll);
     if (m != 0) emit(m, g);
   }
-  if (full < hi) emit(group(static_cast<std::size_t>(full)) & ((1u << (hi - full)) - 1u), full);  // padding lanes
+  if (full < hi) {  // the last, partial group: padding lanes masked out
+    const unsigned live = (1u << (hi - full)) - 1u;
+    emit(group(static_cast<std::size_t>(full), live) & live, full);
+  }
+  if constexpr (kFilter) *uncertain = unc != 0;
   return n;
 }
 

@@ -153,10 +153,16 @@ class RobustKernel {
   RobustKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) : a_(a), b_(b) {
     const double ma = a.max_abs_coordinate(), mb = b.max_abs_coordinate();
     const double da = padded_extent(a), db = padded_extent(b);
+    // min/max without jumps (minsd/maxsd): the bounding boxes' order is
+    // random per query, and std::min/max compiled to compare-and-branch
+    // (about 3 mispredicted branches per query).  No NaN in the bounds of a
+    // valid shape; with one, minsd/maxsd return one of the operands and the
+    // bound below is NaN or not, as with std::min/max (a NaN bound sends every
+    // decision to the exact stage).
     double d2 = 0;
     for (int c = 0; c < 3; ++c) {
-      const double lo = std::min<double>(a.bounds_min()[c], b.bounds_min()[c]);
-      const double hi = std::max<double>(a.bounds_max()[c], b.bounds_max()[c]);
+      const double lo = min_d(a.bounds_min()[c], b.bounds_min()[c]);
+      const double hi = max_d(a.bounds_max()[c], b.bounds_max()[c]);
       d2 += (hi - lo) * (hi - lo);
     }
     d_ = sqrt_d(d2) * kMargin;
@@ -183,19 +189,19 @@ class RobustKernel {
     side_span_ = ((extent_a_ + centroid_err_a_) + (extent_b_ + centroid_err_b_)) * kMargin;
     side_abs_ = (centroid_err_a_ + centroid_err_b_) * kMargin + 8 * kEta;
     lanes_ = a.lanes_bounded() && b.lanes_bounded();
-    arc_lane_bound_ = std::max(arc_err_a_t_, arc_err_b_t_);
+    arc_lane_bound_ = arc_err_a_t_ < arc_err_b_t_ ? arc_err_b_t_ : arc_err_a_t_;
   }
 
   const ConvexPolyhedron<T>& a() const { return a_; }
   const ConvexPolyhedron<T>& b() const { return b_; }
 
   SEPAX_ROBUST_INLINE FaceQuery<T> face_query_a(int f) const {
-    FaceQuery<T> q = face_query(a_, f, b_, support_err_a_);
+    FaceQuery<T> q = face_query(a_, f, b_, support_err_a_, support_err_a_t_);
     q.separation = snap(q.separation.num, face_err_a_, Feature::face_a(f, q.support_vertex));
     return q;
   }
   SEPAX_ROBUST_INLINE FaceQuery<T> face_query_b(int f) const {
-    FaceQuery<T> q = face_query(b_, f, a_, support_err_b_);
+    FaceQuery<T> q = face_query(b_, f, a_, support_err_b_, support_err_b_t_);
     q.separation = snap(q.separation.num, face_err_b_, Feature::face_b(q.support_vertex, f));
     return q;
   }
@@ -258,13 +264,22 @@ class RobustKernel {
   /// sign.
   double compare_width(double ex, double ey) const { return (ex + ey) * kMargin; }
 
+  ///
+  /// The filter comes before the test fx == fy (whose short-circuit jumps on
+  /// the features' fields mispredicted several times per query): for one
+  /// feature both values are within their bounds ex, ey of the same exact
+  /// separation, so |x - y| <= ex + ey (in exact arithmetic; d and bound carry
+  /// the (1+1e-6) margin of compare_width) and the filter never answers
+  /// +-1 for it -- the features are compared only when the filter does not
+  /// decide, as before for every pair of distinct features, with the same
+  /// answer.
   int compare_bounded(const Separation<T>& x, const Feature& fx, double ex, const Separation<T>& y,
                       const Feature& fy, double ey) const {
-    if (fx == fy) return 0;
     const double bound = compare_width(ex, ey);
     const double d = static_cast<double>(x.num) - static_cast<double>(y.num);
     if (d > bound) return 1;
     if (d < -bound) return -1;
+    if (fx == fy) return 0;
     return compare_exact(fx, fy);
   }
 
@@ -337,24 +352,26 @@ class RobustKernel {
   /// arc_err_b_t_) >= the bound of each value (see the header: E_arc, rounded
   /// up to T) on the wrong side, so its exact sign is wrong as well.  A
   /// survivor whose four values are all beyond the bound with the crossing
-  /// signs (all > bound or all < -bound: every exact sign is certain) is
-  /// accepted as it is; the others (some value within the bound, or NaN) go
-  /// through minkowski_face, which decides them exactly.  So the result is exactly
+  /// signs (all > bound or all < -bound: every exact sign is certain)
+  /// crosses.  When every survivor of the batch is certain (the common case:
+  /// the lanes report it as one flag), the survivors are the answer, with
+  /// no per-pair code after the lanes (a second pass over them cost a
+  /// mispredicted loop exit per edge of A).  Otherwise (some value within the
+  /// bound, or NaN) every survivor goes through minkowski_face, which decides
+  /// exactly (the certain ones cost it only its filters, which pass: their
+  /// per-side bounds are <= arc_lane_bound_).  So the result is exactly
   /// {eb : minkowski_face(ea, eb)}, with or without FMA contraction (the bound
   /// holds either way).  The lanes need both shapes lanes_bounded() (no
   /// overflow, no NaN); otherwise every pair takes minkowski_face.
   SEPAX_ROBUST_INLINE int minkowski_faces(int ea, int lo, int hi, int* out) const {
-    int n = 0;
     if (lanes_) {
+      bool uncertain;
       const int m = simd::arc_candidates<true>(b_, lo, hi, a_.edge_dir(ea), a_.edge_normal(ea, 0),
-                                               a_.edge_normal(ea, 1), arc_lane_bound_, out);
-      for (int i = 0; i < m; ++i) {
-        const int e = out[i];
-        if (e >= 0) out[n++] = e;                              // certainly crossing
-        else if (minkowski_face(ea, ~e)) out[n++] = ~e;        // some value within the bound
-      }
-      return n;
+                                               a_.edge_normal(ea, 1), arc_lane_bound_, out, &uncertain);
+      if (!uncertain) [[likely]] return m;
+      return minkowski_faces_resolve(ea, m, out);
     }
+    int n = 0;
     for (int eb = lo; eb < hi; ++eb) {
       if (minkowski_face(ea, eb)) out[n++] = eb;
     }
@@ -362,6 +379,16 @@ class RobustKernel {
   }
 
  private:
+  // The lane candidates out[0, m) of a batch with some uncertain pair, each
+  // decided by minkowski_face (exact); the crossing ones kept, in order.
+  SEPAX_ROBUST_COLD int minkowski_faces_resolve(int ea, int m, int* out) const {
+    int n = 0;
+    for (int i = 0; i < m; ++i) {
+      if (minkowski_face(ea, out[i])) out[n++] = out[i];
+    }
+    return n;
+  }
+
   // minkowski_face with some needed sign within its bound: the same sequence
   // (cba, dba, then adc, bdc only if cba, dba are strictly opposite), each
   // sign filtered and decided exactly when uncertain.
@@ -415,10 +442,15 @@ class RobustKernel {
   Separation<T> edge_separation(int ea, int eb) const {
     projection_rule_ = false;
     const EdgeAxis ax = edge_axis(ea, eb);
-    Vec3<T> n = ax.n;
-    if (axis_side(ax, ea, eb) < 0) n = Vec3<T>(-n);
     const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
     const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
+    // The orientation flips the axis's sign bits (the same n as -n, hence
+    // PlainKernel's value, bit for bit) without a jump: the side is a coin
+    // toss per pair (about half the Minkowski pairs flip), and the jump
+    // mispredicted at the end of the pair's longest chains (the axis: sqrt,
+    // divisions; its bound: division, sqrt).
+    const bool flip = axis_side(ax, ea, eb) < 0;
+    const Vec3<T> n(negate_if(ax.n[0], flip), negate_if(ax.n[1], flip), negate_if(ax.n[2], flip));
     return snap(dot(n, diff(pb, pa)), edge_value_error(ax.delta), Feature::edges(ea, eb));
   }
 
@@ -453,12 +485,13 @@ class RobustKernel {
     return snap((plus ? sp : sm).num, edge_value_error(ax.delta), Feature::edges(ea, eb));
   }
 
+  // The filter first, then fx == fy: see compare_bounded.
   int compare(const Separation<T>& x, const Feature& fx, const Separation<T>& y, const Feature& fy) const {
-    if (fx == fy) return 0;
     const double bound = (value_error(fx) + value_error(fy)) * kMargin;
     const double d = static_cast<double>(x.num) - static_cast<double>(y.num);
     if (d > bound) return 1;
     if (d < -bound) return -1;
+    if (fx == fy) return 0;
     return compare_exact(fx, fy);
   }
 
@@ -526,6 +559,23 @@ class RobustKernel {
 #endif
   }
 
+  // x < y ? x : y and x > y ? x : y as one minsd/maxsd (GCC compiled
+  // std::min/max of the constructor's converted floats to jumps).
+  static double min_d(double x, double y) {
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(x), _mm_set_sd(y)));
+#else
+    return x < y ? x : y;
+#endif
+  }
+  static double max_d(double x, double y) {
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_set_sd(y)));
+#else
+    return x > y ? x : y;
+#endif
+  }
+
   struct EdgeAxis {
     Vec3<T> n;      // fl(normalize(dA x dB)), unoriented (as PlainKernel)
     double delta;   // bound on |n - n*/|n*||
@@ -541,14 +591,17 @@ class RobustKernel {
   // are >= 0: the next T above a finite t >= 0 is the one whose bit pattern is
   // one more (max() goes to infinity, 0 to denorm_min), without libm's
   // nextafter call (four per query).
+  // Whether the conversion rounded down is a coin toss per bound, so the
+  // step is added without a jump (it was ~1.4 mispredicted branches per
+  // query): + 0 or + 1 on the bit pattern of t >= 0 (x NaN: t is NaN, the
+  // comparison false, NaN stays).  A negative t (never for these bounds)
+  // takes nextafter.
   static T round_up(double x) {
-    T t = static_cast<T>(x);
-    if (static_cast<double>(t) < x) {
-      using Bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
-      if (t >= T(0)) t = std::bit_cast<T>(static_cast<Bits>(std::bit_cast<Bits>(t) + 1));
-      else t = std::nextafter(t, std::numeric_limits<T>::infinity());
-    }
-    return t;
+    using Bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
+    const T t = static_cast<T>(x);
+    if (!(t >= T(0))) [[unlikely]]
+      return static_cast<double>(t) < x ? std::nextafter(t, std::numeric_limits<T>::infinity()) : t;
+    return std::bit_cast<T>(static_cast<Bits>(std::bit_cast<Bits>(t) + static_cast<Bits>(static_cast<double>(t) < x)));
   }
 
   static double padded_extent(const P& p) { return p.extent() * (1.0 + 4 * kU) * kMargin; }
@@ -600,6 +653,13 @@ class RobustKernel {
     const double k = static_cast<double>(p.vertex_count()) + 1.0;
     if (!(k * kU < 0.25)) return std::numeric_limits<double>::infinity();
     return std::numbers::sqrt3 * gamma_n(static_cast<int>(k)) * p.max_abs_coordinate() * kMargin2 + 4 * kEta;
+  }
+
+  // neg ? -v : v (the sign bit flipped: -v, as unary minus), without a jump.
+  static T negate_if(T v, bool neg) {
+    using Bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
+    constexpr int kSignShift = static_cast<int>(sizeof(T)) * 8 - 1;
+    return std::bit_cast<T>(static_cast<Bits>(std::bit_cast<Bits>(v) ^ (static_cast<Bits>(neg) << kSignShift)));
   }
 
   // p - q, one subtraction per coordinate: the value of Vec3<T>(p - q), which
@@ -754,9 +814,11 @@ class RobustKernel {
     const double sum = static_cast<double>(oa) + static_cast<double>(ob);
     const double e = (ax.delta + kG5) * side_span_ + side_abs_ +
                      0x1p-52 * (std::abs(static_cast<double>(oa)) + std::abs(static_cast<double>(ob)));
-    if (sum > e) return 1;
-    if (sum < -e) return -1;
-    return axis_side_exact(ea, eb);
+    // the filtered sign as a value (no jump on the sign itself, see
+    // edge_separation); 0 (within the bound, or NaN) goes exact
+    const int s = static_cast<int>(sum > e) - static_cast<int>(sum < -e);
+    if (s == 0) [[unlikely]] return axis_side_exact(ea, eb);
+    return s;
   }
 
   // sign( V_A V_B n*.(pA - pB) + V_A n*.Sum(B) - V_B n*.Sum(A) ): the rule
@@ -957,7 +1019,9 @@ class RobustKernel {
   // shapes with more than kScalarSupportMax vertices, lanes_bounded), else
   // the scalar loop.
   static constexpr int kScalarSupportMax = 4;
-  SEPAX_ROBUST_INLINE FaceQuery<T> face_query(const P& p, int f, const P& q, double w) const {
+  // w: W_P of the header's "(support)"; wt: W_P rounded up to T (the
+  // uniqueness check in T: see below).
+  SEPAX_ROBUST_INLINE FaceQuery<T> face_query(const P& p, int f, const P& q, double w, T wt) const {
     const Plane<T>& pl = p.plane(f);
     const auto& vs = q.vertices();
     const int nv = static_cast<int>(vs.size());
@@ -981,7 +1045,14 @@ class RobustKernel {
       }
     }
     T hb = m;  // n.v at best (the value PlainKernel reports)
-    if (!(static_cast<double>(second) - static_cast<double>(m) > w)) [[unlikely]] {
+    // Unique beyond the bound: second - m > W, checked in T.  Rounding is
+    // monotone and wt >= W is a T value, so fl(second - m) > wt implies
+    // second - m > wt >= W (a subtraction: nothing to contract).  An
+    // overflow to +inf is an exact difference beyond wt as well; NaN fails
+    // the test.  Two conversions to double less per face than the check in
+    // double; it fails wherever that one did (and within a rounding of the
+    // bound a little more often: those faces take resolve_support, exact).
+    if (!(T(second - m) > wt)) [[unlikely]] {
       best = resolve_support(p, f, q, m, w);
       hb = dot(pl.normal, vs[static_cast<std::size_t>(best)]);
     }
