@@ -182,18 +182,11 @@ class Traversal {
     //    whose Minkowski faces are all below a best <= 0 stays pruned.
     // The other arcs go through the full test, on their current states.
     // Both passes are kernel decisions, so the exact walk marks the same arcs.
-    // A shape with fewer than kMarkArcs arcs skips the marking (the full
-    // test alone, as one chunk): there the extra pass cost more than the
-    // mispredictions it saved (robust query at N = 8, 18 arcs: 940 -> 995
-    // ns; at N = 32, 90 arcs: 4.9 -> 4.5 us).  The choice depends on the
-    // arc count only, so the exact walk makes it too.
-    constexpr int kMarkArcs = 64;
-    const bool mark = ne >= kMarkArcs;
     for (int base = 0; base < ne && !stop; base += 64) {
       const int end = ne - base < 64 ? ne : base + 64;
-      const int prunable = mark && prune_arcs_ && best_nonpositive() ? 1 : 0;
+      const int prunable = prune_arcs_ && best_nonpositive() ? 1 : 0;
       std::uint64_t settled = 0;
-      for (int ea = base; mark && ea < end; ++ea) {
+      for (int ea = base; ea < end; ++ea) {
         const int s0 = sa[wa_.edge_face(ea, 0)], s1 = sa[wa_.edge_face(ea, 1)];
         const int kind = s0 & 3;
         const int cut = static_cast<int>(kind == 0) & prunable;
