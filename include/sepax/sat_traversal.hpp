@@ -816,17 +816,9 @@ class Traversal {
     bool have_end_h = false;
     int entry = -1;
     for (int budget = wb_.vertex_count() + wb_.edge_count() + 2; budget > 0; --budget) {
-      // The end of the arc is in v's closed region (v is a deepest vertex for
-      // the end face): no crossing is left.  Without a tie the deepest vertex
-      // is unique.
+      // The end of the arc is in v's closed region (v is the deepest vertex
+      // for the end face, unique without a tie): no crossing is left.
       if (v == end_vertex) return false;
-      if (end_tie) {
-        if (!have_end_h) {
-          end_h = height<true>(fe, end_vertex);
-          have_end_h = true;
-        }
-        if (cmp<true>(fe, v, height<true>(fe, v), end_vertex, end_h) == 0) return false;
-      }
       // The fan arc the path leaves v's region through.
       int exit_edge = -1;
       for (int i = wb_.adj_begin(v); i < wb_.adj_end(v); ++i) {
@@ -850,7 +842,25 @@ class Traversal {
         entry = exit_edge;
         continue;
       }
-      // No arc crossed strictly: the path leaves through a corner.
+      // No arc crossed strictly.  With a tie at the end, v may be another
+      // deepest vertex for the end face: then the end is in v's closed region
+      // and the walk is over.  This is asked only after the exit scan: in
+      // exact arithmetic a path that strictly leaves v's region cannot end in
+      // its closure (a region meets a great circle in one arc shorter than pi,
+      // and a flat B's lunes are met in one arc unless the circle passes
+      // through B's poles, where no crossing is strict), so the order changes
+      // nothing there; in plain float, where a tie is "equal after rounding",
+      // it keeps the walk consistent with its own arc signs: a crossing the
+      // arc test accepts is taken even when the heights at the end round to a
+      // tie (nearly coplanar flat shapes, fuzz/corpus/35-...).
+      if (end_tie) {
+        if (!have_end_h) {
+          end_h = height<true>(fe, end_vertex);
+          have_end_h = true;
+        }
+        if (cmp<true>(fe, v, height<true>(fe, v), end_vertex, end_h) == 0) return false;
+      }
+      // Otherwise the path leaves through a corner.
       v = corner(ea, v, forward);
       if (v < 0) return fallback(ea);
       entry = -1;

@@ -240,6 +240,34 @@ TEST_CASE("traversal with double-sided polygons against everything", "[traversal
   CHECK(n > 0);
 }
 
+// Two nearly coplanar flat quads (fuzz/corpus/35-..., shrunk from a 10-minute
+// fuzz campaign): every vertex of B has the same float height over A's back
+// face, so the float climb reports a tie at the end of each arc of A, while
+// the float arc test still accepts a second crossing near the start.  The
+// walk used to stop at the first tied vertex and never measured edges(3, 2),
+// the float Gauss map's (and exact arithmetic's) answer.  A crossing the arc
+// test accepts must be taken: the plain float walk then measures every pair
+// its own arc test accepts, like the Gauss map.
+TEST_CASE("plain float traversal takes every crossing its arc test accepts, even at a rounded height tie",
+          "[traversal][flat]") {
+  using V = Vec3<float>;
+  const std::vector<std::vector<int>> quad{{0, 1, 2, 3}, {3, 2, 1, 0}};
+  const auto a = ConvexPolyhedron<float>::from_faces({V(-0.0011733612f, -0.000349798473f, -0.00129976182f),
+                                                      V(-0.000755380257f, -0.000349798473f, -0.0012997617f),
+                                                      V(-0.000985715538f, -8.71701632e-05f, -0.00129976182f),
+                                                      V(-0.00117749802f, -0.000321693951f, -0.0012997617f)},
+                                                     quad);
+  const auto b = ConvexPolyhedron<float>::from_faces({V(-0.0009765625f, -0.000610351562f, -0.00134277344f),
+                                                      V(-0.0009765625f, -0.000366210938f, -0.00134277344f),
+                                                      V(-0.00122070312f, -0.000366210938f, -0.00134277344f),
+                                                      V(-0.00122070312f, -0.000610351562f, -0.00134277344f)},
+                                                     quad);
+  const auto t = sat::traversal(a, b);
+  const auto g = sat::gauss_map(a, b);
+  CHECK(g.feature == Feature::edges(3, 2));
+  check_same(t, g, "nearly coplanar quads");
+}
+
 TEST_CASE("traversal early out returns a separating axis exactly when separated", "[traversal]") {
   std::mt19937_64 rng(4242);
   std::uniform_real_distribution<double> off(-2.5, 2.5);

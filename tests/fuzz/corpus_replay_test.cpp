@@ -108,3 +108,15 @@ TEST_CASE("corpus 34: a pair the float brute force accepts within its support to
   CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 1);
   CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
 }
+
+TEST_CASE("corpus 35: the plain float traversal takes a crossing its arc test accepts at a rounded end tie",
+          "[fuzz][corpus][traversal]") {
+  const CaseReport r = replay_corpus("35-flat-traversal-end-tie-rounded.case");
+  REQUIRE(r.valid);
+  for (const auto& x : r.unexplained) UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+  CHECK(r.unexplained_count == 0);
+  // every float and robust configuration reports exact arithmetic's feature
+  // or one its decisions explain; the robust ones exactly
+  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
+  CHECK(r.by_config.at("separation/float_plain")[Klass::unexplained] == 0);
+}
