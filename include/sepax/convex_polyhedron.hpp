@@ -193,10 +193,8 @@ class ConvexPolyhedron {
       p.vertices_.push_back(vec_cast<T>(v));
       for (int c = 0; c < 3; ++c) {
         if (!number_traits<T>::is_finite(p.vertices_.back()[c]) && number_traits<U>::is_finite(v[c])) {
-          fail(ErrorCode::BadScale, std::string("coordinate ") + "xyz"[c] + " of vertex " +
-                                        std::to_string(p.vertices_.size() - 1) + " (" +
-                                        num_str(number_traits<U>::to_double(v[c])) + ") is beyond the range of " +
-                                        std::string(number_traits<T>::name));
+          throw coordinate_beyond_range(c, "vertex", p.vertices_.size() - 1, number_traits<U>::to_double(v[c]),
+                                        number_traits<T>::name);
         }
       }
     }

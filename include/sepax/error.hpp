@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace sepax {
 
@@ -44,6 +45,17 @@ inline std::string format_number(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.9g", x);
   return buf;
+}
+
+/// The error for a coordinate that is finite in the input but not in the
+/// number type T it is converted to: "coordinate y of vertex 2 (1e+300) is
+/// beyond the range of float" (BadScale).  `what` names the element ("vertex",
+/// "point"); `value` is the input coordinate.
+inline InvalidInput coordinate_beyond_range(int axis, const char* what, std::size_t index, double value,
+                                            std::string_view type_name) {
+  return InvalidInput(ErrorCode::BadScale, std::string("coordinate ") + "xyz"[axis] + " of " + what + " " +
+                                               std::to_string(index) + " (" + format_number(value) +
+                                               ") is beyond the range of " + std::string(type_name));
 }
 
 inline const char* to_string(ErrorCode c) {

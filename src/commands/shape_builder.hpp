@@ -71,11 +71,8 @@ std::vector<Vec3<T>> converted(const io::ShapeData& s, const std::vector<Vec3<do
     out.push_back(vec_from_double<T>(v[i]));
     for (int c = 0; c < 3; ++c) {
       if (!number_traits<T>::is_finite(out.back()[c])) {
-        throw InvalidInput(ErrorCode::BadScale,
-                           std::string("coordinate ") + "xyz"[c] + " of " +
-                               (s.kind == io::ShapeData::Kind::Points ? "point " : "vertex ") + std::to_string(i) +
-                               " (" + format_number(v[i][c]) + ") is beyond the range of " +
-                               std::string(number_traits<T>::name));
+        throw coordinate_beyond_range(c, s.kind == io::ShapeData::Kind::Points ? "point" : "vertex", i, v[i][c],
+                                      number_traits<T>::name);
       }
     }
   }
