@@ -59,12 +59,29 @@ std::string lower_extension(const std::string& path) {
 
 }  // namespace
 
+namespace {
+ShapeData builtin_shape_unnamed(const std::string& spec);
+}  // namespace
+
 bool is_builtin_shape(const std::string& spec) {
   return spec == "cube" || spec == "tetra" || spec == "triangle" || spec.starts_with("box:") ||
          spec.starts_with("prism:") || spec.starts_with("polygon:");
 }
 
 ShapeData builtin_shape(const std::string& spec) {
+  // The shapes' own validation (a box too thin for its normals to be more
+  // than rounding noise, ...) names the shape like the parse errors do.
+  try {
+    return builtin_shape_unnamed(spec);
+  } catch (const InvalidInput& e) {
+    if (std::string_view(e.what()).starts_with("shape '")) throw;
+    throw InvalidInput(e.code(), "shape '" + spec + "': " + e.what());
+  }
+}
+
+namespace {
+
+ShapeData builtin_shape_unnamed(const std::string& spec) {
   if (spec == "cube") return from_polyhedron(shapes::cube<double>(), spec);
   if (spec == "tetra") return from_polyhedron(shapes::tetrahedron<double>(), spec);
   if (spec == "triangle") {
@@ -93,6 +110,8 @@ ShapeData builtin_shape(const std::string& spec) {
   }
   bad(spec, "not a built-in shape");
 }
+
+}  // namespace
 
 ShapeData load_shape(const std::string& spec) {
   if (spec.empty()) throw InvalidInput(ErrorCode::Parse, "empty shape argument");

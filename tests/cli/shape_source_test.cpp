@@ -69,6 +69,9 @@ TEST_CASE("shape source: bad built-in parameters are clear errors", "[shapes]") 
       {"prism:", "bad side count ''"},
       {"prism:4.5", "bad side count '4.5'"},
       {"polygon:1001", "between 3 and 1000"},
+      // parsed, but refused by the shape's own validation: named all the same
+      {"box:1,1,1e-30", "has zero area up to rounding"},
+      {"box:1e308,1,1", "coordinates up to"},
   };
   for (const auto& c : cases) {
     INFO(c.spec);
