@@ -652,8 +652,10 @@ TEMPLATE_TEST_CASE("robust face scan: certified queries only where they can matt
       dir.normalize();
       const auto a = posed(ha, random_rotation(rng), Vec3<double>(0, 0, 0));
       const auto b = posed(hb, random_rotation(rng), Vec3<double>(dir * dist));
+      // the exact brute force is slow on the larger hulls: Gauss map only there
       for (bool gauss : {true, false})
-        for (bool early : {false, true}) check_estimates(a, b, gauss, early, t);
+        for (bool early : {false, true})
+          if (gauss || n <= 16) check_estimates(a, b, gauss, early, t);
     }
   }
   CHECK(t.mismatches == 0);

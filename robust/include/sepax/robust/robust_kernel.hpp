@@ -53,6 +53,9 @@
 //   One pass keeps the minimum and the second minimum; if they are more than
 //   W_P apart the float argmin is the exact unique argmin, else the vertices
 //   within W_P of the minimum are compared exactly (lowest index wins ties).
+//   The SATs' face scans ask for it only where the feature can matter: a
+//   face whose min-only estimate (face_estimate_*, within E_face of the exact
+//   value) is certainly below the best so far is skipped (best_axis.hpp).
 // (arc sign)     fl(n_f . fl(head - tail)) vs (N/|N|).e:
 //   (δ_P + γ_5) |e| <= (δ_P + γ_5) D_Q = E_arc(P)                   (+ 2 η_T)
 // (edge value)   both the O(1) form fl(n.fl(pB - pA)) and the projection form
