@@ -8,7 +8,9 @@
 #pragma once
 
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include "sat_kernel.hpp"
 
@@ -53,6 +55,41 @@ class BestAxis {
     }
   }
 
+  /// HasFaceEstimate kernels: true when a face axis whose estimate is e
+  /// (sat_kernel.hpp, FaceEstimate) is certainly not the best, whatever its
+  /// support vertex: its exact separation is strictly below the best's.  The
+  /// caller then skips the face (no certified query, no consider, no
+  /// early-out check), which is what exact arithmetic does with it:
+  ///  * Bounds.  |e.separation - h_f| <= e.error, h_f the exact separation of
+  ///    the face (the height of the exactly deepest vertex: the kernel's
+  ///    contract; for RobustKernel the min of the float heights is within
+  ///    E_face of h_f because every vertex's float height is within E_face of
+  ///    its exact height and rounding is monotone).  |sep_ - h_b| <= err_,
+  ///    h_b the best's exact separation: err_ = error_bound(feature_), the
+  ///    bound compare_bounded uses for it (it holds for snapped values too).
+  ///  * The test.  d = x - sep_ in double (two exact conversions and one
+  ///    subtraction: nothing an FMA could contract) below -compare_width(ex,
+  ///    err_) is compare_bounded's filter answering -1: by the kernel's
+  ///    contract for compare_width (its (1+1e-6) margin covers the roundings
+  ///    of d and of the width; an overflow of d to -inf is a difference
+  ///    beyond any finite width), x - sep_ < -(ex + err_), so h_f <= x + ex <
+  ///    sep_ - err_ <= h_b.  NaN compares false: no skip.
+  ///  * Why the unknown vertex cannot matter.  The exact run offers the face
+  ///    with h_f < h_b: compare is -1 for every support vertex (the feature
+  ///    tie-break applies only to equal separations), so the best does not
+  ///    change.  Early out: every candidate offered so far had exact sign <=
+  ///    0 (otherwise the scan had returned), the best too, so h_f < h_b <= 0
+  ///    and the face's sign is -1: no early out either.  Both runs continue
+  ///    with the same best, and the robust kernel's later decisions are the
+  ///    exact ones.  The first face (no best yet) is never skipped.
+  bool certainly_below(const K& k, const FaceEstimate<T>& e) const
+    requires HasFaceEstimate<K>
+  {
+    static_assert(kBounded, "a face estimate is compared with the best's error bound");
+    return has_ && static_cast<double>(e.separation.num) - static_cast<double>(sep_.num) <
+                       -k.compare_width(e.error, err_);
+  }
+
   bool has() const { return has_; }
   const Separation<T>& separation() const { return sep_; }
   const Feature& feature() const { return feature_; }
@@ -91,14 +128,20 @@ class BestAxis {
 
 /// Offers the axes i = 0 .. n-1 of one kind: query(i) is a FaceQuery (a
 /// separation and the other shape's support vertex), feature(i, support)
-/// names it; each is counted in `counter`.  Returns true when early_out is
-/// set and a separating axis was found.
-template <SatKernel K, class Query, class MakeFeature>
+/// names it; each is counted in `counter`.  With an `estimate` (not
+/// nullptr: estimate(i) is a FaceEstimate, see HasFaceEstimate), query(i) is
+/// asked only when the estimate is not certainly below the best
+/// (BestAxis::certainly_below); a skipped axis is still counted.  Returns
+/// true when early_out is set and a separating axis was found.
+template <SatKernel K, class Query, class MakeFeature, class Estimate = std::nullptr_t>
 bool scan_queries(K& k, BestAxis<K>& best, std::int64_t& counter, int n, const SatOptions& opt, Query&& query,
-                  MakeFeature&& feature) {
+                  MakeFeature&& feature, Estimate&& estimate = nullptr) {
   for (int i = 0; i < n; ++i) {
-    const auto q = query(i);
     ++counter;
+    if constexpr (!std::is_null_pointer_v<std::remove_cvref_t<Estimate>>) {
+      if (best.certainly_below(k, estimate(i))) continue;
+    }
+    const auto q = query(i);
     const Feature feat = feature(i, q.support_vertex);
     best.consider(k, q.separation, feat);
     if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
@@ -106,14 +149,25 @@ bool scan_queries(K& k, BestAxis<K>& best, std::int64_t& counter, int n, const S
   return false;
 }
 
-/// The face axes of A then of B: shared by every SAT.  Returns true when
+/// The face axes of A then of B: shared by every SAT.  HasFaceEstimate
+/// kernels certify the support vertex only of the faces whose estimate is
+/// not certainly below the best so far (scan_queries).  Returns true when
 /// early_out is set and a separating face axis was found.
 template <SatKernel K>
 bool scan_face_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt) {
+  // nullptr (every face certified) unless the kernel has the estimates
+  const auto estimate_a = [&] {
+    if constexpr (HasFaceEstimate<K>) return [&](int f) { return k.face_estimate_a(f); };
+    else return nullptr;
+  }();
+  const auto estimate_b = [&] {
+    if constexpr (HasFaceEstimate<K>) return [&](int f) { return k.face_estimate_b(f); };
+    else return nullptr;
+  }();
   return scan_queries(k, best, stats.face_axes, k.a().face_count(), opt, [&](int f) { return k.face_query_a(f); },
-                      [](int f, int v) { return Feature::face_a(f, v); }) ||
+                      [](int f, int v) { return Feature::face_a(f, v); }, estimate_a) ||
          scan_queries(k, best, stats.face_axes, k.b().face_count(), opt, [&](int f) { return k.face_query_b(f); },
-                      [](int f, int v) { return Feature::face_b(v, f); });
+                      [](int f, int v) { return Feature::face_b(v, f); }, estimate_b);
 }
 
 /// The side axes (feature.hpp), shared by every SAT after its other axes,

@@ -124,6 +124,37 @@ concept HasMinkowskiFaces = requires(const K k, int i, int* out) {
   { k.minkowski_faces(i, i, i, out) } -> std::same_as<int>;
 };
 
+/// Result of a face estimate (HasFaceEstimate): face i's separation without
+/// its support vertex.  `separation` is within `error` of the exact
+/// separation of the face, i.e. of the height of the other shape's exactly
+/// deepest vertex, whichever vertex that is.
+template <class T>
+struct FaceEstimate {
+  Separation<T> separation;
+  double error = 0;
+};
+
+/// Optional kernel members (not part of SatKernel; RobustKernel has them):
+///   FaceEstimate<FT> face_estimate_a(int i), face_estimate_b(int i)
+///   double compare_width(double ex, double ey)
+/// face_estimate_* is the face query's value without certifying which vertex
+/// is the support vertex (a min-only scan: no second minimum, no argmin).
+/// compare_width(ex, ey) is the filter width of the kernel's comparison of
+/// two values with error bounds ex, ey (BestAxis's kBounded kernels: error_bound,
+/// compare_bounded): when the difference of the two values, in double, is
+/// beyond it, the exact comparison has that sign.  The shared face scan
+/// (best_axis.hpp, scan_face_axes) then asks for the certified face_query_*
+/// only for the faces whose estimate is not certainly below the best axis so
+/// far: a face certainly below is never the answer, whatever its support
+/// vertex (derivation at BestAxis::certainly_below).  Kernels without these
+/// members (Plain, exact) take face_query_* for every face.
+template <class K>
+concept HasFaceEstimate = requires(const K k, int i, double e) {
+  { k.face_estimate_a(i) } -> std::same_as<FaceEstimate<typename K::FT>>;
+  { k.face_estimate_b(i) } -> std::same_as<FaceEstimate<typename K::FT>>;
+  { k.compare_width(e, e) } -> std::same_as<double>;
+};
+
 /// Maps (policy, T) to a kernel type.  Specialised by each policy.
 template <class Policy, class T>
 struct kernel_for;

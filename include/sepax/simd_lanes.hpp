@@ -23,7 +23,8 @@
 //                   an error bound (kFilter = true).
 //   support_scan    argmin over a shape's vertices of n.v (lowest index among
 //                   equal minima), with the minimum, and optionally the
-//                   second smallest value (for the robust filter).
+//                   second smallest value (for the robust filter), or the
+//                   minimum alone (no argmin: the robust face estimate).
 // Both need ConvexPolyhedron::lanes_bounded() of the shapes they read (no
 // value can overflow, none is NaN); callers check it once per query and use
 // their scalar code otherwise.
@@ -236,7 +237,7 @@ SEPAX_SIMD_INLINE inline int arc_candidates(const ConvexPolyhedron<T>& b, int lo
 /// Result of support_scan.
 template <class T>
 struct Support {
-  int index = 0;    // lowest index among the minima of n.v
+  int index = 0;    // kIndex: lowest index among the minima of n.v (else 0)
   T min = T(0);     // n.v at index
   T second = T(0);  // kSecond: the smallest n.v over the other vertices (+inf if none)
 };
@@ -244,13 +245,15 @@ struct Support {
 /// argmin over the vertices v of q of dot(n, v), the lowest index among equal
 /// minima: the vertex PlainKernel's scalar loop `if (h < best) best = h`
 /// selects.  kSecond also keeps the smallest value over the other vertices
-/// (equal to min when the minimum is attained twice).  Per lane: the smallest
-/// value, the first index attaining it, and the second smallest value; the
-/// lanes are merged at the end.  Needs lanes_bounded() of q and a finite n
-/// with |n_i| <= 2^60 (no NaN); vertex counts up to 2^24 (indices are kept
-/// exactly as T).
-template <bool kSecond, class T>
+/// (equal to min when the minimum is attained twice).  kIndex = false keeps
+/// the minimum alone (index is 0; not with kSecond): the same minimum, fewer
+/// operations per group.  Per lane: the smallest value, the first index
+/// attaining it, and the second smallest value; the lanes are merged at the
+/// end.  Needs lanes_bounded() of q and a finite n with |n_i| <= 2^60 (no
+/// NaN); vertex counts up to 2^24 (indices are kept exactly as T).
+template <bool kSecond, bool kIndex = true, class T>
 SEPAX_SIMD_INLINE inline Support<T> support_scan(const ConvexPolyhedron<T>& q, const Vec3<T>& n) {
+  static_assert(kIndex || !kSecond, "the second minimum needs the argmin's lane");
   using L = Lanes<T>;
   using V = typename L::V;
   using M = typename L::M;
@@ -266,16 +269,20 @@ SEPAX_SIMD_INLINE inline Support<T> support_scan(const ConvexPolyhedron<T>& q, c
   V cur = L::iota(T(0));
   const V step = L::set1(T(W));
   auto visit = [&](V h) SEPAX_SIMD_INLINE {
-    const M lt = L::lt(h, m1);
-    // the larger of (h, m1), if below m2.  min_lt(m2, t) rather than
-    // min_lt(t, m2): the same value (no NaN; on equal values the two differ at
-    // most in the sign of a zero, which no caller can see: it only subtracts
-    // and compares), and minps can then write m2's register in place (one
-    // register copy less per group).
-    if constexpr (kSecond) m2 = L::min_lt(m2, L::max_gt(h, m1));
-    idx = L::select(lt, cur, idx);
-    m1 = L::min_lt(h, m1);
-    cur = L::add(cur, step);
+    if constexpr (!kIndex) {
+      m1 = L::min_lt(h, m1);
+    } else {
+      const M lt = L::lt(h, m1);
+      // the larger of (h, m1), if below m2.  min_lt(m2, t) rather than
+      // min_lt(t, m2): the same value (no NaN; on equal values the two differ
+      // at most in the sign of a zero, which no caller can see: it only
+      // subtracts and compares), and minps can then write m2's register in
+      // place (one register copy less per group).
+      if constexpr (kSecond) m2 = L::min_lt(m2, L::max_gt(h, m1));
+      idx = L::select(lt, cur, idx);
+      m1 = L::min_lt(h, m1);
+      cur = L::add(cur, step);
+    }
   };
   const int full = nv / W * W;
   for (int g = 0; g < full; g += W) {
@@ -285,11 +292,17 @@ SEPAX_SIMD_INLINE inline Support<T> support_scan(const ConvexPolyhedron<T>& q, c
   if (full < nv) {  // the last, partial group: padding lanes become +inf
     const auto i = static_cast<std::size_t>(full);
     const V h = dot3<L>(L::load(x + i), L::load(y + i), L::load(z + i), nx, ny, nz);
-    visit(L::select(L::lt(cur, L::set1(static_cast<T>(nv))), h, inf));
+    // !kIndex: cur is not advanced by visit; these lanes' indices are full + j
+    const V at = kIndex ? cur : L::iota(static_cast<T>(full));
+    visit(L::select(L::lt(at, L::set1(static_cast<T>(nv))), h, inf));
   }
   // merge the lanes: the minimum, then the lowest index among the lanes holding it
   Support<T> r;
   const V mn = L::hmin(m1);
+  if constexpr (!kIndex) {
+    r.min = L::first(mn);
+    return r;
+  }
   const M at_min = L::eq(m1, mn);
   const V best = L::hmin(L::select(at_min, idx, inf));
   r.min = L::first(mn);

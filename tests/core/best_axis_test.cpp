@@ -194,3 +194,12 @@ TEMPLATE_TEST_CASE("side axes: early out and the cache", "[sat][side]", float, d
   CHECK_FALSE(fourth.overlap);
   CHECK((fourth.feature.type == FeatureType::SideA || fourth.feature.type == FeatureType::SideB));
 }
+
+// scan_face_axes asks a kernel with face estimates (sat_kernel.hpp,
+// HasFaceEstimate: RobustKernel, tests/robust/robust_kernel_test.cpp) for the
+// certified face query only where it can matter; plain and exact kernels have
+// none and certify every face, as before.
+TEST_CASE("face estimates: plain kernels certify every face", "[sat][estimate]") {
+  STATIC_REQUIRE(!HasFaceEstimate<PlainKernel<float>>);
+  STATIC_REQUIRE(!HasFaceEstimate<PlainKernel<double>>);
+}

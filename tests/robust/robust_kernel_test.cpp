@@ -6,6 +6,7 @@
 // built to produce exact ties, exact zeros and exactly parallel edges.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -482,4 +483,208 @@ TEMPLATE_TEST_CASE("robust edges_parallel = exact parallelism, pair by pair", "[
   CHECK(mismatches == 0);
   CHECK(parallel > 100);
   CHECK(parallel < pairs);
+}
+
+// ---- the face scan's estimates (sat_kernel.hpp, HasFaceEstimate) ----------
+//
+// RobustKernel has face_estimate_a/b: the shared face scan (best_axis.hpp)
+// certifies the support vertex (face_query_*) only for faces whose estimate is
+// not certainly below the best so far.  CountingKernel records which faces
+// were certified; FullKernel hides the estimates (a deleted member of the same
+// name: HasFaceEstimate is false), so it certifies every face: the previous
+// path, for comparison on the same inputs.
+namespace {
+
+template <class T>
+struct CountingKernel : RobustKernel<T> {
+  using RobustKernel<T>::RobustKernel;
+  mutable std::vector<int> certified_a, certified_b;
+  FaceQuery<T> face_query_a(int f) const {
+    certified_a.push_back(f);
+    return RobustKernel<T>::face_query_a(f);
+  }
+  FaceQuery<T> face_query_b(int f) const {
+    certified_b.push_back(f);
+    return RobustKernel<T>::face_query_b(f);
+  }
+};
+
+template <class T>
+struct FullKernel : RobustKernel<T> {
+  using RobustKernel<T>::RobustKernel;
+  void face_estimate_a() const = delete;
+  void face_estimate_b() const = delete;
+};
+
+bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); }
+
+struct EstimateTally {
+  long faces = 0, certified = 0;
+  long skipped = 0;       // faces not certified
+  long ties_checked = 0;  // faces tied exactly with the result, other than the result's own face
+  int mismatches = 0;
+};
+
+// One pair, one algorithm: the estimating run against the certify-everything
+// run (bit-identical result, same counters, no more exact work) and against
+// exact arithmetic (same feature, verdict, sign).  Every skipped face must be
+// exactly below the result's separation; every face exactly tied with it
+// must have been certified.
+template <class T>
+void check_estimates(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bool gauss, bool early_out,
+                     EstimateTally& t) {
+  SatOptions opt;
+  opt.early_out = early_out;
+  CountingKernel<T> kc(a, b);
+  FullKernel<T> kf(a, b);
+  STATIC_REQUIRE(HasFaceEstimate<CountingKernel<T>>);
+  STATIC_REQUIRE(!HasFaceEstimate<FullKernel<T>>);
+  const auto ae = ConvexPolyhedron<mpq_class>::convert_from(a);
+  const auto be = ConvexPolyhedron<mpq_class>::convert_from(b);
+  const auto r = gauss ? sat::gauss_map_with(kc, opt) : sat::brute_force_with(kc, opt);
+  const auto f = gauss ? sat::gauss_map_with(kf, opt) : sat::brute_force_with(kf, opt);
+  const auto e = gauss ? sat::gauss_map(ae, be, opt) : sat::brute_force(ae, be, opt);
+  bool ok = r.feature == e.feature && r.overlap == e.overlap && sign_of(r.separation.num) == sign(e.separation) &&
+            r.early_out == e.early_out && r.stats.face_axes == e.stats.face_axes;
+  ok = ok && r.feature == f.feature && r.separation.num == f.separation.num && r.early_out == f.early_out &&
+       r.stats.face_axes == f.stats.face_axes && r.stats.edge_pairs == f.stats.edge_pairs &&
+       r.stats.minkowski_faces == f.stats.minkowski_faces &&
+       r.stats.exact_fallbacks <= f.stats.exact_fallbacks;
+  // the faces the scan looked at (all of them unless it stopped early)
+  const int fa = static_cast<int>(std::min<std::int64_t>(a.face_count(), r.stats.face_axes));
+  const int fb = static_cast<int>(r.stats.face_axes - fa);
+  const PlainKernel<mpq_class> ke(ae, be);
+  for (int side = 0; side < 2; ++side) {
+    const int n = side == 0 ? fa : fb;
+    const auto& cert = side == 0 ? kc.certified_a : kc.certified_b;
+    for (int i = 0; i < n; ++i) {
+      const auto q = side == 0 ? ke.face_query_a(i) : ke.face_query_b(i);
+      const int c = compare(q.separation, e.separation);
+      const bool certified = contains(cert, i);
+      ++t.faces;
+      t.certified += certified;
+      t.skipped += !certified;
+      if (!certified && c >= 0) ok = false;  // skipped, but not exactly below the result
+      if (c == 0) {
+        if (!certified) ok = false;  // a tie must get the exact vertex
+        const Feature ff = side == 0 ? Feature::face_a(i, q.support_vertex) : Feature::face_b(q.support_vertex, i);
+        if (!(ff == e.feature)) ++t.ties_checked;
+      }
+    }
+  }
+  if (!ok) {
+    ++t.mismatches;
+    INFO("T = " << number_traits<T>::name << (gauss ? " gauss_map" : " brute_force") << " early_out " << early_out);
+    INFO("A: " << describe(a));
+    INFO("B: " << describe(b));
+    INFO("estimating " << to_string(r.feature) << " sep " << r.separation_as_double() << " fallbacks "
+                       << r.stats.exact_fallbacks << " certified " << kc.certified_a.size() << " + "
+                       << kc.certified_b.size());
+    INFO("full       " << to_string(f.feature) << " sep " << f.separation_as_double() << " fallbacks "
+                       << f.stats.exact_fallbacks);
+    INFO("exact      " << to_string(e.feature) << " sep " << e.separation_as_double());
+    CHECK(ok);
+  }
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("robust face estimates: within their bound of the exact face separation",
+                   "[robust][kernel][estimate]", float, double) {
+  using T = TestType;
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int checked = 0, outside = 0;
+  for (int n : {4, 8, 16, 40}) {  // 4: the scalar loop; more: the lanes
+    const auto ha = random_sphere_hull<T>(rng, n);
+    const auto hb = random_sphere_hull<T>(rng, n);
+    for (double scale : {1.0, 1e-4, 1e4}) {
+      const auto a = posed(ha, random_rotation(rng), Vec3<double>(0, 0, 0), scale);
+      const auto b = posed(hb, random_rotation(rng), Vec3<double>(u(rng), u(rng), u(rng)) * scale, scale);
+      const RobustKernel<T> k(a, b);
+      const auto ae = ConvexPolyhedron<mpq_class>::convert_from(a);
+      const auto be = ConvexPolyhedron<mpq_class>::convert_from(b);
+      const PlainKernel<mpq_class> ke(ae, be);  // keeps references
+      for (int side = 0; side < 2; ++side) {
+        for (int f = 0; f < (side == 0 ? a.face_count() : b.face_count()); ++f) {
+          const FaceEstimate<T> est = side == 0 ? k.face_estimate_a(f) : k.face_estimate_b(f);
+          const auto q = side == 0 ? k.face_query_a(f) : k.face_query_b(f);
+          const double h = to_double((side == 0 ? ke.face_query_a(f) : ke.face_query_b(f)).separation);
+          const Feature feat = side == 0 ? Feature::face_a(f, q.support_vertex) : Feature::face_b(q.support_vertex, f);
+          // the bound of the certified value; h is the exact value within
+          // about an ulp of double (long double for the difference)
+          const long double diff = std::fabs(static_cast<long double>(est.separation.num) - h);
+          const bool in = diff <= est.error + 0x1p-51 * std::fabs(h) && est.error == k.error_bound(feat);
+          // where the float argmin is the exact support vertex (certified
+          // unique), the estimate is the certified value itself
+          // the certified value is within the same bound of h: the two are
+          // within twice the bound of each other (equal where the float argmin
+          // is the support vertex and the value not snapped)
+          const bool same = std::fabs(static_cast<long double>(q.separation.num) - est.separation.num) <=
+                            2 * est.error;
+          ++checked;
+          if (!in || !same) {
+            ++outside;
+            INFO("face " << f << " of " << (side == 0 ? "A" : "B") << ": estimate " << est.separation.num
+                         << " error " << est.error << " exact " << h << " certified " << q.separation.num);
+            CHECK(false);
+          }
+        }
+      }
+    }
+  }
+  CHECK(outside == 0);
+  CHECK(checked > 500);
+}
+
+TEMPLATE_TEST_CASE("robust face scan: certified queries only where they can matter (sphere hulls)",
+                   "[robust][kernel][estimate]", float, double) {
+  using T = TestType;
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(-1, 1);
+  EstimateTally t;
+  for (int n : {6, 16, 32, 64}) {
+    const auto ha = random_sphere_hull<T>(rng, n);
+    const auto hb = random_sphere_hull<T>(rng, n);
+    for (int i = 0; i < 12 && t.mismatches < 3; ++i) {
+      const double dist = 2.4 * (0.5 + 0.5 * u(rng));  // mostly overlapping, some separated
+      Vec3<double> dir(u(rng), u(rng), u(rng));
+      dir.normalize();
+      const auto a = posed(ha, random_rotation(rng), Vec3<double>(0, 0, 0));
+      const auto b = posed(hb, random_rotation(rng), Vec3<double>(dir * dist));
+      // the exact brute force is slow on the larger hulls: Gauss map only there
+      for (bool gauss : {true, false})
+        for (bool early : {false, true})
+          if (gauss || n <= 16) check_estimates(a, b, gauss, early, t);
+    }
+  }
+  CHECK(t.mismatches == 0);
+  // the cheap path is taken: most faces are never certified
+  CHECK(t.skipped > 0);
+  CHECK(t.certified * 3 < t.faces);
+  WARN(number_traits<T>::name << ": " << t.faces << " faces scanned, " << t.certified << " certified");
+}
+
+TEMPLATE_TEST_CASE("robust face scan: faces tied with the best are certified (touching boxes)",
+                   "[robust][kernel][estimate]", float, double) {
+  using T = TestType;
+  EstimateTally t;
+  for (double s : {1.0, 1e-4, 1e4}) {
+    const auto a = shapes::box<T>(1.0 * s, 1.0 * s, 1.0 * s);
+    const auto b0 = shapes::box<T>(0.5 * s, 1.0 * s, 0.75 * s);
+    const double steps[] = {0.0, 0.5, 1.5, 1.75, 2.0, 2.5};
+    for (double x : steps)
+      for (double y : steps)
+        for (double z : steps)
+          for (const auto& b : {translated(b0, v3<T>(x * s, -y * s, z * s)),
+                                translated(quarter_turn(b0), v3<T>(x * s, y * s, z * s))})
+            for (bool gauss : {true, false}) check_estimates(a, b, gauss, false, t);
+  }
+  CHECK(t.mismatches == 0);
+  // exact ties with the result's separation on faces other than the reported
+  // one: they took the certified path (checked in check_estimates)
+  CHECK(t.ties_checked > 100);
+  CHECK(t.skipped > 0);
+  WARN(number_traits<T>::name << ": " << t.faces << " faces, " << t.certified << " certified, "
+                              << t.ties_checked << " ties");
 }

@@ -53,6 +53,9 @@
 //   One pass keeps the minimum and the second minimum; if they are more than
 //   W_P apart the float argmin is the exact unique argmin, else the vertices
 //   within W_P of the minimum are compared exactly (lowest index wins ties).
+//   The SATs' face scans ask for it only where the feature can matter: a
+//   face whose min-only estimate (face_estimate_*, within E_face of the exact
+//   value) is certainly below the best so far is skipped (best_axis.hpp).
 // (arc sign)     fl(n_f . fl(head - tail)) vs (N/|N|).e:
 //   (δ_P + γ_5) |e| <= (δ_P + γ_5) D_Q = E_arc(P)                   (+ 2 η_T)
 // (edge value)   both the O(1) form fl(n.fl(pB - pA)) and the projection form
@@ -204,6 +207,29 @@ class RobustKernel {
     FaceQuery<T> q = face_query(b_, f, a_, support_err_b_, support_err_b_t_);
     q.separation = snap(q.separation.num, face_err_b_, Feature::face_b(q.support_vertex, f));
     return q;
+  }
+
+  /// Optional members (sat_kernel.hpp, HasFaceEstimate): face f's value
+  /// without certifying its support vertex, for the face scan's skip test
+  /// (best_axis.hpp, BestAxis::certainly_below).  The value is
+  /// fl(m - offset), m the minimum over the other shape's vertices v of
+  /// g_v = fl(n.v) (a min-only scan: no argmin, no second minimum); face_query
+  /// reports the same value when its support vertex is the float argmin.
+  /// Its error against the face's exact separation h* = min_v h(v) (h(v) =
+  /// N.(v - a)/|N|, the exact support vertex's height) is at most E_face,
+  /// face_err_a_ (the header's "(face value)", which bounds
+  /// |fl(g_v - offset) - h(v)| for every vertex v, with or without FMA):
+  /// with u the vertex attaining m and w an exact argmin,
+  ///   h* <= h(u) <= fl(m - offset) + E_face, and, since g_w >= m and
+  ///   rounding is monotone, fl(m - offset) <= fl(g_w - offset) <= h* + E_face.
+  /// No exact stage runs here.
+  SEPAX_ROBUST_INLINE FaceEstimate<T> face_estimate_a(int f) const {
+    const Plane<T>& pl = a_.plane(f);
+    return FaceEstimate<T>{Separation<T>{T(support_min(pl, b_) - pl.offset), T(1)}, face_err_a_};
+  }
+  SEPAX_ROBUST_INLINE FaceEstimate<T> face_estimate_b(int f) const {
+    const Plane<T>& pl = b_.plane(f);
+    return FaceEstimate<T>{Separation<T>{T(support_min(pl, a_) - pl.offset), T(1)}, face_err_b_};
   }
 
   // Side axes (both shapes flat; best_axis.hpp).  No filter: the case is
@@ -1057,6 +1083,21 @@ class RobustKernel {
       hb = dot(pl.normal, vs[static_cast<std::size_t>(best)]);
     }
     return FaceQuery<T>{Separation<T>{T(hb - pl.offset), T(1)}, best};
+  }
+
+  // The minimum of g_v = fl(n.v) over q's vertices, n face f's normal
+  // (face_estimate_*): the minimum face_query's scans find, from the same
+  // values, without its argmin and second minimum.
+  SEPAX_ROBUST_INLINE T support_min(const Plane<T>& pl, const P& q) const {
+    const auto& vs = q.vertices();
+    const int nv = static_cast<int>(vs.size());
+    if (lanes_ && nv > kScalarSupportMax) return simd::support_scan<false, false>(q, pl.normal).min;
+    T m = dot(pl.normal, vs[0]);
+    for (int i = 1; i < nv; ++i) {
+      const T h = dot(pl.normal, vs[static_cast<std::size_t>(i)]);
+      m = h < m ? h : m;
+    }
+    return m;
   }
 
   SEPAX_ROBUST_COLD int resolve_support(const P& p, int f, const P& q, T m, double w) const {
