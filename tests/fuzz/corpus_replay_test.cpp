@@ -120,3 +120,13 @@ TEST_CASE("corpus 35: the plain float traversal takes a crossing its arc test ac
   CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
   CHECK(r.by_config.at("separation/float_plain")[Klass::unexplained] == 0);
 }
+
+TEST_CASE("corpus 36: a float reduction around another deepest point (tied within the weld) is a tie",
+          "[fuzz][corpus][manifold]") {
+  const CaseReport r = replay_corpus("36-perturbed-reduction-deepest-tie.case");
+  REQUIRE(r.valid);
+  for (const auto& x : r.unexplained) UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+  CHECK(r.unexplained_count == 0);
+  // the reduction differs from the exact one and is classified as a tie
+  CHECK(r.details.at("manifold.reduction")[Klass::tie] >= 1);
+}
