@@ -1135,14 +1135,18 @@ class RobustKernel {
     x.lo = x.hi = dot(n, p.vertex(0));
     x.lo_other = std::numeric_limits<T>::infinity();
     x.hi_other = -std::numeric_limits<T>::infinity();
+    // Selects, not jumps (minss/maxss and a blend): whether a vertex is a new
+    // extreme is a coin toss per vertex and pair, and the brute force runs
+    // this loop twice per edge pair.  Same values as the if-form: a < b ? a : b.
+    constexpr T kInf = std::numeric_limits<T>::infinity();
     for (int i = 0; i < p.vertex_count(); ++i) {
       const T h = dot(n, p.vertex(i));
-      if (h < x.lo) x.lo = h;
-      if (h > x.hi) x.hi = h;
-      if (i != tail && i != head) {
-        if (h < x.lo_other) x.lo_other = h;
-        if (h > x.hi_other) x.hi_other = h;
-      }
+      x.lo = h < x.lo ? h : x.lo;
+      x.hi = h > x.hi ? h : x.hi;
+      const bool other = (i != tail) & (i != head);
+      const T hl = other ? h : kInf, hh = other ? h : -kInf;
+      x.lo_other = hl < x.lo_other ? hl : x.lo_other;
+      x.hi_other = hh > x.hi_other ? hh : x.hi_other;
     }
     return x;
   }
