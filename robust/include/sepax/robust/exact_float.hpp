@@ -47,21 +47,29 @@ inline double approx_double(const ExactFloat& x) { return x.get_d(); }
 inline ExactFloat exact(double d) { return ExactFloat(d); }
 
 /// Exact b - a for float/double points.
-template <class F>
-inline std::array<ExactFloat, 3> exact_diff(const Vec3<F>& b, const Vec3<F>& a) {
-  return {exact(static_cast<double>(b[0])) - exact(static_cast<double>(a[0])),
-          exact(static_cast<double>(b[1])) - exact(static_cast<double>(a[1])),
-          exact(static_cast<double>(b[2])) - exact(static_cast<double>(a[2]))};
+/// b - a with coordinates converted to N (exactly: float and double values are
+/// ExactFloat and CGAL::Interval_nt values) before the subtraction.
+template <class N, class F>
+inline std::array<N, 3> diff_as(const Vec3<F>& b, const Vec3<F>& a) {
+  return {N(static_cast<double>(b[0])) - N(static_cast<double>(a[0])),
+          N(static_cast<double>(b[1])) - N(static_cast<double>(a[1])),
+          N(static_cast<double>(b[2])) - N(static_cast<double>(a[2]))};
 }
 
-/// Exact cross product of two exact vectors.
-inline std::array<ExactFloat, 3> exact_cross(const std::array<ExactFloat, 3>& a,
-                                             const std::array<ExactFloat, 3>& b) {
+template <class F>
+inline std::array<ExactFloat, 3> exact_diff(const Vec3<F>& b, const Vec3<F>& a) {
+  return diff_as<ExactFloat>(b, a);
+}
+
+// Cross and dot products of coordinate arrays: exact for ExactFloat, outward
+// enclosures for intervals (separation_compare.hpp's stage 2).
+template <class N>
+inline std::array<N, 3> exact_cross(const std::array<N, 3>& a, const std::array<N, 3>& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-/// Exact dot product of two exact vectors.
-inline ExactFloat exact_dot(const std::array<ExactFloat, 3>& a, const std::array<ExactFloat, 3>& b) {
+template <class N>
+inline N exact_dot(const std::array<N, 3>& a, const std::array<N, 3>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 

@@ -779,8 +779,21 @@ class RobustKernel {
 
   // ---- exact helpers (each call counts as a fallback when it runs exactly) ----
 
+  // Past the value filter: interval arithmetic on the exact formula first
+  // (separation_compare.hpp, stage 2), the exact numbers only if that cannot
+  // decide (ties, side features).  Both count as one fallback: a decision
+  // the filter could not make.
   SEPAX_ROBUST_COLD int compare_exact(const Feature& fx, const Feature& fy) const {
     ++fallbacks_;
+    if (!is_side(fx.type) && !is_side(fy.type)) {
+      // The orientations first: edge_sigma computes in T and double, which
+      // must not run in the interval stage's upward rounding mode.
+      const int sx = fx.type == FeatureType::EdgePair ? edge_sigma(fx.a, fx.b) : 1;
+      const int sy = fy.type == FeatureType::EdgePair ? edge_sigma(fy.a, fy.b) : 1;
+      const int s = robust::compare_interval([&] { return separation_poly<robust::IntervalFloat>(fx, sx); },
+                                             [&] { return separation_poly<robust::IntervalFloat>(fy, sy); });
+      if (s != robust::kUncertain) return s;
+    }
     return robust::compare_exact(exact_separation(fx), exact_separation(fy));
   }
 
@@ -904,16 +917,38 @@ class RobustKernel {
     return edge_pair_sign(ea, eb) < 0 ? -1 : 1;
   }
 
-  robust::ExactSeparation exact_separation(const Feature& f) const {
+  static bool is_side(FeatureType t) { return t == FeatureType::SideA || t == FeatureType::SideB; }
+
+  // A face or edge-pair feature's separation polynomials in N (ExactFloat or,
+  // inside a rounding scope, IntervalFloat), sigma = edge_sigma of an edge
+  // pair (computed by the caller: no T arithmetic runs here).  Not for side
+  // features.
+  template <class N>
+  robust::SeparationPoly<N> separation_poly(const Feature& f, int sigma) const {
     switch (f.type) {
       case FeatureType::FaceA: {
         const auto pts = a_.plane_points(f.a);
-        return robust::face_separation_exact(pts[0], pts[1], pts[2], b_.vertex(f.b));
+        return robust::face_separation_poly<N>(pts[0], pts[1], pts[2], b_.vertex(f.b));
       }
       case FeatureType::FaceB: {
         const auto pts = b_.plane_points(f.b);
-        return robust::face_separation_exact(pts[0], pts[1], pts[2], a_.vertex(f.a));
+        return robust::face_separation_poly<N>(pts[0], pts[1], pts[2], a_.vertex(f.a));
       }
+      case FeatureType::EdgePair:
+      default: {
+        const int ea = f.a, eb = f.b;
+        return robust::edge_separation_poly<N>(
+            a_.vertex(a_.edge_tail(ea)), a_.vertex(a_.edge_head(ea)), b_.vertex(b_.edge_tail(eb)),
+            b_.vertex(b_.edge_head(eb)), a_.vertex(a_.edge_tail(ea)), b_.vertex(b_.edge_tail(eb)), sigma);
+      }
+    }
+  }
+
+  robust::ExactSeparation exact_separation(const Feature& f) const {
+    switch (f.type) {
+      case FeatureType::FaceA:
+      case FeatureType::FaceB: return separation_poly<robust::ExactFloat>(f, 1);
+      case FeatureType::EdgePair: return separation_poly<robust::ExactFloat>(f, edge_sigma(f.a, f.b));
       case FeatureType::SideA: {
         const auto u = exact_side_normal(a_, f.a);
         return {robust::exact_dot(u, robust::exact_diff(b_.vertex(f.b), a_.vertex(a_.edge_tail(f.a)))),
@@ -924,15 +959,8 @@ class RobustKernel {
         return {robust::exact_dot(u, robust::exact_diff(a_.vertex(f.a), b_.vertex(b_.edge_tail(f.b)))),
                 robust::exact_dot(u, u)};
       }
-      case FeatureType::EdgePair:
-      default: {
-        const int ea = f.a, eb = f.b;
-        return robust::edge_separation_exact(
-            a_.vertex(a_.edge_tail(ea)), a_.vertex(a_.edge_head(ea)), b_.vertex(b_.edge_tail(eb)),
-            b_.vertex(b_.edge_head(eb)), a_.vertex(a_.edge_tail(ea)), b_.vertex(b_.edge_tail(eb)),
-            edge_sigma(ea, eb));
-      }
     }
+    return {};
   }
 
   // The exact sign of a feature's separation.
