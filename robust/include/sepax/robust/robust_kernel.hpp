@@ -781,20 +781,18 @@ class RobustKernel {
 
   // Past the value filter: interval arithmetic on the exact formula first
   // (separation_compare.hpp, stage 2), the exact numbers only if that cannot
-  // decide (ties, side features).  Both count as one fallback: a decision
-  // the filter could not make.
+  // decide (ties, overflow).  Both count as one fallback: a decision the
+  // filter could not make.
   SEPAX_ROBUST_COLD int compare_exact(const Feature& fx, const Feature& fy) const {
     ++fallbacks_;
-    if (!is_side(fx.type) && !is_side(fy.type)) {
-      // The orientations first: edge_sigma computes in T and double, which
-      // must not run in the interval stage's upward rounding mode.
-      const int sx = fx.type == FeatureType::EdgePair ? edge_sigma(fx.a, fx.b) : 1;
-      const int sy = fy.type == FeatureType::EdgePair ? edge_sigma(fy.a, fy.b) : 1;
-      const int s = robust::compare_interval([&] { return separation_poly<robust::IntervalFloat>(fx, sx); },
-                                             [&] { return separation_poly<robust::IntervalFloat>(fy, sy); });
-      if (s != robust::kUncertain) return s;
-    }
-    return robust::compare_exact(exact_separation(fx), exact_separation(fy));
+    // The orientations first: edge_sigma computes in T and double, which
+    // must not run in the interval stage's upward rounding mode.
+    const int sx = sigma_of(fx), sy = sigma_of(fy);
+    const int s = robust::compare_interval([&] { return separation_poly<robust::IntervalFloat>(fx, sx); },
+                                           [&] { return separation_poly<robust::IntervalFloat>(fy, sy); });
+    if (s != robust::kUncertain) return s;
+    return robust::compare_exact(separation_poly<robust::ExactFloat>(fx, sx),
+                                 separation_poly<robust::ExactFloat>(fy, sy));
   }
 
   // sign of N_f . (q1 - q0), N_f the plane triple's cross product of face f of p.
@@ -917,12 +915,9 @@ class RobustKernel {
     return edge_pair_sign(ea, eb) < 0 ? -1 : 1;
   }
 
-  static bool is_side(FeatureType t) { return t == FeatureType::SideA || t == FeatureType::SideB; }
-
-  // A face or edge-pair feature's separation polynomials in N (ExactFloat or,
-  // inside a rounding scope, IntervalFloat), sigma = edge_sigma of an edge
-  // pair (computed by the caller: no T arithmetic runs here).  Not for side
-  // features.
+  // A feature's separation polynomials in N (ExactFloat or, inside a
+  // rounding scope, IntervalFloat), sigma = edge_sigma of an edge pair
+  // (computed by the caller: no T arithmetic runs here).
   template <class N>
   robust::SeparationPoly<N> separation_poly(const Feature& f, int sigma) const {
     switch (f.type) {
@@ -934,6 +929,16 @@ class RobustKernel {
         const auto pts = b_.plane_points(f.b);
         return robust::face_separation_poly<N>(pts[0], pts[1], pts[2], a_.vertex(f.a));
       }
+      case FeatureType::SideA: {
+        const auto u = side_normal_as<N>(a_, f.a);
+        return {robust::exact_dot(u, robust::diff_as<N>(b_.vertex(f.b), a_.vertex(a_.edge_tail(f.a)))),
+                robust::exact_dot(u, u)};
+      }
+      case FeatureType::SideB: {
+        const auto u = side_normal_as<N>(b_, f.b);
+        return {robust::exact_dot(u, robust::diff_as<N>(a_.vertex(f.a), b_.vertex(b_.edge_tail(f.b)))),
+                robust::exact_dot(u, u)};
+      }
       case FeatureType::EdgePair:
       default: {
         const int ea = f.a, eb = f.b;
@@ -944,23 +949,10 @@ class RobustKernel {
     }
   }
 
+  int sigma_of(const Feature& f) const { return f.type == FeatureType::EdgePair ? edge_sigma(f.a, f.b) : 1; }
+
   robust::ExactSeparation exact_separation(const Feature& f) const {
-    switch (f.type) {
-      case FeatureType::FaceA:
-      case FeatureType::FaceB: return separation_poly<robust::ExactFloat>(f, 1);
-      case FeatureType::EdgePair: return separation_poly<robust::ExactFloat>(f, edge_sigma(f.a, f.b));
-      case FeatureType::SideA: {
-        const auto u = exact_side_normal(a_, f.a);
-        return {robust::exact_dot(u, robust::exact_diff(b_.vertex(f.b), a_.vertex(a_.edge_tail(f.a)))),
-                robust::exact_dot(u, u)};
-      }
-      case FeatureType::SideB: {
-        const auto u = exact_side_normal(b_, f.b);
-        return {robust::exact_dot(u, robust::exact_diff(a_.vertex(f.a), b_.vertex(b_.edge_tail(f.b)))),
-                robust::exact_dot(u, u)};
-      }
-    }
-    return {};
+    return separation_poly<robust::ExactFloat>(f, sigma_of(f));
   }
 
   // The exact sign of a feature's separation.
@@ -1001,11 +993,16 @@ class RobustKernel {
 
   // u = (head - tail) x N, N the plane triple's cross product of the face of
   // half-edge 2e: the polygon's in-plane outward normal of edge e, exactly.
-  static std::array<robust::ExactFloat, 3> exact_side_normal(const P& p, int e) {
+  template <class N>
+  static std::array<N, 3> side_normal_as(const P& p, int e) {
     const auto t = p.plane_points(p.edge_face(e, 0));
-    const auto n = robust::exact_cross(robust::exact_diff(t[1], t[0]), robust::exact_diff(t[2], t[0]));
-    return robust::exact_cross(robust::exact_diff(p.vertex(p.edge_head(e)), p.vertex(p.edge_tail(e))), n);
+    const auto n = robust::exact_cross(robust::diff_as<N>(t[1], t[0]), robust::diff_as<N>(t[2], t[0]));
+    return robust::exact_cross(robust::diff_as<N>(p.vertex(p.edge_head(e)), p.vertex(p.edge_tail(e))), n);
   }
+  static std::array<robust::ExactFloat, 3> exact_side_normal(const P& p, int e) {
+    return side_normal_as<robust::ExactFloat>(p, e);
+  }
+
 
   // The same direction in T, unit (reporting and float values only).
   static Vec3<T> side_normal(const P& p, int e) {
