@@ -154,7 +154,8 @@ class Traversal {
 
   Traversal(K& k, const GaussMapWalk& wa, const GaussMapWalk& wb, const SatOptions& opt,
             TraversalStats& ts)
-      : k_(k), wa_(wa), wb_(wb), opt_(opt), ts_(ts), prune_arcs_(!wa.is_flat()) {}
+      : k_(k), wa_(wa), wb_(wb), opt_(opt), ts_(ts), prune_arcs_(!wa.is_flat()),
+        plain_flat_(wa.is_flat() || wb.is_flat()) {}
 
   SatResult<T> run() {
     const int fa = wa_.face_count(), fb = wb_.face_count();
@@ -165,6 +166,23 @@ class Traversal {
     if (faces<true>(st, 0)) return best_.result(k_, stats_, true);
     if (faces<false>(st, fa)) return best_.result(k_, stats_, true);
     const int ne = wa_.edge_count();
+    if constexpr (kRoundingDecisions) {
+      // Plain float/double with a flat shape (a polygon lying on or near the
+      // other shape, fuzz/corpus/37-...): every arc is tested against every
+      // arc of -B, as sat::gauss_map does, with no walk and no arc pruning.
+      // The walk starts an arc in the region of the support vertex that the
+      // climb picked by comparing fl(n.v), and a flat shape nearly parallel
+      // to a face of the other makes those heights rounding ties: a start
+      // one region off skips a crossing the arc test itself accepts.  Exact
+      // and robust kernels decide both exactly and consistently and walk.
+      if (plain_flat_) {
+        for (int ea = 0; ea < ne; ++ea) {
+          if (fallback(ea)) return best_.result(k_, stats_, true);
+        }
+        if (scan_side_axes(k_, best_, stats_, opt_)) return best_.result(k_, stats_, true);
+        return best_.result(k_, stats_, false);
+      }
+    }
     const int* sa = &st[0];  // faces of A (arc() updates them through st)
     std::int64_t pruned = 0;
     bool stop = false;
@@ -243,6 +261,9 @@ class Traversal {
   // PlainKernel<float/double>: compare fl(n.v) as T values (filter width 0).
   static constexpr bool kPlainFloat = std::is_floating_point_v<T> && std::is_same_v<K, PlainKernel<T>>;
   static constexpr bool kFast = kFiltered || kPlainFloat;
+  // float/double kernels whose decisions are rounded (PlainKernel, or a
+  // wrapper of it), unlike RobustKernel's exact ones: see run().
+  static constexpr bool kRoundingDecisions = std::is_floating_point_v<T> && !kFiltered;
   // Kernels that expose their value error bounds (RobustKernel): the current
   // best's bound is kept, so comparing a candidate with the best costs one
   // filter (the same filter and exact fallback as k.compare).
@@ -948,6 +969,7 @@ class Traversal {
   const SatOptions& opt_;
   TraversalStats& ts_;
   const bool prune_arcs_;
+  const bool plain_flat_;  // a flat shape (used with kRoundingDecisions only, see run())
   int seed_a_ = 0, seed_b_ = 0;  // root seeds of step 1 and 2 (from step 0)
   BestAxis<K> best_;
   double best_err_ = 0;  // k.error_bound of the best's feature (kBounded)

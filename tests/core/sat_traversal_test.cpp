@@ -279,6 +279,36 @@ TEST_CASE("plain float traversal takes every crossing its arc test accepts, even
   check_same(t, g, "nearly coplanar quads");
 }
 
+// A quad and a pentagon nearly parallel (fuzz/corpus/37-..., shrunk from a
+// 10-minute campaign, seed 22): B's heights over A's faces are rounding ties,
+// the float climb's support vertex for A's face 0 was one region off, and the
+// walk skipped the crossing edges(0, 0) that the float arc test accepts (and
+// exact arithmetic chooses).  Plain kernels now test every arc of a flat pair
+// against every arc of -B, as the Gauss map does.
+TEST_CASE("plain float traversal with a flat shape measures every pair its arc test accepts",
+          "[traversal][flat]") {
+  using V = Vec3<float>;
+  const auto a = ConvexPolyhedron<float>::from_faces(
+      {V(-0.0326072983f, 0.0249402914f, -0.00621825783f), V(-0.032214243f, 0.0249345172f, -0.00624135137f),
+       V(-0.0321951434f, 0.0248533338f, -0.00656608958f), V(-0.0325774178f, 0.0247043259f, -0.00716211926f)},
+      {{0, 1, 2, 3}, {3, 2, 1, 0}});
+  const auto b = ConvexPolyhedron<float>::from_faces(
+      {V(-0.0322029516f, 0.024851175f, -0.00657469174f), V(-0.0321554206f, 0.0248513408f, -0.00657402631f),
+       V(-0.0319796354f, 0.0247085374f, -0.00714524183f), V(-0.0322105475f, 0.0244366378f, -0.00823284592f),
+       V(-0.0323127694f, 0.0244829617f, -0.00804754905f)},
+      {{0, 1, 2, 3, 4}, {4, 3, 2, 1, 0}});
+  const GaussMapWalk wa(a), wb(b);
+  sat::TraversalStats ts;
+  PlainKernel<float> k(a, b);
+  const auto t = sat::traversal_with(k, wa, wb, {}, &ts);
+  const auto g = sat::gauss_map(a, b);
+  CHECK(g.feature == Feature::edges(0, 0));
+  check_same(t, g, "nearly parallel quad and pentagon");
+  CHECK(ts.fallback_arcs == wa.edge_count());  // every arc against every arc of -B
+  // the same shapes swapped (B flat against A flat, roles exchanged)
+  check_same(sat::traversal(b, a), sat::gauss_map(b, a), "swapped");
+}
+
 TEST_CASE("traversal early out returns a separating axis exactly when separated", "[traversal]") {
   std::mt19937_64 rng(4242);
   std::uniform_real_distribution<double> off(-2.5, 2.5);

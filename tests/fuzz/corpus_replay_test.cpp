@@ -120,6 +120,15 @@ TEST_CASE("corpus 35: the plain float traversal takes a crossing its arc test ac
   CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
 }
 
+TEST_CASE("corpus 37: the plain float traversal with a flat shape does not skip a crossing at a rounded start tie",
+          "[fuzz][corpus][traversal]") {
+  const CaseReport r = replay_explained("37-flat-plain-traversal-start-tie-rounded.case");
+  // (the plain float traversal's own answer is asserted in
+  // tests/core/sat_traversal_test.cpp); the robust runs report exact
+  // arithmetic's feature in every SAT
+  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
+}
+
 TEST_CASE("corpus 36: a float reduction around another deepest point (tied within the weld) is a tie",
           "[fuzz][corpus][manifold]") {
   const CaseReport r = replay_explained("36-perturbed-reduction-deepest-tie.case");
