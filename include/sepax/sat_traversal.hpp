@@ -73,6 +73,10 @@
 //     sat::gauss_map does per arc).  Pairs found twice are harmless (BestAxis
 //     keeps the first of equal candidates).  The fallback count is in
 //     TraversalStats.
+// Kernels with rounded decisions (PlainKernel<float/double>) and a flat shape
+// skip the walk of step 3: every arc of A is tested against every arc of -B,
+// as sat::gauss_map does (see run(); the rounded climb can start a walk one
+// region off).
 // Every step moves strictly forward along a finite arc, and every loop has a
 // budget, so the walk terminates for any input and any kernel, exact or not.
 //
