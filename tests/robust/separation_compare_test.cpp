@@ -38,8 +38,8 @@ TEST_CASE("compare_exact matches sepax::compare on rationals", "[separation]") {
       const bool grid = i % 2 == 0;  // integer grids produce exact ties
       Vec3<double> p[8];
       for (auto& v : p) v = rnd(rng, scale, grid);
-      const auto fa = face_separation_exact(p[0], p[1], p[2], p[3]);
-      const auto fb = face_separation_exact(p[4], p[5], p[6], p[7]);
+      const auto fa = face_separation_poly(p[0], p[1], p[2], p[3]);
+      const auto fb = face_separation_poly(p[4], p[5], p[6], p[7]);
       const auto oa = face_oracle(p[0], p[1], p[2], p[3]);
       const auto ob = face_oracle(p[4], p[5], p[6], p[7]);
       if (sgn(oa.norm2) == 0 || sgn(ob.norm2) == 0) continue;
@@ -49,7 +49,7 @@ TEST_CASE("compare_exact matches sepax::compare on rationals", "[separation]") {
       REQUIRE(compare_exact(fa, fa) == 0);
       // edge-pair separations, both orientations
       const int sigma = i % 3 == 0 ? -1 : 1;
-      const auto ea = edge_separation_exact(p[0], p[1], p[2], p[3], p[4], p[5], sigma);
+      const auto ea = edge_separation_poly(p[0], p[1], p[2], p[3], p[4], p[5], sigma);
       const Vec3<mpq_class> n = cross(Vec3<mpq_class>(q(p[1]) - q(p[0])), Vec3<mpq_class>(q(p[3]) - q(p[2])));
       Separation<mpq_class> oe{dot(n, Vec3<mpq_class>(q(p[5]) - q(p[4]))), dot(n, n)};
       if (sigma < 0) oe.num = -oe.num;
@@ -66,9 +66,9 @@ TEST_CASE("compare_exact: same separation at different scales is a tie", "[separ
   // The face (0,0,0),(1,0,0),(0,1,0) and the same face scaled by 3 give
   // different N but the same height for p = (0,0,2).
   const Vec3<double> o(0, 0, 0), x(1, 0, 0), y(0, 1, 0), x3(3, 0, 0), y3(0, 3, 0), p(0, 0, 2);
-  CHECK(compare_exact(face_separation_exact(o, x, y, p), face_separation_exact(o, x3, y3, p)) == 0);
-  CHECK(compare_exact(face_separation_exact(o, x, y, p), face_separation_exact(o, x3, y3, Vec3<double>(0, 0, 2.0000000000000004))) == -1);
-  CHECK(compare_exact(face_separation_exact(o, x, y, Vec3<double>(0, 0, -1)), face_separation_exact(o, x3, y3, Vec3<double>(0, 0, -1.0000000000000002))) == 1);
+  CHECK(compare_exact(face_separation_poly(o, x, y, p), face_separation_poly(o, x3, y3, p)) == 0);
+  CHECK(compare_exact(face_separation_poly(o, x, y, p), face_separation_poly(o, x3, y3, Vec3<double>(0, 0, 2.0000000000000004))) == -1);
+  CHECK(compare_exact(face_separation_poly(o, x, y, Vec3<double>(0, 0, -1)), face_separation_poly(o, x3, y3, Vec3<double>(0, 0, -1.0000000000000002))) == 1);
 }
 
 namespace {
@@ -92,8 +92,8 @@ TEST_CASE("compare_interval decides only what compare_exact decides, and decides
       Vec3<double> p[8];
       for (auto& v : p) v = rnd(rng, scale, grid);
       if (i % 4 == 1) p[7] = p[3] + Vec3<double>(0, 0, p[3][2] * 0x1p-40);  // near tie
-      const auto fa = face_separation_exact(p[0], p[1], p[2], p[3]);
-      const auto fb = face_separation_exact(p[4], p[5], p[6], p[7]);
+      const auto fa = face_separation_poly(p[0], p[1], p[2], p[3]);
+      const auto fb = face_separation_poly(p[4], p[5], p[6], p[7]);
       if (exact_sign(fa.norm2) == 0 || exact_sign(fb.norm2) == 0) continue;
       ++total;
       const int s = interval_faces(p, p + 4);
@@ -108,7 +108,7 @@ TEST_CASE("compare_interval decides only what compare_exact decides, and decides
       const int e = compare_interval(
           [&] { return edge_separation_poly<IntervalFloat>(p[0], p[1], p[2], p[3], p[4], p[5], sigma); },
           [&] { return face_separation_poly<IntervalFloat>(p[4], p[5], p[6], p[7]); });
-      const auto ee = edge_separation_exact(p[0], p[1], p[2], p[3], p[4], p[5], sigma);
+      const auto ee = edge_separation_poly(p[0], p[1], p[2], p[3], p[4], p[5], sigma);
       if (e != kUncertain && exact_sign(ee.norm2) != 0) REQUIRE(e == compare_exact(ee, fb));
     }
   }
@@ -126,12 +126,12 @@ TEST_CASE("compare_interval decides only what compare_exact decides, and decides
   // exact 0 of compare_exact.
   const Vec3<float> f3[4] = {{0, 0, 0}, {3, 0, 0}, {0, 3, 0}, {0.5f, 0.25f, 2}};
   CHECK(interval_faces(f1, f3) == 0);
-  CHECK(compare_exact(face_separation_exact(f1[0], f1[1], f1[2], f1[3]),
-                      face_separation_exact(f3[0], f3[1], f3[2], f3[3])) == 0);
+  CHECK(compare_exact(face_separation_poly(f1[0], f1[1], f1[2], f1[3]),
+                      face_separation_poly(f3[0], f3[1], f3[2], f3[3])) == 0);
   // Overflow: enclosures become infinite, the stage does not decide.
   const Vec3<float> big[4] = {{0, 0, 0}, {3e37f, 0, 0}, {0, 3e37f, 0}, {1, 1, 3e37f}};
   const Vec3<float> big2[4] = {{0, 0, 0}, {3e37f, 0, 0}, {0, 3e37f, 0}, {1, 1, 2e37f}};
   CHECK(interval_faces(big, big2) == kUncertain);
-  CHECK(compare_exact(face_separation_exact(big[0], big[1], big[2], big[3]),
-                      face_separation_exact(big2[0], big2[1], big2[2], big2[3])) == 1);
+  CHECK(compare_exact(face_separation_poly(big[0], big[1], big[2], big[3]),
+                      face_separation_poly(big2[0], big2[1], big2[2], big2[3])) == 1);
 }

@@ -999,9 +999,6 @@ class RobustKernel {
     const auto n = robust::exact_cross(robust::diff_as<N>(t[1], t[0]), robust::diff_as<N>(t[2], t[0]));
     return robust::exact_cross(robust::diff_as<N>(p.vertex(p.edge_head(e)), p.vertex(p.edge_tail(e))), n);
   }
-  static std::array<robust::ExactFloat, 3> exact_side_normal(const P& p, int e) {
-    return side_normal_as<robust::ExactFloat>(p, e);
-  }
 
 
   // The same direction in T, unit (reporting and float values only).
@@ -1018,7 +1015,7 @@ class RobustKernel {
   // Support vertex of q along -u (lowest index among the exactly lowest).
   SEPAX_ROBUST_COLD FaceQuery<T> side_query(const P& p, int e, const P& q, bool of_a) const {
     ++fallbacks_;
-    const auto u = exact_side_normal(p, e);
+    const auto u = side_normal_as<robust::ExactFloat>(p, e);
     const Vec3<T>& t = p.vertex(p.edge_tail(e));
     int best = 0;
     robust::ExactFloat m = robust::exact_dot(u, robust::exact_diff(q.vertex(0), t));

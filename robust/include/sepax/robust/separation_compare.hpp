@@ -54,16 +54,26 @@ using ExactSeparation = SeparationPoly<ExactFloat>;
 using IntervalFloat = CGAL::Interval_nt_advanced;
 using IntervalSeparation = SeparationPoly<IntervalFloat>;
 
+/// The order of two separations num / sqrt(norm2) from the signs of their
+/// polynomials: signs of num first; equal non-zero signs: num1^2 n2 vs
+/// num2^2 n1, reversed when both are negative.  sign(x) returns -1, 0, +1 or
+/// kUncertain; any uncertain sign makes the answer kUncertain.  Requires
+/// norm2 > 0 for both.
+template <class N, class Sign>
+inline int compare_by_signs(const SeparationPoly<N>& a, const SeparationPoly<N>& b, Sign&& sign) {
+  const int sa = sign(a.num), sb = sign(b.num);
+  if (sa == kUncertain || sb == kUncertain) return kUncertain;
+  if (sa != sb) return sa < sb ? -1 : 1;
+  if (sa == 0) return 0;
+  const int mag = sign(a.num * a.num * b.norm2 - b.num * b.num * a.norm2);
+  if (mag == kUncertain) return kUncertain;
+  return sa > 0 ? mag : -mag;
+}
+
 /// -1, 0, +1 as a < b, a == b, a > b (as real numbers num / sqrt(norm2)).
 /// Requires norm2 > 0 for both.
 inline int compare_exact(const ExactSeparation& a, const ExactSeparation& b) {
-  const int sa = exact_sign(a.num), sb = exact_sign(b.num);
-  if (sa != sb) return sa < sb ? -1 : 1;
-  if (sa == 0) return 0;
-  const ExactFloat lhs = a.num * a.num * b.norm2;
-  const ExactFloat rhs = b.num * b.num * a.norm2;
-  const int mag = exact_sign(lhs - rhs);
-  return sa > 0 ? mag : -mag;
+  return compare_by_signs(a, b, [](const ExactFloat& x) { return exact_sign(x); });
 }
 
 /// Face with plane triple (p0, p1, p2) against point p (N = ExactFloat: exact;
@@ -86,19 +96,6 @@ inline SeparationPoly<N> edge_separation_poly(const Vec3<F>& ta, const Vec3<F>& 
   return {num, exact_dot(n, n)};
 }
 
-template <class F>
-inline ExactSeparation face_separation_exact(const Vec3<F>& p0, const Vec3<F>& p1, const Vec3<F>& p2,
-                                             const Vec3<F>& p) {
-  return face_separation_poly<ExactFloat>(p0, p1, p2, p);
-}
-
-template <class F>
-inline ExactSeparation edge_separation_exact(const Vec3<F>& ta, const Vec3<F>& ha, const Vec3<F>& tb,
-                                             const Vec3<F>& hb, const Vec3<F>& pa, const Vec3<F>& pb,
-                                             int sigma) {
-  return edge_separation_poly<ExactFloat>(ta, ha, tb, hb, pa, pb, sigma);
-}
-
 /// Stage 2: compare_exact's rule on enclosures.  make_a and make_b build the
 /// two IntervalSeparations (face_separation_poly / edge_separation_poly with
 /// N = IntervalFloat); they run inside the rounding scope opened here.
@@ -112,19 +109,12 @@ inline int compare_interval(MakeA&& make_a, MakeB&& make_b) {
   CGAL::Protect_FPU_rounding<true> upward;
   const IntervalSeparation a = make_a();
   const IntervalSeparation b = make_b();
-  auto sign_of = [](const IntervalFloat& x) {
+  return compare_by_signs(a, b, [](const IntervalFloat& x) {
     if (x.inf() > 0) return 1;
     if (x.sup() < 0) return -1;
     if (x.inf() == 0 && x.sup() == 0) return 0;
     return kUncertain;  // straddles 0, or NaN
-  };
-  const int sa = sign_of(a.num), sb = sign_of(b.num);
-  if (sa == kUncertain || sb == kUncertain) return kUncertain;
-  if (sa != sb) return sa < sb ? -1 : 1;
-  if (sa == 0) return 0;
-  const int mag = sign_of(a.num * a.num * b.norm2 - b.num * b.num * a.norm2);
-  if (mag == kUncertain) return kUncertain;
-  return sa > 0 ? mag : -mag;
+  });
 }
 
 }  // namespace sepax::robust
