@@ -826,6 +826,8 @@ std::string traversal_counters(const Cell& c) {
     sum.corner_passes += ts.corner_passes;
     sum.fallback_arcs += ts.fallback_arcs;
     sum.pruned_faces += ts.pruned_faces;
+    sum.probe_checks += ts.probe_checks;
+    sum.probe_pruned += ts.probe_pruned;
     sum.pruned_arcs += ts.pruned_arcs;
     sum.late_certified += ts.late_certified;
   }
@@ -833,12 +835,13 @@ std::string traversal_counters(const Cell& c) {
   const auto& a0 = af(c, 0);
   char buf[600];
   std::snprintf(buf, sizeof buf, "  %-11s %-11s E_A=%-4d arc tests %9.1f  (E_A*E_B %d)  height evals %8.1f  climb %7.1f  "
-              "fallback arcs %6.2f  corner passes %5.2f  pruned faces %6.1f (of %d)  pruned arcs %6.1f  late climbs %5.1f\n",
+              "fallback arcs %6.2f  corner passes %5.2f  pruned faces %6.1f (of %d; by a probe %5.1f of %5.1f)  pruned arcs %6.1f  late climbs %5.1f\n",
               c.workload.c_str(), c.poses.c_str(), a0.edge_count(), double(sum.arc_tests) / np,
               a0.edge_count() * c.pairs[0].bf.edge_count(), double(sum.height_evals) / np,
               double(sum.climb_steps) / np, double(sum.fallback_arcs) / np,
               double(sum.corner_passes) / np, double(sum.pruned_faces) / np,
-              a0.face_count() + c.pairs[0].bf.face_count(), double(sum.pruned_arcs) / np,
+              a0.face_count() + c.pairs[0].bf.face_count(), double(sum.probe_pruned) / np,
+              double(sum.probe_checks) / np, double(sum.pruned_arcs) / np,
               double(sum.late_certified) / np);
   (void)edge_pairs;
   return buf;

@@ -15,7 +15,13 @@
 //     vertices of one face);
 //   * a breadth-first order of the faces over face adjacency, with each face's
 //     parent in that tree (-1 for the root): the traversal computes a face's
-//     support vertex by hill-climbing from its parent's support vertex.
+//     support vertex by hill-climbing from its parent's support vertex;
+//   * up to kMaxProbes probe vertices spread over the vertex graph (farthest
+//     point sampling by edge hops): before the traversal climbs for a face of
+//     the other shape, it looks for a probe below the best candidate so far,
+//     which prunes the face without a climb (sat_traversal.hpp, step 1).
+//     They are chosen from the graph alone, so they too are the same for
+//     every pose and number type.
 #pragma once
 
 #include <vector>
@@ -81,6 +87,7 @@ class GaussMapWalk {
       }
     }
     for (int f : face_order_) face_parent_.push_back(parent[static_cast<std::size_t>(f)]);
+    choose_probes();
     triangulated_ = true;
     for (std::size_t h = 0; h < nh; ++h) {
       if (next_[static_cast<std::size_t>(next_[static_cast<std::size_t>(next_[h])])] != static_cast<int>(h))
@@ -133,6 +140,13 @@ class GaussMapWalk {
   int edge_head(int e) const { return origin_[static_cast<std::size_t>(2 * e + 1)]; }
   int edge_face(int e, int side) const { return face_[static_cast<std::size_t>(2 * e + side)]; }
 
+  /// At most this many probe vertices (a multiple of the 4 float lanes).
+  static constexpr int kMaxProbes = 16;
+  /// The probe vertices, in the order they were chosen: vertex 0, then each
+  /// time the vertex furthest (in edge hops) from those already chosen, the
+  /// lowest index among equally far ones; min(kMaxProbes, vertex count) of them.
+  const std::vector<int>& probes() const { return probes_; }
+
   // ---- faces in breadth-first order ----
   const std::vector<int>& face_order() const { return face_order_; }
   /// Parent (in the BFS tree) of face_order()[i]; -1 for the root.
@@ -145,6 +159,41 @@ class GaussMapWalk {
   std::vector<int> adj_start_, adj_half_, adj_vertex_, adj_edge_;
   std::vector<int> origin_, face_, next_, prev_;
   std::vector<int> face_order_, face_parent_;
+  std::vector<int> probes_;
+
+  // Farthest point sampling on the vertex graph (BFS distances, O(kMaxProbes
+  // (V + E))): on a hull of points spread over a sphere the probes end up
+  // spread over it, so for most directions one of them lies deep.
+  void choose_probes() {
+    probes_.clear();
+    if (nv_ == 0) return;
+    std::vector<int> dist(static_cast<std::size_t>(nv_), nv_ + 1), queue;
+    queue.reserve(static_cast<std::size_t>(nv_));
+    int next = 0;
+    while (static_cast<int>(probes_.size()) < kMaxProbes) {
+      probes_.push_back(next);
+      // hop distances to the chosen set, updated from the new probe
+      queue.assign(1, next);
+      dist[static_cast<std::size_t>(next)] = 0;
+      for (std::size_t i = 0; i < queue.size(); ++i) {
+        const int v = queue[i];
+        const int dv = dist[static_cast<std::size_t>(v)];
+        for (int j = adj_begin(v); j < adj_end(v); ++j) {
+          const int u = adj_vertex(j);
+          if (dist[static_cast<std::size_t>(u)] > dv + 1) {
+            dist[static_cast<std::size_t>(u)] = dv + 1;
+            queue.push_back(u);
+          }
+        }
+      }
+      int far = -1;
+      for (int v = 0; v < nv_; ++v) {
+        if (dist[static_cast<std::size_t>(v)] > (far < 0 ? 0 : dist[static_cast<std::size_t>(far)])) far = v;
+      }
+      if (far < 0) break;  // every vertex is a probe
+      next = far;
+    }
+  }
 };
 
 }  // namespace sepax

@@ -158,8 +158,9 @@ TEST_CASE("traversal makes far fewer kernel calls than gauss map on sphere hulls
 
 TEST_CASE("traversal prunes faces and arcs below the best, with the same result", "[traversal]") {
   // Overlapping sphere hulls: most faces' climbs stop at their seed (a vertex
-  // already below the best), most arcs are skipped by the arc bound, and the
-  // answer is still the Gauss map's.
+  // already below the best), most of the others at the deepest probe vertex
+  // without a climb, most arcs are skipped by the arc bound, and the answer
+  // is still the Gauss map's.
   std::mt19937_64 rng(99);
   std::uniform_real_distribution<double> off(-0.6, 0.6);
   for (int n : {16, 64, 96}) {  // (the test hull builder is O(n^4))
@@ -177,17 +178,26 @@ TEST_CASE("traversal prunes faces and arcs below the best, with the same result"
       faces += a.face_count() + b.face_count();
       edges += a.edge_count();
       sum.pruned_faces += ts.pruned_faces;
+      sum.probe_checks += ts.probe_checks;
+      sum.probe_pruned += ts.probe_pruned;
+      sum.climb_steps += ts.climb_steps;
       sum.pruned_arcs += ts.pruned_arcs;
       sum.height_evals += ts.height_evals;
       sum.late_certified += ts.late_certified;
       CHECK(ts.support_scans == 1);
     }
-    WARN("N=" << n << ": pruned faces " << sum.pruned_faces << " of " << faces << ", pruned arcs "
+    WARN("N=" << n << ": pruned faces " << sum.pruned_faces << " of " << faces << " (by a probe "
+              << sum.probe_pruned << " of " << sum.probe_checks << " looked at), pruned arcs "
               << sum.pruned_arcs << " of " << edges << ", late climbs " << sum.late_certified
-              << ", O(1) heights per face " << double(sum.height_evals) / double(faces));
+              << ", climb steps " << sum.climb_steps << ", O(1) heights per face "
+              << double(sum.height_evals) / double(faces));
     CHECK(sum.pruned_faces * 10 > faces * 7);
     CHECK(sum.pruned_arcs * 2 > edges);
     CHECK(sum.height_evals < 6 * faces);
+    // Faces look at the probes only when their seed is not below the best
+    // (at most once each), and most of those are pruned there.
+    CHECK(sum.probe_checks * 2 < faces);
+    CHECK(sum.probe_pruned * 3 > sum.probe_checks * 2);
   }
 }
 

@@ -1,9 +1,9 @@
 // The pruned traversal under policy::Robust takes exactly the steps that the
 // same traversal takes in exact arithmetic (PlainKernel<mpq_class>) on the
 // exact images: every decision that steers the walk (hill-climb moves, the
-// cutoff against the best so far, arc pruning, late climbs, arc tests) is an
-// exact decision, and the start faces are chosen identically for a float
-// shape and its exact image.  This must hold on every input, including inputs
+// cutoff against the best so far, the deepest probe vertex, arc pruning, late
+// climbs, arc tests) is an exact decision, and the start faces are chosen
+// identically for a float shape and its exact image.  This must hold on every input, including inputs
 // whose exact image is convex only up to rounding (boxes and prisms rotated in
 // floating point), where the walk's path can change the answer: there the
 // robust traversal must still report the exact traversal's feature.
@@ -24,7 +24,7 @@ using Q = mpq_class;
 
 struct Tally {
   int cases = 0;
-  std::int64_t pruned_faces = 0, pruned_arcs = 0, late = 0, nonconvex_differs = 0;
+  std::int64_t pruned_faces = 0, probe_pruned = 0, pruned_arcs = 0, late = 0, nonconvex_differs = 0;
 };
 
 // The walk counters that only decisions change (height_evals counts O(1)
@@ -37,6 +37,8 @@ void check_same_steps(const sat::TraversalStats& r, const sat::TraversalStats& e
   CHECK(r.lex_starts == e.lex_starts);
   CHECK(r.fallback_arcs == e.fallback_arcs);
   CHECK(r.pruned_faces == e.pruned_faces);
+  CHECK(r.probe_checks == e.probe_checks);
+  CHECK(r.probe_pruned == e.probe_pruned);
   CHECK(r.pruned_arcs == e.pruned_arcs);
   CHECK(r.late_certified == e.late_certified);
 }
@@ -64,6 +66,7 @@ void check_pair(const ConvexPolyhedron<F>& a, const ConvexPolyhedron<F>& b, cons
   check_same_steps(rs, es);
   ++t.cases;
   t.pruned_faces += rs.pruned_faces;
+  t.probe_pruned += rs.probe_pruned;
   t.pruned_arcs += rs.pruned_arcs;
   t.late += rs.late_certified;
   if (with_brute_force) {
@@ -91,13 +94,16 @@ TEST_CASE("robust traversal takes the exact traversal's steps (random hulls)", "
     const auto bf = ConvexPolyhedron<float>::convert_from(b);
     check_pair(af, bf, "random pair", t);
   }
-  // The cutoff and the arc pruning must actually happen on these inputs.
+  // The cutoff, the probes and the arc pruning must actually happen on these
+  // inputs.
   CHECK(t.pruned_faces > 0);
+  CHECK(t.probe_pruned > 0);
   CHECK(t.pruned_arcs > 0);
   // Random hulls are triangulated: exactly convex images, so the exact
   // traversal is the exact brute force.
   CHECK(t.nonconvex_differs == 0);
-  WARN("random hulls: " << t.cases << " cases, pruned faces " << t.pruned_faces << ", pruned arcs "
+  WARN("random hulls: " << t.cases << " cases, pruned faces " << t.pruned_faces << " (by a probe "
+                        << t.probe_pruned << "), pruned arcs "
                         << t.pruned_arcs << ", late climbs " << t.late);
 }
 
@@ -127,7 +133,9 @@ TEST_CASE("robust traversal takes the exact traversal's steps (float-rotated box
                "rotated shapes", t);
   }
   CHECK(t.pruned_faces > 0);
-  WARN("rotated boxes/prisms: " << t.cases << " cases, pruned faces " << t.pruned_faces << ", pruned arcs "
+  CHECK(t.probe_pruned > 0);
+  WARN("rotated boxes/prisms: " << t.cases << " cases, pruned faces " << t.pruned_faces << " (by a probe "
+                                << t.probe_pruned << "), pruned arcs "
                                 << t.pruned_arcs << ", exact traversal != exact brute force in "
                                 << t.nonconvex_differs << " (inputs convex only up to rounding)");
 }

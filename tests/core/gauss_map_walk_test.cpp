@@ -1,0 +1,94 @@
+// GaussMapWalk: the per-hull walk data of the traversal SAT.  Here: the probe
+// vertices (farthest point sampling on the vertex graph) that let a face skip
+// its hill climb (sat_traversal.hpp, probe_below_best).
+#include <catch2/catch.hpp>
+
+#include <sepax/gauss_map_walk.hpp>
+#include <sepax/shapes.hpp>
+
+#include "traversal_shapes.hpp"
+
+#include <algorithm>
+#include <set>
+
+using namespace sepax;
+
+namespace {
+
+// Hop distances from the set `from` over the walk's vertex adjacency (BFS).
+std::vector<int> hops(const GaussMapWalk& w, const std::vector<int>& from) {
+  std::vector<int> d(static_cast<std::size_t>(w.vertex_count()), -1);
+  std::vector<int> queue;
+  for (int v : from) {
+    d[static_cast<std::size_t>(v)] = 0;
+    queue.push_back(v);
+  }
+  for (std::size_t i = 0; i < queue.size(); ++i) {
+    const int v = queue[i];
+    for (int j = w.adj_begin(v); j < w.adj_end(v); ++j) {
+      const int u = w.adj_vertex(j);
+      if (d[static_cast<std::size_t>(u)] < 0) {
+        d[static_cast<std::size_t>(u)] = d[static_cast<std::size_t>(v)] + 1;
+        queue.push_back(u);
+      }
+    }
+  }
+  return d;
+}
+
+// The documented rule, checked from scratch: vertex 0 first, then each time
+// the lowest-index vertex among those furthest from the probes so far, until
+// kMaxProbes or every vertex is a probe.
+void check_probes(const GaussMapWalk& w) {
+  const auto& p = w.probes();
+  const int nv = w.vertex_count();
+  REQUIRE(static_cast<int>(p.size()) == std::min(nv, GaussMapWalk::kMaxProbes));
+  REQUIRE(p.front() == 0);
+  CHECK(std::set<int>(p.begin(), p.end()).size() == p.size());
+  for (std::size_t k = 1; k < p.size(); ++k) {
+    const std::vector<int> chosen(p.begin(), p.begin() + static_cast<std::ptrdiff_t>(k));
+    const auto d = hops(w, chosen);
+    const int far = *std::max_element(d.begin(), d.end());
+    const int first_far = static_cast<int>(std::find(d.begin(), d.end(), far) - d.begin());
+    INFO("probe " << k << " of " << p.size());
+    CHECK(far > 0);
+    CHECK(p[k] == first_far);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("probes: farthest point sampling on the vertex graph, at most kMaxProbes", "[walk][probes]") {
+  std::mt19937_64 rng(5);
+  for (int n : {4, 8, 12, 16, 17, 32, 64, 128}) {
+    const auto hull = test::sphere_hull(rng, n);
+    const GaussMapWalk w(hull);
+    INFO("sphere hull of " << n << " points, " << hull.vertex_count() << " vertices");
+    check_probes(w);
+    if (hull.vertex_count() > GaussMapWalk::kMaxProbes) {
+      // spread: every vertex is near a probe (a hull of N points on a sphere
+      // has a graph diameter of about sqrt(N) hops)
+      const auto d = hops(w, w.probes());
+      CHECK(*std::max_element(d.begin(), d.end()) <= 3);
+    }
+  }
+  // every vertex of a small shape is a probe, a flat polygon included
+  for (const auto& s : {shapes::cube<double>(1.0), shapes::prism<double>(5, 1.0, 1.0),
+                        shapes::regular_polygon<double>(3, 1.0), shapes::regular_polygon<double>(40, 1.0)}) {
+    const GaussMapWalk w(s);
+    check_probes(w);
+  }
+}
+
+TEST_CASE("probes depend on the combinatorics only: the same for every pose and number type",
+          "[walk][probes]") {
+  std::mt19937_64 rng(11);
+  for (int it = 0; it < 5; ++it) {
+    const auto hull = test::sphere_hull(rng, 48);
+    const auto moved = test::moved(hull, test::random_rotation(rng), test::V3(3.0, -1.0, 0.5));
+    const auto as_float = ConvexPolyhedron<float>::convert_from(moved);
+    const GaussMapWalk w(hull), wm(moved), wf(as_float);
+    CHECK(wm.probes() == w.probes());
+    CHECK(wf.probes() == w.probes());
+  }
+}
