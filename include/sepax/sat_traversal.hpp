@@ -493,6 +493,15 @@ class Traversal {
     }
   }
 
+  // The sign of height(f, u) - height(f, v), exactly, from d = fl(g_u) - fl(g_v)
+  // (g = fl(n.x)): the filter decides beyond W, exact_vs within it (or NaN).
+  template <bool OfA>
+  SEPAX_TRAVERSAL_INLINE int support_cmp(int f, int u, int v, T d, T W) {
+    if (d > W) return 1;
+    if (d < -W) return -1;
+    return exact_vs<OfA>(f, u, v, d);
+  }
+
   // Float kernels: the climb compares g = fl(n.v) (the support scan's
   // values), within the kernel's filter exactly; the same decisions as
   // climb_generic under policy::Robust (both are the exact sign of
@@ -524,6 +533,7 @@ class Traversal {
         const T gu = dot(n, vs[u]);
         ++evals;
         const T d = gu - gv;
+        // support_cmp's rule, written out to test the common case first
         if (d > W) continue;  // the common case: u certainly higher
         if (!(d < -W)) {      // within the filter (or NaN): exactly
           const int c = exact_vs<OfA>(f, u, v, d);
@@ -546,8 +556,7 @@ class Traversal {
             const int x = w.origin(g);
             const T gx = dot(n, vs[x]);
             ++evals;
-            const T d = gx - gv;
-            if (d < -W || (!(d > W) && exact_vs<OfA>(f, x, v, d) < 0)) {
+            if (support_cmp<OfA>(f, x, v, T(gx - gv), W) < 0) {
               v = x;
               gv = gx;
               moved = true;
@@ -592,9 +601,7 @@ class Traversal {
     const Vec3<T>* vs = (OfA ? k_.b() : k_.a()).vertices().data();
     auto tied = [&](int u) {
       ++ts_.height_evals;
-      const T d = dot(n, vs[u]) - gv;
-      if (d < -W || d > W) return false;
-      return exact_vs<OfA>(f, u, v, d) == 0;
+      return support_cmp<OfA>(f, u, v, T(dot(n, vs[u]) - gv), W) == 0;
     };
     return lowest_tied_with<OfA>(v, tied);
   }
@@ -830,16 +837,14 @@ class Traversal {
         for (unsigned rest = cand & (cand - 1); rest != 0; rest &= rest - 1) {
           const int c = std::countr_zero(rest);
           const int u = ids[static_cast<std::size_t>(c)], v = ids[static_cast<std::size_t>(j)];
-          if (exact_vs<OfA>(f, u, v, T(dot(n, vs[u]) - dot(n, vs[v]))) < 0) j = c;
+          if (support_cmp<OfA>(f, u, v, T(dot(n, vs[u]) - dot(n, vs[v])), filt) < 0) j = c;
         }
       } else {  // NaN or infinite values: one by one, as the climb compares
         T gj = dot(n, vs[ids[0]]);
         for (int c = 1; c < pr.count; ++c) {
           const int u = ids[static_cast<std::size_t>(c)];
           const T gu = dot(n, vs[u]);
-          const T d = gu - gj;
-          if (d > filt) continue;
-          if (d < -filt || exact_vs<OfA>(f, u, ids[static_cast<std::size_t>(j)], d) < 0) {
+          if (support_cmp<OfA>(f, u, ids[static_cast<std::size_t>(j)], T(gu - gj), filt) < 0) {
             j = c;
             gj = gu;
           }
