@@ -1000,7 +1000,6 @@ class RobustKernel {
     return robust::exact_cross(robust::diff_as<N>(p.vertex(p.edge_head(e)), p.vertex(p.edge_tail(e))), n);
   }
 
-
   // The same direction in T, unit (reporting and float values only).
   static Vec3<T> side_normal(const P& p, int e) {
     const Vec3<T>& d = p.edge_dir(e);
