@@ -155,6 +155,20 @@ concept HasFaceEstimate = requires(const K k, int i, double e) {
   { k.compare_width(e, e) } -> std::same_as<double>;
 };
 
+/// Optional kernel member (not part of SatKernel):
+///   bool edge_pair_below(int ea, int eb, FT best, double best_err)
+/// true only if the edge pair's exact separation (edge_separation's, with its
+/// orientation rule) is certainly below best - best_err; false when that is
+/// not certain.  A caller that holds a best with value `best` and error bound
+/// `best_err` (its feature's error_bound) may then skip the pair without
+/// edges_parallel, edge_separation or a comparison: exact arithmetic would
+/// reject it there.  RobustKernel<float> has it (robust_kernel.hpp, "(pair
+/// prefilter)"); sat::traversal uses it.
+template <class K>
+concept HasEdgePairBelow = requires(const K k, int i, typename K::FT x, double e) {
+  { k.edge_pair_below(i, i, x, e) } -> std::same_as<bool>;
+};
+
 /// Maps (policy, T) to a kernel type.  Specialised by each policy.
 template <class Policy, class T>
 struct kernel_for;

@@ -900,6 +900,14 @@ class Traversal {
   // A strictly crossing pair: a candidate axis unless the edges are parallel.
   // Returns true on early out.
   bool pair(int ea, int eb) {
+    if constexpr (kBounded && HasEdgePairBelow<K>) {
+      // Certainly below the best (so not parallel, and not separating): what
+      // offer would conclude, without the unit axis and its bound.
+      if (best_.has() && k_.edge_pair_below(ea, eb, best_.separation().num, best_err_)) {
+        ++stats_.minkowski_faces;
+        return false;
+      }
+    }
     if (k_.edges_parallel(ea, eb)) return false;
     ++stats_.minkowski_faces;
     const auto s = k_.edge_separation(ea, eb);

@@ -68,6 +68,34 @@
 //   √3 γ_{V+1} M_P =: C_P; the error is <= (δ_e + γ_5)(D_P + C_P) + C_P.
 // (parallel)     a finite axis bound δ_e proves eA x eB != 0 (edges_parallel);
 //                otherwise parallel.hpp's own filter.
+// (pair prefilter) float T only (edge_pair_below).  Products of floats are
+//   exact in double, and with both shapes lanes_bounded (|x| <= 2^60) nothing
+//   below overflows or underflows (every double product is >= 2^-298 in
+//   magnitude or zero).  u = 2^-24, u_d = 2^-53.  Exact: N = eA x eB (exact
+//   edge vectors), w* = (pA - cA) + (cB - pB) (exact means), σ* = -1 if
+//   N.w* < 0 else +1 (axis_side's rule), t* = N.(pB - pA), and the pair's
+//   exact separation s* = σ* t*/|N|.  Computed in double from the T data:
+//   Ĉ = fl(ẽA x ẽB), v̂ = fl(Ĉ.ŵ), ŵ = fl((pA - c̃A) + (c̃B - pB)), t̂ = fl(Ĉ.d̂),
+//   d̂ = fl(pB - pA).
+//   - |ẽ - e| <= u|e| per edge, so |ẽA x ẽB - N| <= (2u + u^2)|eA||eB| <=
+//     κ |ẽA||ẽB|, κ = (2u + u^2)/(1 - u)^2; Ĉ rounds each component once:
+//     |Ĉ - N| <= (κ + u_d) K =: ε_N with K = (1+u)^2 D_A D_B >= |ẽA||ẽB|
+//     (|e| <= D_P), and |Ĉ| <= (1 + u_d) K.
+//   - |t̂ - t*| <= γ_3,d |Ĉ||d̂| + |Ĉ| u_d |d| + ε_N |d| <= (κ + 8 u_d) K D =: E_t
+//     (|d| <= D).
+//   - |v̂ - N.w*| <= γ_3,d |Ĉ||ŵ| + |Ĉ||ŵ - w̃| + |Ĉ|(C_A + C_B) + ε_N |w*|
+//     (w̃ the exact sum with the stored centroids: |w̃ - w*| <= C_A + C_B;
+//     |ŵ - w̃| <= 2.0001 u_d S; |w*|, |w̃| <= S, S = D_A + C_A + D_B + C_B)
+//     <= K ((C_A + C_B) + (κ + 8 u_d) S) =: E_σ.  |v̂| > E_σ gives σ* = sign v̂.
+//   - With M = best_err - best > 0 (the best's exact value is >= best -
+//     best_err = -M): s* < -M holds if -σ̂ t̂ - E_t > M (|Ĉ| + ε_N), since
+//     σ* t* <= σ̂ t̂ + E_t and |N| <= |Ĉ| + ε_N.  Both sides positive, so it is
+//     tested squared, with (|Ĉ| + ε_N)^2 <= |Ĉ|^2 + Q, Q = ε_N (2 (1 + u_d) K
+//     + ε_N): y = fl(-σ̂ t̂ - E_t) > 0 and fl(y y) > fl(M M (fl(Ĉ.Ĉ) + Q)) (1+1e-6).
+//     The computed sides are within (1 + 12 u_d) of the real ones, far
+//     inside the margin.  Parallel edges (N = 0, t* = 0, |t̂| <= E_t) never
+//     pass.  With FMA the products are exact anyway and the dot products
+//     lose roundings, so the bounds hold either way.
 // Every bound is computed in double and multiplied by (1 + 1e-6), which covers
 // the rounding of the bound computation itself (relative 1e-15), the
 // (1 + γ_4) factors for float (relative 3e-7) and the absolute underflow terms
@@ -192,6 +220,15 @@ class RobustKernel {
     side_span_ = ((extent_a_ + centroid_err_a_) + (extent_b_ + centroid_err_b_)) * kMargin;
     side_abs_ = (centroid_err_a_ + centroid_err_b_) * kMargin + 8 * kEta;
     lanes_ = a.lanes_bounded() && b.lanes_bounded();
+    if constexpr (std::is_same_v<T, float>) {
+      // "(pair prefilter)": K = (1+u)^2 D_A D_B >= |ẽA||ẽB| (da, db are the
+      // padded D_A, D_B), ε = κ + 8 u_d, ε_N = (κ + u_d) K.
+      const double k = kPreK * da * db;
+      const double en = (kPreKappa + kUd) * k;
+      pre_value_err_ = (kPreKappa + 8 * kUd) * k * d_ * kMargin;
+      pre_side_err_ = k * ((centroid_err_a_ + centroid_err_b_) + (kPreKappa + 8 * kUd) * side_span_) * kMargin;
+      pre_norm_sq_ = en * (2 * k * (1 + kUd) + en) * kMargin;
+    }
     arc_lane_bound_ = arc_err_a_t_ < arc_err_b_t_ ? arc_err_b_t_ : arc_err_a_t_;
   }
 
@@ -465,6 +502,48 @@ class RobustKernel {
                             b_.vertex(b_.edge_tail(eb)), b_.vertex(b_.edge_head(eb)), &fallbacks_);
   }
 
+  /// Optional member (sat_kernel.hpp, HasEdgePairBelow), float only: true
+  /// when the edge pair's exact O(1) separation s* (the value edge_separation
+  /// approximates, with axis_side's orientation) is certainly below
+  /// best - best_err, hence below the exact separation of any feature whose
+  /// value is best within best_err; false when that is not certain (which
+  /// says nothing).  Exactly parallel edges always give false.  It decides
+  /// from the T inputs in double, without the unit axis, its bound or an
+  /// exact stage, so a pair that exact arithmetic would offer and reject
+  /// costs about 40 instructions instead of edges_parallel, edge_separation
+  /// and a comparison.  The bounds are the header's "(pair prefilter)".
+  bool edge_pair_below(int ea, int eb, T best, double best_err) const
+    requires std::is_same_v<T, float>
+  {
+    // M = best_err - best > 0: the best's exact value is certainly negative
+    // (the overlapping case); otherwise no decision.  NaN compares false.
+    const double m = best_err - static_cast<double>(best);
+    if (!(m > 0) || !lanes_) return false;
+    const Vec3<T>& da = a_.edge_dir(ea);
+    const Vec3<T>& db = b_.edge_dir(eb);
+    const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
+    const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
+    const Vec3<T>& ca = a_.centroid();
+    const Vec3<T>& cb = b_.centroid();
+    // Ĉ = fl_d(ẽA x ẽB): float products are exact in double.
+    const double ax = da[0], ay = da[1], az = da[2], bx = db[0], by = db[1], bz = db[2];
+    const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    // v̂ = Ĉ . ŵ, ŵ = (pA - c̃A) + (c̃B - pB): axis_side's sum, unnormalised.
+    auto wc = [&](int i) {
+      return (static_cast<double>(pa[i]) - static_cast<double>(ca[i])) +
+             (static_cast<double>(cb[i]) - static_cast<double>(pb[i]));
+    };
+    const double v = cx * wc(0) + cy * wc(1) + cz * wc(2);
+    if (!(std::abs(v) > pre_side_err_)) return false;  // orientation not certain
+    // t̂ = Ĉ . d̂, d̂ = pB - pA; σ̂ t̂ the oriented value times |Ĉ|.
+    const double t = cx * (static_cast<double>(pb[0]) - static_cast<double>(pa[0])) +
+                     cy * (static_cast<double>(pb[1]) - static_cast<double>(pa[1])) +
+                     cz * (static_cast<double>(pb[2]) - static_cast<double>(pa[2]));
+    const double y = (v < 0 ? t : -t) - pre_value_err_;  // -σ̂ t̂ - E_t
+    const double n2 = cx * cx + cy * cy + cz * cz;
+    return (y > 0) & (y * y > m * m * (n2 + pre_norm_sq_) * kMargin);
+  }
+
   Separation<T> edge_separation(int ea, int eb) const {
     projection_rule_ = false;
     const EdgeAxis ax = edge_axis(ea, eb);
@@ -551,6 +630,11 @@ class RobustKernel {
   static constexpr double kU = number_traits<T>::unit_roundoff;
   static constexpr double kEta = static_cast<double>(std::numeric_limits<T>::denorm_min());
   static constexpr double kMargin = 1.0 + 1e-6;
+  // edge_pair_below ("(pair prefilter)"): u_d, κ = (2u + u^2)/(1 - u)^2,
+  // (1 + u)^2 (1 + 1e-6)
+  static constexpr double kUd = 0x1p-53;
+  static constexpr double kPreKappa = (2 * kU + kU * kU) / ((1 - kU) * (1 - kU));
+  static constexpr double kPreK = (1 + kU) * (1 + kU) * kMargin;
   static constexpr double kNoBound = 2.5;  // |n - n*| <= 2 (1 + γ_4) always
 
   // Compile-time constants.  sepax::robust is compiled with -frounding-math
@@ -1214,6 +1298,8 @@ class RobustKernel {
   double edge_abs_ = 0;
   double proj_abs_a_ = 0, proj_abs_b_ = 0;
   double centroid_err_a_ = 0, centroid_err_b_ = 0;
+  // edge_pair_below's per-query bounds ("(pair prefilter)"): E_σ, E_t, Q
+  double pre_side_err_ = 0, pre_value_err_ = 0, pre_norm_sq_ = 0;
   struct AxisCache {
     int ea = -1, eb = -1;
     EdgeAxis axis;
