@@ -90,6 +90,19 @@ class BestAxis {
                        -k.compare_width(e.error, err_);
   }
 
+  /// HasEdgePairBelow kernels: true when the Minkowski edge pair (ea, eb) is
+  /// certainly not the best, its exact separation strictly below the best's
+  /// (k.edge_pair_below with the best's value and kept error bound).  The
+  /// caller then skips it (no edges_parallel, edge_separation, consider or
+  /// early-out check: the pair is not parallel and its separation is
+  /// negative), which is what exact arithmetic does with it.
+  bool pair_certainly_below(const K& k, int ea, int eb) const
+    requires HasEdgePairBelow<K>
+  {
+    static_assert(kBounded, "the pair is compared with the best's error bound");
+    return has_ && k.edge_pair_below(ea, eb, sep_.num, err_);
+  }
+
   bool has() const { return has_; }
   const Separation<T>& separation() const { return sep_; }
   const Feature& feature() const { return feature_; }

@@ -30,6 +30,13 @@ SatResult<typename K::FT> gauss_map_with(K& k, const SatOptions& opt = {}) {
   const int na = k.a().edge_count(), nb = k.b().edge_count();
   // A pair whose arcs cross: measure it.  True to stop (early out).
   auto visit = [&](int ea, int cur) {
+    if constexpr (HasEdgePairBelow<K>) {
+      // certainly below the best: consider would reject it (best_axis.hpp)
+      if (best.pair_certainly_below(k, ea, cur)) {
+        ++stats.minkowski_faces;
+        return false;
+      }
+    }
     if (k.edges_parallel(ea, cur)) return false;
     ++stats.minkowski_faces;
     const auto s = k.edge_separation(ea, cur);

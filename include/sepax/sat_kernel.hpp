@@ -163,7 +163,8 @@ concept HasFaceEstimate = requires(const K k, int i, double e) {
 /// `best_err` (its feature's error_bound) may then skip the pair without
 /// edges_parallel, edge_separation or a comparison: exact arithmetic would
 /// reject it there.  RobustKernel<float> has it (robust_kernel.hpp, "(pair
-/// prefilter)"); sat::traversal uses it.
+/// prefilter)"); sat::gauss_map and sat::traversal use it
+/// (BestAxis::pair_certainly_below).
 template <class K>
 concept HasEdgePairBelow = requires(const K k, int i, typename K::FT x, double e) {
   { k.edge_pair_below(i, i, x, e) } -> std::same_as<bool>;

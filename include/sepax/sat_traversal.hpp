@@ -900,10 +900,10 @@ class Traversal {
   // A strictly crossing pair: a candidate axis unless the edges are parallel.
   // Returns true on early out.
   bool pair(int ea, int eb) {
-    if constexpr (kBounded && HasEdgePairBelow<K>) {
+    if constexpr (HasEdgePairBelow<K>) {
       // Certainly below the best (so not parallel, and not separating): what
       // offer would conclude, without the unit axis and its bound.
-      if (best_.has() && k_.edge_pair_below(ea, eb, best_.separation().num, best_err_)) {
+      if (best_.pair_certainly_below(k_, ea, eb)) {
         ++stats_.minkowski_faces;
         return false;
       }
