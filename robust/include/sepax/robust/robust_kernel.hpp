@@ -1235,24 +1235,32 @@ class RobustKernel {
   }
 
   Extremes extremes(const P& p, const Vec3<T>& n, int tail, int head) const {
-    Extremes x;
-    x.ref = dot(n, p.vertex(tail));
-    x.lo = x.hi = dot(n, p.vertex(0));
-    x.lo_other = std::numeric_limits<T>::infinity();
-    x.hi_other = -std::numeric_limits<T>::infinity();
-    // Selects, not jumps (minss/maxss and a blend): whether a vertex is a new
-    // extreme is a coin toss per vertex and pair, and the brute force runs
-    // this loop twice per edge pair.  Same values as the if-form: a < b ? a : b.
+    // The other vertices in three runs around the edge's two endpoints (no
+    // per-vertex mask), two selects each (minss/maxss, not jumps: whether a
+    // vertex is a new extreme is a coin toss per vertex and pair, and the
+    // brute force runs this loop twice per edge pair); the endpoints join
+    // lo and hi at the end.  The same values as one loop over all vertices:
+    // a minimum or maximum of the same fl(n.v) does not depend on the order.
     constexpr T kInf = std::numeric_limits<T>::infinity();
-    for (int i = 0; i < p.vertex_count(); ++i) {
-      const T h = dot(n, p.vertex(i));
-      x.lo = h < x.lo ? h : x.lo;
-      x.hi = h > x.hi ? h : x.hi;
-      const bool other = (i != tail) & (i != head);
-      const T hl = other ? h : kInf, hh = other ? h : -kInf;
-      x.lo_other = hl < x.lo_other ? hl : x.lo_other;
-      x.hi_other = hh > x.hi_other ? hh : x.hi_other;
-    }
+    Extremes x;
+    x.lo_other = kInf;
+    x.hi_other = -kInf;
+    const auto run = [&](int from, int to) {
+      for (int i = from; i < to; ++i) {
+        const T h = dot(n, p.vertex(i));
+        x.lo_other = h < x.lo_other ? h : x.lo_other;
+        x.hi_other = h > x.hi_other ? h : x.hi_other;
+      }
+    };
+    const int first = tail < head ? tail : head, second = tail < head ? head : tail;
+    run(0, first);
+    run(first + 1, second);
+    run(second + 1, p.vertex_count());
+    x.ref = dot(n, p.vertex(tail));
+    const T h_head = dot(n, p.vertex(head));
+    const T lo_edge = x.ref < h_head ? x.ref : h_head, hi_edge = x.ref > h_head ? x.ref : h_head;
+    x.lo = lo_edge < x.lo_other ? lo_edge : x.lo_other;
+    x.hi = hi_edge > x.hi_other ? hi_edge : x.hi_other;
     return x;
   }
 
