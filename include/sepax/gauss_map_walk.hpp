@@ -139,6 +139,8 @@ class GaussMapWalk {
   int edge_tail(int e) const { return origin_[static_cast<std::size_t>(2 * e)]; }
   int edge_head(int e) const { return origin_[static_cast<std::size_t>(2 * e + 1)]; }
   int edge_face(int e, int side) const { return face_[static_cast<std::size_t>(2 * e + side)]; }
+  /// edge_face(e, side) == edge_faces()[2 e + side], for loops over every edge.
+  const int* edge_faces() const { return face_.data(); }
 
   /// At most this many probe vertices (a multiple of the 4 float lanes).
   static constexpr int kMaxProbes = 16;

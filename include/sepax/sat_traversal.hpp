@@ -217,17 +217,18 @@ class Traversal {
     //    whose Minkowski faces are all below a best <= 0 stays pruned.
     // The other arcs go through the full test, on their current states.
     // Both passes are kernel decisions, so the exact walk marks the same arcs.
+    const int* ef = wa_.edge_faces();
     for (int base = 0; base < ne && !stop; base += 64) {
       const int end = ne - base < 64 ? ne : base + 64;
-      const int prunable = prune_arcs_ && best_nonpositive() ? 1 : 0;
+      // bit `kind` (a state's low two bits) is set for the kinds that equal
+      // states settle: kCertified alone always, 0 (cut off) when prunable
+      const unsigned kinds = (1u << kCertified) | (prune_arcs_ && best_nonpositive() ? 1u : 0u);
       std::uint64_t settled = 0;
       for (int ea = base; ea < end; ++ea) {
-        const int s0 = sa[wa_.edge_face(ea, 0)], s1 = sa[wa_.edge_face(ea, 1)];
-        const int kind = s0 & 3;
-        const int cut = static_cast<int>(kind == 0) & prunable;
-        const int skip = static_cast<int>(s0 == s1) & (static_cast<int>(kind == kCertified) | cut);
+        const int s0 = sa[ef[2 * ea]], s1 = sa[ef[2 * ea + 1]];
+        const unsigned skip = static_cast<unsigned>(s0 == s1) & (kinds >> (s0 & 3));
         settled |= static_cast<std::uint64_t>(skip) << (ea - base);
-        pruned += static_cast<int>(s0 == s1) & cut;
+        pruned += skip & ~static_cast<unsigned>(s0 >> 1);  // kind 0 (kind kCertified has bit 1 set)
       }
       const std::uint64_t all = end - base == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << (end - base)) - 1;
       for (std::uint64_t todo = ~settled & all; todo != 0; todo &= todo - 1) {
