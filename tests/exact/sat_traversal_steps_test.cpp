@@ -24,7 +24,8 @@ using Q = mpq_class;
 
 struct Tally {
   int cases = 0;
-  std::int64_t pruned_faces = 0, probe_pruned = 0, pruned_arcs = 0, late = 0, nonconvex_differs = 0;
+  std::int64_t pruned_faces = 0, probe_pruned = 0, pruned_arcs = 0, late_pruned_arcs = 0, late = 0,
+               nonconvex_differs = 0;
 };
 
 // The walk counters that only decisions change (height_evals counts O(1)
@@ -40,6 +41,7 @@ void check_same_steps(const sat::TraversalStats& r, const sat::TraversalStats& e
   CHECK(r.probe_checks == e.probe_checks);
   CHECK(r.probe_pruned == e.probe_pruned);
   CHECK(r.pruned_arcs == e.pruned_arcs);
+  CHECK(r.late_pruned_arcs == e.late_pruned_arcs);
   CHECK(r.late_certified == e.late_certified);
 }
 
@@ -68,6 +70,7 @@ void check_pair(const ConvexPolyhedron<F>& a, const ConvexPolyhedron<F>& b, cons
   t.pruned_faces += rs.pruned_faces;
   t.probe_pruned += rs.probe_pruned;
   t.pruned_arcs += rs.pruned_arcs;
+  t.late_pruned_arcs += rs.late_pruned_arcs;
   t.late += rs.late_certified;
   if (with_brute_force) {
     // Not a requirement on inputs convex only up to rounding (the SATs' own
@@ -99,12 +102,14 @@ TEST_CASE("robust traversal takes the exact traversal's steps (random hulls)", "
   CHECK(t.pruned_faces > 0);
   CHECK(t.probe_pruned > 0);
   CHECK(t.pruned_arcs > 0);
+  CHECK(t.late_pruned_arcs > 0);
   // Random hulls are triangulated: exactly convex images, so the exact
   // traversal is the exact brute force.
   CHECK(t.nonconvex_differs == 0);
   WARN("random hulls: " << t.cases << " cases, pruned faces " << t.pruned_faces << " (by a probe "
                         << t.probe_pruned << "), pruned arcs "
-                        << t.pruned_arcs << ", late climbs " << t.late);
+                        << t.pruned_arcs << " (after a late climb " << t.late_pruned_arcs << "), late climbs "
+                        << t.late);
 }
 
 TEST_CASE("robust traversal takes the exact traversal's steps (float-rotated boxes and prisms)",
