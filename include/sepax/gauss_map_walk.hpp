@@ -16,7 +16,7 @@
 //   * a breadth-first order of the faces over face adjacency, with each face's
 //     parent in that tree (-1 for the root): the traversal computes a face's
 //     support vertex by hill-climbing from its parent's support vertex;
-//   * up to kMaxProbes probe vertices spread over the vertex graph (farthest
+//   * probe_count(V) probe vertices spread over the vertex graph (farthest
 //     point sampling by edge hops): before the traversal climbs for a face of
 //     the other shape, it looks for a probe below the best candidate so far,
 //     which prunes the face without a climb (sat_traversal.hpp, step 1).
@@ -142,11 +142,24 @@ class GaussMapWalk {
   /// edge_face(e, side) == edge_faces()[2 e + side], for loops over every edge.
   const int* edge_faces() const { return face_.data(); }
 
-  /// At most this many probe vertices (a multiple of the 4 float lanes).
-  static constexpr int kMaxProbes = 16;
+  /// The number of probe vertices lies in [kMinProbes, kMaxProbes] (both
+  /// multiples of the 4 float lanes), or is every vertex of a smaller shape.
+  static constexpr int kMinProbes = 16;
+  static constexpr int kMaxProbes = 28;
+  /// Probes of a shape with nv vertices: nv / 8 within [kMinProbes,
+  /// kMaxProbes], at most nv.  A hull of N points spread over a sphere keeps
+  /// about the same share of its vertices as probes, so the deepest probe
+  /// stays about as deep relative to the face spacing as N grows (measured:
+  /// 16 probes at N = 256 left ~105 faces per query whose seed and deepest
+  /// probe both failed; 28 probes are 6-7% faster there, while 24 instead of
+  /// 16 at N = 32 were 10% slower, docs/traversal.md "Speed round 6").
+  static constexpr int probe_count(int nv) {
+    const int k = nv / 8 < kMinProbes ? kMinProbes : nv / 8 > kMaxProbes ? kMaxProbes : nv / 8;
+    return k < nv ? k : nv;
+  }
   /// The probe vertices, in the order they were chosen: vertex 0, then each
   /// time the vertex furthest (in edge hops) from those already chosen, the
-  /// lowest index among equally far ones; min(kMaxProbes, vertex count) of them.
+  /// lowest index among equally far ones; probe_count(vertex count) of them.
   const std::vector<int>& probes() const { return probes_; }
 
   // ---- faces in breadth-first order ----
@@ -172,7 +185,8 @@ class GaussMapWalk {
     std::vector<int> dist(static_cast<std::size_t>(nv_), nv_ + 1), queue;
     queue.reserve(static_cast<std::size_t>(nv_));
     int next = 0;
-    while (static_cast<int>(probes_.size()) < kMaxProbes) {
+    const int want = probe_count(nv_);
+    while (static_cast<int>(probes_.size()) < want) {
       probes_.push_back(next);
       // hop distances to the chosen set, updated from the new probe
       queue.assign(1, next);

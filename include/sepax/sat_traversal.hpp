@@ -1150,9 +1150,10 @@ class Traversal {
   const bool plain_flat_;  // a flat shape (used with kRoundingDecisions only, see run())
   int seed_a_ = 0, seed_b_ = 0;  // root seeds of step 1 and 2 (from step 0)
   // The probe vertices' coordinates, one array per coordinate (kFast only):
-  // probes_b_ of B (for faces of A), probes_a_ of A.  All kMaxProbes lanes
-  // are filled: those past the probe count repeat probe 0, and `valid` has
-  // a bit for each real one.
+  // probes_b_ of B (for faces of A), probes_a_ of A.  The lanes up to the
+  // probe count rounded up to 4 (every lane deepest_probe() reads, for 4
+  // float or 2 double lanes) are filled: those past the probe count repeat
+  // probe 0, and `valid` has a bit for each real one.
   // (float for the other kernels, unused: no exact number objects per query)
   using LaneT = std::conditional_t<kFast, T, float>;
   struct ProbeLanes {
@@ -1167,7 +1168,8 @@ class Traversal {
     pr.count = static_cast<int>(ids.size());
     pr.valid = (1u << pr.count) - 1;
     if (pr.count == 0) return;
-    for (int i = 0; i < GaussMapWalk::kMaxProbes; ++i) {
+    const int filled = (pr.count + 3) / 4 * 4;
+    for (int i = 0; i < filled; ++i) {
       const Vec3<T>& v = p.vertex(ids[static_cast<std::size_t>(i < pr.count ? i : 0)]);
       pr.x[i] = v[0];
       pr.y[i] = v[1];

@@ -38,11 +38,12 @@ std::vector<int> hops(const GaussMapWalk& w, const std::vector<int>& from) {
 
 // The documented rule, checked from scratch: vertex 0 first, then each time
 // the lowest-index vertex among those furthest from the probes so far, until
-// kMaxProbes or every vertex is a probe.
+// probe_count(V) (V / 8 within [kMinProbes, kMaxProbes], at most V) are chosen.
 void check_probes(const GaussMapWalk& w) {
   const auto& p = w.probes();
   const int nv = w.vertex_count();
-  REQUIRE(static_cast<int>(p.size()) == std::min(nv, GaussMapWalk::kMaxProbes));
+  REQUIRE(static_cast<int>(p.size()) == GaussMapWalk::probe_count(nv));
+  REQUIRE(static_cast<int>(p.size()) <= GaussMapWalk::kMaxProbes);
   REQUIRE(p.front() == 0);
   CHECK(std::set<int>(p.begin(), p.end()).size() == p.size());
   for (std::size_t k = 1; k < p.size(); ++k) {
@@ -58,19 +59,37 @@ void check_probes(const GaussMapWalk& w) {
 
 }  // namespace
 
-TEST_CASE("probes: farthest point sampling on the vertex graph, at most kMaxProbes", "[walk][probes]") {
+TEST_CASE("probes: probe_count scales with the vertex count within its bounds", "[walk][probes]") {
+  CHECK(GaussMapWalk::probe_count(4) == 4);
+  CHECK(GaussMapWalk::probe_count(16) == 16);
+  CHECK(GaussMapWalk::probe_count(100) == GaussMapWalk::kMinProbes);
+  CHECK(GaussMapWalk::probe_count(128) == 16);
+  CHECK(GaussMapWalk::probe_count(192) == 24);
+  CHECK(GaussMapWalk::probe_count(256) == GaussMapWalk::kMaxProbes);
+  CHECK(GaussMapWalk::probe_count(100000) == GaussMapWalk::kMaxProbes);
+}
+
+TEST_CASE("probes: farthest point sampling on the vertex graph, probe_count of them", "[walk][probes]") {
   std::mt19937_64 rng(5);
   for (int n : {4, 8, 12, 16, 17, 32, 64, 128}) {
     const auto hull = test::sphere_hull(rng, n);
     const GaussMapWalk w(hull);
     INFO("sphere hull of " << n << " points, " << hull.vertex_count() << " vertices");
     check_probes(w);
-    if (hull.vertex_count() > GaussMapWalk::kMaxProbes) {
+    if (hull.vertex_count() > GaussMapWalk::kMinProbes) {
       // spread: every vertex is near a probe (a hull of N points on a sphere
       // has a graph diameter of about sqrt(N) hops)
       const auto d = hops(w, w.probes());
       CHECK(*std::max_element(d.begin(), d.end()) <= 3);
     }
+  }
+  // more than 16 probes on larger shapes (200 and 256 vertices)
+  for (int n : {100, 128}) {
+    const auto s = shapes::prism<double>(n, 1.0, 1.0);
+    const GaussMapWalk w(s);
+    INFO("prism of " << n << "-gons");
+    check_probes(w);
+    CHECK(static_cast<int>(w.probes().size()) > GaussMapWalk::kMinProbes);
   }
   // every vertex of a small shape is a probe, a flat polygon included
   for (const auto& s : {shapes::cube<double>(1.0), shapes::prism<double>(5, 1.0, 1.0),
