@@ -50,8 +50,9 @@
 //     vertex seeds the face's children and is climbed on (certify()) only if
 //     an arc walk needs the support vertex;
 //   * an arc of a solid A is skipped when two heights bound every Minkowski
-//     face on it below a best <= 0 (arc_below_best()), and so is a single
-//     crossing (crossing_below_best()).
+//     face on it below a best <= 0 (arc_below_best(); in arc() again with
+//     the support vertices its ends are climbed to, before the walk), and
+//     so is a single crossing (crossing_below_best()).
 // Every pruning decision is a kernel decision (exact under policy::Robust),
 // so the robust walk takes exactly the exact walk's path.
 //
