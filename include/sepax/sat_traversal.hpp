@@ -976,8 +976,8 @@ class Traversal {
   // f1.  If it prunes, f1 is not climbed.  Then likewise x = v1 (f1's
   // support) after f1's climb.  All exact decisions (face_below_best), taken
   // in the same order by every kernel.  At N = 256 (overlapping sphere
-  // hulls) the walked arcs drop from ~12 to ~7 per query and the crossing
-  // tests from 50 to 29.
+  // hulls) the walked arcs drop from ~12 to ~4 per query and the crossing
+  // tests from 50 to 18.
   bool arc(FaceScratch& st, int ea, int f0, int f1) {
     const bool cut0 = !(st[f0] & kCertified), cut1 = !(st[f1] & kCertified);
     const bool bound = prune_arcs_ && best_nonpositive();
