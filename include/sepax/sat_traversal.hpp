@@ -966,6 +966,17 @@ class Traversal {
     return prune_arcs_ && best_nonpositive() && face_below_best<true>(f0, v) && face_below_best<true>(f1, v);
   }
 
+  // arc()'s bound with x = the support vertex of end f (certified state s;
+  // cut: f was cut off before its late climb, so x is known below the best
+  // under f), below f and the other end g; counts the pruned arc.
+  bool support_bounds_arc(int f, bool cut, int s, int g) {
+    const int x = s >> 2;
+    if (!((cut || face_below_best<true>(f, x)) && face_below_best<true>(g, x))) return false;
+    ++ts_.pruned_arcs;
+    ++ts_.late_pruned_arcs;
+    return true;
+  }
+
   // Arc ea from face f0 to face f1 of A, not pruned by arc_below_best.
   //
   // Before the walk, the arc bound (arc_below_best) is tried again with the
@@ -982,17 +993,9 @@ class Traversal {
     const bool cut0 = !(st[f0] & kCertified), cut1 = !(st[f1] & kCertified);
     const bool bound = prune_arcs_ && best_nonpositive();
     int s0 = certify(st, f0);
-    if (bound && (cut0 || face_below_best<true>(f0, s0 >> 2)) && face_below_best<true>(f1, s0 >> 2)) {
-      ++ts_.pruned_arcs;
-      ++ts_.late_pruned_arcs;
-      return false;
-    }
+    if (bound && support_bounds_arc(f0, cut0, s0, f1)) return false;
     int s1 = certify(st, f1);
-    if (bound && (cut1 || face_below_best<true>(f1, s1 >> 2)) && face_below_best<true>(f0, s1 >> 2)) {
-      ++ts_.pruned_arcs;
-      ++ts_.late_pruned_arcs;
-      return false;
-    }
+    if (bound && support_bounds_arc(f1, cut1, s1, f0)) return false;
     bool forward;
     int v;
     if (!(s0 & kTie)) {
