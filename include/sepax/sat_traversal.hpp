@@ -1,27 +1,28 @@
 // sepax/sat_traversal.hpp
 //
 // sat::traversal: the SAT as a walk over the overlaid Gauss maps of A and -B,
-// with one support scan per query.  Same result, feature and tie-break as
+// with no support scan of every vertex.  Same result, feature and tie-break as
 // sat::brute_force and sat::gauss_map (feature.hpp, best_axis.hpp).
 //
 // Candidate axes are the vertices of the overlay: face normals of A, face
 // normals of B, and crossings of an arc of A with an arc of -B (Minkowski
 // edge-edge faces).  The walk finds all of them without a support scan per
-// face:
+// face (a scan over every vertex is only the climbs' fallback when rounding
+// makes a climb cycle):
 //
 //  1. Faces of A, in breadth-first order over face adjacency (GaussMapWalk):
-//     the root face's climb is seeded by the one full support scan
-//     (k.face_query_a, made for a start face, see Pruning); every face's
-//     support vertex is
-//     found by hill-climbing on B's vertex graph from its parent face's
-//     vertex, comparing heights above the face exactly (k.compare of
-//     k.face_separation_a(f, v) for neighbouring v; float kernels compare
-//     fl(n.v) within the kernel's filter, exactly inside it).  A linear
-//     function on a convex polytope has no local minimum that is not global,
-//     so the climb ends at a deepest vertex; when the deepest set is larger
-//     than one vertex (a tie: an edge or face of B) it is searched for the
-//     lowest index, the tie-break every SAT uses.
-//  2. Faces of B likewise, hill-climbing on A (seeded from A's vertex 0).
+//     the root face's climb is seeded by the support vertex of a start face
+//     (see Pruning), itself climbed from the deepest probe vertex; every
+//     face's support vertex is found by hill-climbing on B's vertex graph
+//     from its parent face's vertex, comparing heights above the face
+//     exactly (k.compare of k.face_separation_a(f, v) for neighbouring v;
+//     float kernels compare fl(n.v) within the kernel's filter, exactly
+//     inside it).  A linear function on a convex polytope has no local
+//     minimum that is not global, so the climb ends at a deepest vertex;
+//     when the deepest set is larger than one vertex (a tie: an edge or face
+//     of B) it is searched for the lowest index, the tie-break every SAT
+//     uses.
+//  2. Faces of B likewise, hill-climbing on A (the root seeded by step 0).
 //  3. Arcs of A.  Edge eA is the arc from n(f0) to n(f1).  The walk starts in
 //     the region of -B's Gauss map that contains the start of the arc (the
 //     region of B's support vertex for f0, known from step 1) and carries that
@@ -127,7 +128,8 @@ inline constexpr int kTraversalInlineFaces = 1024;
 
 /// Counters of one traversal query (beyond SatStats), for tests and tuning.
 struct TraversalStats {
-  std::int64_t support_scans = 0;     // full support scans (k.face_query_*): 1
+  std::int64_t support_scans = 0;     // full support scans (k.face_query_*): only a
+                                      // climb's fallback when rounding makes it cycle
   std::int64_t climb_steps = 0;       // hill-climb moves
   std::int64_t height_evals = 0;      // k.face_separation_* calls
   std::int64_t arc_tests = 0;         // k.arc_signs calls
@@ -639,19 +641,44 @@ class Traversal {
   // (convert_from) choose the same faces, under every FMA contraction
   // setting: coordinates and d are rounded to float, so every product
   // float * float is exact in double and contraction cannot change it; the
-  // sums are plain double additions; ties keep the lowest index.  Hence
+  // sums are plain double additions; ties keep the first vertex looked at
+  // (furthest() visits vertices in an order fixed by the walk data).  Hence
   // policy::Robust and exact arithmetic still take identical steps.
   static double key_coord(const T& x) { return static_cast<double>(static_cast<float>(to_double(x))); }
-  static int furthest(const ConvexPolyhedron<T>& p, const double (&d)[3]) {
-    int best = 0;
-    double m = -std::numeric_limits<double>::infinity();
-    const int nv = p.vertex_count();
-    for (int i = 0; i < nv; ++i) {
+  // A vertex of p furthest along d, without a scan of every vertex: the
+  // probe with the largest key (the first of equal ones), then, unless
+  // every vertex is a probe, a steepest-ascent climb on p's vertex graph
+  // (the first neighbour of the largest key).  Keys rise strictly, so the
+  // climb ends; on a convex polytope it ends at a furthest vertex unless
+  // rounding of the keys makes a tie.  (It replaced a scan of every vertex
+  // of both shapes and a full support scan for the start face: -6% wall
+  // time at N = 256, docs/traversal.md "Speed round 7".)
+  static int furthest(const ConvexPolyhedron<T>& p, const GaussMapWalk& w, const double (&d)[3]) {
+    auto key = [&](int i) {
       const Vec3<T>& v = p.vertex(i);
-      const double x = key_coord(v[0]) * d[0] + key_coord(v[1]) * d[1] + key_coord(v[2]) * d[2];
+      return key_coord(v[0]) * d[0] + key_coord(v[1]) * d[1] + key_coord(v[2]) * d[2];
+    };
+    const auto& ids = w.probes();
+    int best = ids.empty() ? 0 : ids[0];
+    double m = key(best);
+    for (std::size_t c = 1; c < ids.size(); ++c) {
+      const double x = key(ids[c]);
       if (x > m) {
         m = x;
-        best = i;
+        best = ids[c];
+      }
+    }
+    if (static_cast<int>(ids.size()) == p.vertex_count()) return best;  // every vertex is a probe
+    for (int up = best; up >= 0;) {
+      best = up;
+      up = -1;
+      for (int i = w.adj_begin(best); i < w.adj_end(best); ++i) {
+        const int u = w.adj_vertex(i);
+        const double x = key(u);
+        if (x > m) {
+          m = x;
+          up = u;
+        }
       }
     }
     return best;
@@ -668,12 +695,13 @@ class Traversal {
       d[c] = static_cast<double>(static_cast<float>(cb - ca));
       md[c] = -d[c];
     }
-    const int va = furthest(a, d), vb = furthest(b, md);
+    const int va = furthest(a, wa_, d), vb = furthest(b, wb_, md);
     const int fa = wa_.face(wa_.adj_half_edge(wa_.adj_begin(va)));
     const int fb = wb_.face(wb_.adj_half_edge(wb_.adj_begin(vb)));
-    ++ts_.support_scans;
-    seed_a_ = k_.face_query_a(fa).support_vertex;
-    int s = climb<true>(fa, seed_a_, false);
+    // fa's support vertex: climbed (exactly, no cutoff) from the deepest
+    // probe of B below fa -- the same vertex a full support scan gives
+    const int p = deepest_probe<true>(fa);
+    int s = climb<true>(fa, p >= 0 ? p : 0, false);
     seed_a_ = s >> 2;
     if (offer_face<true>(fa, seed_a_)) return true;
     s = climb<false>(fb, va, true);
@@ -781,6 +809,7 @@ class Traversal {
   // steps.
   template <bool OfA>
   int probe_below_best(int f, int seed) {
+    if (!best_.has()) return -1;
     const int p = deepest_probe<OfA>(f);
     if (p < 0 || p == seed) return -1;  // the seed was just found not below
     return face_below_best<OfA>(f, p) ? p : -1;
@@ -788,7 +817,7 @@ class Traversal {
 
   // The deepest of the other shape's probe vertices (GaussMapWalk::probes())
   // below face f -- exactly, the first in the probe order among equally deep
-  // ones; -1 without a best (after step 0 there always is one) or probes.
+  // ones; -1 without probes.
   //
   // Float kernels take every probe's n.x at once in SIMD lanes (dot()'s
   // operations in its order), then the lanes not certainly above the lowest
@@ -797,7 +826,6 @@ class Traversal {
   // NaN lanes (overflow): the comparisons one by one, as the climb makes them.
   template <bool OfA>
   int deepest_probe(int f) {
-    if (!best_.has()) return -1;
     const GaussMapWalk& w = OfA ? wb_ : wa_;
     const auto& ids = w.probes();
     if (ids.empty()) return -1;
