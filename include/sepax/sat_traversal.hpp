@@ -51,9 +51,10 @@
 //     vertex seeds the face's children and is climbed on (certify()) only if
 //     an arc walk needs the support vertex;
 //   * an arc of a solid A is skipped when two heights bound every Minkowski
-//     face on it below a best <= 0 (arc_below_best(); in arc() again with
-//     the support vertices its ends are climbed to, before the walk), and
-//     so is a single crossing (crossing_below_best()).
+//     face on it below a best <= 0 (arc_below_best(); first for a chunk of
+//     arcs at once in cut_end_bounds(); in arc() again with the support
+//     vertices its ends are climbed to, before the walk), and so is a single
+//     crossing (crossing_below_best()).
 // Every pruning decision is a kernel decision (exact under policy::Robust),
 // so the robust walk takes exactly the exact walk's path.
 //
@@ -219,8 +220,11 @@ class Traversal {
     //    best_nonpositive() is asked once per chunk; the best only grows, so
     //    heights below an earlier best are below every later one, and an arc
     //    whose Minkowski faces are all below a best <= 0 stays pruned.
-    // The other arcs go through the full test, on their current states.
-    // Both passes are kernel decisions, so the exact walk marks the same arcs.
+    // Second, with the best <= 0, the unsettled arcs with a cut-off end are
+    // tried with that end's vertex below the other end's face, again
+    // without a branch on the outcome (cut_end_bounds()).  The arcs left go
+    // through the full test, on their current states.  All passes are
+    // kernel decisions, so the exact walk marks and prunes the same arcs.
     const int* ef = wa_.edge_faces();
     for (int base = 0; base < ne && !stop; base += 64) {
       const int end = ne - base < 64 ? ne : base + 64;
@@ -235,7 +239,9 @@ class Traversal {
         pruned += skip & ~static_cast<unsigned>(s0 >> 1);  // kind 0 (kind kCertified has bit 1 set)
       }
       const std::uint64_t all = end - base == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << (end - base)) - 1;
-      for (std::uint64_t todo = ~settled & all; todo != 0; todo &= todo - 1) {
+      std::uint64_t todo = ~settled & all;
+      if (kinds & 1u) todo &= ~cut_end_bounds(base, todo, sa, ef, pruned);
+      for (; todo != 0; todo &= todo - 1) {
         const int ea = base + std::countr_zero(todo);
         const int f0 = wa_.edge_face(ea, 0), f1 = wa_.edge_face(ea, 1);
         const int s0 = sa[f0], s1 = sa[f1];
@@ -962,6 +968,46 @@ class Traversal {
   int lower(int v, int e, const ArcSigns& s, bool forward) const {
     const int es = end_sign(s, forward);
     return wb_.edge_tail(e) == v ? es : -es;
+  }
+
+  // The arc loop's second pass over a chunk's unsettled arcs (todo, bit i =
+  // arc base + i), asked only when the best is <= 0: arc_below_best's
+  // first bound for an arc with a cut-off end, x = that end's vertex (known
+  // below the best under its own face) below the other end's face -- f1
+  // with x0 when f0 was cut off, else f0 with x1.  Returns the arcs it
+  // prunes (and counts them); the others go through the full test.  Taken
+  // for every such arc of the chunk before any of them is walked, in the
+  // same order by every kernel (the exact face_below_best decides), so the
+  // robust walk still takes the exact walk's steps.  The fast kernels
+  // compute every height and decide "h < lo" without a data-dependent
+  // branch; only a height between the thresholds asks the kernel.
+  std::uint64_t cut_end_bounds(int base, std::uint64_t todo, const int* sa, const int* ef, std::int64_t& pruned) {
+    std::uint64_t out = 0;
+    std::int64_t evals = 0;  // heights of cut-off ends' vertices (as face_below_best counts them)
+    for (; todo != 0; todo &= todo - 1) {
+      const int i = std::countr_zero(todo);
+      const int f0 = ef[2 * (base + i)], f1 = ef[2 * (base + i) + 1];
+      const int s0 = sa[f0], s1 = sa[f1];
+      const bool c0 = !(s0 & kCertified);
+      const bool cut = c0 || !(s1 & kCertified);
+      const int f = c0 ? f1 : f0;
+      const int x = (c0 ? s0 : s1) >> 2;
+      bool below;
+      if constexpr (kFast) {
+        const Plane<T>& pl = k_.a().plane(f);
+        const T h = T(dot(pl.normal, k_.b().vertex(x)) - pl.offset);
+        below = cut & (h < lo_a_);
+        evals += cut;
+        if (cut & !(h < lo_a_) & !(h > hi_a_)) [[unlikely]]
+          below = face_below_best<true>(f, x, h);
+      } else {
+        below = cut && face_below_best<true>(f, x);
+      }
+      out |= static_cast<std::uint64_t>(below) << i;
+    }
+    ts_.height_evals += evals;
+    pruned += std::popcount(out);
+    return out;
   }
 
   // Arc pruning.  For a unit n on the (short, A not flat) arc of eA from
