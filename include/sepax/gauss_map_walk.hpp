@@ -16,6 +16,7 @@
 //   * a breadth-first order of the faces over face adjacency, with each face's
 //     parent in that tree (-1 for the root): the traversal computes a face's
 //     support vertex by hill-climbing from its parent's support vertex;
+//     that order cut into chunks that hold no face with its parent;
 //   * probe_count(V) probe vertices spread over the vertex graph (farthest
 //     point sampling by edge hops): before the traversal climbs for a face of
 //     the other shape, it looks for a probe below the best candidate so far,
@@ -87,6 +88,7 @@ class GaussMapWalk {
       }
     }
     for (int f : face_order_) face_parent_.push_back(parent[static_cast<std::size_t>(f)]);
+    choose_face_chunks();
     choose_probes();
     triangulated_ = true;
     for (std::size_t h = 0; h < nh; ++h) {
@@ -166,6 +168,13 @@ class GaussMapWalk {
   const std::vector<int>& face_order() const { return face_order_; }
   /// Parent (in the BFS tree) of face_order()[i]; -1 for the root.
   const std::vector<int>& face_parent() const { return face_parent_; }
+  /// The BFS order cut into chunks of at most kFaceChunk positions, none of
+  /// which holds a face together with its parent: chunk c is positions
+  /// [face_chunks()[c], face_chunks()[c + 1]), the last entry is the face
+  /// count.  The traversal takes the seed test of a whole chunk before any of
+  /// its faces climbs (no face's seed can change inside its chunk).
+  const std::vector<int>& face_chunks() const { return face_chunks_; }
+  static constexpr int kFaceChunk = 64;
 
  private:
   int nv_ = 0, ne_ = 0, nf_ = 0;
@@ -173,8 +182,27 @@ class GaussMapWalk {
   bool triangulated_ = false;
   std::vector<int> adj_start_, adj_half_, adj_vertex_, adj_edge_;
   std::vector<int> origin_, face_, next_, prev_;
-  std::vector<int> face_order_, face_parent_;
+  std::vector<int> face_order_, face_parent_, face_chunks_;
   std::vector<int> probes_;
+
+  // Greedy: a chunk ends before the first position whose parent lies in it,
+  // or after kFaceChunk positions.
+  void choose_face_chunks() {
+    face_chunks_.clear();
+    const int n = static_cast<int>(face_order_.size());
+    std::vector<int> pos(static_cast<std::size_t>(nf_), -1);
+    for (int i = 0; i < n; ++i) pos[static_cast<std::size_t>(face_order_[static_cast<std::size_t>(i)])] = i;
+    int start = 0;
+    if (n > 0) face_chunks_.push_back(0);
+    for (int i = 1; i < n; ++i) {
+      const int pp = pos[static_cast<std::size_t>(face_parent_[static_cast<std::size_t>(i)])];
+      if (pp >= start || i - start == kFaceChunk) {
+        start = i;
+        face_chunks_.push_back(i);
+      }
+    }
+    face_chunks_.push_back(n);
+  }
 
   // Farthest point sampling on the vertex graph (BFS distances, O(kMaxProbes
   // (V + E))): on a hull of points spread over a sphere the probes end up

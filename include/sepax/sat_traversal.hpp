@@ -40,6 +40,11 @@
 // whatever the tie-break, so they are skipped; the result is unchanged):
 //   * step 0 evaluates two faces near the direction between the shapes'
 //     bounding-box centres first (start()), for a good first best;
+//   * on large shapes (long face chunks, GaussMapWalk::face_chunks()) the
+//     seed tests of a chunk of faces are taken in one pass without a branch
+//     on their outcome (no face's parent is in its chunk, so the seeds are
+//     final), then the faces not certainly below go on one by one, with the
+//     same decisions as the one-face loop of small shapes;
 //   * a face whose seed (its parent's vertex) is not below the best tries
 //     the other shape's probe vertices (GaussMapWalk::probes(), a fixed list
 //     of vertices spread over the shape) before it climbs, and takes the
@@ -272,6 +277,13 @@ class Traversal {
   // face_below_best's threshold type (T for float/double; unused otherwise).
   using Thr = std::conditional_t<std::is_floating_point_v<T>, T, float>;
   static constexpr Thr kNegInf = -std::numeric_limits<Thr>::infinity();
+
+  // Steps 1 and 2 take the seed tests of a chunk of faces
+  // (GaussMapWalk::face_chunks()) in one pass when the chunks hold at least
+  // this many faces on average; on shorter chunks (small shapes) the
+  // per-chunk loop exits cost more than the one-face loop's mispredicted
+  // seed tests (docs/traversal.md, "Speed round 7").
+  static constexpr int kMinMeanChunk = 12;
 
   // Per-face state bits (below the vertex index).
   static constexpr int kTie = 1;        // the deepest set has more than one vertex
@@ -739,33 +751,63 @@ class Traversal {
       std::int64_t pruned = 0;
       bool stop = false;
       int* sb = &st[base];  // this shape's per-face states
-      int i = 0;
-      for (; i < nf; ++i) {
-        const int f = order[i];
-        // the BFS root (i = 0, parent -1) is seeded by step 0
-        const int seed = i > 0 ? sb[parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
-        // most faces stop at their seed: decided here, without the climb's call
-        const Plane<T>& pl = planes[f];
-        if (face_below_best<OfA>(f, seed, T(dot(pl.normal, vs[seed]) - pl.offset))) {
+      const std::vector<int>& chunks = w.face_chunks();
+      const int nc = static_cast<int>(chunks.size()) - 1;
+      int i = 0;  // the last face processed when stopped
+      if (nf < kMinMeanChunk * nc) {
+        // Short chunks (small shapes): one face at a time.
+        for (; i < nf; ++i) {
+          const int f = order[i];
+          // the BFS root (i = 0, parent -1) is seeded by step 0
+          const int seed = i > 0 ? sb[parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
+          // most faces stop at their seed: decided here, without a call
+          const Plane<T>& pl = planes[f];
+          const T h = T(dot(pl.normal, vs[seed]) - pl.offset);
           sb[f] = seed << 2;
-          ++pruned;
-          continue;
+          if (h < (OfA ? lo_a_ : lo_b_)) {
+            ++pruned;
+            continue;
+          }
+          if (beyond_seed<OfA>(sb, f, seed, h, pruned)) {
+            stop = true;
+            break;
+          }
         }
-        if (const int p = probe_below_best<OfA>(f, seed); p >= 0) {
-          sb[f] = p << 2;
-          ++pruned;
-          ++ts_.probe_pruned;
-          continue;
-        }
-        const int s = climb_fast<OfA>(f, seed, true, false);
-        sb[f] = s;
-        if (!(s & kCertified)) {
-          ++pruned;
-          continue;
-        }
-        if (offer_face<OfA>(f, s >> 2)) {
-          stop = true;
-          break;
+      } else {
+        for (int c = 0; c < nc && !stop; ++c) {
+          const int b = chunks[static_cast<std::size_t>(c)], e = chunks[static_cast<std::size_t>(c) + 1];
+          // First every face's test at its seed, without a branch on the
+          // outcome: no face's parent is in its chunk, so the seeds are
+          // final.  A face certainly below (h < lo) is pruned at its seed,
+          // as the one-face loop prunes it; the best only grows, so a later
+          // look could not decide otherwise.
+          const T lo = OfA ? lo_a_ : lo_b_;
+          std::uint64_t fail = 0;
+          for (int j = b; j < e; ++j) {
+            const int f = order[j];
+            const int seed = j > 0 ? sb[parent[j]] >> 2 : OfA ? seed_a_ : seed_b_;
+            const Plane<T>& pl = planes[f];
+            const T h = T(dot(pl.normal, vs[seed]) - pl.offset);
+            sb[f] = seed << 2;
+            fail |= static_cast<std::uint64_t>(!(h < lo)) << (j - b);
+          }
+          // Then the others, in order, with the current best.
+          int last = e - 1;
+          for (std::uint64_t todo = fail; todo != 0; todo &= todo - 1) {
+            const int j = b + std::countr_zero(todo);
+            const int f = order[j];
+            const int seed = sb[f] >> 2;
+            const Plane<T>& pl = planes[f];
+            if (beyond_seed<OfA>(sb, f, seed, T(dot(pl.normal, vs[seed]) - pl.offset), pruned)) {
+              stop = true;
+              i = last = j;
+              break;
+            }
+          }
+          // the faces pruned in the first pass, up to the last one processed
+          const int upto = last - b + 1;
+          const std::uint64_t seen = upto == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << upto) - 1;
+          pruned += upto - std::popcount(fail & seen);
         }
       }
       const int done = stop ? i + 1 : nf;  // faces processed
@@ -801,6 +843,31 @@ class Traversal {
       }
       return false;
     }
+  }
+
+  // Fast kernels, face f whose seed's height h is not certainly below the
+  // best (h >= lo, or NaN): the full decision at the seed (the filter, exact
+  // between the thresholds), then the probes, then the climb.  Sets sb[f]
+  // (already seed << 2) and counts pruned faces; true on early out.
+  template <bool OfA>
+  bool beyond_seed(int* sb, int f, int seed, T h, std::int64_t& pruned) {
+    if (face_below_best<OfA>(f, seed, h)) {
+      ++pruned;
+      return false;
+    }
+    if (const int p = probe_below_best<OfA>(f, seed); p >= 0) {
+      sb[f] = p << 2;
+      ++pruned;
+      ++ts_.probe_pruned;
+      return false;
+    }
+    const int s = climb_fast<OfA>(f, seed, true, false);
+    sb[f] = s;
+    if (!(s & kCertified)) {
+      ++pruned;
+      return false;
+    }
+    return offer_face<OfA>(f, s >> 2);
   }
 
   // Before a face climbs (its seed is not below the best): the deepest probe

@@ -112,6 +112,41 @@ TEST_CASE("robust traversal takes the exact traversal's steps (random hulls)", "
                         << t.late);
 }
 
+TEST_CASE("robust traversal takes the exact traversal's steps (large hulls: chunked seed tests)",
+          "[traversal][robust][steps]") {
+  // Hulls of 150-200 points: ~300-400 faces, whose face chunks are long
+  // enough for the traversal's chunked seed pass (sat_traversal.hpp,
+  // kMinMeanChunk), which must take the one-face loop's decisions.
+  std::mt19937_64 rng(9191);
+  std::uniform_int_distribution<int> nd(150, 200);
+  std::uniform_real_distribution<double> off(-1.0, 1.0);
+  Tally t;
+  int float_pairs = 0;
+  for (int it = 0; it < 6; ++it) {
+    const auto a = test::large_sphere_hull(rng, nd(rng));
+    const auto b = test::moved(test::large_sphere_hull(rng, nd(rng), 0.9), test::random_rotation(rng),
+                               test::V3(off(rng), off(rng), off(rng)));
+    for (const auto* p : {&a, &b}) {
+      const GaussMapWalk w(*p);
+      REQUIRE(p->face_count() >= 12 * (static_cast<int>(w.face_chunks().size()) - 1));
+    }
+    check_pair(a, b, "large pair", t);  // (no exact brute force: minutes at this size)
+    check_pair(a, b, "large pair", t, true);
+    // the float images, when rounding b's rotated vertices keeps it valid
+    try {
+      const auto af = ConvexPolyhedron<float>::convert_from(a);
+      const auto bf = ConvexPolyhedron<float>::convert_from(b);
+      check_pair(af, bf, "large pair", t);
+      ++float_pairs;
+    } catch (const InvalidInput&) {
+    }
+  }
+  CHECK(float_pairs > 0);
+  CHECK(t.pruned_faces > 0);
+  CHECK(t.probe_pruned > 0);
+  CHECK(t.pruned_arcs > 0);
+}
+
 TEST_CASE("robust traversal takes the exact traversal's steps (float-rotated boxes and prisms)",
           "[traversal][robust][steps]") {
   // Rotated in double: the quads of the exact images are planar only up to
