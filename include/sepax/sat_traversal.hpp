@@ -132,6 +132,13 @@ namespace sepax::sat {
 /// Total faces (A + B) the traversal keeps per-face scratch for on the stack.
 inline constexpr int kTraversalInlineFaces = 1024;
 
+/// Steps 1 and 2 (float kernels) take the seed tests of a chunk of faces
+/// (GaussMapWalk::face_chunks()) in one pass when a shape's chunks hold at
+/// least this many faces on average; on shorter chunks (small shapes) the
+/// per-chunk loop exits cost more than the one-face loop's mispredicted
+/// seed tests (docs/traversal.md, "Speed round 7").
+inline constexpr int kTraversalMinMeanChunk = 12;
+
 /// Counters of one traversal query (beyond SatStats), for tests and tuning.
 struct TraversalStats {
   std::int64_t support_scans = 0;     // full support scans (k.face_query_*): only a
@@ -277,13 +284,6 @@ class Traversal {
   // face_below_best's threshold type (T for float/double; unused otherwise).
   using Thr = std::conditional_t<std::is_floating_point_v<T>, T, float>;
   static constexpr Thr kNegInf = -std::numeric_limits<Thr>::infinity();
-
-  // Steps 1 and 2 take the seed tests of a chunk of faces
-  // (GaussMapWalk::face_chunks()) in one pass when the chunks hold at least
-  // this many faces on average; on shorter chunks (small shapes) the
-  // per-chunk loop exits cost more than the one-face loop's mispredicted
-  // seed tests (docs/traversal.md, "Speed round 7").
-  static constexpr int kMinMeanChunk = 12;
 
   // Per-face state bits (below the vertex index).
   static constexpr int kTie = 1;        // the deepest set has more than one vertex
@@ -754,7 +754,7 @@ class Traversal {
       const std::vector<int>& chunks = w.face_chunks();
       const int nc = static_cast<int>(chunks.size()) - 1;
       int i = 0;  // the last face processed when stopped
-      if (nf < kMinMeanChunk * nc) {
+      if (nf < kTraversalMinMeanChunk * nc) {
         // Short chunks (small shapes): one face at a time.
         for (; i < nf; ++i) {
           const int f = order[i];

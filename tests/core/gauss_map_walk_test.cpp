@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <sepax/gauss_map_walk.hpp>
+#include <sepax/sat_traversal.hpp>
 #include <sepax/shapes.hpp>
 
 #include "traversal_shapes.hpp"
@@ -142,7 +143,7 @@ TEST_CASE("face chunks: the BFS order in chunks of at most kFaceChunk, no face w
     }
   }
   // Large hulls have long chunks (the traversal's chunked seed pass needs a
-  // mean of sat::detail's kMinMeanChunk = 12): 400 points, ~796 faces.
+  // mean of sat::kTraversalMinMeanChunk): 400 points, ~796 faces.
   const GaussMapWalk big(shapes_list.back());
-  CHECK(big.face_count() >= 12 * (static_cast<int>(big.face_chunks().size()) - 1));
+  CHECK(big.face_count() >= sat::kTraversalMinMeanChunk * (static_cast<int>(big.face_chunks().size()) - 1));
 }

@@ -116,7 +116,7 @@ TEST_CASE("robust traversal takes the exact traversal's steps (large hulls: chun
           "[traversal][robust][steps]") {
   // Hulls of 150-200 points: ~300-400 faces, whose face chunks are long
   // enough for the traversal's chunked seed pass (sat_traversal.hpp,
-  // kMinMeanChunk), which must take the one-face loop's decisions.
+  // kTraversalMinMeanChunk), which must take the one-face loop's decisions.
   std::mt19937_64 rng(9191);
   std::uniform_int_distribution<int> nd(150, 200);
   std::uniform_real_distribution<double> off(-1.0, 1.0);
@@ -128,7 +128,7 @@ TEST_CASE("robust traversal takes the exact traversal's steps (large hulls: chun
                                test::V3(off(rng), off(rng), off(rng)));
     for (const auto* p : {&a, &b}) {
       const GaussMapWalk w(*p);
-      REQUIRE(p->face_count() >= 12 * (static_cast<int>(w.face_chunks().size()) - 1));
+      REQUIRE(p->face_count() >= sat::kTraversalMinMeanChunk * (static_cast<int>(w.face_chunks().size()) - 1));
     }
     check_pair(a, b, "large pair", t);  // (no exact brute force: minutes at this size)
     check_pair(a, b, "large pair", t, true);
