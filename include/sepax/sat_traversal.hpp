@@ -390,14 +390,18 @@ class Traversal {
       }
     }
   }
+  // The height face_below_best(f, x, h) takes (float kernels): fl(fl(n.x) -
+  // offset) of plane pl and point x, computed here only, so that every
+  // caller passes the kernel's face separation value bit for bit.
+  SEPAX_TRAVERSAL_INLINE static T fast_height(const Plane<T>& pl, const Vec3<T>& x) {
+    return T(dot(pl.normal, x) - pl.offset);
+  }
   // The same for any kernel (height from the kernel).
   template <bool OfA>
   SEPAX_TRAVERSAL_INLINE bool face_below_best(int f, int x) {
     if constexpr (kFast) {
-      const Plane<T>& pl = (OfA ? k_.a() : k_.b()).plane(f);
-      const Vec3<T>& p = (OfA ? k_.b() : k_.a()).vertex(x);
       ++ts_.height_evals;
-      return face_below_best<OfA>(f, x, T(dot(pl.normal, p) - pl.offset));
+      return face_below_best<OfA>(f, x, fast_height((OfA ? k_.a() : k_.b()).plane(f), (OfA ? k_.b() : k_.a()).vertex(x)));
     } else {
       return below_best(height<OfA>(f, x), face_feature<OfA>(f, x));
     }
@@ -761,8 +765,7 @@ class Traversal {
           // the BFS root (i = 0, parent -1) is seeded by step 0
           const int seed = i > 0 ? sb[parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
           // most faces stop at their seed: decided here, without a call
-          const Plane<T>& pl = planes[f];
-          const T h = T(dot(pl.normal, vs[seed]) - pl.offset);
+          const T h = fast_height(planes[f], vs[seed]);
           sb[f] = seed << 2;
           if (h < (OfA ? lo_a_ : lo_b_)) {
             ++pruned;
@@ -786,8 +789,7 @@ class Traversal {
           for (int j = b; j < e; ++j) {
             const int f = order[j];
             const int seed = j > 0 ? sb[parent[j]] >> 2 : OfA ? seed_a_ : seed_b_;
-            const Plane<T>& pl = planes[f];
-            const T h = T(dot(pl.normal, vs[seed]) - pl.offset);
+            const T h = fast_height(planes[f], vs[seed]);
             sb[f] = seed << 2;
             fail |= static_cast<std::uint64_t>(!(h < lo)) << (j - b);
           }
@@ -797,8 +799,7 @@ class Traversal {
             const int j = b + std::countr_zero(todo);
             const int f = order[j];
             const int seed = sb[f] >> 2;
-            const Plane<T>& pl = planes[f];
-            if (beyond_seed<OfA>(sb, f, seed, T(dot(pl.normal, vs[seed]) - pl.offset), pruned)) {
+            if (beyond_seed<OfA>(sb, f, seed, fast_height(planes[f], vs[seed]), pruned)) {
               stop = true;
               i = last = j;
               break;
@@ -1061,8 +1062,7 @@ class Traversal {
       const int x = (c0 ? s0 : s1) >> 2;
       bool below;
       if constexpr (kFast) {
-        const Plane<T>& pl = k_.a().plane(f);
-        const T h = T(dot(pl.normal, k_.b().vertex(x)) - pl.offset);
+        const T h = fast_height(k_.a().plane(f), k_.b().vertex(x));
         below = cut & (h < lo_a_);
         evals += cut;
         if (cut & !(h < lo_a_) & !(h > hi_a_)) [[unlikely]]
