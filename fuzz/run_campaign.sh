@@ -7,14 +7,13 @@
 # --seed 7, --json, --families boxes,flat).
 #
 # Usage: bash fuzz/run_campaign.sh [sepax fuzz options]   (as root, or with sudo)
+# Env:   SEPAX_SKIP_INSTALL=1 skips the package installation (packages already
+#        there, or a system that is not Debian: install the equivalents).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-sudo=""
-if [ "$(id -u)" != 0 ]; then sudo="sudo"; fi
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends \
-  cmake ninja-build g++ libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev >/dev/null
+bash .ci/install_packages.sh \
+  cmake ninja-build g++ libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
+  libcli11-dev nlohmann-json3-dev
 cmake -S . -B build-main -G Ninja -DSEPAX_BUILD_TESTS=OFF >/dev/null
 cmake --build build-main --target sepax_cli -j"$(nproc)"
 exec ./build-main/src/sepax fuzz "$@"

@@ -5,12 +5,19 @@
 #   2. the installed bin/sepax answers a query
 #   3. configure tests/consumer against the prefix (find_package(sepax)),
 #      build it, and run its programs
+#   4. the installed pkg-config file: version, and (when pkg-config is
+#      there) float_consumer.cpp compiled with its flags alone
 # Variables: BUILD_DIR CONSUMER_DIR WORK_DIR GENERATOR CXX_COMPILER BUILD_TYPE WITH_ROBUST
+#            [EXPECTED_VERSION: by default the build's CMAKE_PROJECT_VERSION]
 foreach(v BUILD_DIR CONSUMER_DIR WORK_DIR GENERATOR CXX_COMPILER)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "run_install_test.cmake: ${v} is not set")
   endif()
 endforeach()
+if(NOT DEFINED EXPECTED_VERSION)
+  load_cache(${BUILD_DIR} READ_WITH_PREFIX _build_ CMAKE_PROJECT_VERSION)
+  set(EXPECTED_VERSION ${_build_CMAKE_PROJECT_VERSION})
+endif()
 if(NOT DEFINED WITH_ROBUST)
   set(WITH_ROBUST ON)
 endif()
@@ -42,7 +49,8 @@ foreach(f ${_exported})
     message(FATAL_ERROR "${f} refers to the install or build directory it came from")
   endif()
 endforeach()
-foreach(f include/sepax/convex_polyhedron.hpp lib/cmake/sepax/sepaxConfig.cmake
+foreach(f include/sepax/convex_polyhedron.hpp include/sepax/version.hpp share/pkgconfig/sepax.pc
+          lib/cmake/sepax/sepaxConfig.cmake
           lib/cmake/sepax/sepaxConfigVersion.cmake lib/cmake/sepax/sepaxTargets.cmake bin/sepax)
   if(NOT EXISTS ${prefix}/${f})
     message(FATAL_ERROR "not installed: ${prefix}/${f}")
@@ -63,5 +71,27 @@ run(build ${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(float-consumer ${WORK_DIR}/build/float_consumer)
 if(WITH_ROBUST)
   run(exact-consumer ${WORK_DIR}/build/exact_consumer)
+endif()
+
+# pkg-config: the core's flags, found relative to the moved prefix.
+file(STRINGS ${prefix}/share/pkgconfig/sepax.pc _pc_version REGEX "^Version: ")
+if(NOT _pc_version STREQUAL "Version: ${EXPECTED_VERSION}")
+  message(FATAL_ERROR "sepax.pc says '${_pc_version}', expected Version: ${EXPECTED_VERSION}")
+endif()
+find_program(_pkg_config pkg-config)
+if(_pkg_config)
+  set(ENV{PKG_CONFIG_PATH} ${prefix}/share/pkgconfig)
+  run(pkg-config-version ${_pkg_config} --modversion sepax)
+  if(NOT last_output STREQUAL "${EXPECTED_VERSION}\n")
+    message(FATAL_ERROR "pkg-config --modversion sepax gave '${last_output}'")
+  endif()
+  run(pkg-config-cflags ${_pkg_config} --cflags sepax)
+  string(STRIP "${last_output}" _cflags)
+  separate_arguments(_cflags UNIX_COMMAND "${_cflags}")
+  run(pkg-config-compile ${CXX_COMPILER} -std=c++20 ${_cflags} ${CONSUMER_DIR}/float_consumer.cpp
+      -o ${WORK_DIR}/pc_float_consumer)
+  run(pkg-config-consumer ${WORK_DIR}/pc_float_consumer)
+else()
+  message(STATUS "pkg-config not found: sepax.pc checked for its version only")
 endif()
 message(STATUS "install + consumer test passed")
