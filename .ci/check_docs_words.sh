@@ -4,14 +4,14 @@
 # names, commit hashes, who did what.  The history of the project is in
 # CHANGELOG.md (by version) and in git log.
 #
-# Looked for, case-insensitive:
-#   - the words for a work period: S-E-S-S-I-O-N(S), "speed round", "round N";
-#   - branch talk: "this branch", "branch NAME-WITH-HYPHENS";
-#   - who did what: "the lead's", "other engineers";
+# Looked for, case-insensitive (the patterns below, assembled from pieces so
+# that this file does not match them itself; nothing is excluded):
+#   - the words for a numbered work period or its plural, a "speed" or
+#     numbered "round" of work;
+#   - branch talk: the current branch, a branch named with hyphens;
+#   - who did what: people and their roles;
 #   - commit hashes: "commit(s) HASH", and in Markdown files any bare
 #     7-12 digit hex word with letters and digits.
-# The patterns are assembled from pieces so that this file does not match
-# them itself; nothing is excluded.
 #
 # Usage: bash .ci/check_docs_words.sh   (exit 0 clean, 1 hits, 77 no git checkout)
 set -euo pipefail
