@@ -11,14 +11,7 @@ foreach(v SEPAX_SOURCE_DIR CONSUMER_DIR WORK_DIR MODE EXPECTED_VERSION GENERATOR
   endif()
 endforeach()
 
-function(run step)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message(STATUS "[${step}] ${out}")
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "[${step}] failed (${rc}):\n${out}\n${err}")
-  endif()
-  set(last_output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/run_step.cmake)
 
 file(REMOVE_RECURSE ${WORK_DIR})
 set(_extra "")
