@@ -157,7 +157,7 @@ bool scan_queries(K& k, BestAxis<K>& best, std::int64_t& counter, int n, const S
     const auto q = query(i);
     const Feature feat = feature(i, q.support_vertex);
     best.consider(k, q.separation, feat);
-    if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
+    if (stops_early(k, q.separation, feat, opt)) return true;
   }
   return false;
 }

@@ -94,7 +94,7 @@ template <SatKernel K, class Run>
 SatResult<typename K::FT> cached_with(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt, Run&& run) {
   using T = typename K::FT;
   if (opt.early_out && cache.valid) {
-    if (const auto ev = reevaluate(k, cache.feature); ev && k.sign(ev->second, ev->first) > 0) {
+    if (const auto ev = reevaluate(k, cache.feature); ev && stops_early(k, ev->second, ev->first, opt)) {
       SatResult<T> r;
       r.overlap = false;
       r.feature = ev->first;

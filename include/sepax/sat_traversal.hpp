@@ -738,7 +738,7 @@ class Traversal {
     const Feature feat = face_feature<OfA>(f, v);
     const Separation<T> h = height<OfA>(f, v);
     offer(h, feat);
-    return opt_.early_out && k_.sign(h, feat) > 0;
+    return stops_early(k_, h, feat, opt_);
   }
 
   // Steps 1 and 2: support vertices of all faces of A (OfA) or of B, each
@@ -1018,7 +1018,7 @@ class Traversal {
     const auto s = k_.edge_separation(ea, eb);
     const Feature feat = Feature::edges(ea, eb);
     offer(s, feat);
-    return opt_.early_out && k_.sign(s, feat) > 0;
+    return stops_early(k_, s, feat, opt_);
   }
 
   // Arc ea against every arc of -B.  Returns true on early out.
@@ -1343,6 +1343,7 @@ SatResult<typename K::FT> traversal_with(K& k, const GaussMapWalk& wa, const Gau
                        std::string("traversal: shape ") + (k.a().empty() ? "A" : "B") +
                            " is empty (a default-constructed ConvexPolyhedron)");
   }
+  check_options(opt);
   wa.check_fits(k.a(), "A");
   wb.check_fits(k.b(), "B");
   TraversalStats local;
