@@ -16,9 +16,12 @@
 // shapes'; its per-face scratch is on the stack up to kTraversalInlineFaces
 // faces in total).
 //
-// cache: optional per-pair SatCache (sat_cache.hpp); its guarantee is the
-// one stated there, with the cached feature's indices being those of the
-// prepared shapes (the same at every pose).
+// cache: optional per-pair SatCache (sat_cache.hpp), warm start included;
+// its guarantee is the one stated there (a cached query returns the fresh
+// query's feature, separation and verdict; with early_out a re-checked
+// feature beyond the margin answers at once), the cached feature's indices
+// being those of the prepared shapes (the same at every pose).  A cache from
+// another pair or stale shapes only costs one re-evaluation.
 #pragma once
 
 #include "prepared_shape.hpp"
@@ -39,7 +42,7 @@ SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pos
   if (a.polyhedron().empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape A is empty (moved from)");
   const ConvexPolyhedron<T>& bp = b.posed_scratch(relative_pose(pose_a, pose_b));
   kernel_t<Policy, T> k(a.polyhedron(), bp);
-  SatResult<T> r = cache ? cached_with(k, *cache, opt, run) : run(k, opt);
+  SatResult<T> r = cache ? cached_with(k, *cache, opt, run) : run(k, opt, nullptr);
   r.axis = pose_a.rotate(r.axis);
   return r;
 }
@@ -50,8 +53,8 @@ SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pos
 template <class Policy = policy::Plain, Number T>
 SatResult<T> traversal(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
                        const RigidTransform<T>& pose_b, const SatOptions& opt = {}, SatCache<T>* cache = nullptr) {
-  return detail::posed_query<Policy>(a, pose_a, b, pose_b, opt, cache, [&](auto& k, const SatOptions& o) {
-    return traversal_with(k, a.walk(), b.walk(), o);
+  return detail::posed_query<Policy>(a, pose_a, b, pose_b, opt, cache, [&](auto& k, const SatOptions& o, const Feature* seed) {
+    return traversal_with(k, a.walk(), b.walk(), o, nullptr, seed);
   });
 }
 
@@ -60,7 +63,7 @@ template <class Policy = policy::Plain, Number T>
 SatResult<T> gauss_map(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
                        const RigidTransform<T>& pose_b, const SatOptions& opt = {}, SatCache<T>* cache = nullptr) {
   return detail::posed_query<Policy>(a, pose_a, b, pose_b, opt, cache,
-                                     [](auto& k, const SatOptions& o) { return gauss_map_with(k, o); });
+                                     [](auto& k, const SatOptions& o, const Feature* seed) { return gauss_map_with(k, o, seed); });
 }
 
 /// Posed brute-force SAT (see the header comment).
@@ -68,7 +71,7 @@ template <class Policy = policy::Plain, Number T>
 SatResult<T> brute_force(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
                          const RigidTransform<T>& pose_b, const SatOptions& opt = {}, SatCache<T>* cache = nullptr) {
   return detail::posed_query<Policy>(a, pose_a, b, pose_b, opt, cache,
-                                     [](auto& k, const SatOptions& o) { return brute_force_with(k, o); });
+                                     [](auto& k, const SatOptions& o, const Feature* seed) { return brute_force_with(k, o, seed); });
 }
 
 /// All three behind one entry point (sat.hpp's run), posed.

@@ -12,61 +12,24 @@
 //        compose() (for float/double: rounded, one fixed evaluation order);
 //   B' = posed(B, X): the polyhedron with B's topology and plane triples and
 //        the vertices  v' = X.apply(v)  (fl(fl(row_i . v) + t_i) for
-//        float/double, transform.hpp's apply()), and
-//          * float/double: the normals  n' = X.rotate(n)  of B's stored unit
-//            normals (rotated, not recomputed from v'), offsets fl(n' . v'_0)
-//            at each face's first plane-triple vertex; a flat shape's back
-//            plane is the front one negated;
-//          * exact T: planes recomputed from v' as every ConvexPolyhedron
-//            computes them (exactly the planes of transformed(B, X)).
+//        float/double, transform.hpp's apply()), its planes recomputed from
+//        v' as every ConvexPolyhedron computes them: bit for bit
+//        transformed(B, X), built in reused scratch without allocating.
 //
 // A posed query on (A, pose_a, B, pose_b) returns exactly what the same SAT
 // returns on (A, posed(B, X)) - same feature, verdict, separation and stats,
-// bit for bit - with the axis (and manifold points and normal) mapped to
-// world coordinates by pose_a.
-//
-// What "exact" means under the robust policy.  RobustKernel decides every
-// predicate on the exact values of the vertex coordinates; the planes of a
-// shape are, exactly, the planes through its plane triples (convex_polyhedron.hpp).
-// So for float/double the robust posed query makes the decisions exact
-// arithmetic makes on the pair (A, B'), B' = the float vertices v' above with
-// their exact plane-triple planes: the same decisions as
-// sat::...<policy::Robust>(A, transformed(B, X)) and as the mpq SAT on the
-// exact images of A and posed(B, X).  The rotated float normals only serve the
-// filters: they are within δ' of the exact plane-triple normals of v' (bound
-// below), which RobustKernel uses in place of the bound it derives for
-// recomputed normals.  Only the reported separation value and axis are those
-// of the rotated normals (hence the reference must be posed(B, X), not
-// transformed(B, X), for bit-identical values).
-//
+// bit for bit - with the axis (and manifold points) mapped to world
+// coordinates by pose_a.  Under policy::Robust its decisions are the exact
+// decisions on that input (the mpq SAT on the exact images of A and B').
 // Exact T with an exactly orthogonal rotation (rotation_from_integer_quaternion):
 // inverse, compose and apply are exact, so B' is exactly B moved rigidly and
 // the posed query is the exact answer for the poses given.
 //
-// The bound δ' on the rotated normals (float/double).  M = X's linear part
-// (T entries), t its translation, u T's unit roundoff, γ_k = k u/(1 - k u).
-// For a face of B with exact plane triple differences e1, e2, N = e1 x e2,
-// ν = N/|N|, stored normal n (|n - ν| <= δ_B, robust_kernel.hpp), moved
-// vertices v'_k = M v_k + t + r_k with |r_k| <= ε, exact moved normal
-// y = (v'_1 - v'_0) x (v'_2 - v'_0) and n' = fl(M n):
-//   * |fl(M n) - M n| <= γ_3 |M|_F |n| <= γ_3 |M|_F (1 + δ_B);
-//   * |M (n - ν)| <= |M|_2 δ_B <= |M|_F δ_B;
-//   * (M a) x (M b) = cof(M)(a x b) for every 3x3 M, so with ρ_k = r_k - r_0
-//     (|ρ_k| <= 2ε): |y - cof(M) N| <= 2ε |M|_F (|e1| + |e2|) + 4ε^2 =: P;
-//   * |M ν - cof(M) ν| <= κ >= |cof(M) - M|_2, and | |M ν| - 1 | <= ω >=
-//     |M^T M - I|_2 (|Mν|^2 - 1 = ν^T (M^T M - I) ν);
-//   * with w = y/|N|: |n' - y/|y|| <= |n' - w| + | |y|/|N| - 1 |
-//       <= [γ_3 |M|_F (1 + δ_B) + |M|_F δ_B + κ + P/|N|] + [P/|N| + κ + ω].
-//   δ' = |M|_F (γ_3 (1 + δ_B) + δ_B) + 2κ + ω + 2P/|N|,
-//   2P/|N| <= 4 ε |M|_F edge_ratio + 8 ε^2 inv_normal  (vertex_term)
-// with edge_ratio, inv_normal from ConvexPolyhedron::pose_conditioning().
-// The mapping: fl(row_i . v) is within γ_3 Σ_j |M_ij||v_j| of row_i . v and
-// the addition of t_i rounds once more, so |r_k| <= √3 γ_4 (R M_B + |t|_∞) = ε
-// with R = max_i Σ_j |M_ij| and M_B = B's max |coordinate| (local).  κ, ω and
-// |M|_F are computed in double with their rounding added (below).  With FMA
-// contraction every quantity above is rounded fewer times: the bounds hold.
-// The kernel also scales its vertex-rounding terms of B's normals by
-// |n'| <= (sqrt(1 + ω) + γ_3 |M|_F)(1 + δ_B) (robust_kernel.hpp).
+// (ConvexPolyhedron::RigidImageTerms and RobustKernel's "Rotated normals"
+// bound support storing rotated normals instead; posing does not use them:
+// measured, the rounding of the moved vertices tilts the small faces of fine
+// meshes by ~u |x| / edge, which widened the filters until exact fallbacks
+// grew ~1000x at N = 256.)
 //
 // Poses must be rigid: for float/double the query throws InvalidInput
 // (BadScale) when |M^T M - I| > 1e-3 or det M <= 0 (a reflection or a scale,

@@ -23,10 +23,11 @@
 namespace sepax::sat {
 
 template <SatKernel K>
-SatResult<typename K::FT> gauss_map_with(K& k, const SatOptions& opt = {}) {
+SatResult<typename K::FT> gauss_map_with(K& k, const SatOptions& opt = {}, const Feature* seed = nullptr) {
   check_options(opt);
   detail::BestAxis<K> best;
   SatStats stats;
+  if (detail::seed_best(k, best, stats, opt, seed, true)) return best.result(k, stats, true);
   if (detail::scan_face_axes(k, best, stats, opt)) return best.result(k, stats, true);
   const int na = k.a().edge_count(), nb = k.b().edge_count();
   // A pair whose arcs cross: measure it.  True to stop (early out).

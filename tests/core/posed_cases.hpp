@@ -4,6 +4,7 @@
 // its axis mapped to world by pose_a).
 #pragma once
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -103,6 +104,77 @@ int check_posed_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes
     }
   }
   return checked;
+}
+
+/// A coherent pose sequence of B relative to a fixed A (identity): kind 0
+/// resting (B on A, small jitter), 1 sliding (B pushed along x across A),
+/// 2 rolling (B turning about y while moving along x), `steps` poses with a
+/// small change each.
+template <Number T>
+std::vector<RigidTransform<T>> pose_sequence(int kind, int steps, double height) {
+  std::vector<RigidTransform<T>> out;
+  for (int s = 0; s < steps; ++s) {
+    const double u = static_cast<double>(s) / steps;
+    double w = 1, x = 0, y = 0, z = 0;
+    Vec3<double> t(0, 0, height);
+    if (kind == 0) {
+      z = 0.01 * std::sin(7.0 * u);
+      t = Vec3<double>(0.002 * std::cos(11.0 * u), 0.001 * (s % 3), height - 0.003 * std::sin(5.0 * u));
+    } else if (kind == 1) {
+      z = 0.2;
+      t = Vec3<double>(-1.0 + 2.0 * u, 0.1, height);
+    } else {
+      y = std::sin(0.5 * 3.0 * u);
+      w = std::cos(0.5 * 3.0 * u);
+      t = Vec3<double>(-0.8 + 1.6 * u, 0.0, height);
+    }
+    out.push_back(RigidTransform<T>::from_quaternion(
+        w, x, y, z, Vec3<T>(from_double<T>(t[0]), from_double<T>(t[1]), from_double<T>(t[2]))));
+  }
+  return out;
+}
+
+/// Along every sequence and pair of shapes: the cached (warm) posed query
+/// returns the fresh one's feature, separation (bit for bit) and verdict
+/// (full queries), and the fresh verdict with a separation beyond the margin
+/// (early-out queries).  Returns the number of queries compared.
+template <class Policy, Number T>
+int check_warm_sequences(const std::vector<ConvexPolyhedron<T>>& shapes, int steps) {
+  std::vector<PreparedShape<T>> prepared;
+  for (const auto& s : shapes) prepared.emplace_back(s);
+  const RigidTransform<T> pa;
+  int compared = 0;
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    for (std::size_t j = 0; j < shapes.size(); ++j) {
+      for (int kind = 0; kind < 3; ++kind) {
+        const auto poses = pose_sequence<T>(kind, steps, 0.9);
+        for (SatAlgorithm alg : kSatAlgorithms) {
+          SatCache<T> full_cache, early_cache;
+          SatOptions early;
+          early.early_out = true;
+          early.margin = 0.02;
+          for (std::size_t s = 0; s < poses.size(); ++s) {
+            INFO("shapes " << i << ", " << j << " sequence " << kind << " step " << s << " " << to_string(alg));
+            const auto fresh = sat::run<Policy>(alg, prepared[i], pa, prepared[j], poses[s]);
+            const auto warm = sat::run<Policy>(alg, prepared[i], pa, prepared[j], poses[s], SatOptions{}, &full_cache);
+            REQUIRE(warm.feature == fresh.feature);
+            require_same_separation(warm.separation, fresh.separation);
+            REQUIRE(warm.overlap == fresh.overlap);
+            const auto e = sat::run<Policy>(alg, prepared[i], pa, prepared[j], poses[s], early, &early_cache);
+            REQUIRE(e.overlap == fresh.overlap);
+            if (e.early_out) {
+              REQUIRE(compare(e.separation, Separation<T>{from_double<T>(early.margin), T(1)}) > 0);
+            } else {
+              REQUIRE(e.feature == fresh.feature);
+              require_same_separation(e.separation, fresh.separation);
+            }
+            ++compared;
+          }
+        }
+      }
+    }
+  }
+  return compared;
 }
 
 }  // namespace sepax::test

@@ -211,3 +211,21 @@ TEST_CASE("robust margin: an edge-pair separation against a margin within its er
   }
   CHECK(decided > 10);
 }
+
+TEMPLATE_TEST_CASE("warm robust posed queries equal fresh ones along coherent sequences", "[posed][cache][robust]",
+                   float, double) {
+  using T = TestType;
+  std::mt19937_64 rng(1823);
+  const auto shapes = local_shapes<T>(rng);
+  CHECK(check_warm_sequences<policy::Robust>(shapes, 40) == 7 * 7 * 3 * 3 * 40);
+}
+
+TEMPLATE_TEST_CASE("warm exact posed queries equal fresh ones along coherent sequences", "[posed][cache][exact]",
+                   mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
+  using T = TestType;
+  std::mt19937_64 rng(1824);
+  std::vector<ConvexPolyhedron<T>> shapes{ConvexPolyhedron<T>::convert_from(large_sphere_hull(rng, 8)),
+                                          shapes::box<T>(0.5, 0.25, 1.0), shapes::prism<T>(6, 0.8, 0.5),
+                                          shapes::regular_polygon<T>(5, 0.7)};
+  CHECK(check_warm_sequences<policy::Plain>(shapes, 10) == 4 * 4 * 3 * 3 * 10);
+}
