@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "sat_cache.hpp"
 #include "sat_kernel.hpp"
 
 namespace sepax::sat::detail {
@@ -157,7 +158,7 @@ bool scan_queries(K& k, BestAxis<K>& best, std::int64_t& counter, int n, const S
     const auto q = query(i);
     const Feature feat = feature(i, q.support_vertex);
     best.consider(k, q.separation, feat);
-    if (opt.early_out && k.sign(q.separation, feat) > 0) return true;
+    if (stops_early(k, q.separation, feat, opt)) return true;
   }
   return false;
 }
@@ -181,6 +182,27 @@ bool scan_face_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& 
                       [](int f, int v) { return Feature::face_a(f, v); }, estimate_a) ||
          scan_queries(k, best, stats.face_axes, k.b().face_count(), opt, [&](int f) { return k.face_query_b(f); },
                       [](int f, int v) { return Feature::face_b(v, f); }, estimate_b);
+}
+
+/// Warm start (SatCache): offer the seed feature, re-evaluated at this pose
+/// by `reevaluate` (sat_cache.hpp), as the first candidate.  It is one of the
+/// SAT's own candidates with the value the SAT computes for it, so the result
+/// does not change (the best is order-independent), only the pruning starts
+/// from it.  edge_pairs: whether an edge-pair seed is a candidate of this
+/// SAT in the O(1) form (false for the brute force, whose edge values use
+/// the projection form).  Returns true when it stops the query early.
+template <SatKernel K>
+bool seed_best(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt, const Feature* seed,
+               bool edge_pairs) {
+  if (!seed || (seed->type == FeatureType::EdgePair && !edge_pairs)) return false;
+  const auto ev = reevaluate(k, *seed);
+  if (!ev) return false;
+  const FeatureType ty = ev->first.type;
+  ++(ty == FeatureType::EdgePair ? stats.edge_pairs
+                                 : ty == FeatureType::FaceA || ty == FeatureType::FaceB ? stats.face_axes
+                                                                                        : stats.side_axes);
+  best.consider(k, ev->second, ev->first);
+  return stops_early(k, ev->second, ev->first, opt);
 }
 
 /// The side axes (feature.hpp), shared by every SAT after its other axes,

@@ -45,6 +45,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <span>
 #include <sstream>
 #include <string>
@@ -223,6 +224,95 @@ class ConvexPolyhedron {
     p.compute_derived();
     p.check_new_range();
     return p;
+  }
+
+  /// The terms of the error bound on the normals of a rigid image
+  /// (posing.hpp): set by assign_rigid_image for float/double, whose normals
+  /// are the source's normals rotated, not recomputed from the moved
+  /// vertices.  `rotated` false for every other polyhedron (its normals come
+  /// from its plane triples: normal_conditioning() bounds them).
+  struct RigidImageTerms {
+    bool rotated = false;
+    double local_conditioning = 0;  // the source's normal_conditioning()
+    double scale = 0;               // >= |M|_F, M the linear part
+    double kappa = 0;               // >= |cof(M) - M|_2
+    double omega = 0;               // >= |M^T M - I|_2
+    double vertex_term = 0;         // >= 2 |N' - cof(M) N| / |N| over the faces
+  };
+  const RigidImageTerms& rigid_image_terms() const { return rigid_terms_; }
+
+  /// Float and double: the source-shape terms of the bound on a rigid image's
+  /// normals (posing.hpp): over the faces (the back face of a flat shape
+  /// excluded), with e1, e2 the exact plane-triple differences and N = e1 x e2,
+  ///   edge_ratio  >= max (|e1| + |e2|) / |N|,   inv_normal >= max 1 / |N|,
+  /// from the T differences ẽ and cross products Ñ in double: |e| <= |ẽ|/(1-u)
+  /// and |N| >= |Ñ| - q with q = γ_4 √2 |ẽ1||ẽ2|/(1-u)^2 + √3 η (the bound of
+  /// robust_kernel.hpp, "Error bounds"), times (1 + 1e-6) for the rounding of
+  /// this computation.  +infinity when some |Ñ| <= 2q (or anything overflows).
+  struct PoseConditioning {
+    double edge_ratio = std::numeric_limits<double>::infinity();
+    double inv_normal = std::numeric_limits<double>::infinity();
+  };
+  PoseConditioning pose_conditioning() const {
+    PoseConditioning out;
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      constexpr double u = number_traits<T>::unit_roundoff;
+      constexpr double g4 = 4 * u / (1 - 4 * u);
+      const double eta = static_cast<double>(std::numeric_limits<T>::denorm_min());
+      double er = 0, in = 0;
+      const int nf = is_flat() ? 1 : face_count();
+      for (int f = 0; f < nf; ++f) {
+        const auto& t = face(f).plane_vertices;
+        const Vec3<T>& v0 = vertex(t[0]);
+        const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
+        const Vec3<T> c = cross(e1, e2);
+        auto len = [](const Vec3<T>& v) {
+          const double x = v[0], y = v[1], z = v[2];
+          return std::sqrt(x * x + y * y + z * z);
+        };
+        const double l1 = len(e1), l2 = len(e2), ln = len(c);
+        const double q = g4 * std::numbers::sqrt2 * l1 * l2 / ((1 - u) * (1 - u)) + std::numbers::sqrt3 * eta;
+        if (!(ln > 2 * q) || !std::isfinite(ln) || !std::isfinite(l1 + l2)) return PoseConditioning{};
+        const double nlow = ln - q;
+        er = std::max(er, (l1 + l2) / ((1 - u) * nlow));
+        in = std::max(in, 1 / nlow);
+      }
+      out.edge_ratio = er * (1 + 1e-6);
+      out.inv_normal = in * (1 + 1e-6);
+    }
+    return out;
+  }
+
+  /// Make *this the rigid image of src (posing.hpp is the documented entry
+  /// point and states the formula): vertices point(v) for every vertex of
+  /// src; for float/double the planes are src's normals mapped by dir(n) with
+  /// offsets fl(n'.v') at each face's first plane-triple vertex (a flat
+  /// shape's back plane the front one negated), and `terms` recorded; for
+  /// other T the planes are recomputed from the moved vertices (as
+  /// with_vertices does).  The topology is copied from src unless
+  /// same_topology says *this already holds it.  Reuses the capacity of
+  /// *this: no allocation once it has held a shape at least as large.
+  /// Throws as with_vertices does (NonFinite, BadScale).
+  template <class Point, class Dir>
+  void assign_rigid_image(const ConvexPolyhedron& src, bool same_topology, Point&& point, Dir&& dir,
+                          const RigidImageTerms& terms) {
+    if (!same_topology) {
+      half_edges_ = src.half_edges_;
+      faces_ = src.faces_;
+      fan_start_ = src.fan_start_;
+      fan_ = src.fan_;
+    }
+    vertices_.resize(src.vertices_.size());
+    for (std::size_t i = 0; i < vertices_.size(); ++i) vertices_[i] = point(src.vertices_[i]);
+    check_coordinates();
+    (void)dir;
+    (void)terms;
+    // Planes recomputed from the moved vertices (as with_vertices): rotated
+    // normals were measured to widen the robust filters so much on fine
+    // meshes (the moved vertices' rounding tilts small faces by ~u |x| /
+    // edge) that exact fallbacks grew ~1000x at N = 256.
+    compute_derived();
+    check_new_range();
   }
 
   // ---- sizes ----
@@ -580,6 +670,13 @@ class ConvexPolyhedron {
       planes_.push_back(plane_through(pts[0], pts[1], pts[2]));
     }
     normal_conditioning_.reset();  // new coordinates: computed again on first use
+    rigid_terms_ = RigidImageTerms{};
+    compute_edge_data_and_bounds();
+  }
+
+  // Everything after the planes: per-edge arrays, lanes, bounds, centroid,
+  // extent, max |coordinate|.  Reuses the arrays' capacity.
+  void compute_edge_data_and_bounds() {
     // per-edge arrays (after the planes: the normals are copies of theirs)
     const auto ne = static_cast<std::size_t>(edge_count());
     edge_dirs_.clear();
@@ -985,6 +1082,7 @@ class ConvexPolyhedron {
   double extent_ = 0;
   double max_abs_ = 0;
   detail::LazyDouble normal_conditioning_;  // NaN until normal_conditioning() computes it
+  RigidImageTerms rigid_terms_;             // assign_rigid_image (float/double)
 };
 
 }  // namespace sepax

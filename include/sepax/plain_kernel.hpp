@@ -178,6 +178,18 @@ class PlainKernel {
   }
 
 
+  /// Optional member (sat_kernel.hpp, HasCompareMargin): sign of (s - m).
+  /// Exact T: exact (m converted exactly); float/double: s's value against m
+  /// in double (exact comparison of the two numbers given).
+  int compare_margin(const Separation<T>& s, const Feature&, double m) const {
+    if constexpr (number_traits<T>::is_exact) {
+      return sepax::compare(s, Separation<T>{from_double<T>(m), T(1)});
+    } else {
+      const double v = static_cast<double>(s.num);
+      return (v > m) - (v < m);
+    }
+  }
+
   std::int64_t exact_fallbacks() const { return 0; }
 
  private:

@@ -20,9 +20,11 @@ namespace sepax::sat {
 
 /// Run the brute-force SAT with a kernel built for (A, B).
 template <SatKernel K>
-SatResult<typename K::FT> brute_force_with(K& k, const SatOptions& opt = {}) {
+SatResult<typename K::FT> brute_force_with(K& k, const SatOptions& opt = {}, const Feature* seed = nullptr) {
+  check_options(opt);
   detail::BestAxis<K> best;
   SatStats stats;
+  if (detail::seed_best(k, best, stats, opt, seed, false)) return best.result(k, stats, true);
   if (detail::scan_face_axes(k, best, stats, opt)) return best.result(k, stats, true);
   for (int ea = 0; ea < k.a().edge_count(); ++ea) {
     for (int eb = 0; eb < k.b().edge_count(); ++eb) {
@@ -33,7 +35,7 @@ SatResult<typename K::FT> brute_force_with(K& k, const SatOptions& opt = {}) {
       ++stats.minkowski_faces;
       const Feature feat = Feature::edges(ea, eb);
       best.consider(k, *s, feat);
-      if (opt.early_out && k.sign(*s, feat) > 0) return best.result(k, stats, true);
+      if (stops_early(k, *s, feat, opt)) return best.result(k, stats, true);
     }
   }
   if (detail::scan_side_axes(k, best, stats, opt)) return best.result(k, stats, true);

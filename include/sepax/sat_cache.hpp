@@ -7,8 +7,14 @@
 // Guarantee (every SAT, every policy, every T):
 //   * opt.early_out == false: a cached query returns exactly what the SAT
 //     returns on its own (it runs the SAT; the cache only records the
-//     result).  There is no speed-up for full queries: the axis of maximum
-//     separation cannot be certified without looking at every candidate.
+//     result).  Warm start: when the SAT takes a seed (the posed queries of
+//     prepared_shape.hpp; sat::gauss_map_with, brute_force_with and
+//     traversal_with have the parameter), the cached feature, re-evaluated
+//     at this pose (reevaluate, below), is its first candidate: a candidate
+//     the SAT evaluates anyway, with the same value, so the result (feature,
+//     separation, verdict) is the fresh one, while every pruning test starts
+//     from a strong best.  Not for plain float/double traversal, whose climb
+//     in rounding arithmetic need not reproduce a seed's full-scan value.
 //   * opt.early_out == true: the cached feature is re-evaluated at the current
 //     pose with the same kernel predicates every SAT uses for that feature:
 //       FaceA(f, _)   k.face_query_a(f)  (support vertex re-found, lowest
@@ -33,6 +39,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include "plain_kernel.hpp"
@@ -90,11 +97,14 @@ std::optional<std::pair<Feature, Separation<typename K::FT>>> reevaluate(K& k, c
 
 /// Cached query with a kernel built for (A, B).  run(k, opt) runs the SAT,
 /// e.g. [](auto& k, const SatOptions& o) { return sat::gauss_map_with(k, o); }.
+/// When run also takes a seed, run(k, opt, const Feature* seed), the SAT is
+/// warm-started: the cached feature is passed as its first candidate (see the
+/// header comment).
 template <SatKernel K, class Run>
 SatResult<typename K::FT> cached_with(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt, Run&& run) {
   using T = typename K::FT;
   if (opt.early_out && cache.valid) {
-    if (const auto ev = reevaluate(k, cache.feature); ev && k.sign(ev->second, ev->first) > 0) {
+    if (const auto ev = reevaluate(k, cache.feature); ev && stops_early(k, ev->second, ev->first, opt)) {
       SatResult<T> r;
       r.overlap = false;
       r.feature = ev->first;
@@ -113,7 +123,13 @@ SatResult<typename K::FT> cached_with(K& k, SatCache<typename K::FT>& cache, con
       return r;
     }
   }
-  SatResult<T> r = run(k, opt);
+  SatResult<T> r;
+  if constexpr (std::is_invocable_v<Run&, K&, const SatOptions&, const Feature*>) {
+    // warm start: the cached feature is the SAT's first candidate
+    r = run(k, opt, cache.valid ? &cache.feature : nullptr);
+  } else {
+    r = run(k, opt);
+  }
   cache.valid = true;
   cache.feature = r.feature;
   cache.separation = r.separation;

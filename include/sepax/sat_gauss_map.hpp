@@ -23,9 +23,11 @@
 namespace sepax::sat {
 
 template <SatKernel K>
-SatResult<typename K::FT> gauss_map_with(K& k, const SatOptions& opt = {}) {
+SatResult<typename K::FT> gauss_map_with(K& k, const SatOptions& opt = {}, const Feature* seed = nullptr) {
+  check_options(opt);
   detail::BestAxis<K> best;
   SatStats stats;
+  if (detail::seed_best(k, best, stats, opt, seed, true)) return best.result(k, stats, true);
   if (detail::scan_face_axes(k, best, stats, opt)) return best.result(k, stats, true);
   const int na = k.a().edge_count(), nb = k.b().edge_count();
   // A pair whose arcs cross: measure it.  True to stop (early out).
@@ -42,7 +44,7 @@ SatResult<typename K::FT> gauss_map_with(K& k, const SatOptions& opt = {}) {
     const auto s = k.edge_separation(ea, cur);
     const Feature feat = Feature::edges(ea, cur);
     best.consider(k, s, feat);
-    if (opt.early_out && k.sign(s, feat) > 0) {
+    if (stops_early(k, s, feat, opt)) {
       stats.edge_pairs += cur + 1;  // this row's pairs looked at so far (earlier rows: below)
       return true;
     }

@@ -21,9 +21,12 @@
 #pragma once
 
 #include <concepts>
+#include <limits>
 #include <optional>
+#include <string>
 
 #include "convex_polyhedron.hpp"
+#include "error.hpp"
 #include "feature.hpp"
 #include "sat_result.hpp"
 #include "separation.hpp"
@@ -169,6 +172,41 @@ template <class K>
 concept HasEdgePairBelow = requires(const K k, int i, typename K::FT x, double e) {
   { k.edge_pair_below(i, i, x, e) } -> std::same_as<bool>;
 };
+
+/// Optional kernel member (not part of SatKernel; PlainKernel and
+/// RobustKernel have it):
+///   int compare_margin(const Separation<FT>& s, const Feature& f, double m)
+/// the sign of (f's separation - m), m >= 0 finite: exact for exact T and
+/// under policy::Robust (f's exact separation against the exact value of the
+/// double m), the comparison of the values for plain float/double.
+/// Kernels without it compare s with m converted to FT (sepax::compare).
+template <class K>
+concept HasCompareMargin = requires(const K k, const Separation<typename K::FT>& s, const Feature& f, double m) {
+  { k.compare_margin(s, f, m) } -> std::same_as<int>;
+};
+
+/// Throws InvalidInput (BadScale) unless opt.margin is finite and >= 0.
+inline void check_options(const SatOptions& opt) {
+  if (!(opt.margin >= 0.0) || !(opt.margin <= std::numeric_limits<double>::max())) {
+    throw InvalidInput(ErrorCode::BadScale, "SatOptions::margin must be finite and >= 0, got " +
+                                                std::to_string(opt.margin));
+  }
+}
+
+/// The early-out test every SAT applies to each candidate it has evaluated:
+/// opt.early_out and the candidate's separation is > opt.margin (> 0 when
+/// the margin is 0: k.sign, as before margins existed).
+template <SatKernel K>
+bool stops_early(const K& k, const Separation<typename K::FT>& s, const Feature& f, const SatOptions& opt) {
+  if (!opt.early_out) return false;
+  if (opt.margin == 0.0) return k.sign(s, f) > 0;
+  if constexpr (HasCompareMargin<K>) {
+    return k.compare_margin(s, f, opt.margin) > 0;
+  } else {
+    using T = typename K::FT;
+    return compare(s, Separation<T>{from_double<T>(opt.margin), T(1)}) > 0;
+  }
+}
 
 /// Maps (policy, T) to a kernel type.  Specialised by each policy.
 template <class Policy, class T>

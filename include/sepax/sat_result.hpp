@@ -13,10 +13,21 @@
 namespace sepax {
 
 struct SatOptions {
-  /// Stop at the first separating axis found (separation > 0).  The result is
-  /// then "separated" with that axis, which need not be the axis of maximum
-  /// separation.
+  /// Stop at the first candidate axis whose separation is proven greater than
+  /// `margin` (with margin 0: the first separating axis).  The result is then
+  /// "separated" with that axis (SatResult::early_out set), which need not be
+  /// the axis of maximum separation.  Under policy::Robust and with exact T
+  /// "greater than the margin" is decided exactly (the feature's exact
+  /// separation against the double value of margin); plain float/double
+  /// compare the rounded value.
   bool early_out = false;
+  /// A speculative margin (>= 0, finite; in the shapes' length unit): with
+  /// early_out, a query stops only at a separation > margin, so a pair it
+  /// does not stop for is either overlapping or closer than the margin and
+  /// gets the full result (the axis of maximum separation).  Ignored without
+  /// early_out.  contact_manifold keeps points within it.  A negative or
+  /// non-finite margin is refused (InvalidInput, BadScale).
+  double margin = 0.0;
 };
 
 struct SatStats {
@@ -41,7 +52,9 @@ struct SatResult {
   /// The axis, pointing from A towards B.  Unit when T normalises; otherwise the
   /// unnormalised axis whose squared length is separation.norm2.
   Vec3<T> axis = Vec3<T>(T(0), T(0), T(0));
-  /// The search stopped at the first separating axis (SatOptions::early_out).
+  /// The search stopped at an axis proven to separate by more than
+  /// SatOptions::margin (SatOptions::early_out): then overlap is false and
+  /// separation > margin (decided exactly under policy::Robust and exact T).
   bool early_out = false;
   SatStats stats;
 

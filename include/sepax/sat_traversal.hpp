@@ -115,6 +115,7 @@
 #include <vector>
 
 #include "best_axis.hpp"
+#include "sat_cache.hpp"
 #include "gauss_map_walk.hpp"
 #include "plain_kernel.hpp"
 #include "simd_lanes.hpp"
@@ -183,8 +184,8 @@ class Traversal {
   using T = typename K::FT;
 
   Traversal(K& k, const GaussMapWalk& wa, const GaussMapWalk& wb, const SatOptions& opt,
-            TraversalStats& ts)
-      : k_(k), wa_(wa), wb_(wb), opt_(opt), ts_(ts), prune_arcs_(!wa.is_flat()),
+            TraversalStats& ts, const Feature* seed = nullptr)
+      : k_(k), wa_(wa), wb_(wb), opt_(opt), ts_(ts), seed_(seed), prune_arcs_(!wa.is_flat()),
         plain_flat_(wa.is_flat() || wb.is_flat()) {}
 
   SatResult<T> run() {
@@ -195,6 +196,11 @@ class Traversal {
     if constexpr (kFast) {
       gather(probes_a_, wa_, k_.a());
       gather(probes_b_, wb_, k_.b());
+    }
+    // (plain float/double climbs and walks in rounding arithmetic, where a
+    // seed's full-scan value need not be the one the walk finds: no warm start)
+    if constexpr (!kRoundingDecisions) {
+      if (seed_ && warm_start()) return best_.result(k_, stats_, true);
     }
     if (start()) return best_.result(k_, stats_, true);
     if (faces<true>(st, 0)) return best_.result(k_, stats_, true);
@@ -732,13 +738,34 @@ class Traversal {
     return false;
   }
 
+  // Warm start (SatCache): the seed feature, re-evaluated at this pose
+  // (reevaluate, sat_cache.hpp: the same kernel queries the walk makes for
+  // that feature, so the same separation), is offered first.  It is one of
+  // the SAT's own candidates (a face with its certified support vertex, or a
+  // non-parallel Minkowski edge pair), so offering it early changes no
+  // result: the best is order-independent (best_axis.hpp) and every pruning
+  // test compares with a best that is some candidate's exact value, which
+  // only grows.  It makes that best strong from the first face on.  A seed
+  // that is out of range or no longer a Minkowski pair is ignored.
+  bool warm_start() {
+    const auto ev = reevaluate(k_, *seed_);
+    if (!ev) return false;
+    const FeatureType ty = ev->first.type;
+    ++(ty == FeatureType::EdgePair ? stats_.edge_pairs : ty == FeatureType::FaceA || ty == FeatureType::FaceB
+                                                             ? stats_.face_axes
+                                                             : stats_.side_axes);
+    if (ty == FeatureType::EdgePair) ++stats_.minkowski_faces;
+    offer(ev->second, ev->first);
+    return stops_early(k_, ev->second, ev->first, opt_);
+  }
+
   // Offer face f with its support vertex v; true on early out.
   template <bool OfA>
   bool offer_face(int f, int v) {
     const Feature feat = face_feature<OfA>(f, v);
     const Separation<T> h = height<OfA>(f, v);
     offer(h, feat);
-    return opt_.early_out && k_.sign(h, feat) > 0;
+    return stops_early(k_, h, feat, opt_);
   }
 
   // Steps 1 and 2: support vertices of all faces of A (OfA) or of B, each
@@ -1018,7 +1045,7 @@ class Traversal {
     const auto s = k_.edge_separation(ea, eb);
     const Feature feat = Feature::edges(ea, eb);
     offer(s, feat);
-    return opt_.early_out && k_.sign(s, feat) > 0;
+    return stops_early(k_, s, feat, opt_);
   }
 
   // Arc ea against every arc of -B.  Returns true on early out.
@@ -1291,6 +1318,7 @@ class Traversal {
   const GaussMapWalk& wb_;
   const SatOptions& opt_;
   TraversalStats& ts_;
+  const Feature* seed_;  // warm start (warm_start())
   const bool prune_arcs_;
   const bool plain_flat_;  // a flat shape (used with kRoundingDecisions only, see run())
   int seed_a_ = 0, seed_b_ = 0;  // root seeds of step 1 and 2 (from step 0)
@@ -1337,16 +1365,18 @@ class Traversal {
 /// ts, when given, receives the walk's counters.
 template <SatKernel K>
 SatResult<typename K::FT> traversal_with(K& k, const GaussMapWalk& wa, const GaussMapWalk& wb,
-                                         const SatOptions& opt = {}, TraversalStats* ts = nullptr) {
+                                         const SatOptions& opt = {}, TraversalStats* ts = nullptr,
+                                         const Feature* seed = nullptr) {
   if (k.a().empty() || k.b().empty()) {
     throw InvalidInput(ErrorCode::TooFewPoints,
                        std::string("traversal: shape ") + (k.a().empty() ? "A" : "B") +
                            " is empty (a default-constructed ConvexPolyhedron)");
   }
+  check_options(opt);
   wa.check_fits(k.a(), "A");
   wb.check_fits(k.b(), "B");
   TraversalStats local;
-  detail::Traversal<K> t(k, wa, wb, opt, ts ? *ts : local);
+  detail::Traversal<K> t(k, wa, wb, opt, ts ? *ts : local, seed);
   return t.run();
 }
 
