@@ -447,3 +447,43 @@ TEMPLATE_TEST_CASE("slab corners that the repair rounds lost are kept", "[hull][
       CHECK(vertex_offset(h, pts) <= 1.01 * hull_tent_lift + lift_rounding(h, pts));
   }
 }
+
+// Hulls large enough that the builder and validation check convexity by the
+// local certificate and measure points by climbs instead of scans
+// (kConvexityScanPairs, kHullPointScanPairs): the result still passes every
+// vertex against every face plane, and every point is within the bound.
+TEMPLATE_TEST_CASE("large hull: local checks agree with the full scans", "[hull][large]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(77);
+  std::normal_distribution<double> nd;
+  std::uniform_real_distribution<double> ud(-1.0, 1.0);
+  for (const char* kind : {"sphere", "ball", "cylinder"}) {
+    std::vector<Vec3<T>> pts;
+    const std::size_t n = std::string(kind) == "ball" ? 40000 : 4000;
+    while (pts.size() < n) {
+      const double x = nd(rng), y = nd(rng), z = nd(rng), l = std::sqrt(x * x + y * y + z * z);
+      if (std::string(kind) == "sphere") {
+        pts.push_back(vec_cast<T>(Vec3<double>(x / l, y / l, z / l)));
+      } else if (std::string(kind) == "ball") {
+        pts.push_back(vec_cast<T>(Vec3<double>(ud(rng), ud(rng), ud(rng))));
+      } else {
+        const double a = std::numbers::pi * ud(rng);
+        pts.push_back(vec_cast<T>(Vec3<double>(std::cos(a), std::sin(a), ud(rng))));
+      }
+    }
+    const auto h = convex_hull(pts);
+    INFO(kind << ": " << h.vertex_count() << " vertices, " << h.face_count() << " faces");
+    if (std::string(kind) == "sphere")
+      CHECK(static_cast<double>(h.vertex_count()) * h.face_count() > kConvexityScanPairs);
+    CHECK(static_cast<double>(pts.size()) * h.face_count() > kHullPointScanPairs);
+    CHECK(vertices_are_inputs(h, pts));
+    const double tol = Tolerances<T>::convexity * h.extent();
+    double worst = -1e300;
+    for (int f = 0; f < h.face_count(); ++f)
+      for (const auto& v : h.vertices())
+        worst = std::max(worst, to_double(T(dot(h.plane(f).normal, v) - h.plane(f).offset)));
+    CHECK(worst <= tol);
+    // (a repair round puts back every point farther out than this)
+    CHECK(max_outside(h, pts) <= kHullRepairTolerance);
+  }
+}
