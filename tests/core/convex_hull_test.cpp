@@ -65,7 +65,7 @@ double lift_rounding(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& p
 }
 
 // Set `iter` of the stream of random_point_set with this seed (as
-// docs/hull_stress.cpp numbers them).
+// tools/hull_stress.cpp numbers them).
 std::vector<Vec3<double>> stream_set(unsigned seed, int iter) {
   std::mt19937 rng(seed);
   std::vector<Vec3<double>> pts;
@@ -410,7 +410,7 @@ TEST_CASE("the needle of docs/hull.md keeps its length", "[hull][stress]") {
 // seventh point t above it) 127..2520 eps thick whose repair rounds all
 // lost a bottom corner whose rim faces validation cannot tell apart
 // (before: up to 1.3e-3 x extent = 1.3e7 x coplanar*extent from the hull).
-// Each set by its stream seed and iteration (docs/hull_stress.cpp), with its
+// Each set by its stream seed and iteration (tools/hull_stress.cpp), with its
 // thickness and the old distance: every point is now within the bound, and
 // a hull whose vertices are not all inputs is a tent (lifted copies
 // hull_tent_lift away from their points).

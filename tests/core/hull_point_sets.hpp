@@ -1,5 +1,5 @@
 // The hull tests' point-set generators and measures, shared by
-// tests/core/convex_hull_test.cpp and the stress run docs/hull_stress.cpp (so
+// tests/core/convex_hull_test.cpp and the stress run tools/hull_stress.cpp (so
 // the stress run measures exactly the sets the unit test holds to the bound).
 #pragma once
 
