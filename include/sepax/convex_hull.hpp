@@ -2059,8 +2059,8 @@ class Builder {
           "convex_hull: the points are up to " + std::to_string(max_abs) +
               " from the origin, too far for " + std::string(number_traits<T>::name) +
               " to resolve a shape of extent " + std::to_string(ext) +
-              " within the validation tolerance; build the hull near the origin and move it "
-              "with a RigidTransform, or use double");
+              " within the validation tolerance; use convex_hull_local (the hull in its own frame), "
+              "or double");
     }
     std::sort(reject.begin(), reject.end());
     reject.erase(std::unique(reject.begin(), reject.end()), reject.end());
@@ -2113,3 +2113,5 @@ ConvexPolyhedron<T> convex_hull(const std::vector<Vec3<T>>& points) {
 }
 
 }  // namespace sepax
+
+#include "hull/local_frame.hpp"

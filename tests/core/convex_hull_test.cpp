@@ -6,6 +6,7 @@
 #include <sepax/convex_hull.hpp>
 #include <sepax/shapes.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -486,4 +487,24 @@ TEMPLATE_TEST_CASE("large hull: local checks agree with the full scans", "[hull]
     // (a repair round puts back every point farther out than this)
     CHECK(max_outside(h, pts) <= kHullRepairTolerance);
   }
+}
+
+// A 0.4-unit piece 150 units from the origin: built in its own frame, whose
+// origin makes every subtraction exact, so every world vertex is an input point.
+TEMPLATE_TEST_CASE("far piece: convex_hull_local builds it in its own frame", "[hull][local]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  std::vector<Vec3<T>> pts;
+  for (int i = 0; i < 200; ++i) pts.push_back(vec_cast<T>(Vec3<double>(150 + u(rng), -150 + u(rng), 150 + u(rng))));
+  const auto local = convex_hull_local(pts);
+  CHECK(local.shape.vertex_count() >= 4);
+  CHECK(local.shape.extent() < 1.0);
+  for (const auto& p : pts) {
+    const Vec3<T> d(p - local.origin);
+    CHECK(Vec3<T>(d + local.origin) == p);
+  }
+  std::vector<Vec3<T>> world;
+  for (const auto& v : local.shape.vertices()) world.push_back(Vec3<T>(v + local.origin));
+  for (const auto& w : world) CHECK(std::find(pts.begin(), pts.end(), w) != pts.end());
 }
