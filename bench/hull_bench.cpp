@@ -15,6 +15,8 @@
 #include <sepax/convex_hull.hpp>
 #include <sepax/robust/number_types.hpp>
 
+#include "../tests/core/hull_point_sets.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -26,29 +28,6 @@
 #include <vector>
 
 namespace {
-
-std::vector<sepax::Vec3<double>> make_points(const std::string& kind, std::size_t n) {
-  std::mt19937_64 rng(42);
-  std::normal_distribution<double> nd;
-  std::uniform_real_distribution<double> ud(-1.0, 1.0);
-  std::vector<sepax::Vec3<double>> p;
-  p.reserve(n);
-  while (p.size() < n) {
-    if (kind == "sphere") {
-      const double x = nd(rng), y = nd(rng), z = nd(rng), l = std::sqrt(x * x + y * y + z * z);
-      if (l > 0) p.emplace_back(x / l, y / l, z / l);
-    } else if (kind == "ball") {
-      const double x = ud(rng), y = ud(rng), z = ud(rng);
-      if (x * x + y * y + z * z <= 1) p.emplace_back(x, y, z);
-    } else if (kind == "slab") {
-      p.emplace_back(ud(rng), ud(rng), 1e-3 * ud(rng));
-    } else {
-      const double a = std::numbers::pi * ud(rng);
-      p.emplace_back(std::cos(a), std::sin(a), ud(rng));
-    }
-  }
-  return p;
-}
 
 template <class F>
 double seconds(F&& f) {
@@ -111,7 +90,7 @@ int main(int argc, char** argv) {
     for (int e = 3; e <= max_exp; ++e) {
       std::size_t n = 1;
       for (int k = 0; k < e; ++k) n *= 10;
-      const auto pts = make_points(kind, n);
+      const auto pts = sepax::hull_sets::bench_point_set(kind, n);
       std::vector<sepax::Vec3<double>> fpts;  // the float points, widened exactly
       for (const auto& x : pts)
         fpts.emplace_back(double(float(x[0])), double(float(x[1])), double(float(x[2])));

@@ -69,12 +69,16 @@ void compare(const std::string& name, const std::vector<Vec3<T>>& pts, Tally& t)
   try {
     ha = convex_hull(pts);
     a = signature(*ha);
+  } catch (const InvalidInput& e) {  // (the same error: the same code; messages may be worded apart)
+    a = "InvalidInput " + std::to_string(static_cast<int>(e.code()));
   } catch (const std::exception& e) {
     a = std::string("error: ") + e.what();
   }
   try {
     hb = reference::convex_hull(pts);
     b = signature(*hb);
+  } catch (const InvalidInput& e) {  // (the same error: the same code; messages may be worded apart)
+    b = "InvalidInput " + std::to_string(static_cast<int>(e.code()));
   } catch (const std::exception& e) {
     b = std::string("error: ") + e.what();
   }
@@ -95,29 +99,6 @@ void compare(const std::string& name, const std::vector<Vec3<T>>& pts, Tally& t)
   }
 }
 
-std::vector<Vec3<double>> bench_points(const std::string& kind, std::size_t n) {
-  // the generator of bench/hull_bench.cpp (seed 42)
-  std::mt19937_64 rng(42);
-  std::normal_distribution<double> nd;
-  std::uniform_real_distribution<double> ud(-1.0, 1.0);
-  std::vector<Vec3<double>> p;
-  while (p.size() < n) {
-    if (kind == "sphere") {
-      const double x = nd(rng), y = nd(rng), z = nd(rng), l = std::sqrt(x * x + y * y + z * z);
-      if (l > 0) p.emplace_back(x / l, y / l, z / l);
-    } else if (kind == "ball") {
-      const double x = ud(rng), y = ud(rng), z = ud(rng);
-      if (x * x + y * y + z * z <= 1) p.emplace_back(x, y, z);
-    } else if (kind == "slab") {
-      p.emplace_back(ud(rng), ud(rng), 1e-3 * ud(rng));
-    } else {
-      const double a = std::numbers::pi * ud(rng);
-      p.emplace_back(std::cos(a), std::sin(a), ud(rng));
-    }
-  }
-  return p;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -126,7 +107,7 @@ int main(int argc, char** argv) {
   Tally tb, tc, ts;
   for (const char* kind : {"sphere", "ball", "slab", "cylinder"})
     for (std::size_t n : {std::size_t{1000}, std::size_t{10000}}) {
-      const auto p = bench_points(kind, n);
+      const auto p = hull_sets::bench_point_set(kind, n);
       const std::string name = std::string("bench ") + kind + " " + std::to_string(n);
       compare<double>(name + " double", p, tb);
       compare<float>(name + " float", hull_sets::to_t<float>(p), tb);
