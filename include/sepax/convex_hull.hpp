@@ -79,6 +79,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <iterator>
 #include <map>
 #include <numeric>
@@ -99,29 +100,6 @@
 
 
 namespace sepax {
-
-/// float/double: how far outside its hull an input point may be, in units of
-/// Tolerances<T>::coplanar * extent (docs/hull.md, "Guarantees"): its height
-/// above any face plane, and its Euclidean distance from the hull (measured
-/// over every stress set, not proven; docs/hull.md gives the numbers).
-inline constexpr double hull_outside_bound = 64;
-
-/// float/double: a point set whose repair rounds failed (docs/hull.md) and
-/// that lies within this many coplanar * extent of one plane (a slab up to
-/// twice as thick) is returned as the flat polygon of its points projected
-/// onto the slab's mid-plane, whose vertices are then not input points.
-/// One less than hull_outside_bound: every point is within its height (at
-/// most this) of that polygon, and the rest is left for rounding.
-inline constexpr double hull_slab_half_thickness = hull_outside_bound - 1;
-
-/// float/double: a point set whose repair rounds lost a slab corner
-/// (docs/hull.md, "Slab corners") is returned as the hull of its points
-/// plus a copy of each lost point moved this many coplanar * extent into
-/// the slab; those copies are vertices that are not input points, and the
-/// result reaches at most this far beyond the points' hull.  Eight: above
-/// the merge tolerance (1) and validation's coplanar-face tolerance (1/4)
-/// with room for the rim's own rise near the corner (a few eps at most).
-inline constexpr double hull_tent_lift = 8;
 
 namespace hull_detail {
 
@@ -353,19 +331,131 @@ class Builder {
     const double slack = 8.0 * number_traits<T>::unit_roundoff * max_abs;
     double worst = 0;
     const std::vector<PolygonFace> faces = polygon_faces(h);
+    DeepInside deep(h, faces, 4 * slack + 2 * Tolerances<T>::planarity * extent_, pts_.size());
+    std::vector<int> near;  // large solids: the faces measured for a point near the surface
+    std::vector<int> seen(faces.size(), -1);
     for (std::size_t i = 0; i < pts_.size(); ++i) {
       if (out_vertex_[i]) continue;  // (the pre-check held it within conv_tol = 2 eps)
+      const int p = static_cast<int>(i);
+      auto plane_height = [&](int f) {
+        return to_double(T(dot(h.plane(f).normal, X(p)) - h.plane(f).offset));
+      };
       double hp = -1e300;
-      for (int f = 0; f < h.face_count(); ++f)
-        hp = std::max(hp, to_double(T(dot(h.plane(f).normal, X(static_cast<int>(i))) - h.plane(f).offset)));
+      const std::vector<int>* subset = nullptr;
+      if (deep.enabled()) {
+        if (deep(vec_to_double(Q(p)))) continue;
+        // the faces connected to the climb's face through faces the point is
+        // less than the bound below (every face it can be above or near)
+        near.assign(1, deep.face());
+        seen[sz(deep.face())] = p;
+        const double reach = -(kHullOutsideBound + 1) * e - slack;
+        for (std::size_t k = 0; k < near.size(); ++k) {
+          const double hf = plane_height(near[k]);
+          hp = std::max(hp, hf);
+          if (hf < reach && k > 0) continue;
+          for (int g : deep.neighbours(near[k]))
+            if (seen[sz(g)] != p) {
+              seen[sz(g)] = p;
+              near.push_back(g);
+            }
+        }
+        subset = &near;
+      } else {
+        for (int f = 0; f < h.face_count(); ++f) hp = std::max(hp, plane_height(f));
+      }
       hp -= slack;
       height = std::max(height, hp / e);
-      hp = std::max(hp, polygon_distance(faces, h.is_flat(), vec_to_double(Q(static_cast<int>(i)))) - slack);
+      hp = std::max(hp, polygon_distance(faces, h.is_flat(), vec_to_double(Q(p)), subset) - slack);
       worst = std::max(worst, hp / e);
-      if (hp > repair_tol * e) outside.push_back(static_cast<int>(i));
+      if (hp > repair_tol * e) outside.push_back(p);
     }
     return worst;
   }
+
+  // Float T: the faces of an output polyhedron as polygons in double, on the
+  // local coordinates, with Newell normals (well conditioned for thin faces).
+  struct PolygonFace {
+    std::vector<Vec3<double>> v;
+    Vec3<double> n;
+    double off = 0;
+    double area = 0;
+  };
+  // Float T, a large solid: whether a point is certainly below every face
+  // plane of the output, found without a pass over every face.  Seen from an
+  // interior point c, face f's plane is the dual point n_f / D_f (D_f =
+  // off_f - n_f.c, the distance of c below the plane); x is below every plane iff
+  // s_f(x) = n_f.(x - c) / D_f < 1 for every f, and s is a linear function of
+  // the dual points, whose maximum a climb over adjacent faces finds (the
+  // duals of a convex polyhedron's faces are the vertices of a convex one,
+  // adjacent faces its edges).  A point is deep when (1 - max s) * min D
+  // exceeds margin (the rounding of the heights outside_points computes, and
+  // how far the validated plane of a face may be from its Newell plane);
+  // every other point is measured against every face as before.  Climbs
+  // start where the last one ended (the points are in lexicographic order).
+  struct DeepInside {
+    DeepInside(const ConvexPolyhedron<T>& h, const std::vector<PolygonFace>& faces, double margin,
+               std::size_t points)
+        : faces_(faces) {
+      const double pairs = static_cast<double>(points) * static_cast<double>(faces.size());
+      if (h.is_flat() || pairs <= kHullPointScanPairs) return;
+      Vec3<double> c(0, 0, 0);
+      std::size_t count = 0;
+      for (const auto& fc : faces)
+        for (const auto& v : fc.v) {
+          c += v;
+          ++count;
+        }
+      c_ = Vec3<double>(c / static_cast<double>(count));
+      dist_.resize(faces.size());
+      double d_min = 1e300;
+      for (std::size_t f = 0; f < faces.size(); ++f) {
+        if (squared_norm(faces[f].n) == 0) return;
+        dist_[f] = faces[f].off - dot(faces[f].n, c_);
+        d_min = std::min(d_min, dist_[f]);
+      }
+      if (!(d_min > 0)) return;
+      need_ = margin / d_min;
+      start_.assign(faces.size() + 1, 0);
+      for (int f = 0; f < h.face_count(); ++f) start_[sz(f) + 1] = start_[sz(f)] + h.face(f).count;
+      adj_.resize(sz(start_.back()));
+      for (int f = 0; f < h.face_count(); ++f) {
+        int e = h.face(f).edge;
+        for (int k = 0; k < h.face(f).count; ++k, e = h.half_edge(e).next)
+          adj_[sz(start_[sz(f)] + k)] = h.half_edge(ConvexPolyhedron<T>::twin(e)).face;
+      }
+      on_ = true;
+    }
+    bool enabled() const { return on_; }
+    int face() const { return at_; }  // where the last climb ended
+    std::span<const int> neighbours(int f) const {
+      return std::span<const int>(adj_.data() + start_[sz(f)], sz(start_[sz(f) + 1] - start_[sz(f)]));
+    }
+    bool operator()(const Vec3<double>& x) {
+      const Vec3<double> d(x - c_);
+      auto score = [&](int f) { return dot(faces_[sz(f)].n, d) / dist_[sz(f)]; };
+      double s = score(at_);
+      for (int from = -1; from != at_;) {
+        from = at_;
+        for (int k = start_[sz(from)]; k < start_[sz(from) + 1]; ++k) {
+          const double t = score(adj_[sz(k)]);
+          if (t > s) {
+            s = t;
+            at_ = adj_[sz(k)];
+          }
+        }
+      }
+      return 1 - s > need_;
+    }
+
+   private:
+    const std::vector<PolygonFace>& faces_;
+    Vec3<double> c_{0, 0, 0};
+    std::vector<double> dist_;
+    std::vector<int> start_, adj_;
+    double need_ = 0;
+    int at_ = 0;
+    bool on_ = false;
+  };
 
   // Float T: the tetrahedron of the first build's initial simplex (the
   // farthest pair, the point farthest from their line, the point farthest
@@ -579,14 +669,6 @@ class Builder {
     return std::nullopt;
   }
 
-  // Float T: the faces of an output polyhedron as polygons in double, on the
-  // local coordinates, with Newell normals (well conditioned for thin faces).
-  struct PolygonFace {
-    std::vector<Vec3<double>> v;
-    Vec3<double> n;
-    double off = 0;
-    double area = 0;
-  };
   std::vector<PolygonFace> polygon_faces(const ConvexPolyhedron<T>& h) const {
     const Vec3<double> c = vec_to_double(centre_);
     std::vector<PolygonFace> faces;
@@ -617,11 +699,14 @@ class Builder {
   // face (inside).  (Not "below every face plane": the plane of a tiny face
   // is poorly determined far from it, and a point deep inside can be above
   // it.)  A flat polygon is always measured to its polygon.
+  // (Only the faces listed in subset, if given.)
   static double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
-                                 const Vec3<double>& x) {
+                                 const Vec3<double>& x, const std::vector<int>* subset = nullptr) {
     double best = 1e300;
     bool above = false;  // above a face at the nearest distance (within rounding)
-    for (const auto& fc : faces) {
+    const std::size_t count = subset != nullptr ? subset->size() : faces.size();
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto& fc = faces[subset != nullptr ? sz((*subset)[k]) : k];
       const double h = dot(fc.n, x) - fc.off;
       if (std::abs(h) > best * (1 + 1e-9)) continue;  // (the polygon is no nearer than its plane)
       bool inside = true;
@@ -1013,14 +1098,40 @@ class Builder {
       for (std::size_t f = 0; f < tris_.size(); ++f)
         if (tris_[f].alive && !is_zero(tris_[f].pl.normal)) live.push_back(static_cast<int>(f));
       bool moved = false;
+      double on_count = 0;
+      for (int f : live) on_count += static_cast<double>(tris_[sz(f)].on.size());
+      // Large hulls: instead of every live face, the faces connected to the
+      // point's own face through faces it is less than kHullOutsideBound x eps
+      // below (a face it is above is among them on a convex surface); the
+      // first in creation order, as the scan would find.
+      const bool scan = on_count * static_cast<double>(live.size()) <= kHullPointScanPairs;
+      const T reach = -(static_cast<T>(kHullOutsideBound) * eps_);
+      std::vector<int> seen(scan ? 0 : tris_.size(), -1), queue;
       for (int f : live) {
         std::vector<int>& on = tris_[sz(f)].on;
         std::size_t keep = 0;
         for (std::size_t i = 0; i < on.size(); ++i) {
           const int p = on[i];
           int out = -1;
-          for (std::size_t k = 0; k < live.size() && out < 0; ++k)
-            if (height(tris_[sz(live[k])].pl, p) > threshold(p)) out = live[k];
+          if (scan) {
+            for (std::size_t k = 0; k < live.size() && out < 0; ++k)
+              if (height(tris_[sz(live[k])].pl, p) > threshold(p)) out = live[k];
+          } else {
+            queue.assign(1, f);
+            seen[sz(f)] = p;
+            for (std::size_t k = 0; k < queue.size(); ++k) {
+              const Tri& t = tris_[sz(queue[k])];
+              const bool plain = !is_zero(t.pl.normal);
+              const T hq = plain ? height(t.pl, p) : T(0);
+              if (plain && hq > threshold(p) && (out < 0 || queue[k] < out)) out = queue[k];
+              if (plain && hq < reach) continue;
+              for (int g : t.nb)
+                if (seen[sz(g)] != p) {
+                  seen[sz(g)] = p;
+                  queue.push_back(g);
+                }
+            }
+          }
           if (out >= 0) {
             tris_[sz(out)].conflict.push_back(p);
             moved = true;
@@ -1834,10 +1945,36 @@ class Builder {
     const T conv_tol = static_cast<T>(0.5 * Tolerances<T>::convexity * ext);
     const T copl_tol = static_cast<T>(2.0 * Tolerances<T>::coplanar / 4 * ext);
     std::vector<Plane<T>> planes;
-    std::map<std::pair<int, int>, int> edge_face;
+    // directed edge (u, v) -> (its face, its position in that face's loop)
+    std::unordered_map<std::uint64_t, std::pair<int, int>> edge_face;
+    auto edge_key = [](int u, int v) {
+      return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(v);
+    };
+    std::size_t n_edges = 0;
+    for (const auto& l : loops) n_edges += l.size();
+    edge_face.reserve(n_edges);
     for (std::size_t f = 0; f < loops.size(); ++f) {
       const auto& l = loops[f];
-      for (std::size_t i = 0; i < l.size(); ++i) edge_face[{l[i], l[(i + 1) % l.size()]}] = static_cast<int>(f);
+      for (std::size_t i = 0; i < l.size(); ++i)
+        edge_face[edge_key(l[i], l[(i + 1) % l.size()])] = {static_cast<int>(f), static_cast<int>(i)};
+    }
+    // Convexity: every used vertex against each face plane, or on a large hull
+    // the local certificate (as validation): across each edge, the two
+    // vertices of the neighbouring face next to that edge.
+    const bool scan = flat || static_cast<double>(loops.size()) * static_cast<double>(used.size()) <=
+                                  kConvexityScanPairs;
+    std::vector<std::vector<int>> witnesses(scan ? 0 : loops.size());
+    for (std::size_t f = 0; f < witnesses.size(); ++f) {
+      const auto& l = loops[f];
+      for (std::size_t i = 0; i < l.size(); ++i) {
+        const auto it = edge_face.find(edge_key(l[(i + 1) % l.size()], l[i]));
+        if (it == edge_face.end()) continue;  // (from_faces refuses an open surface)
+        const auto [g, j] = it->second;
+        const auto& m = loops[sz(g)];
+        const std::size_t k = m.size();
+        witnesses[f].push_back(m[(sz(j) + 2) % k]);
+        witnesses[f].push_back(m[(sz(j) + k - 1) % k]);
+      }
     }
     std::vector<char> bad(loops.size(), 0);
     for (std::size_t f = 0; f < loops.size(); ++f) {
@@ -1866,7 +2003,7 @@ class Builder {
       }
       const bool shape_ok = ok;
       for (int v : l) ok = ok && abs_of(h(v)) <= plan_tol;
-      for (int v : used) ok = ok && h(v) <= conv_tol;
+      for (int v : scan ? used : witnesses[f]) ok = ok && h(v) <= conv_tol;
       // corners as validation sees them: no reflex turn about this normal
       const std::size_t n = l.size();
       for (std::size_t i = 0; i < n && ok; ++i) {
@@ -1894,10 +2031,14 @@ class Builder {
       if (bad[f]) continue;
       const auto& l = loops[f];
       for (std::size_t i = 0; i < l.size() && !bad[f]; ++i) {
-        const int g = edge_face[{l[(i + 1) % l.size()], l[i]}];
+        const auto it = edge_face.find(edge_key(l[(i + 1) % l.size()], l[i]));
+        if (it == edge_face.end()) continue;
+        const int g = it->second.first;
         bool coplanar = true;
-        for (int v : loops[sz(g)])
-          coplanar = coplanar && abs_of(T(dot(planes[f].normal, X(v)) - planes[f].offset)) <= copl_tol;
+        for (std::size_t k = 0; k < loops[sz(g)].size() && coplanar; ++k) {
+          const int v = loops[sz(g)][k];
+          coplanar = abs_of(T(dot(planes[f].normal, X(v)) - planes[f].offset)) <= copl_tol;
+        }
         if (coplanar && merges != nullptr &&
             !split_apart(groups_[sz((*loop_group)[f])], groups_[sz((*loop_group)[sz(g)])])) {
           merges->emplace_back(static_cast<int>(f), g);
@@ -1918,8 +2059,8 @@ class Builder {
           "convex_hull: the points are up to " + std::to_string(max_abs) +
               " from the origin, too far for " + std::string(number_traits<T>::name) +
               " to resolve a shape of extent " + std::to_string(ext) +
-              " within the validation tolerance; build the hull near the origin and move it "
-              "with a RigidTransform, or use double");
+              " within the validation tolerance; use convex_hull_local (the hull in its own frame), "
+              "or double");
     }
     std::sort(reject.begin(), reject.end());
     reject.erase(std::unique(reject.begin(), reject.end()), reject.end());
@@ -1972,3 +2113,5 @@ ConvexPolyhedron<T> convex_hull(const std::vector<Vec3<T>>& points) {
 }
 
 }  // namespace sepax
+
+#include "hull/local_frame.hpp"

@@ -926,6 +926,62 @@ class ConvexPolyhedron {
     }
   }
 
+  // The local convexity certificate of a large closed shape (validate_geometry
+  // uses it instead of every vertex against every face plane when
+  // faces x vertices > kConvexityScanPairs): face f's witnesses are, across
+  // each of its edges, the two vertices of the neighbouring face next to that
+  // edge.  Every edge convex (those witnesses below f's plane) and every vertex
+  // wound once (check_vertex_windings) on a closed, consistently oriented
+  // genus-0 surface make the surface convex (docs/hull.md, "Validation").
+  void local_convexity_witnesses(int f, std::vector<int>& out) const {
+    out.clear();
+    int h = face(f).edge;
+    for (int i = 0; i < face(f).count; ++i, h = half_edge(h).next) {
+      const HalfEdge& t = half_edge(twin(h));
+      out.push_back(half_edge(half_edge(t.next).next).origin);
+      out.push_back(half_edge(t.prev).origin);
+    }
+  }
+
+  // Every vertex of a large solid is wound once: its neighbours, projected on
+  // the plane normal to the sum of its faces' normals (inside the normal cone
+  // of a convex corner), turn once around it (a ray-crossing count; exact for
+  // exact T).  A star wound twice has convex edges but is not convex.
+  void check_vertex_windings() const {
+    for (int v = 0; v < vertex_count(); ++v) {
+      const auto fan = vertex_half_edges(v);
+      Vec3<T> m(T(0), T(0), T(0));
+      for (int h : fan) m = Vec3<T>(m + plane(half_edge(h).face).normal);
+      int k = 0;
+      for (int c = 1; c < 3; ++c)
+        if (abs_of(m[c]) < abs_of(m[k])) k = c;
+      Vec3<T> axis(T(0), T(0), T(0));
+      axis[k] = T(1);
+      const Vec3<T> a = cross(m, axis), b = cross(m, a);
+      // neighbours in order around v: the head of each outgoing half-edge h,
+      // the next one twin(prev(h))
+      std::vector<std::array<T, 2>> ring;
+      int h = fan[0];
+      do {
+        const Vec3<T> d(vertex(half_edge(twin(h)).origin) - vertex(v));
+        ring.push_back({dot(a, d), dot(b, d)});
+        h = twin(half_edge(h).prev);
+      } while (h != fan[0] && ring.size() <= fan.size());
+      int wind = 0;
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const auto& p = ring[i];
+        const auto& q = ring[(i + 1) % ring.size()];
+        const T side = T(p[0] * q[1] - p[1] * q[0]);
+        if (p[1] <= T(0) && q[1] > T(0) && side > T(0)) ++wind;
+        if (q[1] <= T(0) && p[1] > T(0) && side < T(0)) --wind;
+      }
+      if (wind != 1 && wind != -1) {
+        fail(ErrorCode::NotConvex, "not convex: the faces around vertex " + std::to_string(v) + " turn " +
+                                       std::to_string(wind) + " times around it");
+      }
+    }
+  }
+
   void validate_geometry() {
     if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
     if constexpr (!number_traits<T>::is_exact) check_range();
@@ -1012,13 +1068,21 @@ class ConvexPolyhedron {
                                        " has only two edges (it lies in the middle of an edge)");
       }
     }
-    // global convexity and orientation
+    // global convexity and orientation: every vertex against every face
+    // plane, or on large shapes the local certificate (local_convexity_witnesses)
+    const bool scan = static_cast<double>(face_count()) * static_cast<double>(vertex_count()) <=
+                      kConvexityScanPairs;
+    if (!scan) check_vertex_windings();
     int faces_all_above = 0;
     int first_bad_face = -1, first_bad_vertex = -1;
     double first_bad_height = 0;
+    std::vector<int> witnesses;
     for (int f = 0; f < face_count(); ++f) {
       bool any_below = false, any_above = false;
-      for (int v = 0; v < vertex_count(); ++v) {
+      if (!scan) local_convexity_witnesses(f, witnesses);
+      const int count = scan ? vertex_count() : static_cast<int>(witnesses.size());
+      for (int i = 0; i < count; ++i) {
+        const int v = scan ? i : witnesses[static_cast<std::size_t>(i)];
         const T h = height(f, vertex(v));
         if (h < -conv_tol) any_below = true;
         if (h > conv_tol) {
@@ -1050,12 +1114,9 @@ class ConvexPolyhedron {
       } else {
         const T tol = height_tolerance(Tolerances<T>::coplanar / 4);
         coplanar = true;
-        for (int v : face_vertices(g)) {
-          if (abs_of(height(f, vertex(v))) > tol) {
-            coplanar = false;
-            break;
-          }
-        }
+        int h = face(g).edge;
+        for (int i = 0; i < face(g).count && coplanar; ++i, h = half_edge(h).next)
+          coplanar = !(abs_of(height(f, vertex(half_edge(h).origin))) > tol);
       }
       if (coplanar) {
         fail(ErrorCode::NotConvex, "faces " + std::to_string(f) + " and " + std::to_string(g) +

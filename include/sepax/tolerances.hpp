@@ -116,4 +116,43 @@ struct Tolerances<double> {
   static constexpr double contact_area = 1e-14;
 };
 
+// ---- convex hull (float/double; docs/hull.md) --------------------------------
+// Multipliers of eps = Tolerances<T>::coplanar * extent unless a line says
+// otherwise.
+
+/// How far outside its hull an input point may be (height above a face plane
+/// and Euclidean distance), x eps; measured over every stress set, not proven.
+inline constexpr double kHullOutsideBound = 64;
+/// Half-thickness of the thickest slab returned as its projected polygon, x eps.
+inline constexpr double kHullSlabHalfThickness = kHullOutsideBound - 1;
+/// How far a tent lifts a lost slab corner into the slab, x eps.
+inline constexpr double kHullTentLift = 8;
+/// A repair round puts back points farther than this from the hull, x eps.
+inline constexpr double kHullRepairTolerance = 2;
+/// A pinned vertex farther than this from its neighbours' segment is a fold, x eps.
+inline constexpr double kHullFoldDistance = 2;
+/// A nearer-every-point result is kept only with heights at most this, x eps.
+inline constexpr double kHullHeightSafe = kHullOutsideBound / 2;
+/// Repair rounds (each rebuilds the hull with the lost points pinned), count.
+inline constexpr int kHullMaxRepairs = 8;
+/// Rounding slack of a plane height evaluated on input coordinates, x u max|x|.
+inline constexpr double kHullPlaneRoundingSlack = 8;
+/// Float T cannot resolve a shape when this x u max|x| exceeds planarity x extent.
+inline constexpr double kHullFarRounding = 16;
+/// The builder's own check of its output uses this fraction of validation's
+/// planarity and convexity tolerances, dimensionless.
+inline constexpr double kHullPrecheckFraction = 0.5;
+/// Faces x vertices up to which convexity is checked vertex against every face
+/// plane (validation and the builder's pre-check); beyond, by the local
+/// certificate (docs/hull.md, "Validation"), pairs.
+inline constexpr double kConvexityScanPairs = 4e6;
+/// Points x faces up to which the builder measures every point against every
+/// face; beyond, each point against the faces near the one it climbs to, pairs.
+inline constexpr double kHullPointScanPairs = 4e6;
+
+/// Former names of the hull bounds (docs/hull.md).
+inline constexpr double hull_outside_bound = kHullOutsideBound;
+inline constexpr double hull_slab_half_thickness = kHullSlabHalfThickness;
+inline constexpr double hull_tent_lift = kHullTentLift;
+
 }  // namespace sepax

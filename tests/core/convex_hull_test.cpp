@@ -6,6 +6,7 @@
 #include <sepax/convex_hull.hpp>
 #include <sepax/shapes.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -65,7 +66,7 @@ double lift_rounding(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& p
 }
 
 // Set `iter` of the stream of random_point_set with this seed (as
-// docs/hull_stress.cpp numbers them).
+// tools/hull_stress.cpp numbers them).
 std::vector<Vec3<double>> stream_set(unsigned seed, int iter) {
   std::mt19937 rng(seed);
   std::vector<Vec3<double>> pts;
@@ -410,7 +411,7 @@ TEST_CASE("the needle of docs/hull.md keeps its length", "[hull][stress]") {
 // seventh point t above it) 127..2520 eps thick whose repair rounds all
 // lost a bottom corner whose rim faces validation cannot tell apart
 // (before: up to 1.3e-3 x extent = 1.3e7 x coplanar*extent from the hull).
-// Each set by its stream seed and iteration (docs/hull_stress.cpp), with its
+// Each set by its stream seed and iteration (tools/hull_stress.cpp), with its
 // thickness and the old distance: every point is now within the bound, and
 // a hull whose vertices are not all inputs is a tent (lifted copies
 // hull_tent_lift away from their points).
@@ -446,4 +447,64 @@ TEMPLATE_TEST_CASE("slab corners that the repair rounds lost are kept", "[hull][
     if (!vertices_are_inputs(h, pts))
       CHECK(vertex_offset(h, pts) <= 1.01 * hull_tent_lift + lift_rounding(h, pts));
   }
+}
+
+// Hulls large enough that the builder and validation check convexity by the
+// local certificate and measure points by climbs instead of scans
+// (kConvexityScanPairs, kHullPointScanPairs): the result still passes every
+// vertex against every face plane, and every point is within the bound.
+TEMPLATE_TEST_CASE("large hull: local checks agree with the full scans", "[hull][large]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(77);
+  std::normal_distribution<double> nd;
+  std::uniform_real_distribution<double> ud(-1.0, 1.0);
+  for (const char* kind : {"sphere", "ball", "cylinder"}) {
+    std::vector<Vec3<T>> pts;
+    const std::size_t n = std::string(kind) == "ball" ? 40000 : 4000;
+    while (pts.size() < n) {
+      const double x = nd(rng), y = nd(rng), z = nd(rng), l = std::sqrt(x * x + y * y + z * z);
+      if (std::string(kind) == "sphere") {
+        pts.push_back(vec_cast<T>(Vec3<double>(x / l, y / l, z / l)));
+      } else if (std::string(kind) == "ball") {
+        pts.push_back(vec_cast<T>(Vec3<double>(ud(rng), ud(rng), ud(rng))));
+      } else {
+        const double a = std::numbers::pi * ud(rng);
+        pts.push_back(vec_cast<T>(Vec3<double>(std::cos(a), std::sin(a), ud(rng))));
+      }
+    }
+    const auto h = convex_hull(pts);
+    INFO(kind << ": " << h.vertex_count() << " vertices, " << h.face_count() << " faces");
+    if (std::string(kind) == "sphere")
+      CHECK(static_cast<double>(h.vertex_count()) * h.face_count() > kConvexityScanPairs);
+    CHECK(static_cast<double>(pts.size()) * h.face_count() > kHullPointScanPairs);
+    CHECK(vertices_are_inputs(h, pts));
+    const double tol = Tolerances<T>::convexity * h.extent();
+    double worst = -1e300;
+    for (int f = 0; f < h.face_count(); ++f)
+      for (const auto& v : h.vertices())
+        worst = std::max(worst, to_double(T(dot(h.plane(f).normal, v) - h.plane(f).offset)));
+    CHECK(worst <= tol);
+    // (a repair round puts back every point farther out than this)
+    CHECK(max_outside(h, pts) <= kHullRepairTolerance);
+  }
+}
+
+// A 0.4-unit piece 150 units from the origin: built in its own frame, whose
+// origin makes every subtraction exact, so every world vertex is an input point.
+TEMPLATE_TEST_CASE("far piece: convex_hull_local builds it in its own frame", "[hull][local]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  std::vector<Vec3<T>> pts;
+  for (int i = 0; i < 200; ++i) pts.push_back(vec_cast<T>(Vec3<double>(150 + u(rng), -150 + u(rng), 150 + u(rng))));
+  const auto local = convex_hull_local(pts);
+  CHECK(local.shape.vertex_count() >= 4);
+  CHECK(local.shape.extent() < 1.0);
+  for (const auto& p : pts) {
+    const Vec3<T> d(p - local.origin);
+    CHECK(Vec3<T>(d + local.origin) == p);
+  }
+  std::vector<Vec3<T>> world;
+  for (const auto& v : local.shape.vertices()) world.push_back(Vec3<T>(v + local.origin));
+  for (const auto& w : world) CHECK(std::find(pts.begin(), pts.end(), w) != pts.end());
 }

@@ -1,11 +1,12 @@
 // The hull tests' point-set generators and measures, shared by
-// tests/core/convex_hull_test.cpp and the stress run docs/hull_stress.cpp (so
+// tests/core/convex_hull_test.cpp and the stress run tools/hull_stress.cpp (so
 // the stress run measures exactly the sets the unit test holds to the bound).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <sepax/convex_polyhedron.hpp>
@@ -203,6 +204,34 @@ inline std::vector<Vec3<double>> random_point_set(std::mt19937& rng, int kind) {
   const double scale = std::pow(10.0, 6.0 * u(rng));
   const Vec3<double> off = (u(rng) > 0 ? 1e4 : 0.0) * scale * Vec3<double>(1, -0.5, 0.25);
   for (auto& q : p) q = q * scale + off;
+  return p;
+}
+
+
+// The hull benchmark's point sets (bench/hull_bench.cpp, tools/hull_compare.cpp;
+// seed 42): n points on the unit sphere, in the unit ball, in the thin slab
+// [-1, 1]^2 x [-1e-3, 1e-3], or on a cylinder's lateral surface (radius 1,
+// height 2; any other kind).
+inline std::vector<Vec3<double>> bench_point_set(const std::string& kind, std::size_t n) {
+  std::mt19937_64 rng(42);
+  std::normal_distribution<double> nd;
+  std::uniform_real_distribution<double> ud(-1.0, 1.0);
+  std::vector<Vec3<double>> p;
+  p.reserve(n);
+  while (p.size() < n) {
+    if (kind == "sphere") {
+      const double x = nd(rng), y = nd(rng), z = nd(rng), l = std::sqrt(x * x + y * y + z * z);
+      if (l > 0) p.emplace_back(x / l, y / l, z / l);
+    } else if (kind == "ball") {
+      const double x = ud(rng), y = ud(rng), z = ud(rng);
+      if (x * x + y * y + z * z <= 1) p.emplace_back(x, y, z);
+    } else if (kind == "slab") {
+      p.emplace_back(ud(rng), ud(rng), 1e-3 * ud(rng));
+    } else {
+      const double a = 3.14159265358979323846 * ud(rng);
+      p.emplace_back(std::cos(a), std::sin(a), ud(rng));
+    }
+  }
   return p;
 }
 

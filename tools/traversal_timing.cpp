@@ -2,8 +2,7 @@
 // benchmark in bench/ is the reference).  Float, hulls of N random points on
 // the unit sphere, B turned and shifted so that the hulls overlap.
 //
-//   g++ -std=c++20 -O2 -DNDEBUG -I include -I tests -I /usr/include/eigen3
-//       docs/traversal_timing.cpp -o /tmp/traversal_timing && /tmp/traversal_timing
+//   cmake --build build --target traversal_timing && build/tools/traversal_timing
 #include <chrono>
 #include <cstdio>
 

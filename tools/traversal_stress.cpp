@@ -2,8 +2,7 @@
 // random pairs of boxes, prisms, tetrahedra and polygons at exact rational
 // rotations (integer quaternions) and quarter-unit offsets: ties, touching
 // contacts, arcs through Gauss-map vertices everywhere.
-//   g++ -std=c++20 -O1 -I include -I robust/include -I tests -I /usr/include/eigen3
-//     docs/traversal_stress.cpp -o /tmp/traversal_stress -lgmpxx -lgmp -lmpfr && /tmp/traversal_stress 1
+//   cmake --build build --target traversal_stress && build/tools/traversal_stress 1
 #include <gmpxx.h>
 #include <sepax/robust/number_types.hpp>
 #include <sepax/sat_gauss_map.hpp>

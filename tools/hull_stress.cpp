@@ -13,8 +13,8 @@
 // Sets above `report` are listed; and per seed the hulls with vertices that
 // are not input points (projected slabs, flat; tents, solid: docs/hull.md).
 // docs/hull.md quotes its output.
-//   g++ -std=c++20 -O2 -I include -I /usr/include/eigen3 docs/hull_stress.cpp -o /tmp/hull_stress
-//   /tmp/hull_stress both 1 12 10000        # [float|double|both] first_seed last_seed count [only_iter report]
+//   cmake --build build --target hull_stress
+//   build/tools/hull_stress both 1 12 10000        # [float|double|both] first_seed last_seed count [only_iter report]
 #include <sepax/convex_hull.hpp>
 #include "../tests/core/hull_point_sets.hpp"
 #include <cmath>
