@@ -3,6 +3,7 @@
 #include <memory>
 
 #include <sepax/contact_manifold.hpp>
+#include <sepax/transform.hpp>
 #include <sepax/robust/robust_kernel.hpp>
 #include <sepax/sat_brute_force.hpp>
 #include <sepax/sat_cache.hpp>
@@ -47,63 +48,68 @@ SatOptions margin_options(const PairData& p) {
   return opt;
 }
 
-// The posed rows: robust traversal on prepared shapes at the pair's world
-// poses, with or without the manifold, margin and a per-trajectory cache.
+// contact_manifold on prepared shapes at poses (world coordinates).
+template <class S, class X, class R>
+concept PosedManifold = requires(const S& s, const X& x, const R& r, const SatOptions& o) {
+  contact_manifold(s, x, s, x, r, o);
+};
+constexpr bool kPosedManifold = PosedManifold<PreparedShape<float>, RigidTransform<float>, SatResult<float>>;
+
+// The posed query of pair i, as an engine runs it: the robust traversal, then
+// (with_manifold) the manifold unless the query stopped beyond the margin.
+// (S is PreparedShape<float>: a template parameter so that the manifold call
+// is only compiled where the posed contact_manifold exists.)
+template <bool with_manifold, class S = PreparedShape<float>>
+Out posed_query(const Cell& c, std::size_t i, const SatOptions& opt, SatCache<float>* cache) {
+  const PairData& p = c.pairs[i];
+  const S& a = pa(c, i);
+  const S& b = pb(c, i);
+  const auto r = sat::traversal<policy::Robust>(a, p.pose_a, b, p.pose_b, opt, cache);
+  if constexpr (with_manifold && PosedManifold<S, RigidTransform<float>, SatResult<float>>) {
+    if (!r.early_out) {
+      const auto m = contact_manifold(a, p.pose_a, b, p.pose_b, r, opt);
+      g_contact_points += static_cast<std::size_t>(m.size());
+    }
+  }
+  return from_sat(r);
+}
+
+// The posed rows: with or without the margin and a per-trajectory cache; the
+// manifold rows when the posed contact_manifold is there.
 void add_posed_rows(Cell& c, std::vector<Row>& rows, bool with_margin, bool with_cache) {
-  Cell* cp = &c;
+  const Cell* cp = &c;
   auto add = [&](std::string name, std::function<Out(std::size_t)> f) {
     rows.push_back(Row{std::move(name), "sepax", std::move(f)});
   };
   if (!with_margin) {
-    add("traversal float posed", [cp](std::size_t i) {
-      const PairData& p = cp->pairs[i];
-      return from_sat(sat::traversal<policy::Robust>(pa(*cp, i), p.pose_a, pb(*cp, i), p.pose_b, SatOptions{}));
-    });
-    add("traversal+manifold float posed", [cp](std::size_t i) {
-      const PairData& p = cp->pairs[i];
-      const SatOptions opt;
-      const auto r = sat::traversal<policy::Robust>(pa(*cp, i), p.pose_a, pb(*cp, i), p.pose_b, opt);
-      const auto m = contact_manifold(pa(*cp, i), p.pose_a, pb(*cp, i), p.pose_b, r, opt);
-      g_contact_points += static_cast<std::size_t>(m.size());
-      return from_sat(r);
-    });
+    add("traversal float posed", [cp](std::size_t i) { return posed_query<false>(*cp, i, SatOptions{}, nullptr); });
+    if (kPosedManifold)
+      add("traversal+manifold float posed",
+          [cp](std::size_t i) { return posed_query<true>(*cp, i, SatOptions{}, nullptr); });
     return;
   }
-  add("traversal float posed margin", [cp](std::size_t i) {
-    const PairData& p = cp->pairs[i];
-    return from_sat(sat::traversal<policy::Robust>(pa(*cp, i), p.pose_a, pb(*cp, i), p.pose_b, margin_options(p)));
-  });
-  add("traversal+manifold float posed margin", [cp](std::size_t i) {
-    const PairData& p = cp->pairs[i];
-    const SatOptions opt = margin_options(p);
-    const auto r = sat::traversal<policy::Robust>(pa(*cp, i), p.pose_a, pb(*cp, i), p.pose_b, opt);
-    const auto m = contact_manifold(pa(*cp, i), p.pose_a, pb(*cp, i), p.pose_b, r, opt);
-    g_contact_points += static_cast<std::size_t>(m.size());
-    return from_sat(r);
-  });
+  add("traversal float posed margin",
+      [cp](std::size_t i) { return posed_query<false>(*cp, i, margin_options(cp->pairs[i]), nullptr); });
+  if (kPosedManifold)
+    add("traversal+manifold float posed margin",
+        [cp](std::size_t i) { return posed_query<true>(*cp, i, margin_options(cp->pairs[i]), nullptr); });
   if (!with_cache) return;
   // One cache per trajectory, reset at its first frame: every pass replays the
   // trajectories from a cold cache, then warm step to step.
   const auto frames = static_cast<std::size_t>(c.frames);
   auto caches = std::make_shared<std::vector<SatCache<float>>>(c.pairs.size() / frames);
-  auto cache_of = [caches, frames](std::size_t i) -> SatCache<float>& {
+  auto cache_of = [caches, frames](std::size_t i) -> SatCache<float>* {
     auto& k = (*caches)[i / frames];
     if (i % frames == 0) k = SatCache<float>{};
-    return k;
+    return &k;
   };
   add("traversal float posed margin cached", [cp, cache_of](std::size_t i) {
-    const PairData& p = cp->pairs[i];
-    return from_sat(
-        sat::traversal<policy::Robust>(pa(*cp, i), p.pose_a, pb(*cp, i), p.pose_b, margin_options(p), &cache_of(i)));
+    return posed_query<false>(*cp, i, margin_options(cp->pairs[i]), cache_of(i));
   });
-  add("traversal+manifold float posed margin cached", [cp, cache_of](std::size_t i) {
-    const PairData& p = cp->pairs[i];
-    const SatOptions opt = margin_options(p);
-    const auto r = sat::traversal<policy::Robust>(pa(*cp, i), p.pose_a, pb(*cp, i), p.pose_b, opt, &cache_of(i));
-    const auto m = contact_manifold(pa(*cp, i), p.pose_a, pb(*cp, i), p.pose_b, r, opt);
-    g_contact_points += static_cast<std::size_t>(m.size());
-    return from_sat(r);
-  });
+  if (kPosedManifold)
+    add("traversal+manifold float posed margin cached", [cp, cache_of](std::size_t i) {
+      return posed_query<true>(*cp, i, margin_options(cp->pairs[i]), cache_of(i));
+    });
 }
 #endif
 

@@ -85,6 +85,10 @@ struct PairData {
   // exact reference (mpq SAT on A and the pre-posed B)
   bool ref_overlap = false;
   double ref_sep = 0;  // to_double of the exact separation (< 0: penetration depth)
+  // exact reference of the posed rows: mpq SAT on A and posed(B, X), X =
+  // relative_pose(pose_a, pose_b) (posing.hpp: the input posed queries decide on)
+  bool ref_posed_overlap = false;
+  double ref_posed_sep = 0;
 };
 
 struct Cell {
