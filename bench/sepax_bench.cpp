@@ -132,7 +132,8 @@ int run(const Options& o) {
 #if !SEPAX_BENCH_PREPARED
   std::printf("(sepax/prepared_shape.hpp not available: no posed sepax rows)\n");
 #endif
-  std::printf("reference: sepax traversal SAT in mpq_class on the pre-posed float-valued vertices\n\n");
+  std::printf("reference: sepax traversal SAT in mpq_class on the pre-posed B (pre-posed rows) and on the\n"
+              "posed B' = posed(B, relative_pose(pose_a, pose_b)) (posed rows)\n\n");
   print_header();
   std::vector<Measured> all;
   std::vector<std::string> counters;
@@ -204,7 +205,7 @@ int main(int argc, char** argv) {
                                                        "rolling"};
   for (const auto& w : workloads(false)) workload_names.push_back(w.name);
   app.add_flag("--quick", o.quick, "sphere hulls up to N = 64 only");
-  app.add_option("--pairs", o.pairs, "pairs per pose set (trajectory sets: pairs/16 trajectories)")
+  app.add_option("--pairs", o.pairs, "pairs per pose set (moving: pairs/16 trajectories of 32 steps; resting, sliding, rolling: pairs/32 of 120 steps)")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
   app.add_option("--min-time", o.min_time, "seconds per row for the repeated timing passes (at least 2)")

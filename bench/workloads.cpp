@@ -251,7 +251,7 @@ void setup_cell(Cell& c, const WorkloadSpec& spec, const std::string& poses, Poo
     build_moving(c, prng, std::max(2, pairs / 16), 32);
   } else if (poses == "resting" || poses == "sliding" || poses == "rolling") {
     Rng prng(poses == "resting" ? 4004u : poses == "sliding" ? 5005u : 6006u);
-    build_coherent(c, prng, std::max(2, pairs / 16), 120);
+    build_coherent(c, prng, std::max(2, pairs / 32), 120);
   } else {
     Rng prng(poses == "overlapping" ? 1001u : 2002u);
     build_pairs(c, prng, pairs);
