@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ struct Out {
   double sep = 0;        // signed separation (< 0: penetration depth); NaN if none
   bool failed = false;   // the method gave no answer (counted, not timed differently)
   std::array<int, 3> feature{-1, -1, -1};  // sepax rows: feature type, a, b
+  std::int64_t exact_fallbacks = 0;  // robust rows: decisions the float filters left to exact arithmetic
 };
 
 struct Row {

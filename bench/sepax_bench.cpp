@@ -67,14 +67,16 @@ Pool make_pool(const WorkloadSpec& spec) {
 }
 
 void print_header() {
-  std::printf("%-11s %-11s %-46s %11s %9s %7s %5s %10s %10s\n", "workload", "poses", "row", "ns/query", "x trav",
-              "verdict", "fail", "depth-err", "depth-err");
-  std::printf("%-11s %-11s %-46s %11s %9s %7s %5s %10s %10s\n", "", "", "", "", "", "diff", "", "median", "max");
+  std::printf("%-11s %-11s %-46s %11s %9s %7s %5s %10s %10s %8s\n", "workload", "poses", "row", "ns/query", "x trav",
+              "verdict", "fail", "depth-err", "depth-err", "exact");
+  std::printf("%-11s %-11s %-46s %11s %9s %7s %5s %10s %10s %8s\n", "", "", "", "", "", "diff", "", "median", "max",
+              "/query");
 }
 
 void print_row(const Measured& m) {
-  std::printf("%-11s %-11s %-46s %11.1f %9.2f %4d/%-3d %4d %10.2e %10.2e", m.workload.c_str(), m.poses.c_str(),
-              m.row.c_str(), m.ns, m.ratio, m.disagree, m.queries, m.failed, m.depth_med, m.depth_max);
+  std::printf("%-11s %-11s %-46s %11.1f %9.2f %4d/%-3d %4d %10.2e %10.2e %8.2f", m.workload.c_str(),
+              m.poses.c_str(), m.row.c_str(), m.ns, m.ratio, m.disagree, m.queries, m.failed, m.depth_med, m.depth_max,
+              m.exact_fallbacks);
   if (!m.same_as.empty()) std::printf("  answers differing from '%s': %d", m.same_as.c_str(), m.differences);
   std::printf("\n");
   std::fflush(stdout);

@@ -24,6 +24,7 @@ template <class R>
 Out from_sat(const R& r) {
   Out o{r.overlap, r.separation_as_double(), false};
   o.feature = {static_cast<int>(r.feature.type), r.feature.a, r.feature.b};
+  o.exact_fallbacks = r.stats.exact_fallbacks;
   return o;
 }
 

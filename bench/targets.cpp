@@ -117,7 +117,8 @@ nlohmann::ordered_json to_json(const Measured& m) {
                            {"failed", m.failed},
                            {"depth_pairs", m.depth_count},
                            {"depth_err_median", num(m.depth_med)},
-                           {"depth_err_max", num(m.depth_max)}};
+                           {"depth_err_max", num(m.depth_max)},
+                           {"exact_fallbacks_per_query", num(m.exact_fallbacks)}};
   if (!m.same_as.empty()) {
     j["same_results_as"] = m.same_as;
     j["result_differences"] = m.differences;

@@ -38,6 +38,7 @@ Measured measure(const Cell& c, const Row& row, double min_time, double max_pass
     }
   }
   m.queries = static_cast<int>(np);
+  for (const auto& o : outs) m.exact_fallbacks += double(o.exact_fallbacks) / double(np);
   const double first = now_s() - t0;
   const double per_pair = first / double(np);
   std::size_t chunk =

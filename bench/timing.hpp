@@ -27,6 +27,7 @@ struct Measured {
   int failed = 0;       // no answer
   int depth_count = 0;  // overlapping pairs (both agree) with a depth
   double depth_med = 0, depth_max = 0;  // |depth - exact depth|
+  double exact_fallbacks = 0;  // per query (robust rows; first pass)
   std::string same_as;  // a row whose answers this row must reproduce exactly
   int differences = 0;  // pairs whose verdict, feature or separation differ from same_as's
 };
