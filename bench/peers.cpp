@@ -208,27 +208,24 @@ void add_ccd_rows(Cell& c, std::vector<Row>& rows) {
     ccd.center1 = ccd_center;
     ccd.center2 = ccd_center;
   };
-  rows.push_back(Row{"ccd gjk+epa (double)", "peer", [cp, cc, init](std::size_t i) {
-                       ccd_t ccd;
-                       init(ccd);
-                       ccd_real_t depth;
-                       ccd_vec3_t dir, pos;
-                       const int r = ccdGJKPenetration(&cc->a[static_cast<std::size_t>(cp->pairs[i].a)], &cc->b[i],
-                                                       &ccd, &depth, &dir, &pos);
-                       if (r == 0) return Out{true, -double(depth), false};
-                       if (r == -2) return Out{true, std::nan(""), true};  // memory failure
-                       return Out{false, std::nan(""), false};
-                     }});
-  rows.push_back(Row{"ccd mpr (double)", "peer", [cp, cc, init](std::size_t i) {
-                       ccd_t ccd;
-                       init(ccd);
-                       ccd_real_t depth;
-                       ccd_vec3_t dir, pos;
-                       const int r = ccdMPRPenetration(&cc->a[static_cast<std::size_t>(cp->pairs[i].a)], &cc->b[i],
-                                                       &ccd, &depth, &dir, &pos);
-                       if (r == 0) return Out{true, -double(depth), false};
-                       return Out{false, std::nan(""), false};
-                     }});
+  // ccdGJKPenetration and ccdMPRPenetration: 0 penetrating, -1 separated,
+  // -2 memory failure (GJK only)
+  using Penetration = int (*)(const void*, const void*, const ccd_t*, ccd_real_t*, ccd_vec3_t*, ccd_vec3_t*);
+  auto add = [&](std::string name, Penetration penetration) {
+    rows.push_back(Row{std::move(name), "peer", [cp, cc, init, penetration](std::size_t i) {
+                         ccd_t ccd;
+                         init(ccd);
+                         ccd_real_t depth;
+                         ccd_vec3_t dir, pos;
+                         const int r = penetration(&cc->a[static_cast<std::size_t>(cp->pairs[i].a)], &cc->b[i], &ccd,
+                                                   &depth, &dir, &pos);
+                         if (r == 0) return Out{true, -double(depth), false};
+                         if (r == -2) return Out{true, std::nan(""), true};
+                         return Out{false, std::nan(""), false};
+                       }});
+  };
+  add("ccd gjk+epa (double)", ccdGJKPenetration);
+  add("ccd mpr (double)", ccdMPRPenetration);
 }
 #endif
 
