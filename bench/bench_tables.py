@@ -67,6 +67,25 @@ def main(path):
                 cells.append(s)
             print('| `%s` | ' % r + ' | '.join(cells) + ' |')
 
+    print('\n#### Decisions left to exact arithmetic per query (robust rows with any)\n')
+    keys = []
+    for m in rows:
+        if m.get('exact_fallbacks_per_query') and (m['poses'], m['row']) not in keys:
+            keys.append((m['poses'], m['row']))
+    workloads = []
+    for m in rows:
+        if m['workload'] not in workloads:
+            workloads.append(m['workload'])
+    print('| poses | row | ' + ' | '.join(workloads) + ' |')
+    print('|---|---|' + '---|' * len(workloads))
+    for poses, r in keys:
+        cells = []
+        for w in workloads:
+            m = runs.get((w, poses, r))
+            cells.append('–' if not m or m.get('exact_fallbacks_per_query') is None
+                         else '%.2g' % m['exact_fallbacks_per_query'])
+        print('| %s | `%s` | ' % (poses, r) + ' | '.join(cells) + ' |')
+
     bad = [(m['workload'], m['poses'], m['row'], m['verdict_disagreements'], m['failed'])
            for m in rows if m['verdict_disagreements'] or m['failed']]
     print('\nVerdicts differing from the exact verdict, or failed queries (workload, poses, row, differing, failed): ' +
