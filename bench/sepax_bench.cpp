@@ -10,6 +10,7 @@
 //   sepax_bench --list-targets
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -233,6 +234,11 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
     if (o.callgrind && (o.row.empty() || o.workload.empty()))
       throw CLI::ValidationError("--callgrind", "needs --row and --workload");
+    for (const auto& w : workloads(false)) {
+      const auto sets = pose_sets(w);
+      if (w.name == o.workload && !o.poses.empty() && std::find(sets.begin(), sets.end(), o.poses) == sets.end())
+        throw CLI::ValidationError("--poses", "workload " + w.name + " has no pose set " + o.poses);
+    }
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);  // help and version on stdout, errors on stderr
     return code == 0 ? 0 : 2;
