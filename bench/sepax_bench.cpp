@@ -151,14 +151,15 @@ int run(const Options& o) {
       compute_reference(c);
       std::fprintf(stderr, "[%s %s: exact reference %.1f s]\n", c.workload.c_str(), c.poses.c_str(), now_s() - tr);
       counters.push_back(traversal_counters(c));
-      std::vector<Measured> cell;
+      const std::vector<Row> rows = cell_rows(c);
+      std::vector<const Row*> chosen;
+      for (const auto& row : rows)
+        if (o.filter.empty() || row.name.find(o.filter) != std::string::npos || row.name == kBaseline)
+          chosen.push_back(&row);
+      std::vector<std::vector<Out>> outs;
+      std::vector<Measured> cell = measure_cell(c, chosen, o.min_time, o.max_pass, outs);
       std::map<std::string, std::vector<Out>> answers;
-      for (auto& row : cell_rows(c)) {
-        if (!o.filter.empty() && row.name.find(o.filter) == std::string::npos && row.name != kBaseline) continue;
-        std::vector<Out> outs;
-        cell.push_back(measure(c, row, o.min_time, o.max_pass, outs));
-        answers[row.name] = std::move(outs);
-      }
+      for (std::size_t r = 0; r < chosen.size(); ++r) answers[chosen[r]->name] = std::move(outs[r]);
       double base = 0;
       for (const auto& m : cell)
         if (m.row == kBaseline) base = m.ns;

@@ -18,49 +18,72 @@ double now_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-Measured measure(const Cell& c, const Row& row, double min_time, double max_pass, std::vector<Out>& outs) {
+namespace {
+
+// One row's timing state: its pairs, chunk length and the best time of each chunk.
+struct Timing {
+  const Row* row = nullptr;
+  std::size_t np = 0, chunk = 1;
+  std::vector<double> best_chunk;
+  int passes = 0;
+  double spent = 0;  // seconds in timed passes
+};
+
+// The first pass over the pairs: answers (and the warm-up).  A slow row stops
+// after max_pass seconds and at least kMinPairs pairs (whole trajectories).
+Timing first_pass(const Cell& c, const Row& row, double max_pass, std::vector<Out>& outs) {
+  Timing t;
+  t.row = &row;
+  t.np = std::min(c.pairs.size(), row.max_pairs);
+  outs.assign(t.np, Out{});
+  const auto frames = static_cast<std::size_t>(std::max(c.frames, 1));
+  const double t0 = now_s();
+  for (std::size_t i = 0; i < t.np; ++i) {
+    outs[i] = row.run(i);
+    if (i + 1 >= kMinPairs && (i + 1) % frames == 0 && now_s() - t0 > max_pass) {
+      t.np = i + 1;
+      outs.resize(t.np);
+      break;
+    }
+  }
+  const double per_pair = (now_s() - t0) / double(t.np);
+  t.chunk = std::clamp<std::size_t>(static_cast<std::size_t>(kChunkTime / std::max(per_pair, 1e-12)), 1, t.np);
+  t.chunk = (t.chunk + frames - 1) / frames * frames;  // whole trajectories
+  for (std::size_t b = 0; b < t.np; b += t.chunk) t.best_chunk.push_back(HUGE_VAL);
+  return t;
+}
+
+// One timed pass over a row's chunks, each chunk keeping its best time.
+void timed_pass(Timing& t) {
+  double sum = 0;
+  const double start = now_s();
+  for (std::size_t b = 0, k = 0; b < t.np; b += t.chunk, ++k) {
+    const std::size_t e = std::min(t.np, b + t.chunk);
+    const double t0 = now_s();
+    for (std::size_t i = b; i < e; ++i) sum += t.row->run(i).sep;
+    t.best_chunk[k] = std::min(t.best_chunk[k], now_s() - t0);
+  }
+  g_sink = g_sink + sum;
+  t.spent += now_s() - start;
+  ++t.passes;
+}
+
+// The row's figures: time from the chunk minima, verdicts and depth errors
+// against the exact reference (posed rows against the posed input's).
+Measured judge(const Cell& c, const Timing& t, const std::vector<Out>& outs) {
+  const Row& row = *t.row;
   Measured m;
   m.workload = c.workload;
   m.poses = c.poses;
   m.row = row.name;
   m.group = row.group;
   m.n = c.n;
-  std::size_t np = std::min(c.pairs.size(), row.max_pairs);
-  outs.assign(np, Out{});
-  const auto frames = static_cast<std::size_t>(std::max(c.frames, 1));
-  double t0 = now_s();
-  for (std::size_t i = 0; i < np; ++i) {
-    outs[i] = row.run(i);
-    if (i + 1 >= kMinPairs && (i + 1) % frames == 0 && now_s() - t0 > max_pass) {
-      np = i + 1;
-      outs.resize(np);
-      break;
-    }
-  }
+  const std::size_t np = t.np;
   m.queries = static_cast<int>(np);
   for (const auto& o : outs) m.exact_fallbacks += double(o.exact_fallbacks) / double(np);
-  const double first = now_s() - t0;
-  const double per_pair = first / double(np);
-  std::size_t chunk =
-      std::clamp<std::size_t>(static_cast<std::size_t>(kChunkTime / std::max(per_pair, 1e-12)), 1, np);
-  chunk = (chunk + frames - 1) / frames * frames;  // whole trajectories
-  std::vector<double> best_chunk;
-  for (std::size_t b = 0; b < np; b += chunk) best_chunk.push_back(HUGE_VAL);
-  const double start = now_s();
-  for (int rep = 0; rep < 2 || (now_s() - start < min_time && rep < 1000); ++rep) {
-    double sum = 0;
-    for (std::size_t b = 0, k = 0; b < np; b += chunk, ++k) {
-      const std::size_t e = std::min(np, b + chunk);
-      t0 = now_s();
-      for (std::size_t i = b; i < e; ++i) sum += row.run(i).sep;
-      best_chunk[k] = std::min(best_chunk[k], now_s() - t0);
-    }
-    g_sink = g_sink + sum;
-  }
   double best = 0;
-  for (double t : best_chunk) best += t;
+  for (double x : t.best_chunk) best += x;
   m.ns = best * 1e9 / double(np);
-  // verdicts and depth errors against the exact reference
   // (posed rows against the posed input's reference)
   const bool posed = row.name.find(" posed") != std::string::npos;
   std::vector<double> err;
@@ -88,6 +111,28 @@ Measured measure(const Cell& c, const Row& row, double min_time, double max_pass
     m.depth_max = err.back();
   }
   return m;
+}
+
+}  // namespace
+
+std::vector<Measured> measure_cell(const Cell& c, const std::vector<const Row*>& rows, double min_time,
+                                   double max_pass, std::vector<std::vector<Out>>& outs) {
+  outs.assign(rows.size(), {});
+  std::vector<Timing> timings;
+  for (std::size_t r = 0; r < rows.size(); ++r) timings.push_back(first_pass(c, *rows[r], max_pass, outs[r]));
+  // Rounds: every row still timing runs one pass; a row stops after at least
+  // two passes and min_time seconds (or 1000 passes).
+  for (bool more = true; more;) {
+    more = false;
+    for (auto& t : timings) {
+      if (t.passes >= 2 && (t.spent >= min_time || t.passes >= 1000)) continue;
+      timed_pass(t);
+      more = true;
+    }
+  }
+  std::vector<Measured> out;
+  for (std::size_t r = 0; r < rows.size(); ++r) out.push_back(judge(c, timings[r], outs[r]));
+  return out;
 }
 
 int count_differences(const std::vector<Out>& a, const std::vector<Out>& b) {

@@ -1,13 +1,16 @@
-// Timing one row on one cell, and its answers judged against the exact
+// Timing the rows of one cell, and their answers judged against the exact
 // reference.
 //
-// A first pass over the pairs records the answers (and warms up).  Then the
-// pairs are cut into consecutive chunks of about 1 ms (whole trajectories for
-// trajectory cells, so a cache always replays its trajectory from the start);
-// every chunk is re-run at least twice (until min_time is used) and keeps its
-// minimum time; ns/query = sum of the chunk minima / pairs.  On a shared,
-// loaded machine a 1 ms chunk often runs inside one scheduler slice, so the
-// minimum is the undisturbed time.
+// A first pass of each row over the pairs records its answers (and warms up).
+// Then the pairs are cut into consecutive chunks of about 1 ms (whole
+// trajectories for trajectory cells, so a cache always replays its trajectory
+// from the start).  The rows are timed in rounds, one pass of every row per
+// round, so that rows compared by a target run under the same conditions on a
+// shared machine (a busy sibling hyperthread slows every row of the round, not
+// one row's whole measurement); every chunk keeps its minimum time, and a row
+// stops after at least two passes and min_time seconds.  ns/query = sum of
+// the chunk minima / pairs.  On a loaded machine a 1 ms chunk often runs
+// inside one scheduler slice, so the minimum is the undisturbed time.
 #pragma once
 
 #include <string>
@@ -32,9 +35,11 @@ struct Measured {
   int differences = 0;  // pairs whose verdict, feature or separation differ from same_as's
 };
 
-/// Times row on c; outs receives its answers.  A slow row stops its first
-/// pass after max_pass seconds (and at least 16 pairs) and is timed on that prefix.
-Measured measure(const Cell& c, const Row& row, double min_time, double max_pass, std::vector<Out>& outs);
+/// Times the rows on c; outs[r] receives row r's answers.  A slow row stops
+/// its first pass after max_pass seconds (and at least 16 pairs) and is timed
+/// on that prefix.
+std::vector<Measured> measure_cell(const Cell& c, const std::vector<const Row*>& rows, double min_time,
+                                   double max_pass, std::vector<std::vector<Out>>& outs);
 
 /// Pairs whose verdict, feature or separation differ between two rows' answers.
 int count_differences(const std::vector<Out>& a, const std::vector<Out>& b);
