@@ -12,6 +12,7 @@ volatile double g_sink = 0;
 namespace {
 constexpr std::size_t kMinPairs = 16;
 constexpr double kChunkTime = 0.001;
+constexpr double kRoundTime = 0.01;  // a row's share of one round of interleaved timing
 }  // namespace
 
 double now_s() {
@@ -120,14 +121,19 @@ std::vector<Measured> measure_cell(const Cell& c, const std::vector<const Row*>&
   outs.assign(rows.size(), {});
   std::vector<Timing> timings;
   for (std::size_t r = 0; r < rows.size(); ++r) timings.push_back(first_pass(c, *rows[r], max_pass, outs[r]));
-  // Rounds: every row still timing runs one pass; a row stops after at least
-  // two passes and min_time seconds (or 1000 passes).
+  // Rounds: every row still timing runs passes for about kRoundTime (at least
+  // one); a row stops after at least two passes and min_time seconds (or 1000
+  // passes).  Consecutive passes of a row within a round keep its caches and
+  // branch history warm, as the minimum over repetitions assumes.
+  auto timing = [min_time](const Timing& t) { return t.passes < 2 || (t.spent < min_time && t.passes < 1000); };
   for (bool more = true; more;) {
     more = false;
     for (auto& t : timings) {
-      if (t.passes >= 2 && (t.spent >= min_time || t.passes >= 1000)) continue;
-      timed_pass(t);
-      more = true;
+      const double round_start = t.spent;
+      while (timing(t) && (t.spent == round_start || t.spent - round_start < kRoundTime)) {
+        timed_pass(t);
+        more = true;
+      }
     }
   }
   std::vector<Measured> out;

@@ -4,10 +4,11 @@
 // A first pass of each row over the pairs records its answers (and warms up).
 // Then the pairs are cut into consecutive chunks of about 1 ms (whole
 // trajectories for trajectory cells, so a cache always replays its trajectory
-// from the start).  The rows are timed in rounds, one pass of every row per
-// round, so that rows compared by a target run under the same conditions on a
-// shared machine (a busy sibling hyperthread slows every row of the round, not
-// one row's whole measurement); every chunk keeps its minimum time, and a row
+// from the start).  The rows are timed in rounds, about 10 ms of passes of
+// every row per round, so that rows compared by a target run under the same
+// conditions on a shared machine (a busy sibling hyperthread slows every row
+// of the round, not one row's whole measurement); every chunk keeps its
+// minimum time, and a row
 // stops after at least two passes and min_time seconds.  ns/query = sum of
 // the chunk minima / pairs.  On a loaded machine a 1 ms chunk often runs
 // inside one scheduler slice, so the minimum is the undisturbed time.
