@@ -1,10 +1,9 @@
 // sepax/fuzz/cli.hpp
 //
-// Entry points the `sepax` program dispatches to (argv[0] is the verb):
+// The audit entry point the `sepax` program dispatches to (argv[0] is the
+// verb); `sepax fuzz` is parsed in src/commands/fuzz_command.cpp and run by
+// run_campaign (campaign.hpp).
 //
-//   sepax fuzz [--seconds S] [--cases N] [--seed K] [--families a,b,...]
-//              [--out DIR] [--json] [--quiet]
-//   sepax fuzz --replay FILE...   [--json]
 //   sepax audit A B [--pose tx ty tz [qw qx qy qz]] [--type float|double]
 //   sepax audit --case FILE       [--type float|double]
 //
@@ -27,7 +26,6 @@ namespace sepax::fuzz {
 /// vertices and a face list); throws InvalidInput naming the argument.
 using ShapeLoader = std::function<ShapeSpec(const std::string&)>;
 
-int fuzz_main(int argc, char** argv);
 /// `audit` with the built-in shapes (builtin_shape in generators.hpp).
 int audit_main(int argc, char** argv);
 /// `audit` with the shapes resolved by `load`; `shapes_help` is the usage
