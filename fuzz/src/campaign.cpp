@@ -11,6 +11,7 @@
 #include <iterator>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
 #include <sepax/error.hpp>
 #include <sepax/fuzz/check_manifold.hpp>
 #include <sepax/fuzz/cli.hpp>
@@ -71,72 +72,61 @@ std::string write_reproducer(const std::string& dir, const FuzzCase& c, const Ca
 
 namespace {
 
-std::string jstr(const std::string& s) {
-  std::string o = "\"";
-  for (char ch : s) {
-    if (ch == '"' || ch == '\\') o += '\\', o += ch;
-    else if (static_cast<unsigned char>(ch) < 0x20) {
-      char b[8];
-      std::snprintf(b, sizeof b, "\\u%04x", ch);
-      o += b;
-    } else o += ch;
-  }
-  return o + "\"";
+// Counts as {"agree": n, "exact_zero": n, ...} in Klass order.
+nlohmann::ordered_json counts_json(const Counts& c) {
+  nlohmann::ordered_json o = nlohmann::ordered_json::object();
+  for (int k = 0; k < kKlassCount; ++k) o[klass_name(static_cast<Klass>(k))] = c.n[static_cast<std::size_t>(k)];
+  return o;
 }
 
-std::string jskips(const std::map<std::string, std::int64_t>& m) {
-  std::string o = "{";
-  for (const auto& [k, n] : m) o += (o.size() > 1 ? "," : "") + jstr(k) + ":" + std::to_string(n);
-  return o + "}";
-}
-
-std::string jcounts(const Counts& c) {
-  std::string o = "{";
-  for (int k = 0; k < kKlassCount; ++k) {
-    if (k) o += ",";
-    o += jstr(klass_name(static_cast<Klass>(k))) + ":" + std::to_string(c.n[static_cast<std::size_t>(k)]);
-  }
-  return o + "}";
+// The report's "manifold" value: {"classes", "by_config", "aspects", "max_error_over_bound"}.
+nlohmann::ordered_json manifold_json(const std::map<std::string, Counts>& comparisons,
+                                     const std::map<std::string, Counts>& by_config,
+                                     const std::map<std::string, Counts>& details,
+                                     const std::map<std::string, double>& maxima) {
+  using Json = nlohmann::ordered_json;
+  const auto it = comparisons.find("manifold");
+  Json configs = Json::object(), aspects = Json::object(), ratios = Json::object();
+  for (const auto& [k, c] : by_config)
+    if (k.rfind("manifold/", 0) == 0) configs[k.substr(9)] = counts_json(c);
+  for (const auto& [k, c] : details)
+    if (k.rfind("manifold.", 0) == 0) aspects[k.substr(9)] = counts_json(c);
+  for (const auto& [k, v] : maxima)
+    if (k.rfind("manifold.", 0) == 0) ratios[k.substr(9)] = v;
+  return Json{{"classes", counts_json(it == comparisons.end() ? Counts{} : it->second)},
+              {"by_config", std::move(configs)},
+              {"aspects", std::move(aspects)},
+              {"max_error_over_bound", std::move(ratios)}};
 }
 
 }  // namespace
 
 void print_json(std::ostream& out, const Report& r) {
-  out << "{\"cases\":" << r.cases << ",\"rejected\":" << r.rejected << ",\"seconds\":" << r.seconds
-      << ",\"cases_per_second\":" << (r.seconds > 0 ? static_cast<double>(r.cases) / r.seconds : 0.0)
-      << ",\"seed\":" << r.seed << ",\"unexplained\":" << r.unexplained()
-      << ",\"robust_policy\":" << (has_robust_policy() ? "true" : "false")
-      << ",\"traversal_sat\":" << (has_traversal_sat() ? "true" : "false") << ",\"families\":{";
-  bool first = true;
-  for (const auto& [name, f] : r.families) {
-    out << (first ? "" : ",") << jstr(name) << ":{\"cases\":" << f.cases << ",\"rejected\":" << f.rejected
-        << ",\"unexplained\":" << f.unexplained << ",\"skipped\":" << jskips(f.skipped) << "}";
-    first = false;
-  }
-  out << "},\"comparisons\":{";
-  first = true;
-  for (const auto& [name, c] : r.comparisons) {
-    out << (first ? "" : ",") << jstr(name) << ":" << jcounts(c);
-    first = false;
-  }
-  out << "},\"by_config\":{";
-  first = true;
-  for (const auto& [name, c] : r.by_config) {
-    out << (first ? "" : ",") << jstr(name) << ":" << jcounts(c);
-    first = false;
-  }
-  out << "},\"manifold\":";
-  print_manifold_json(out, r.comparisons, r.by_config, r.details, r.maxima);
-  out << ",\"skipped_total\":" << r.skipped_total() << ",\"skipped\":" << jskips(r.skipped);
-  out << ",\"reproducers\":[";
-  for (std::size_t i = 0; i < r.reproducers.size(); ++i) out << (i ? "," : "") << jstr(r.reproducers[i]);
-  out << "],\"findings\":[";
-  for (std::size_t i = 0; i < r.findings.size(); ++i) {
-    const auto& f = r.findings[i];
-    out << (i ? "," : "") << "{\"comparison\":" << jstr(f.comparison) << ",\"config\":" << jstr(f.config)
-        << ",\"sat\":" << jstr(f.sat) << ",\"detail\":" << jstr(f.detail) << "}";
-  }
-  out << "]}\n";
+  using Json = nlohmann::ordered_json;
+  Json families = Json::object(), comparisons = Json::object(), by_config = Json::object(), findings = Json::array();
+  for (const auto& [name, f] : r.families)
+    families[name] = Json{{"cases", f.cases}, {"rejected", f.rejected}, {"unexplained", f.unexplained}, {"skipped", f.skipped}};
+  for (const auto& [name, c] : r.comparisons) comparisons[name] = counts_json(c);
+  for (const auto& [name, c] : r.by_config) by_config[name] = counts_json(c);
+  for (const auto& f : r.findings)
+    findings.push_back(Json{{"comparison", f.comparison}, {"config", f.config}, {"sat", f.sat}, {"detail", f.detail}});
+  const Json j{{"cases", r.cases},
+               {"rejected", r.rejected},
+               {"seconds", r.seconds},
+               {"cases_per_second", r.seconds > 0 ? static_cast<double>(r.cases) / r.seconds : 0.0},
+               {"seed", r.seed},
+               {"unexplained", r.unexplained()},
+               {"robust_policy", has_robust_policy()},
+               {"traversal_sat", has_traversal_sat()},
+               {"families", std::move(families)},
+               {"comparisons", std::move(comparisons)},
+               {"by_config", std::move(by_config)},
+               {"manifold", manifold_json(r.comparisons, r.by_config, r.details, r.maxima)},
+               {"skipped_total", r.skipped_total()},
+               {"skipped", r.skipped},
+               {"reproducers", r.reproducers},
+               {"findings", std::move(findings)}};
+  out << j.dump() << "\n";
 }
 
 void print_text(std::ostream& out, const Report& r) {

@@ -143,17 +143,19 @@ void CommandLine::add_robust(RunConfig& cfg) {
 
 void CommandLine::add_pose(const std::string& what) {
   has_pose_ = true;
-  app.add_option("--pose", pose_tokens_, what)
-      ->type_name("TX TY TZ [QW QX QY QZ]")
-      ->expected(1, 7)
-      ->delimiter(',')
-      ->allow_extra_args(false);
+  app.add_option("--pose", pose_text_, what)->type_name("TX TY TZ [QW QX QY QZ]");
   describe_value("--pose", "3 numbers (tx ty tz), optionally followed by 4 (qw qx qy qz)");
 }
 
 std::optional<Pose> CommandLine::pose() const {
-  if (pose_tokens_.empty()) return std::nullopt;
-  const auto& t = pose_tokens_;
+  if (!app.count("--pose")) return std::nullopt;
+  std::vector<std::string> t;
+  for (std::size_t start = 0;;) {
+    const auto comma = pose_text_.find(',', start);
+    t.push_back(pose_text_.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
   if (t.size() < 3) throw UsageError("--pose needs 3 numbers (tx ty tz), optionally followed by 4 (qw qx qy qz)");
   if (t.size() != 3 && t.size() != 7)
     throw UsageError("--pose: a rotation needs 4 numbers (qw qx qy qz) after the translation");

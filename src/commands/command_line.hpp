@@ -82,7 +82,7 @@ class CommandLine {
  private:
   std::string verb_;
   std::map<std::string, std::string> needs_;
-  std::vector<std::string> pose_tokens_;
+  std::string pose_text_;  // "tx,ty,tz[,qw,qx,qy,qz]"
   bool has_pose_ = false;
 };
 
