@@ -14,7 +14,7 @@ if [ "$(id -u)" != 0 ]; then sudo="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends \
-  cmake ninja-build g++ libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev >/dev/null
+  cmake ninja-build g++ libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libcli11-dev nlohmann-json3-dev >/dev/null
 cmake -S . -B build-main -G Ninja -DSEPAX_BUILD_TESTS=OFF >/dev/null
 cmake --build build-main --target sepax_cli -j"$(nproc)"
 exec ./build-main/src/sepax fuzz "$@"
