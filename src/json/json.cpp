@@ -104,7 +104,8 @@ class Builder {
     // in error (escaped in last_token) ends there.
     const std::size_t end = std::min(position, text_.size());
     std::size_t len = 0, start = end;
-    while (start > 0 && len < last_token.size()) len += escaped_length(text_[--start]);
+    if (position <= text_.size())  // at the end of input, the column is one past the last byte
+      while (start > 0 && len < last_token.size()) len += escaped_length(text_[--start]);
     return fail_at(start, problem(ex, last_token));
   }
 
@@ -118,6 +119,9 @@ class Builder {
     std::string m = ex.what();
     if (const auto p = m.find(": "); p != std::string::npos && m.compare(0, 16, "[json.exception.") == 0)
       m = m.substr(p + 2);
+    // "syntax error while parsing value - unexpected ..." -> "unexpected ..."
+    if (const auto d = m.find(" - "); m.compare(0, 13, "syntax error ") == 0 && d != std::string::npos)
+      m = m.substr(d + 3);
     return m;
   }
 
