@@ -106,6 +106,11 @@ class Builder {
     std::size_t len = 0, start = end;
     if (position <= text_.size())  // at the end of input, the column is one past the last byte
       while (start > 0 && len < last_token.size()) len += escaped_length(text_[--start]);
+    // The reader's token text may begin with the separators and whitespace before the token.
+    while (start + 1 < end && std::string_view(" \t\r\n,:").find(text_[start]) != std::string_view::npos) ++start;
+    // A structural character in error is its own token.
+    if (end > 0 && position <= text_.size() && std::string_view("[]{}:,").find(text_[end - 1]) != std::string_view::npos)
+      start = end - 1;
     return fail_at(start, problem(ex, last_token));
   }
 
