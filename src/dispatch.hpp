@@ -26,8 +26,9 @@ const Verb* find_verb(const char* name);
 /// Prints the top-level help.
 void print_help(std::ostream& out);
 
-/// main(): dispatch on argv[1].  Exit status: the verb's; 2 for an unknown
-/// verb or missing arguments; 1 for an exception escaping a verb.
+/// main(): dispatch on argv[1].  Exit status: the verb's
+/// (commands/command_line.hpp); 2 for an unknown verb or missing arguments;
+/// 4 for an exception escaping a verb (internal error).
 int run(int argc, char** argv);
 
 }  // namespace sepax::cli

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <nlohmann/json.hpp>
 #include <sepax/error.hpp>
 #include <sepax/fuzz/campaign.hpp>
 #include <sepax/fuzz/cli.hpp>
@@ -22,8 +23,9 @@ namespace sepax::fuzz {
 namespace {
 
 using Q = mpq_class;
+using Json = nlohmann::ordered_json;
 
-int sgn(double x) { return (x > 0) - (x < 0); }
+Json feature_json(const Feature& f) { return Json{{"type", type_name(f.type)}, {"a", f.a}, {"b", f.b}}; }
 
 std::string g(double x) {
   char b[40];
@@ -40,8 +42,10 @@ ConvexPolyhedron<F> build(const ShapeSpec& s) {
   return ConvexPolyhedron<F>::from_faces(std::move(v), s.faces);
 }
 
+// The audit of c in F against exact mpq: the text report to `out`, and the
+// same content as JSON in `j` (AuditOptions::json chooses which is printed).
 template <class F>
-void audit_as(const FuzzCase& c, std::ostream& out) {
+void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
   const std::string fname(number_traits<F>::name);
   // Identical inputs: F polyhedra validated from the float coordinates, exact
   // images through the same plane triples.
@@ -55,7 +59,15 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
   PlainKernel<Q> ke(Ae, Be);
   std::vector<std::string> notes;
 
+  j["number"] = fname;
+  j["reference"] = "mpq";
+  j["shapes"] = Json::object();
   auto describe = [&](const char* name, const ConvexPolyhedron<F>& p) {
+    j["shapes"][name] = Json{{"vertices", p.vertex_count()},
+                             {"edges", p.edge_count()},
+                             {"faces", p.face_count()},
+                             {"flat", p.is_flat()},
+                             {"extent", double(p.extent())}};
     out << name << ": " << p.vertex_count() << " vertices, " << p.edge_count() << " edges, " << p.face_count()
         << " faces" << (p.is_flat() ? " (double-sided polygon: faces 0 and 1 are its two sides)" : "")
         << ", extent " << g(p.extent()) << "\n";
@@ -81,12 +93,22 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
   }
   out << "\nEdge pairs: the four triple products of the arc test in " << fname
       << " (value, then the exact sign in brackets; '!' marks a sign that differs,\n"
-         "'0' an exact zero), the Minkowski-face verdict in "
-      << fname << " and exact, and parallel flags.\n";
-  out << "  eA  eB |        cba        |        dba        |        adc        |        bdc        | mink "
-      << fname << "/exact | parallel " << fname << "/exact\n";
+         "'0' an exact zero), the Minkowski-face verdict and the parallel flag in "
+      << fname << "/exact ('!': they differ).\n";
+  {
+    char line[400];
+    std::snprintf(line, sizeof line, "  %3s %3s |", "eA", "eB");
+    out << line;
+    for (const char* name : {"cba", "dba", "adc", "bdc"}) {
+      std::snprintf(line, sizeof line, " %13s %4s %1s |", name, "sign", "");
+      out << line;
+    }
+    std::snprintf(line, sizeof line, " %-9s %1s | %-9s\n", "mink", "", "parallel");
+    out << line;
+  }
   int exact_zeros = 0, sign_diffs = 0, parallel_exact = 0, parallel_tol = 0, verdict_diffs = 0;
   std::set<std::pair<int, int>> zero_pairs;
+  j["edge_pairs"] = Json::array();
   for (int ea = 0; ea < A.edge_count(); ++ea) {
     for (int eb = 0; eb < B.edge_count(); ++eb) {
       const ArcSigns se = ke.arc_signs(ea, eb);
@@ -98,28 +120,42 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
                            -double(dot(A.plane(A.edge_face(ea, 1)).normal, db))};
       const int e4[4] = {se.cba, se.dba, se.adc, se.bdc};
       const int f4[4] = {sf.cba, sf.dba, sf.adc, sf.bdc};
+      static constexpr const char* kNames[4] = {"cba", "dba", "adc", "bdc"};
       char line[400];
       std::snprintf(line, sizeof line, "  %3d %3d |", ea, eb);
       out << line;
+      Json products = Json::array();
       for (int i = 0; i < 4; ++i) {
-        const char mark = f4[i] != e4[i] ? '!' : (e4[i] == 0 ? '0' : ' ');
-        std::snprintf(line, sizeof line, " %13.6g [%+d]%c|", v[i], e4[i], mark);
+        const char* mark = f4[i] != e4[i] ? "!" : (e4[i] == 0 ? "0" : "");
+        char bracket[8];
+        std::snprintf(bracket, sizeof bracket, "[%+d]", e4[i]);
+        std::snprintf(line, sizeof line, " %13.6g %4s %1s |", v[i], bracket, mark);
         out << line;
+        products.push_back(Json{{"name", kNames[i]},
+                                {"value", v[i]},
+                                {"sign", f4[i]},
+                                {"exact_sign", e4[i]},
+                                {"differs", f4[i] != e4[i]}});
         if (e4[i] == 0) {
           ++exact_zeros;
           zero_pairs.insert({ea, eb});
         }
         if (f4[i] != e4[i]) ++sign_diffs;
-        (void)sgn;
       }
       const bool pe = ke.edges_parallel(ea, eb), pf = k.edges_parallel(ea, eb);
       parallel_exact += pe;
       parallel_tol += pf && !pe;
       verdict_diffs += sf.minkowski_face() != se.minkowski_face();
-      std::snprintf(line, sizeof line, "  %3s/%-3s%s |  %3s/%-3s\n", sf.minkowski_face() ? "yes" : "no",
-                    se.minkowski_face() ? "yes" : "no", sf.minkowski_face() != se.minkowski_face() ? " !" : "  ",
-                    pf ? "yes" : "no", pe ? "yes" : "no");
+      const std::string mink = std::string(sf.minkowski_face() ? "yes" : "no") + "/" + (se.minkowski_face() ? "yes" : "no");
+      const std::string par = std::string(pf ? "yes" : "no") + "/" + (pe ? "yes" : "no");
+      std::snprintf(line, sizeof line, " %-9s %1s | %-9s%s\n", mink.c_str(),
+                    sf.minkowski_face() != se.minkowski_face() ? "!" : "", par.c_str(), pf != pe ? " !" : "");
       out << line;
+      j["edge_pairs"].push_back(Json{{"a", ea},
+                                     {"b", eb},
+                                     {"triple_products", std::move(products)},
+                                     {"minkowski_face", Json{{"value", sf.minkowski_face()}, {"exact", se.minkowski_face()}}},
+                                     {"parallel", Json{{"value", pf}, {"exact", pe}}}});
     }
   }
 
@@ -132,9 +168,16 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
     Separation<Q> se;
   };
   std::vector<Cand> cands;
+  j["axes"] = Json::array();
   auto row = [&](const std::string& name, double vf, const Separation<Q>& se, double bnd) {
     char line[300];
     const double ed = sep_d(se);
+    j["axes"].push_back(Json{{"axis", name},
+                             {"separation", vf},
+                             {"exact_separation", ed},
+                             {"difference", vf - ed},
+                             {"error_bound", bnd},
+                             {"exact_zero", sign(se) == 0}});
     std::snprintf(line, sizeof line, "  %-22s %18.10g %20.12g %17.3g %16.3g%s\n", name.c_str(), vf, ed, vf - ed, bnd,
                   sign(se) == 0 ? "  exact zero" : "");
     out << line;
@@ -181,6 +224,7 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
 
   // side axes: two flat shapes (best_axis.hpp)
   const bool flat_pair = A.is_flat() && B.is_flat();
+  j["flat_pair"] = flat_pair;
   if (flat_pair) {
     out << "  (both shapes flat: the in-plane edge normals are candidates)\n";
     auto sides = [&](bool of_a) {
@@ -206,7 +250,14 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
 
   // ---- chosen features ----
   out << "\nChosen features (maximum separation; ties broken faceA < faceB < edges < sideA < sideB by index):\n";
+  j["chosen"] = Json::array();
   auto show = [&](const std::string& cfg, const std::string& sat, bool overlap, const Feature& f, double s) {
+    j["chosen"].push_back(Json{{"config", cfg},
+                               {"sat", sat},
+                               {"overlap", overlap},
+                               {"feature", feature_json(f)},
+                               {"feature_text", to_string(f)},
+                               {"separation", s}});
     char line[300];
     std::snprintf(line, sizeof line, "  %-14s %-12s %-9s %-16s separation %.12g\n", cfg.c_str(), sat.c_str(),
                   overlap ? "overlap" : "separated", to_string(f).c_str(), s);
@@ -246,7 +297,28 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
     const ContactManifold<Q> me = contact_manifold(Ae, Be, ref, mo);
     out << "\nContact manifold (from the Gauss-map result; clip the incident face by the side planes of the "
            "reference face, keep the points below it, reduce to at most 4):\n";
+    Json jm = Json::object();
     auto show_manifold = [&](const std::string& cfg, const auto& m) {
+      Json jx{{"config", cfg}, {"kind", to_string(m.kind)}, {"points", Json::array()}};
+      if (m.kind == ContactKind::Face) {
+        Json steps = Json::array();
+        for (const auto& st : m.clip_steps)
+          steps.push_back(Json{{"side_edge", st.side_edge}, {"vertices_in", st.vertices_in}, {"vertices_out", st.vertices_out}});
+        jx["reference"] = m.reference_shape == 0 ? "A" : "B";
+        jx["reference_face"] = m.reference_face;
+        jx["incident_face"] = m.incident_face;
+        jx["incident_faces_visited"] = m.incident_faces_visited;
+        jx["clip_steps"] = std::move(steps);
+        jx["candidate_points"] = m.candidate_points;
+        jx["support_fallback"] = m.support_fallback;
+      }
+      for (const auto& pt : m.points) {
+        const Vec3<double> p = vec_to_double(pt.position);
+        jx["points"].push_back(Json{{"id", to_string(pt.id)},
+                                   {"position", Json::array({p[0], p[1], p[2]})},
+                                   {"separation", sepax::to_double(pt.separation)}});
+      }
+      jm[cfg == "mpq" ? "exact" : "value"] = std::move(jx);
       out << "  " << cfg << ": " << to_string(m.kind) << " contact, " << m.size() << " point(s)";
       if (m.kind == ContactKind::Face) {
         out << "; reference face " << m.reference_face << " of " << (m.reference_shape == 0 ? "A" : "B")
@@ -269,6 +341,11 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
     show_manifold("mpq", me);
     show_manifold(fname + "_plain", mf);
     const ManifoldDifference d = compare_manifolds(mf, me);
+    jm["comparison"] = Json{{"identical", d.identical()},
+                            {"deepest_depth_error", d.deepest_depth_error},
+                            {"max_depth_error", d.max_depth_error},
+                            {"max_position_error", d.max_position_error}};
+    j["manifold"] = std::move(jm);
     out << "  " << fname << " against exact: " << (d.identical() ? "same kind, faces, point count and ids"
                                                                    : "combinatorics differ")
         << "; deepest depth error " << g(d.deepest_depth_error) << ", max depth error " << g(d.max_depth_error)
@@ -318,93 +395,37 @@ void audit_as(const FuzzCase& c, std::ostream& out) {
                       ":" + s + (ties > 8 ? " ..." : "") + " (the tie-break picks the first in feature order)");
   }
   if (sign(ref.separation) == 0) notes.push_back("the shapes touch exactly (maximum separation is exactly 0): reported as overlap");
+  j["notes"] = notes;
   out << "\nNotes:\n";
   if (notes.empty()) out << "  nothing degenerate\n";
   for (const auto& n : notes) out << "  - " << n << "\n";
 }
 
-int print_audit_usage(const std::string& msg, const std::string& shapes_help) {
-  std::cerr << "sepax audit: " << msg << "\n"
-            << "usage: sepax audit A B [--pose tx ty tz [qw qx qy qz]] [--type float|double]\n"
-            << "       sepax audit --case FILE [--type float|double]\n"
-            << "shapes: " << shapes_help << " (the pose applies to B)\n";
-  return 2;
-}
-
 }  // namespace
 
-int audit_main(int argc, char** argv) {
-  return audit_main(argc, argv, &builtin_shape, "cube, box:HX,HY,HZ, tetra, prism:N, polygon:N, triangle");
-}
-
-int audit_main(int argc, char** argv, const ShapeLoader& load, const std::string& shapes_help) {
-  const auto audit_usage = [&](const std::string& msg) { return print_audit_usage(msg, shapes_help); };
-  std::vector<std::string> shapes_args;
-  std::string case_file, type = "float";
-  double t[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto number = [&](double& x) {
-      if (i + 1 >= argc) return false;
-      char* end = nullptr;
-      x = std::strtod(argv[i + 1], &end);
-      if (end == argv[i + 1] || *end != '\0' || !std::isfinite(x)) return false;
-      ++i;
-      return true;
-    };
-    if (a == "--pose") {
-      if (!number(t[0]) || !number(t[1]) || !number(t[2])) return audit_usage("--pose needs tx ty tz");
-      auto is_number = [](const char* s) {
-        char* end = nullptr;
-        std::strtod(s, &end);
-        return end != s && *end == '\0';
-      };
-      if (i + 1 < argc && is_number(argv[i + 1])) {
-        if (!number(q[0]) || !number(q[1]) || !number(q[2]) || !number(q[3]))
-          return audit_usage("--pose: the rotation is a quaternion qw qx qy qz (four numbers)");
-      }
-    } else if (a == "--case") {
-      if (i + 1 >= argc) return audit_usage("--case needs a file");
-      case_file = argv[++i];
-    } else if (a == "--type") {
-      if (i + 1 >= argc) return audit_usage("--type needs float or double");
-      type = argv[++i];
-      if (type != "float" && type != "double") return audit_usage("--type must be float or double");
-    } else if (a == "--help" || a == "-h") {
-      audit_usage("help");
-      return 0;
-    } else if (!a.empty() && a[0] == '-') {
-      return audit_usage("unknown option '" + a + "'");
-    } else {
-      shapes_args.push_back(a);
-    }
-  }
-  FuzzCase c;
-  try {
-    if (!case_file.empty()) {
-      if (!shapes_args.empty()) return audit_usage("give either --case FILE or two shapes, not both");
-      c = read_case_file(case_file);
-    } else {
-      if (shapes_args.size() != 2) return audit_usage("needs two shapes A and B");
-      c.a = load(shapes_args[0]);
-      c.b = posed(load(shapes_args[1]), t, q);
-      c.family = "audit";
-    }
-    if (type == "float") audit_as<float>(c, std::cout);
-    else audit_as<double>(c, std::cout);
-  } catch (const InvalidInput& e) {
-    std::cerr << "sepax audit: " << e.what() << "\n";
-    return 2;
-  }
+int run_audit(const FuzzCase& c, const AuditOptions& opt, std::ostream& out) {
+  std::ostringstream text;
+  Json j;
+  if (opt.use_double) audit_as<double>(c, text, j);
+  else audit_as<float>(c, text, j);
   const CaseReport r = check_case_guarded(c);
-  std::cout << "\nDifferential check of this case (all configurations): ";
-  if (r.unexplained_count == 0) {
-    std::cout << "no unexplained disagreement\n";
-    return 0;
+  Json findings = Json::array();
+  for (const auto& f : r.unexplained)
+    findings.push_back(Json{{"comparison", f.comparison}, {"config", f.config}, {"sat", f.sat}, {"detail", f.detail}});
+  j["check"] = Json{{"valid", r.valid}, {"unexplained", r.unexplained_count}, {"findings", std::move(findings)}};
+  if (opt.json) {
+    out << j.dump() << "\n";
+  } else {
+    out << text.str() << "\nDifferential check of this case (all configurations): ";
+    if (r.unexplained_count == 0) {
+      out << "no unexplained disagreement\n";
+    } else {
+      out << r.unexplained_count << " UNEXPLAINED disagreement(s)\n";
+      for (const auto& f : r.unexplained)
+        out << "  [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
+    }
   }
-  std::cout << r.unexplained_count << " UNEXPLAINED disagreement(s)\n";
-  for (const auto& f : r.unexplained) std::cout << "  [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
-  return 1;
+  return r.unexplained_count == 0 ? 0 : 1;
 }
 
 }  // namespace sepax::fuzz

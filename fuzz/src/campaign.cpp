@@ -1,4 +1,4 @@
-// `sepax fuzz`: the standalone campaign and corpus replay (see sepax/fuzz/cli.hpp).
+// `sepax fuzz`: the campaign and corpus replay (see sepax/fuzz/campaign.hpp).
 #include <sepax/fuzz/campaign.hpp>
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include <iterator>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
 #include <sepax/error.hpp>
 #include <sepax/fuzz/check_manifold.hpp>
 #include <sepax/fuzz/cli.hpp>
@@ -71,72 +72,61 @@ std::string write_reproducer(const std::string& dir, const FuzzCase& c, const Ca
 
 namespace {
 
-std::string jstr(const std::string& s) {
-  std::string o = "\"";
-  for (char ch : s) {
-    if (ch == '"' || ch == '\\') o += '\\', o += ch;
-    else if (static_cast<unsigned char>(ch) < 0x20) {
-      char b[8];
-      std::snprintf(b, sizeof b, "\\u%04x", ch);
-      o += b;
-    } else o += ch;
-  }
-  return o + "\"";
+// Counts as {"agree": n, "exact_zero": n, ...} in Klass order.
+nlohmann::ordered_json counts_json(const Counts& c) {
+  nlohmann::ordered_json o = nlohmann::ordered_json::object();
+  for (int k = 0; k < kKlassCount; ++k) o[klass_name(static_cast<Klass>(k))] = c.n[static_cast<std::size_t>(k)];
+  return o;
 }
 
-std::string jskips(const std::map<std::string, std::int64_t>& m) {
-  std::string o = "{";
-  for (const auto& [k, n] : m) o += (o.size() > 1 ? "," : "") + jstr(k) + ":" + std::to_string(n);
-  return o + "}";
-}
-
-std::string jcounts(const Counts& c) {
-  std::string o = "{";
-  for (int k = 0; k < kKlassCount; ++k) {
-    if (k) o += ",";
-    o += jstr(klass_name(static_cast<Klass>(k))) + ":" + std::to_string(c.n[static_cast<std::size_t>(k)]);
-  }
-  return o + "}";
+// The report's "manifold" value: {"classes", "by_config", "aspects", "max_error_over_bound"}.
+nlohmann::ordered_json manifold_json(const std::map<std::string, Counts>& comparisons,
+                                     const std::map<std::string, Counts>& by_config,
+                                     const std::map<std::string, Counts>& details,
+                                     const std::map<std::string, double>& maxima) {
+  using Json = nlohmann::ordered_json;
+  const auto it = comparisons.find("manifold");
+  Json configs = Json::object(), aspects = Json::object(), ratios = Json::object();
+  for (const auto& [k, c] : by_config)
+    if (k.rfind("manifold/", 0) == 0) configs[k.substr(9)] = counts_json(c);
+  for (const auto& [k, c] : details)
+    if (k.rfind("manifold.", 0) == 0) aspects[k.substr(9)] = counts_json(c);
+  for (const auto& [k, v] : maxima)
+    if (k.rfind("manifold.", 0) == 0) ratios[k.substr(9)] = v;
+  return Json{{"classes", counts_json(it == comparisons.end() ? Counts{} : it->second)},
+              {"by_config", std::move(configs)},
+              {"aspects", std::move(aspects)},
+              {"max_error_over_bound", std::move(ratios)}};
 }
 
 }  // namespace
 
 void print_json(std::ostream& out, const Report& r) {
-  out << "{\"cases\":" << r.cases << ",\"rejected\":" << r.rejected << ",\"seconds\":" << r.seconds
-      << ",\"cases_per_second\":" << (r.seconds > 0 ? static_cast<double>(r.cases) / r.seconds : 0.0)
-      << ",\"seed\":" << r.seed << ",\"unexplained\":" << r.unexplained()
-      << ",\"robust_policy\":" << (has_robust_policy() ? "true" : "false")
-      << ",\"traversal_sat\":" << (has_traversal_sat() ? "true" : "false") << ",\"families\":{";
-  bool first = true;
-  for (const auto& [name, f] : r.families) {
-    out << (first ? "" : ",") << jstr(name) << ":{\"cases\":" << f.cases << ",\"rejected\":" << f.rejected
-        << ",\"unexplained\":" << f.unexplained << ",\"skipped\":" << jskips(f.skipped) << "}";
-    first = false;
-  }
-  out << "},\"comparisons\":{";
-  first = true;
-  for (const auto& [name, c] : r.comparisons) {
-    out << (first ? "" : ",") << jstr(name) << ":" << jcounts(c);
-    first = false;
-  }
-  out << "},\"by_config\":{";
-  first = true;
-  for (const auto& [name, c] : r.by_config) {
-    out << (first ? "" : ",") << jstr(name) << ":" << jcounts(c);
-    first = false;
-  }
-  out << "},\"manifold\":";
-  print_manifold_json(out, r.comparisons, r.by_config, r.details, r.maxima);
-  out << ",\"skipped_total\":" << r.skipped_total() << ",\"skipped\":" << jskips(r.skipped);
-  out << ",\"reproducers\":[";
-  for (std::size_t i = 0; i < r.reproducers.size(); ++i) out << (i ? "," : "") << jstr(r.reproducers[i]);
-  out << "],\"findings\":[";
-  for (std::size_t i = 0; i < r.findings.size(); ++i) {
-    const auto& f = r.findings[i];
-    out << (i ? "," : "") << "{\"comparison\":" << jstr(f.comparison) << ",\"config\":" << jstr(f.config)
-        << ",\"sat\":" << jstr(f.sat) << ",\"detail\":" << jstr(f.detail) << "}";
-  }
-  out << "]}\n";
+  using Json = nlohmann::ordered_json;
+  Json families = Json::object(), comparisons = Json::object(), by_config = Json::object(), findings = Json::array();
+  for (const auto& [name, f] : r.families)
+    families[name] = Json{{"cases", f.cases}, {"rejected", f.rejected}, {"unexplained", f.unexplained}, {"skipped", f.skipped}};
+  for (const auto& [name, c] : r.comparisons) comparisons[name] = counts_json(c);
+  for (const auto& [name, c] : r.by_config) by_config[name] = counts_json(c);
+  for (const auto& f : r.findings)
+    findings.push_back(Json{{"comparison", f.comparison}, {"config", f.config}, {"sat", f.sat}, {"detail", f.detail}});
+  const Json j{{"cases", r.cases},
+               {"rejected", r.rejected},
+               {"seconds", r.seconds},
+               {"cases_per_second", r.seconds > 0 ? static_cast<double>(r.cases) / r.seconds : 0.0},
+               {"seed", r.seed},
+               {"unexplained", r.unexplained()},
+               {"robust_policy", has_robust_policy()},
+               {"traversal_sat", has_traversal_sat()},
+               {"families", std::move(families)},
+               {"comparisons", std::move(comparisons)},
+               {"by_config", std::move(by_config)},
+               {"manifold", manifold_json(r.comparisons, r.by_config, r.details, r.maxima)},
+               {"skipped_total", r.skipped_total()},
+               {"skipped", r.skipped},
+               {"reproducers", r.reproducers},
+               {"findings", std::move(findings)}};
+  out << j.dump() << "\n";
 }
 
 void print_text(std::ostream& out, const Report& r) {
@@ -195,91 +185,18 @@ void print_text(std::ostream& out, const Report& r) {
   }
 }
 
-namespace {
-
-int usage(const char* msg) {
-  std::cerr << "sepax fuzz: " << msg << "\n"
-            << "usage: sepax fuzz [--seconds S] [--cases N] [--seed K] [--families a,b,...] [--out DIR] [--json] [--quiet]\n"
-            << "                  [--shrink-steps N] [--shrink-seconds S] [--shrink-max N]\n"
-            << "       sepax fuzz --replay FILE_OR_DIR... [--bytes] [--json] [--shrink] [--out DIR]\n"
-            << "       (--bytes: the files are libFuzzer inputs, decoded as sepax_libfuzzer decodes them;\n"
-            << "        with --out DIR each is also written there as a readable DIR/NAME.case)\n"
-            << "families:";
-  for (const auto& f : family_names()) std::cerr << " " << f;
-  std::cerr << "\n";
-  return 2;
-}
-
-bool parse_number(const char* s, double& out) {
-  char* end = nullptr;
-  out = std::strtod(s, &end);
-  return end != s && *end == '\0' && std::isfinite(out) && out >= 0;
-}
-
-}  // namespace
-
-int fuzz_main(int argc, char** argv) {
-  double seconds = 30, max_cases = 0, seed_d = 1;
-  bool json = false, quiet = false, replay = false, shrink_replays = false, bytes = false, out_given = false;
+int run_campaign(const CampaignOptions& opt, std::ostream& out) {
+  const double seconds = opt.seconds;
+  const double max_cases = static_cast<double>(opt.cases);
+  const bool json = opt.json, quiet = opt.quiet, replay = opt.replay, shrink_replays = opt.shrink_replays,
+             bytes = opt.bytes, out_given = opt.out_given;
   // Shrinking (shrink.hpp): each unexplained finding, up to shrink_max per
   // run, is shrunk within this budget; the original reproducer is kept too.
-  ShrinkOptions shrink_opt;
-  double shrink_steps = shrink_opt.max_steps, shrink_max = 5;
-  std::string out_dir = "fuzz-reproducers";
-  std::vector<std::string> families = family_names(), files;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&](double& x) {
-      if (i + 1 >= argc || !parse_number(argv[i + 1], x)) return false;
-      ++i;
-      return true;
-    };
-    if (a == "--seconds") {
-      if (!value(seconds)) return usage("--seconds needs a non-negative number");
-    } else if (a == "--cases") {
-      if (!value(max_cases)) return usage("--cases needs a non-negative number");
-    } else if (a == "--seed") {
-      if (!value(seed_d)) return usage("--seed needs a non-negative integer");
-    } else if (a == "--families") {
-      if (i + 1 >= argc) return usage("--families needs a comma-separated list");
-      families.clear();
-      std::stringstream ss(argv[++i]);
-      for (std::string f; std::getline(ss, f, ',');) {
-        if (std::find(family_names().begin(), family_names().end(), f) == family_names().end())
-          return usage(("unknown family '" + f + "'").c_str());
-        families.push_back(f);
-      }
-      if (families.empty()) return usage("--families is empty");
-    } else if (a == "--out") {
-      if (i + 1 >= argc) return usage("--out needs a directory");
-      out_dir = argv[++i];
-      out_given = true;
-    } else if (a == "--shrink-steps") {
-      if (!value(shrink_steps)) return usage("--shrink-steps needs a non-negative integer (0: no shrinking)");
-    } else if (a == "--shrink-seconds") {
-      if (!value(shrink_opt.max_seconds)) return usage("--shrink-seconds needs a non-negative number");
-    } else if (a == "--shrink-max") {
-      if (!value(shrink_max)) return usage("--shrink-max needs a non-negative integer");
-    } else if (a == "--shrink") {
-      shrink_replays = true;
-    } else if (a == "--bytes") {
-      bytes = true;
-    } else if (a == "--json") {
-      json = true;
-    } else if (a == "--quiet") {
-      quiet = true;
-    } else if (a == "--replay") {
-      replay = true;
-    } else if (a == "--help" || a == "-h") {
-      usage("help");
-      return 0;
-    } else if (replay && !a.empty() && a[0] != '-') {
-      files.push_back(a);
-    } else {
-      return usage(("unknown argument '" + a + "'").c_str());
-    }
-  }
-  shrink_opt.max_steps = static_cast<int>(std::min(shrink_steps, 1e9));
+  const ShrinkOptions shrink_opt = opt.shrink;
+  const int shrink_max = opt.shrink_max;
+  const std::string& out_dir = opt.out_dir;
+  const std::vector<std::string> families = opt.families.empty() ? family_names() : opt.families;
+  const std::vector<std::string>& files = opt.replay_files;
   int shrunk = 0;
   // Shrink a finding (its original reproducer is `original`) and record the
   // shrunk reproducer; a failure to shrink never hides the finding.
@@ -301,12 +218,11 @@ int fuzz_main(int argc, char** argv) {
     }
   };
   Report rep;
-  rep.seed = static_cast<std::uint64_t>(seed_d);
+  rep.seed = opt.seed;
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
 
   if (replay) {
-    if (files.empty()) return usage("--replay needs at least one case file or directory");
     std::vector<std::string> paths;
     for (const auto& f : files) {
       if (std::filesystem::is_directory(f)) {
@@ -339,7 +255,7 @@ int fuzz_main(int argc, char** argv) {
         }
       } catch (const InvalidInput& e) {
         std::cerr << "sepax fuzz: " << e.what() << "\n";
-        status = 2;
+        status = 3;
         continue;
       }
       const CaseReport r = check_case_guarded(c);
@@ -355,8 +271,8 @@ int fuzz_main(int argc, char** argv) {
       }
     }
     rep.seconds = elapsed();
-    if (json) print_json(std::cout, rep);
-    else print_text(std::cout, rep);
+    if (json) print_json(out, rep);
+    else print_text(out, rep);
     return status != 0 ? status : (rep.unexplained() ? 1 : 0);
   }
 
@@ -407,8 +323,8 @@ int fuzz_main(int argc, char** argv) {
   }
   rep.seconds = elapsed();
   if (!quiet) std::fprintf(stderr, "\n");
-  if (json) print_json(std::cout, rep);
-  else print_text(std::cout, rep);
+  if (json) print_json(out, rep);
+  else print_text(out, rep);
   return rep.unexplained() ? 1 : 0;
 }
 

@@ -912,15 +912,6 @@ void counts_line(std::ostream& out, const std::string& name, const Counts& c) {
   out << line;
 }
 
-std::string jcounts(const Counts& c) {
-  std::string o = "{";
-  for (int k = 0; k < kKlassCount; ++k) {
-    if (k) o += ",";
-    o += std::string("\"") + klass_name(static_cast<Klass>(k)) + "\":" + std::to_string(c.n[static_cast<std::size_t>(k)]);
-  }
-  return o + "}";
-}
-
 }  // namespace
 
 void check_manifolds(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
@@ -966,36 +957,6 @@ void print_manifold_text(std::ostream& out, const std::map<std::string, Counts>&
       std::snprintf(line, sizeof line, "  largest %s error / bound: %.3g\n", k.c_str() + 9, v);
       out << line;
     }
-}
-
-void print_manifold_json(std::ostream& out, const std::map<std::string, Counts>& comparisons,
-                         const std::map<std::string, Counts>& by_config, const std::map<std::string, Counts>& details,
-                         const std::map<std::string, double>& maxima) {
-  const auto it = comparisons.find("manifold");
-  out << "{\"classes\":" << jcounts(it == comparisons.end() ? Counts{} : it->second) << ",\"by_config\":{";
-  bool first = true;
-  for (const auto& [k, c] : by_config)
-    if (k.rfind("manifold/", 0) == 0) {
-      out << (first ? "" : ",") << "\"" << k.substr(9) << "\":" << jcounts(c);
-      first = false;
-    }
-  out << "},\"aspects\":{";
-  first = true;
-  for (const auto& [k, c] : details)
-    if (k.rfind("manifold.", 0) == 0) {
-      out << (first ? "" : ",") << "\"" << k.substr(9) << "\":" << jcounts(c);
-      first = false;
-    }
-  out << "},\"max_error_over_bound\":{";
-  first = true;
-  for (const auto& [k, v] : maxima)
-    if (k.rfind("manifold.", 0) == 0) {
-      char b[40];
-      std::snprintf(b, sizeof b, "%.6g", v);
-      out << (first ? "" : ",") << "\"" << k.substr(9) << "\":" << b;
-      first = false;
-    }
-  out << "}}";
 }
 
 }  // namespace sepax::fuzz

@@ -1,12 +1,18 @@
-// sepax_fuzz: the fuzzer's own driver, for builds without the sepax CLI.
-//   sepax_fuzz [fuzz] [options]      == sepax fuzz [options]
-//   sepax_fuzz audit ...             == sepax audit ...
+// sepax_fuzz: the sepax program with `fuzz` as the default verb.
+//   sepax_fuzz [options]             == sepax fuzz [options]
+//   sepax_fuzz fuzz|audit ...        == sepax fuzz|audit ...
 #include <cstring>
+#include <vector>
 
-#include <sepax/fuzz/cli.hpp>
+#include "dispatch.hpp"
 
 int main(int argc, char** argv) {
-  if (argc >= 2 && std::strcmp(argv[1], "audit") == 0) return sepax::fuzz::audit_main(argc - 1, argv + 1);
-  if (argc >= 2 && std::strcmp(argv[1], "fuzz") == 0) return sepax::fuzz::fuzz_main(argc - 1, argv + 1);
-  return sepax::fuzz::fuzz_main(argc, argv);
+  if (argc >= 2 && (std::strcmp(argv[1], "fuzz") == 0 || std::strcmp(argv[1], "audit") == 0 ||
+                    std::strcmp(argv[1], "help") == 0 || std::strcmp(argv[1], "--version") == 0))
+    return sepax::cli::run(argc, argv);
+  char verb[] = "fuzz";
+  std::vector<char*> args{argv[0], verb};
+  for (int i = 1; i < argc; ++i) args.push_back(argv[i]);
+  args.push_back(nullptr);
+  return sepax::cli::run(argc + 1, args.data());
 }

@@ -1,302 +1,216 @@
 // src/commands/query_command.cpp -- see query_command.hpp.
 #include "commands/query_command.hpp"
 
-#include <charconv>
-#include <cmath>
 #include <exception>
 #include <fstream>
 #include <iostream>
 #include <optional>
-#include <stdexcept>
 
 #include <sepax/error.hpp>
 
 #include "commands/batch.hpp"
+#include "commands/command_line.hpp"
 #include "commands/query_output.hpp"
 #include "commands/render_command.hpp"
 #include "commands/sat_runner.hpp"
+#include "commands/shape_pair.hpp"
 #include "io/open_file.hpp"
 #include "io/shape_source.hpp"
 
 namespace sepax::cli {
 
-const char* const query_usage =
-    "usage: sepax query A B [options]\n"
-    "       sepax query --batch FILE|- [options]\n"
-    "\n"
-    "Separating axis test of two convex shapes A and B.\n"
-    "\n"
-    "options:\n"
-    "  --pose tx ty tz [qw qx qy qz]   move B: rotate by the quaternion (normalised;\n"
-    "                                  default identity), then translate\n"
-    "  --number float|double|exact     arithmetic (default double; exact = GMP rationals)\n"
-    "  --algorithm brute|gauss|traversal   SAT algorithm (default gauss)\n"
-    "  --robust                        float/double with every decision made exactly\n"
-    "  --json                          print one JSON object\n"
-    "  --batch FILE|-                  JSON lines in (FILE or stdin), JSON lines out\n"
-    "\n"
-    "shapes:\n";
-
-const char* const render_usage =
-    "usage: sepax render A B --svg FILE|- [--pose ...] [--algorithm brute|gauss|traversal] [--robust]\n"
-    "\n"
-    "Draw A, B (B moved by --pose), their contact manifold and the overlaid Gauss maps of\n"
-    "A and -B (arcs, Minkowski edge-edge faces, the chosen axis) as an SVG picture.\n"
-    "The case is computed in double (robust policy with --robust).\n"
-    "\n"
-    "shapes:\n";
-
-const char* const info_usage =
-    "usage: sepax info SHAPE [--number float|double|exact] [--pose ...] [--json]\n"
-    "\n"
-    "Build SHAPE as sepax would for a query and print its size.\n";
-
 namespace {
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+constexpr const char* kExitText =
+    "\nExit status: 0 success, 1 a batch line answered with an error, 2 usage error,\n"
+    "3 an input that cannot be read, parsed or built, 4 internal error.\n";
 
-std::optional<double> as_number(const std::string& s) {
-  std::string_view t = s;
-  if (!t.empty() && t[0] == '+') t.remove_prefix(1);
-  double v = 0;
-  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (t.empty() || t[0] == '+' || r.ec != std::errc() || r.ptr != t.data() + t.size()) return std::nullopt;
-  return v;
+std::string shapes_footer(const char* extra = "") {
+  return std::string("shapes (A, B, SHAPE):\n") + io::builtin_shapes_help() +
+         "FILE.case as the only argument: a fuzzer reproducer (A and B, B placed by the case)\n" + extra + kExitText;
 }
 
-struct Options {
-  std::vector<std::string> positional;
-  std::optional<Pose> pose;
-  RunConfig cfg;
-  bool json = false;
-  bool help = false;
-  std::optional<std::string> batch;
-  std::optional<std::string> svg;
-};
+const char* const kPoseHelp = "move B: rotate by the quaternion (normalised; default identity), then translate";
 
-Options parse_options(const std::vector<std::string>& args, bool allow_batch, bool allow_svg = false) {
-  Options o;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string a = args[i];
-    std::optional<std::string> inline_value;
-    if (a.starts_with("--") && a.find('=') != std::string::npos) {
-      inline_value = a.substr(a.find('=') + 1);
-      a = a.substr(0, a.find('='));
-    }
-    const auto value = [&](const char* what) -> std::string {
-      if (inline_value) return *inline_value;
-      if (i + 1 >= args.size()) throw UsageError(a + " needs " + what);
-      return args[++i];
-    };
-    if (a == "-h" || a == "--help") {
-      o.help = true;
-    } else if (a == "--json") {
-      o.json = true;
-    } else if (a == "--robust") {
-      o.cfg.robust = true;
-    } else if (a == "--number") {
-      const std::string v = value("a value: float, double or exact");
-      const auto k = parse_number_kind(v);
-      if (!k) throw UsageError("--number: unknown number type '" + v + "' (float, double or exact)");
-      o.cfg.number = *k;
-    } else if (a == "--algorithm") {
-      const std::string v = value("a value: brute, gauss or traversal");
-      const auto k = parse_algorithm_kind(v);
-      if (!k) throw UsageError("--algorithm: unknown algorithm '" + v + "' (brute, gauss or traversal)");
-      o.cfg.algorithm = *k;
-    } else if (a == "--svg" && allow_svg) {
-      o.svg = value("a file name (or - for standard output)");
-    } else if (a == "--batch" && allow_batch) {
-      o.batch = value("a file name (or - for standard input)");
-    } else if (a == "--pose") {
-      if (inline_value) throw UsageError("--pose takes 3 or 7 separate numbers: --pose tx ty tz [qw qx qy qz]");
-      double v[7];
-      for (int k = 0; k < 3; ++k) {
-        if (i + 1 >= args.size()) throw UsageError("--pose needs 3 numbers (tx ty tz), optionally followed by 4 (qw qx qy qz)");
-        const auto x = as_number(args[++i]);
-        if (!x) throw UsageError("--pose: '" + args[i] + "' is not a number");
-        v[k] = *x;
-      }
-      int n = 3;
-      if (i + 1 < args.size() && as_number(args[i + 1])) {
-        for (int k = 3; k < 7; ++k) {
-          if (i + 1 >= args.size() || !as_number(args[i + 1])) {
-            throw UsageError("--pose: a rotation needs 4 numbers (qw qx qy qz) after the translation");
-          }
-          v[k] = *as_number(args[++i]);
-        }
-        n = 7;
-      }
-      try {
-        o.pose = n == 7 ? Pose::make(Vec3<double>(v[0], v[1], v[2]), {v[3], v[4], v[5], v[6]})
-                        : Pose::make(Vec3<double>(v[0], v[1], v[2]));
-      } catch (const InvalidInput& e) {
-        throw UsageError(e.what());
-      }
-    } else if (a.size() > 1 && a[0] == '-' && !as_number(a)) {
-      throw UsageError("unknown option '" + args[i] + "'");
-    } else {
-      o.positional.push_back(args[i]);
-    }
-  }
-  return o;
+int input_error(std::ostream& out, std::ostream& err, bool json, const std::string& verb, const std::string& what) {
+  err << "sepax " << verb << ": error: " << what << "\n";
+  if (json) out << json::write(json::Value{{"error", what}}) << "\n";
+  return kExitInput;
 }
 
-int usage_error(std::ostream& err, const char* verb, const std::string& what) {
-  err << "sepax " << verb << ": " << what << "\n(run 'sepax " << verb << " --help' for usage)\n";
-  return 2;
-}
-
-int input_error(std::ostream& out, std::ostream& err, bool json, const std::string& what) {
-  err << "sepax: error: " << what << "\n";
-  if (json) out << json::write(json::Value(json::Object{{"error", what}})) << "\n";
-  return 1;
-}
-
-int batch(const Options& o, std::istream& in, std::ostream& out, std::ostream& err) {
-  if (!o.positional.empty()) return usage_error(err, "query", "--batch takes no shape arguments");
-  if (o.pose) return usage_error(err, "query", "--pose cannot be used with --batch (points are in one world frame)");
-  if (const std::string why = unsupported_reason(o.cfg); !why.empty()) return usage_error(err, "query", why);
+int batch(const CommandLine& cl, const std::string& file, const BatchOptions& opt, std::istream& in,
+          std::ostream& out, std::ostream& err) {
   BatchSummary s;
-  if (*o.batch == "-") {
-    s = run_batch(in, out, o.cfg);
+  if (file == "-") {
+    s = run_batch(in, out, opt);
   } else {
-    std::ifstream file;
+    std::ifstream f;
     try {
-      file = io::open_input(*o.batch);
-    } catch (const std::exception& e) {
-      err << "sepax: error: " << e.what() << "\n";
-      return 2;
+      f = io::open_input(file);
+    } catch (const InvalidInput& e) {
+      err << "sepax " << cl.verb() << ": error: " << e.what() << "\n";
+      return kExitInput;
     }
-    s = run_batch(file, out, o.cfg);
-    if (file.bad()) {
-      err << "sepax: error: " << *o.batch << ": read error\n";
-      return 2;
+    s = run_batch(f, out, opt);
+    if (f.bad()) {
+      err << "sepax " << cl.verb() << ": error: " << file << ": read error\n";
+      return kExitInput;
     }
   }
   if (s.errors > 0) {
     err << "sepax query --batch: " << s.errors << " of " << s.queries << " queries failed\n";
-    return 1;
+    return kExitFinding;
   }
-  return 0;
+  return kExitOk;
 }
 
 }  // namespace
 
 int run_query(const std::vector<std::string>& args, std::istream& in, std::ostream& out, std::ostream& err) {
-  Options o;
+  std::vector<std::string> shapes;
+  RunConfig cfg;
+  bool json = false, hull = false, manifold = true;
+  std::string batch_file;
+  int jobs = 0;
+  CommandLine cl("query", "Separating axis test of two convex shapes A and B, or of a batch of JSON lines.",
+                 shapes_footer(
+                     "\n--batch: one JSON object per line, {\"id\": ID, \"a\": [[x,y,z], ...], \"b\": [...]} "
+                     "(point sets, hulled);\none JSON object per line out, in input order, with the contact "
+                     "manifold unless --no-manifold.\n"));
+  auto& app = cl.app;
+  app.add_option("shapes", shapes, "A B, or one FILE.case")->type_name("");
+  cl.add_pose(kPoseHelp);
+  cl.add_number(cfg);
+  cl.add_algorithm(cfg);
+  cl.add_robust(cfg);
+  app.add_flag("--hull", hull, "use the convex hull of each shape file's vertices");
+  app.add_flag("--json", json, "print one JSON object");
+  app.add_option("--batch", batch_file, "JSON lines in (FILE, or - for standard input), JSON lines out")
+      ->type_name("FILE|-");
+  cl.describe_value("--batch", "a file name (or - for standard input)");
+  app.add_flag("--manifold,!--no-manifold", manifold,
+               "with --batch: the contact manifold in every answer (default on)");
+  cl.add_unsigned("--jobs", jobs, "with --batch: threads answering lines (default 0: all cores; same output)");
+  if (const auto status = cl.parse(args, out, err)) return *status;
   try {
-    o = parse_options(args, /*allow_batch=*/true);
-  } catch (const UsageError& e) {
-    return usage_error(err, "query", e.what());
-  }
-  if (o.help) {
-    out << query_usage << io::builtin_shapes_help();
-    return 0;
-  }
-  if (o.batch) return batch(o, in, out, err);
-  if (o.positional.size() != 2) {
-    return usage_error(err, "query", "expected two shapes A and B, got " + std::to_string(o.positional.size()));
-  }
-  if (const std::string why = unsupported_reason(o.cfg); !why.empty()) return usage_error(err, "query", why);
-  try {
-    const io::ShapeData a = io::load_shape(o.positional[0]);
-    const io::ShapeData b = io::load_shape(o.positional[1]);
-    const RunOutcome r = run_sat(a, b, o.pose ? &*o.pose : nullptr, o.cfg);
-    if (o.json) {
-      out << json::write(query_json(r, o.cfg)) << "\n";
-    } else {
-      print_query_text(out, r, o.cfg, a.name, b.name);
+    const std::optional<Pose> pose = cl.pose();
+    if (const std::string why = unsupported_reason(cfg); !why.empty()) throw UsageError(why);
+    if (app.count("--batch")) {
+      if (!shapes.empty()) throw UsageError("--batch takes no shape arguments");
+      if (pose) throw UsageError("--pose cannot be used with --batch (points are in one world frame)");
+      if (json) throw UsageError("--json is implied by --batch (JSON lines out)");
+      if (hull) throw UsageError("--hull is implied by --batch (every point set is hulled)");
+      BatchOptions opt;
+      opt.cfg = cfg;
+      opt.manifold = manifold;
+      opt.jobs = jobs;
+      return batch(cl, batch_file, opt, in, out, err);
     }
-    return 0;
-  } catch (const std::bad_alloc&) {
-    return input_error(out, err, o.json, "out of memory");
-  } catch (const std::exception& e) {
-    return input_error(out, err, o.json, e.what());
+    for (const char* only : {"--manifold", "--no-manifold", "--jobs"})
+      if (app.count(only)) throw UsageError(std::string(only) + " applies to --batch only");
+    ShapePair p;
+    try {
+      p = load_pair(shapes, hull);
+      if (pose && p.from_case) throw UsageError("--pose cannot be used with a .case file (the case places B)");
+      const RunOutcome r = run_sat(p.a, p.b, pose ? &*pose : nullptr, cfg);
+      if (json) out << json::write(query_json(r, cfg)) << "\n";
+      else print_query_text(out, r, cfg, p.a.name, p.b.name);
+      return kExitOk;
+    } catch (const InvalidInput& e) {
+      return input_error(out, err, json, "query", e.what());
+    }
+  } catch (const UsageError& e) {
+    return cl.usage_error(err, e.what());
   }
 }
 
 int run_info(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  Options o;
+  std::vector<std::string> shapes;
+  RunConfig cfg;
+  bool json = false, hull = false;
+  CommandLine cl("info", "Build SHAPE as sepax would for a query and print its vertex, edge and face counts.",
+                 shapes_footer());
+  auto& app = cl.app;
+  app.add_option("shape", shapes, "the shape")->type_name("SHAPE");
+  cl.add_pose("move the shape: rotate by the quaternion (normalised; default identity), then translate");
+  cl.add_number(cfg);
+  app.add_flag("--hull", hull, "use the convex hull of the shape file's vertices");
+  app.add_flag("--json", json, "print one JSON object");
+  if (const auto status = cl.parse(args, out, err)) return *status;
   try {
-    o = parse_options(args, /*allow_batch=*/false);
-  } catch (const UsageError& e) {
-    return usage_error(err, "info", e.what());
-  }
-  if (o.help) {
-    out << info_usage << "\nshapes:\n" << io::builtin_shapes_help();
-    return 0;
-  }
-  if (o.positional.size() != 1) {
-    return usage_error(err, "info", "expected one shape, got " + std::to_string(o.positional.size()));
-  }
-  if (o.cfg.robust) return usage_error(err, "info", "--robust does not apply to info");
-  try {
-    const io::ShapeData s = io::load_shape(o.positional[0]);
-    const ShapeCounts c = shape_counts(s, o.cfg.number, o.pose ? &*o.pose : nullptr);
-    if (o.json) {
-      out << json::write(json::Value(json::Object{{"shape", s.name},
-                                                  {"number", name(o.cfg.number)},
-                                                  {"vertices", c.vertices},
-                                                  {"edges", c.edges},
-                                                  {"faces", c.faces},
-                                                  {"flat", c.flat}}))
-          << "\n";
-    } else {
-      out << s.name << ": " << c.vertices << " vertices, " << c.edges << " edges, " << c.faces << " faces"
-          << (c.flat ? " (flat: a double-sided polygon)" : "") << " [" << name(o.cfg.number) << "]\n";
+    const std::optional<Pose> pose = cl.pose();
+    if (shapes.size() != 1) throw UsageError("expected one shape, got " + std::to_string(shapes.size()));
+    try {
+      const io::ShapeData s = io::load_shape(shape_argument(shapes[0], hull));
+      const ShapeCounts c = shape_counts(s, cfg.number, pose ? &*pose : nullptr);
+      if (json) {
+        out << json::write(json::Value{{"shape", s.name},
+                                       {"number", name(cfg.number)},
+                                       {"vertices", c.vertices},
+                                       {"edges", c.edges},
+                                       {"faces", c.faces},
+                                       {"flat", c.flat}})
+            << "\n";
+      } else {
+        out << s.name << ": " << c.vertices << " vertices, " << c.edges << " edges, " << c.faces << " faces"
+            << (c.flat ? " (flat: a double-sided polygon)" : "") << " [" << name(cfg.number) << "]\n";
+      }
+      return kExitOk;
+    } catch (const InvalidInput& e) {
+      return input_error(out, err, json, "info", e.what());
     }
-    return 0;
-  } catch (const std::exception& e) {
-    return input_error(out, err, o.json, e.what());
+  } catch (const UsageError& e) {
+    return cl.usage_error(err, e.what());
   }
 }
 
 int run_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  Options o;
+  std::vector<std::string> shapes;
+  RunConfig cfg;
+  bool hull = false;
+  std::string svg;
+  CommandLine cl("render",
+                 "Draw A, B (B moved by --pose), their contact manifold and the overlaid Gauss maps of A and -B "
+                 "(arcs, Minkowski edge-edge faces, the chosen axis) as an SVG picture.  The case is computed in "
+                 "double (robust policy with --robust), so its feature indices match "
+                 "`sepax query --number double`.",
+                 shapes_footer());
+  auto& app = cl.app;
+  app.add_option("shapes", shapes, "A B, or one FILE.case")->type_name("");
+  app.add_option("--svg", svg, "write the picture to FILE (- for standard output); required")->type_name("FILE|-");
+  cl.describe_value("--svg", "a file name (or - for standard output)");
+  cl.add_pose(kPoseHelp);
+  cl.add_algorithm(cfg);
+  cl.add_robust(cfg);
+  app.add_flag("--hull", hull, "use the convex hull of each shape file's vertices");
+  if (const auto status = cl.parse(args, out, err)) return *status;
   try {
-    o = parse_options(args, /*allow_batch=*/false, /*allow_svg=*/true);
-  } catch (const UsageError& e) {
-    return usage_error(err, "render", e.what());
-  }
-  if (o.help) {
-    out << render_usage << io::builtin_shapes_help();
-    return 0;
-  }
-  if (o.positional.size() != 2) {
-    return usage_error(err, "render", "expected two shapes A and B, got " + std::to_string(o.positional.size()));
-  }
-  if (!o.svg) return usage_error(err, "render", "--svg FILE is required (- for standard output)");
-  if (o.json) return usage_error(err, "render", "--json does not apply to render");
-  try {
-    const io::ShapeData a = io::load_shape(o.positional[0]);
-    const io::ShapeData b = io::load_shape(o.positional[1]);
-    const std::string svg = render_case_svg(a, b, o.pose ? &*o.pose : nullptr, o.cfg, a.name + "  vs  " + b.name);
-    if (*o.svg == "-") {
-      out << svg;
-    } else {
-      std::ofstream f(*o.svg, std::ios::binary);
-      if (!(f << svg) || !f.flush()) return input_error(out, err, false, "cannot write " + *o.svg);
-      err << "sepax render: wrote " << *o.svg << "\n";
+    const std::optional<Pose> pose = cl.pose();
+    if (const std::string why = unsupported_reason(cfg); !why.empty()) throw UsageError(why);
+    if (!app.count("--svg")) throw UsageError("--svg FILE is required (- for standard output)");
+    try {
+      const ShapePair p = load_pair(shapes, hull);
+      if (pose && p.from_case) throw UsageError("--pose cannot be used with a .case file (the case places B)");
+      const std::string picture =
+          render_case_svg(p.a, p.b, pose ? &*pose : nullptr, cfg, p.a.name + "  vs  " + p.b.name);
+      if (svg == "-") {
+        out << picture;
+      } else {
+        std::ofstream f(svg, std::ios::binary);
+        if (!(f << picture) || !f.flush()) return input_error(out, err, false, "render", "cannot write " + svg);
+        err << "sepax render: wrote " << svg << "\n";
+      }
+      return kExitOk;
+    } catch (const InvalidInput& e) {
+      return input_error(out, err, false, "render", e.what());
     }
-    return 0;
-  } catch (const std::exception& e) {
-    return input_error(out, err, false, e.what());
+  } catch (const UsageError& e) {
+    return cl.usage_error(err, e.what());
   }
 }
 
-namespace {
-std::vector<std::string> rest(int argc, char** argv) {
-  std::vector<std::string> v;
-  for (int i = 1; i < argc; ++i) v.emplace_back(argv[i]);
-  return v;
-}
-}  // namespace
-
-int query_main(int argc, char** argv) { return run_query(rest(argc, argv), std::cin, std::cout, std::cerr); }
-int info_main(int argc, char** argv) { return run_info(rest(argc, argv), std::cout, std::cerr); }
-int render_main(int argc, char** argv) { return run_render(rest(argc, argv), std::cout, std::cerr); }
+int query_main(int argc, char** argv) { return run_query(arguments(argc, argv), std::cin, std::cout, std::cerr); }
+int info_main(int argc, char** argv) { return run_info(arguments(argc, argv), std::cout, std::cerr); }
+int render_main(int argc, char** argv) { return run_render(arguments(argc, argv), std::cout, std::cerr); }
 
 }  // namespace sepax::cli

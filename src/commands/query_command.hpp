@@ -1,14 +1,18 @@
 // src/commands/query_command.hpp
 //
-// The `query` and `info` verbs of the sepax program.
+// The `query`, `info` and `render` verbs of the sepax program.
 //
 //   sepax query A B [--pose tx ty tz [qw qx qy qz]] [--number float|double|exact]
-//                   [--algorithm brute|gauss|traversal] [--robust] [--json]
+//                   [--algorithm brute|gauss|traversal] [--robust] [--hull] [--json]
+//   sepax query FILE.case [--number ...] [--algorithm ...] [--robust] [--hull] [--json]
 //   sepax query --batch FILE|- [--number ...] [--algorithm ...] [--robust]
-//   sepax info SHAPE [--number ...] [--pose ...] [--json]
+//                   [--no-manifold] [--jobs N]
+//   sepax info SHAPE [--number ...] [--pose ...] [--hull] [--json]
+//   sepax render A B|FILE.case --svg FILE|- [--pose ...] [--algorithm ...] [--robust] [--hull]
 //
-// Exit status: 0 success; 1 bad input (a shape that cannot be read or built;
-// in batch mode: at least one line answered with an error); 2 usage error.
+// Exit status (command_line.hpp): 0 success; 1 in batch mode, at least one
+// line answered with an error; 2 usage error; 3 an input that cannot be read,
+// parsed or built (or an SVG file that cannot be written).
 #pragma once
 
 #include <istream>
@@ -27,9 +31,5 @@ int run_render(const std::vector<std::string>& args, std::ostream& out, std::ost
 int query_main(int argc, char** argv);
 int info_main(int argc, char** argv);
 int render_main(int argc, char** argv);
-
-extern const char* const query_usage;
-extern const char* const info_usage;
-extern const char* const render_usage;
 
 }  // namespace sepax::cli

@@ -5,20 +5,20 @@
 
 namespace sepax::cli {
 
-json::Value feature_json(const Feature& f) {
-  return json::Value(json::Object{{"type", type_name(f.type)}, {"a", f.a}, {"b", f.b}});
-}
+json::Value feature_json(const Feature& f) { return json::Value{{"type", type_name(f.type)}, {"a", f.a}, {"b", f.b}}; }
 
-json::Value vector_json(const Vec3<double>& v) { return json::Value(json::Array{v[0], v[1], v[2]}); }
+json::Value vector_json(const Vec3<double>& v) {
+  return json::Value::array({json::number(v[0]), json::number(v[1]), json::number(v[2])});
+}
 
 namespace {
 
 json::Value stats_json(const SatStats& s) {
-  return json::Value(json::Object{{"face_axes", static_cast<long long>(s.face_axes)},
-                                  {"edge_pairs", static_cast<long long>(s.edge_pairs)},
-                                  {"minkowski_faces", static_cast<long long>(s.minkowski_faces)},
-                                  {"side_axes", static_cast<long long>(s.side_axes)},
-                                  {"exact_fallbacks", static_cast<long long>(s.exact_fallbacks)}});
+  return json::Value{{"face_axes", static_cast<long long>(s.face_axes)},
+                     {"edge_pairs", static_cast<long long>(s.edge_pairs)},
+                     {"minkowski_faces", static_cast<long long>(s.minkowski_faces)},
+                     {"side_axes", static_cast<long long>(s.side_axes)},
+                     {"exact_fallbacks", static_cast<long long>(s.exact_fallbacks)}};
 }
 
 std::string counts_text(const ShapeCounts& c) {
@@ -40,44 +40,45 @@ std::string feature_text(const Feature& f) {
   return "?";
 }
 
-json::Value manifold_json(const ManifoldOut& m) {
-  json::Array points;
-  for (const auto& p : m.points) {
-    points.push_back(json::Value(
-        json::Object{{"position", vector_json(p.position)}, {"separation", p.separation}, {"id", p.id}}));
-  }
-  json::Object o{{"kind", m.kind}};
-  if (m.kind == "face") {
-    o.emplace_back("reference", m.reference_shape == 0 ? "A" : "B");
-    o.emplace_back("reference_face", m.reference_face);
-    o.emplace_back("incident_face", m.incident_face);
-  } else if (m.kind == "side") {
-    o.emplace_back("reference", m.reference_shape == 0 ? "A" : "B");
-  }
-  o.emplace_back("points", json::Value(std::move(points)));
-  return json::Value(std::move(o));
-}
-
 }  // namespace
 
-json::Value query_json(const RunOutcome& r, const RunConfig& cfg) {
-  return json::Value(json::Object{{"overlap", r.overlap},
-                                  {"separation", r.separation},
-                                  {"feature", feature_json(r.feature)},
-                                  {"normal", vector_json(r.normal)},
-                                  {"number", name(cfg.number)},
-                                  {"algorithm", name(cfg.algorithm)},
-                                  {"policy", cfg.robust ? "robust" : "plain"},
-                                  {"stats", stats_json(r.stats)},
-                                  {"manifold", manifold_json(r.manifold)}});
+json::Value manifold_json(const ManifoldOut& m) {
+  json::Value points = json::Value::array();
+  for (const auto& p : m.points) {
+    points.push_back(
+        json::Value{{"position", vector_json(p.position)}, {"separation", json::number(p.separation)}, {"id", p.id}});
+  }
+  json::Value o{{"kind", m.kind}};
+  if (m.kind == "face") {
+    o["reference"] = m.reference_shape == 0 ? "A" : "B";
+    o["reference_face"] = m.reference_face;
+    o["incident_face"] = m.incident_face;
+  } else if (m.kind == "side") {
+    o["reference"] = m.reference_shape == 0 ? "A" : "B";
+  }
+  o["points"] = std::move(points);
+  return o;
 }
 
-json::Value batch_result_json(const json::Value& id, const RunOutcome& r) {
-  return json::Value(json::Object{{"id", id},
-                                  {"overlap", r.overlap},
-                                  {"separation", r.separation},
-                                  {"feature", feature_json(r.feature)},
-                                  {"normal", vector_json(r.normal)}});
+json::Value query_json(const RunOutcome& r, const RunConfig& cfg) {
+  return json::Value{{"overlap", r.overlap},
+                     {"separation", json::number(r.separation)},
+                     {"feature", feature_json(r.feature)},
+                     {"normal", vector_json(r.normal)},
+                     {"number", name(cfg.number)},
+                     {"algorithm", name(cfg.algorithm)},
+                     {"policy", cfg.robust ? "robust" : "plain"},
+                     {"stats", stats_json(r.stats)},
+                     {"manifold", manifold_json(r.manifold)}};
+}
+
+json::Value batch_result_json(const RunOutcome& r, bool with_manifold) {
+  json::Value o{{"overlap", r.overlap},
+                {"separation", json::number(r.separation)},
+                {"feature", feature_json(r.feature)},
+                {"normal", vector_json(r.normal)}};
+  if (with_manifold) o["manifold"] = manifold_json(r.manifold);
+  return o;
 }
 
 void print_query_text(std::ostream& out, const RunOutcome& r, const RunConfig& cfg, const std::string& name_a,

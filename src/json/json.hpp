@@ -1,81 +1,34 @@
 // src/json/json.hpp
 //
-// A small, strict JSON reader and writer for the command-line program (batch
-// queries, --json output).  No dependencies beyond the standard library.
+// JSON for the command-line program (batch queries, --json output), on
+// nlohmann-json (Debian nlohmann-json3-dev).  Values are
+// nlohmann::ordered_json: objects keep their keys in insertion order, so
+// output keys come in the documented order.
 //
-// Reader (RFC 8259):
-//   * values: objects, arrays, strings, numbers, true, false, null;
-//   * strings: the escapes \" \\ \/ \b \f \n \r \t \uXXXX (UTF-16 surrogate
-//     pairs combined; a lone surrogate is an error), raw control characters
-//     are rejected, and the raw bytes must be valid UTF-8;
-//   * numbers: the JSON grammar exactly (no leading '+', no leading zeros, no
-//     "NaN"/"Infinity", no hex); the value is the nearest double, and the text
-//     as written is kept so that an id can be echoed unchanged.  A number
-//     outside the double range is an error;
-//   * nesting deeper than ParseOptions::max_depth is an error (no stack
-//     exhaustion on hostile input); duplicate object keys are an error;
+// Reading (parse) is nlohmann's strict RFC 8259 reader (UTF-8 checked, lone
+// surrogates, raw control characters, leading zeros, NaN/Infinity and numbers
+// outside the double range rejected), plus what the batch format needs:
+//   * duplicate object keys are an error;
+//   * nesting deeper than ParseOptions::max_depth is an error;
 //   * errors are ParseError, whose what() reads "line L, column C: <problem>"
-//     (column counted in bytes from 1).
-// Writer: compact output; strings escaped (control characters as \u00XX);
-// numbers in the shortest form that reads back as the same double (non-finite
-// doubles, which JSON cannot express, are written as null).
+//     (C counted in bytes from 1: the first byte of the token in error);
+//   * the text of each number that is a member of the top-level object is
+//     kept as written (Document::number_text), so an id is echoed unchanged.
+// Writing (write) is compact nlohmann output; number(d) makes the JSON number
+// for a double in its shortest form ("1", "0.5", "1e+300"; non-finite as null).
 #pragma once
 
 #include <cstddef>
-#include <ostream>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <utility>
-#include <variant>
-#include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace sepax::cli::json {
 
-struct Value;
-using Array = std::vector<Value>;
-using Object = std::vector<std::pair<std::string, Value>>;  // in input order
-
-struct Number {
-  double value = 0;
-  std::string text;  // the lexeme as read; empty for numbers made in code
-};
-
-struct Value {
-  std::variant<std::nullptr_t, bool, Number, std::string, Array, Object> data;
-
-  Value() : data(nullptr) {}
-  Value(std::nullptr_t) : data(nullptr) {}
-  Value(bool b) : data(b) {}
-  Value(double d) : data(Number{d, {}}) {}
-  Value(int i) : data(Number{static_cast<double>(i), std::to_string(i)}) {}
-  Value(long long i) : data(Number{static_cast<double>(i), std::to_string(i)}) {}
-  Value(Number n) : data(std::move(n)) {}
-  Value(std::string s) : data(std::move(s)) {}
-  Value(const char* s) : data(std::string(s)) {}
-  Value(Array a) : data(std::move(a)) {}
-  Value(Object o) : data(std::move(o)) {}
-
-  bool is_null() const { return std::holds_alternative<std::nullptr_t>(data); }
-  bool is_bool() const { return std::holds_alternative<bool>(data); }
-  bool is_number() const { return std::holds_alternative<Number>(data); }
-  bool is_string() const { return std::holds_alternative<std::string>(data); }
-  bool is_array() const { return std::holds_alternative<Array>(data); }
-  bool is_object() const { return std::holds_alternative<Object>(data); }
-
-  bool as_bool() const { return std::get<bool>(data); }
-  double as_double() const { return std::get<Number>(data).value; }
-  const Number& as_number() const { return std::get<Number>(data); }
-  const std::string& as_string() const { return std::get<std::string>(data); }
-  const Array& as_array() const { return std::get<Array>(data); }
-  const Object& as_object() const { return std::get<Object>(data); }
-
-  /// The member named key of an object, or nullptr (also when not an object).
-  const Value* find(std::string_view key) const;
-};
-
-/// "null", "boolean", "number", "string", "array" or "object".
-const char* kind_name(const Value& v);
+using Value = nlohmann::ordered_json;
 
 class ParseError : public std::runtime_error {
  public:
@@ -93,17 +46,31 @@ struct ParseOptions {
   int max_depth = 64;  // arrays/objects nested deeper than this are rejected
 };
 
+struct Document {
+  Value value;
+  /// Top-level object members that are numbers: member name -> the number's text as written.
+  std::map<std::string, std::string> number_text;
+};
+
 /// Parse one JSON text (surrounding whitespace allowed, nothing else).
+Document parse_document(std::string_view text, const ParseOptions& options = {});
 Value parse(std::string_view text, const ParseOptions& options = {});
+
+/// The JSON number for d: an integer when d is one (|d| < 2^53, not -0), so
+/// that it is written without ".0"; null when d is not finite.
+Value number(double d);
 
 /// Compact JSON text of v.
 std::string write(const Value& v);
-void write(std::ostream& out, const Value& v);
 
-/// The shortest decimal text that reads back as d ("null" when not finite).
+/// The shortest decimal text that reads back as d ("null" when not finite),
+/// for text output.
 std::string number_text(double d);
 
 /// s as a quoted, escaped JSON string.
 std::string quote(std::string_view s);
+
+/// "null", "boolean", "number", "string", "array" or "object".
+const char* kind_name(const Value& v);
 
 }  // namespace sepax::cli::json

@@ -86,20 +86,20 @@ TEST_CASE("audit: coordinates are rounded to float, with a note", "[audit]") {
     for (int c = 0; c < 3; ++c) CHECK(static_cast<double>(static_cast<float>(v[c])) == v[c]);
 }
 
-TEST_CASE("audit: bad shape arguments name the file and exit 2", "[audit][errors]") {
+TEST_CASE("audit: bad shape arguments name the file and exit 3", "[audit][errors]") {
   const Run missing = audit({"/nonexistent/sepax_no_such.off", "cube"});
-  CHECK(missing.status == 2);
+  CHECK(missing.status == 3);
   CHECK_THAT(missing.err, Catch::Contains("sepax_no_such.off"));
   const std::string big = temp_file("big.pts", "0 0 0\n1e39 0 0\n0 1 0\n");
   const Run overflow = audit({big, "cube"});
-  CHECK(overflow.status == 2);
+  CHECK(overflow.status == 3);
   CHECK_THAT(overflow.err, Catch::Contains("big.pts: coordinate x of point 1 (1e+39) overflows float"));
   const std::string line = temp_file("line.pts", "0 0 0\n1 0 0\n2 0 0\n");
   const Run collinear = audit({"cube", line});
-  CHECK(collinear.status == 2);
+  CHECK(collinear.status == 3);
   CHECK_THAT(collinear.err, Catch::Contains("line.pts: "));
   const Run unknown = audit({"cube", "dodecahedron"});
-  CHECK(unknown.status == 2);
+  CHECK(unknown.status == 3);
   CHECK_THAT(unknown.err, Catch::Contains("dodecahedron"));
   const Run usage = audit({"cube"});
   CHECK(usage.status == 2);

@@ -18,16 +18,25 @@ namespace {
 // "[[x,y,z],...]" for the vertices of a built-in shape moved by t.
 std::string points_of(const char* spec, double tx, double ty, double tz) {
   const auto d = io::builtin_shape(spec);
-  json::Array pts;
-  for (const auto& v : d.vertices) pts.push_back(json::Array{v[0] + tx, v[1] + ty, v[2] + tz});
-  return json::write(json::Value(std::move(pts)));
+  json::Value pts = json::Value::array();
+  for (const auto& v : d.vertices) pts.push_back(json::Value::array({v[0] + tx, v[1] + ty, v[2] + tz}));
+  return json::write(pts);
+}
+
+// The text of the last run_lines output (ids are checked as written there).
+std::string& last_output() {
+  static std::string s;
+  return s;
 }
 
 std::vector<json::Value> run_lines(const std::string& input, BatchSummary* sum = nullptr,
                                    const RunConfig& cfg = RunConfig{}) {
   std::istringstream in(input);
   std::ostringstream out;
-  const BatchSummary s = run_batch(in, out, cfg);
+  BatchOptions opt;
+  opt.cfg = cfg;
+  const BatchSummary s = run_batch(in, out, opt);
+  last_output() = out.str();
   if (sum) *sum = s;
   std::vector<json::Value> lines;
   std::istringstream back(out.str());
@@ -37,8 +46,8 @@ std::vector<json::Value> run_lines(const std::string& input, BatchSummary* sum =
 }
 
 std::string error_of(const json::Value& v) {
-  REQUIRE(v.find("error"));
-  return v.find("error")->as_string();
+  REQUIRE(v.contains("error"));
+  return v.at("error").get<std::string>();
 }
 
 }  // namespace
@@ -73,11 +82,12 @@ TEST_CASE("batch: bad lines give an error object naming the problem and the run 
   CHECK(sum.errors == std::size(cases));
   for (std::size_t i = 0; i < out.size(); ++i) {
     INFO("line " << i + 1 << ": " << cases[i].line);
-    CHECK(json::write(*out[i].find("id")) == cases[i].id);
+    CHECK(json::write(out[i].at("id")) == cases[i].id);
+    CHECK_THAT(last_output(), Catch::Contains(std::string("{\"id\":") + cases[i].id + ","));
     const std::string e = error_of(out[i]);
     CHECK_THAT(e, Catch::StartsWith("line " + std::to_string(i + 1) + ": "));
     CHECK_THAT(e, Catch::Contains(cases[i].problem));
-    CHECK_FALSE(out[i].find("overlap"));
+    CHECK_FALSE(out[i].contains("overlap"));
   }
 }
 
@@ -101,36 +111,36 @@ TEST_CASE("batch: good lines are answered like query, ids echoed exactly as writ
   CHECK(sum.queries == 4);
   CHECK(sum.errors == 1);
 
-  CHECK(json::write(*out[0].find("id")) == "12345678901234567890");
-  CHECK_FALSE(out[0].find("overlap")->as_bool());
-  CHECK(out[0].find("separation")->as_double() == 0.5);
-  CHECK(json::write(*out[0].find("normal")) == "[1,0,0]");
-  CHECK(out[0].find("feature")->find("type")->as_string() == "faceA");
+  CHECK(json::write(out[0].at("id")) == "12345678901234567890");
+  CHECK_FALSE(out[0].at("overlap").get<bool>());
+  CHECK(out[0].at("separation").get<double>() == 0.5);
+  CHECK(json::write(out[0].at("normal")) == "[1,0,0]");
+  CHECK(out[0].at("feature").at("type").get<std::string>() == "faceA");
 
-  CHECK(out[1].find("id")->as_string() == "overlapping \"pair\"");
-  CHECK(out[1].find("overlap")->as_bool());
-  CHECK(out[1].find("separation")->as_double() < 0);
+  CHECK(out[1].at("id").get<std::string>() == "overlapping \"pair\"");
+  CHECK(out[1].at("overlap").get<bool>());
+  CHECK(out[1].at("separation").get<double>() < 0);
 
-  CHECK(json::write(*out[2].find("id")) == "-0.5e1");
+  CHECK_THAT(last_output(), Catch::Contains("{\"id\":-0.5e1,\"error\":"));  // as written
   CHECK_THAT(error_of(out[2]), Catch::Contains("line 5: a: "));
 
   // the same query through run_sat on the same point sets
-  const auto& f = *out[3].find("feature");
+  const auto& f = out[3].at("feature");
   io::ShapeData a, b;
   a.kind = b.kind = io::ShapeData::Kind::Points;
   a.vertices = io::builtin_shape("prism:6").vertices;
   for (const auto& v : a.vertices) b.vertices.push_back(v + Vec3<double>(0.3, 0.1, 2.0));
   const RunOutcome r = run_sat(a, b, nullptr, RunConfig{});
-  CHECK(out[3].find("overlap")->as_bool() == r.overlap);
-  CHECK(out[3].find("separation")->as_double() == r.separation);
-  CHECK(f.find("type")->as_string() == type_name(r.feature.type));
-  CHECK(f.find("a")->as_double() == r.feature.a);
-  CHECK(f.find("b")->as_double() == r.feature.b);
-  CHECK(json::write(*out[3].find("normal")) == json::write(json::Value(json::Array{r.normal[0], r.normal[1], r.normal[2]})));
+  CHECK(out[3].at("overlap").get<bool>() == r.overlap);
+  CHECK(out[3].at("separation").get<double>() == r.separation);
+  CHECK(f.at("type").get<std::string>() == type_name(r.feature.type));
+  CHECK(f.at("a").get<double>() == r.feature.a);
+  CHECK(f.at("b").get<double>() == r.feature.b);
+  CHECK(json::write(out[3].at("normal")) == json::write(json::Value::array({json::number(r.normal[0]), json::number(r.normal[1]), json::number(r.normal[2])})));
   // output keys, in order
   std::vector<std::string> keys;
-  for (const auto& kv : out[3].as_object()) keys.push_back(kv.first);
-  CHECK(keys == std::vector<std::string>{"id", "overlap", "separation", "feature", "normal"});
+  for (const auto& kv : out[3].items()) keys.push_back(kv.key());
+  CHECK(keys == std::vector<std::string>{"id", "overlap", "separation", "feature", "normal", "manifold"});
 }
 
 TEST_CASE("batch: every number type answers, exact and double agree on clear cases", "[batch]") {
@@ -155,8 +165,38 @@ TEST_CASE("batch: every number type answers, exact and double agree on clear cas
   REQUIRE(f.size() == 6);
   for (std::size_t i = 0; i < 6; ++i) {
     INFO(i);
-    CHECK(d[i].find("overlap")->as_bool() == e[i].find("overlap")->as_bool());
-    CHECK(f[i].find("overlap")->as_bool() == e[i].find("overlap")->as_bool());
-    CHECK(d[i].find("separation")->as_double() == Approx(e[i].find("separation")->as_double()).margin(1e-12));
+    CHECK(d[i].at("overlap").get<bool>() == e[i].at("overlap").get<bool>());
+    CHECK(f[i].at("overlap").get<bool>() == e[i].at("overlap").get<bool>());
+    CHECK(d[i].at("separation").get<double>() == Approx(e[i].at("separation").get<double>()).margin(1e-12));
+  }
+}
+
+TEST_CASE("batch: --jobs N gives the same output, line for line, as --jobs 1", "[batch][jobs]") {
+  std::string input;
+  for (int i = 0; i < 40; ++i) {
+    const double t = 0.9 + 0.07 * i;
+    input += "{\"id\": " + std::to_string(i) + ".50, \"a\": " + points_of("prism:5", 0, 0, 0) + ", \"b\": " +
+             points_of("tetra", t, 0.1, -0.2) + "}\n";
+    if (i % 7 == 3) input += "{\"id\": " + std::to_string(i) + ", \"a\": [[0,0,0]], \"b\": []}\n\n";
+  }
+  std::string outputs[3];
+  BatchSummary sums[3];
+  const int jobs[3] = {1, 3, 0};
+  for (int k = 0; k < 3; ++k) {
+    std::istringstream in(input);
+    std::ostringstream out;
+    BatchOptions opt;
+    opt.jobs = jobs[k];
+    sums[k] = run_batch(in, out, opt);
+    outputs[k] = out.str();
+  }
+  CHECK(sums[0].queries == 46);
+  CHECK(sums[0].errors == 6);
+  CHECK_THAT(outputs[0], Catch::Contains("{\"id\":0.50,\"overlap\":"));
+  for (int k = 1; k < 3; ++k) {
+    INFO("jobs " << jobs[k]);
+    CHECK(outputs[k] == outputs[0]);
+    CHECK(sums[k].queries == sums[0].queries);
+    CHECK(sums[k].errors == sums[0].errors);
   }
 }

@@ -69,7 +69,7 @@ TEST_CASE("query: --json prints one object whose values match run_sat", "[query]
     REQUIRE(r.out.find('\n') == r.out.size() - 1);  // one line
     const json::Value v = json::parse(r.out);
     std::vector<std::string> keys;
-    for (const auto& kv : v.as_object()) keys.push_back(kv.first);
+    for (const auto& kv : v.items()) keys.push_back(kv.key());
     CHECK(keys == std::vector<std::string>{"overlap", "separation", "feature", "normal", "number", "algorithm", "policy",
                                            "stats", "manifold"});
     // recompute with the library entry point
@@ -89,28 +89,28 @@ TEST_CASE("query: --json prints one object whose values match run_sat", "[query]
       } else if (!args[i].starts_with("--")) shapes.push_back(args[i]);
     }
     const RunOutcome ref = run_sat(io::load_shape(shapes[0]), io::load_shape(shapes[1]), pose ? &*pose : nullptr, cfg);
-    CHECK(v.find("overlap")->as_bool() == ref.overlap);
-    CHECK(v.find("separation")->as_double() == ref.separation);
-    CHECK(v.find("feature")->find("type")->as_string() == type_name(ref.feature.type));
+    CHECK(v.at("overlap").get<bool>() == ref.overlap);
+    CHECK(v.at("separation").get<double>() == ref.separation);
+    CHECK(v.at("feature").at("type").get<std::string>() == type_name(ref.feature.type));
     // the contact manifold: same kind and the same points, ids and separations
-    const json::Value& m = *v.find("manifold");
-    CHECK(m.find("kind")->as_string() == ref.manifold.kind);
-    REQUIRE(m.find("points")->as_array().size() == ref.manifold.points.size());
+    const json::Value& m = v.at("manifold");
+    CHECK(m.at("kind").get<std::string>() == ref.manifold.kind);
+    REQUIRE(m.at("points").size() == ref.manifold.points.size());
     for (std::size_t k = 0; k < ref.manifold.points.size(); ++k) {
-      const json::Value& p = m.find("points")->as_array()[k];
-      CHECK(p.find("id")->as_string() == ref.manifold.points[k].id);
-      CHECK(p.find("separation")->as_double() == ref.manifold.points[k].separation);
-      CHECK(p.find("position")->as_array()[2].as_double() == ref.manifold.points[k].position[2]);
+      const json::Value& p = m.at("points")[k];
+      CHECK(p.at("id").get<std::string>() == ref.manifold.points[k].id);
+      CHECK(p.at("separation").get<double>() == ref.manifold.points[k].separation);
+      CHECK(p.at("position")[2].get<double>() == ref.manifold.points[k].position[2]);
     }
-    CHECK(v.find("feature")->find("a")->as_double() == ref.feature.a);
-    CHECK(v.find("feature")->find("b")->as_double() == ref.feature.b);
-    const auto& n = v.find("normal")->as_array();
+    CHECK(v.at("feature").at("a").get<double>() == ref.feature.a);
+    CHECK(v.at("feature").at("b").get<double>() == ref.feature.b);
+    const auto& n = v.at("normal");
     REQUIRE(n.size() == 3);
-    for (int c = 0; c < 3; ++c) CHECK(n[static_cast<std::size_t>(c)].as_double() == ref.normal[c]);
-    CHECK(v.find("number")->as_string() == name(cfg.number));
-    CHECK(v.find("algorithm")->as_string() == name(cfg.algorithm));
-    CHECK(v.find("policy")->as_string() == "plain");
-    CHECK(v.find("stats")->find("face_axes")->as_double() == static_cast<double>(ref.stats.face_axes));
+    for (int c = 0; c < 3; ++c) CHECK(n[static_cast<std::size_t>(c)].get<double>() == ref.normal[c]);
+    CHECK(v.at("number").get<std::string>() == name(cfg.number));
+    CHECK(v.at("algorithm").get<std::string>() == name(cfg.algorithm));
+    CHECK(v.at("policy").get<std::string>() == "plain");
+    CHECK(v.at("stats").at("face_axes").get<double>() == static_cast<double>(ref.stats.face_axes));
   }
 }
 
@@ -154,21 +154,21 @@ TEST_CASE("query: --help lists the options and the built-in shapes", "[query]") 
   }
 }
 
-TEST_CASE("query: bad input files exit 1 naming FILE:LINE; --json adds an error object", "[query]") {
+TEST_CASE("query: bad input files exit 3 naming FILE:LINE; --json adds an error object", "[query]") {
   const std::string bad = temp_file("bad.off", "OFF\n4 4 6\n1 1 1\n1 -1 -1\n-1 1 oops\n");
   const Run r = query({"cube", bad});
-  CHECK(r.status == 1);
+  CHECK(r.status == 3);
   CHECK(r.out.empty());
   CHECK_THAT(r.err, Catch::Contains(bad + ":5: bad number 'oops' for coordinate z of vertex 2"));
   const Run j = query({bad, "cube", "--json"});
-  CHECK(j.status == 1);
+  CHECK(j.status == 3);
   const json::Value v = json::parse(j.out);
-  CHECK_THAT(v.find("error")->as_string(), Catch::Contains(bad + ":5: "));
+  CHECK_THAT(v.at("error").get<std::string>(), Catch::Contains(bad + ":5: "));
   const Run m = query({"cube", "/nonexistent/dir/shape.obj"});
-  CHECK(m.status == 1);
+  CHECK(m.status == 3);
   CHECK_THAT(m.err, Catch::Contains("/nonexistent/dir/shape.obj: cannot open"));
   const Run s = query({"cube", "box:1,2"});
-  CHECK(s.status == 1);
+  CHECK(s.status == 3);
   CHECK_THAT(s.err, Catch::Contains("shape 'box:1,2'"));
   std::filesystem::remove(bad);
 }
@@ -208,15 +208,15 @@ TEST_CASE("query: --batch reads JSON lines from stdin or a file", "[query]") {
   std::string l1, l2;
   REQUIRE(std::getline(out, l1));
   REQUIRE(std::getline(out, l2));
-  CHECK(json::parse(l1).find("separation")->as_double() == 1);
-  CHECK(json::parse(l2).find("error"));
+  CHECK(json::parse(l1).at("separation").get<double>() == 1);
+  CHECK(json::parse(l2).contains("error"));
   const std::string file = temp_file("batch.jsonl", lines.substr(0, lines.find('\n') + 1));
   const Run f = query({"--batch", file, "--number", "exact"});
   CHECK(f.status == 0);
-  CHECK(json::parse(f.out).find("separation")->as_double() == 1);
+  CHECK(json::parse(f.out).at("separation").get<double>() == 1);
   std::filesystem::remove(file);
   const Run missing = query({"--batch", "/nonexistent/b.jsonl"});
-  CHECK(missing.status == 2);
+  CHECK(missing.status == 3);
   CHECK_THAT(missing.err, Catch::Contains("/nonexistent/b.jsonl: cannot open"));
 }
 
@@ -227,10 +227,10 @@ TEST_CASE("info: counts of built-ins and errors", "[query]") {
   const Run p = info({"polygon:5", "--number", "exact", "--json"});
   CHECK(p.status == 0);
   const json::Value v = json::parse(p.out);
-  CHECK(v.find("vertices")->as_double() == 5);
-  CHECK(v.find("faces")->as_double() == 2);
-  CHECK(v.find("flat")->as_bool());
+  CHECK(v.at("vertices").get<double>() == 5);
+  CHECK(v.at("faces").get<double>() == 2);
+  CHECK(v.at("flat").get<bool>());
   CHECK(info({}).status == 2);
   CHECK(info({"cube", "--robust"}).status == 2);
-  CHECK(info({"nothing.stl"}).status == 1);
+  CHECK(info({"nothing.stl"}).status == 3);
 }

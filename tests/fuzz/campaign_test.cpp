@@ -1,11 +1,10 @@
-// A short standalone campaign (a few cases of every family) and the command
-// line of `sepax fuzz` / `sepax audit`.
+// A short standalone campaign (a few cases of every family) and its report.
+// The command lines of `sepax fuzz` and `sepax audit`: tests/cli/fuzz_command_test.cpp.
 #include <catch2/catch.hpp>
 
 #include <sstream>
 
 #include <sepax/fuzz/campaign.hpp>
-#include <sepax/fuzz/cli.hpp>
 #include <sepax/fuzz/generators.hpp>
 #include <sepax/robust/number_types.hpp>
 #include <sepax/sat_gauss_map.hpp>
@@ -52,25 +51,6 @@ TEST_CASE("touching family: face contacts are exact contacts", "[fuzz][campaign]
   CHECK(zero * 2 >= total);
 }
 
-TEST_CASE("sepax fuzz command line", "[fuzz][cli]") {
-  std::vector<std::string> args{"fuzz", "--cases", "4", "--quiet", "--json", "--out", "fuzz-test-out"};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  CHECK(fuzz_main(static_cast<int>(argv.size()), argv.data()) == 0);
-  std::vector<std::string> bad{"fuzz", "--families", "nope"};
-  std::vector<char*> bargv;
-  for (auto& a : bad) bargv.push_back(a.data());
-  CHECK(fuzz_main(static_cast<int>(bargv.size()), bargv.data()) == 2);
-  std::vector<std::string> audit{"audit", "cube", "triangle", "--pose", "0", "0", "1"};
-  std::vector<char*> aargv;
-  for (auto& a : audit) aargv.push_back(a.data());
-  CHECK(audit_main(static_cast<int>(aargv.size()), aargv.data()) == 0);
-  std::vector<std::string> abad{"audit", "cube"};
-  std::vector<char*> abargv;
-  for (auto& a : abad) abargv.push_back(a.data());
-  CHECK(audit_main(static_cast<int>(abargv.size()), abargv.data()) == 2);
-}
-
 TEST_CASE("comparisons skipped above size budgets are counted and reported", "[fuzz][campaign][skips]") {
   const FuzzCase c = generate("boxes", 3);
   // default budgets: a box pair runs everything
@@ -108,19 +88,4 @@ TEST_CASE("comparisons skipped above size budgets are counted and reported", "[f
   CHECK(txt.str().find("skipped above size budgets (not compared): " + std::to_string(rep.skipped_total())) !=
         std::string::npos);
   CHECK(txt.str().find("(boxes 2)") != std::string::npos);
-}
-
-TEST_CASE("sepax fuzz shrink options", "[fuzz][cli][shrink]") {
-  auto run = [](std::vector<std::string> args) {
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    return fuzz_main(static_cast<int>(argv.size()), argv.data());
-  };
-  CHECK(run({"fuzz", "--cases", "2", "--quiet", "--shrink-steps", "0", "--shrink-seconds", "5", "--shrink-max", "1",
-             "--out", "fuzz-test-out"}) == 0);
-  CHECK(run({"fuzz", "--shrink-steps", "x"}) == 2);
-  CHECK(run({"fuzz", "--shrink-seconds"}) == 2);
-  // replaying passing cases with --shrink writes nothing and succeeds
-  CHECK(run({"fuzz", "--quiet", "--replay", SEPAX_SOURCE_DIR "/fuzz/corpus/00-triangle-on-box-face.case", "--shrink",
-             "--out", "fuzz-test-shrink-out"}) == 0);
 }

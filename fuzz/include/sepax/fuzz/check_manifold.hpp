@@ -65,11 +65,9 @@ Klass check_manifold_float(const ConvexPolyhedron<float>& Af, const ConvexPolyhe
                            const SatResult<mpq_class>& exact_sat, const SatResult<float>& float_sat,
                            const CheckOptions& opt, CaseReport& rep);
 
-/// The report's "manifold" section (text table) and JSON value.
+/// The report's "manifold" section as a text table (its JSON value is
+/// written by print_json, campaign.hpp).
 void print_manifold_text(std::ostream& out, const std::map<std::string, Counts>& comparisons,
-                         const std::map<std::string, Counts>& by_config, const std::map<std::string, Counts>& details,
-                         const std::map<std::string, double>& maxima);
-void print_manifold_json(std::ostream& out, const std::map<std::string, Counts>& comparisons,
                          const std::map<std::string, Counts>& by_config, const std::map<std::string, Counts>& details,
                          const std::map<std::string, double>& maxima);
 

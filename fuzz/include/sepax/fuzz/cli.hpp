@@ -1,37 +1,40 @@
 // sepax/fuzz/cli.hpp
 //
-// Entry points the `sepax` program dispatches to (argv[0] is the verb):
+// What the `sepax audit` verb runs (its command line is parsed in
+// src/commands/audit_command.cpp): every decision the SATs make for one case,
+// in float (or double) against exact mpq arithmetic -- the four triple
+// products of every edge pair with their exact signs, the Minkowski-face and
+// parallel verdicts, every candidate axis with its separation, error bound
+// and exact value, the features chosen by every configuration and SAT, the
+// contact manifold float against exact, notes on what is degenerate -- then
+// the full differential check of the case (check_case_guarded).
 //
-//   sepax fuzz [--seconds S] [--cases N] [--seed K] [--families a,b,...]
-//              [--out DIR] [--json] [--quiet]
-//   sepax fuzz --replay FILE...   [--json]
-//   sepax audit A B [--pose tx ty tz [qw qx qy qz]] [--type float|double]
-//   sepax audit --case FILE       [--type float|double]
-//
-// The standalone driver's audit knows the built-in shapes only; the sepax
-// program passes a loader that also reads OFF, OBJ and points files
-// (src/commands/audit_command.cpp).
-//
-// Exit status: 0 no unexplained disagreement, 1 at least one (reproducers were
-// written), 2 bad usage or unreadable input.
+// Text: a report for people.  JSON (AuditOptions::json): one object with the
+// same content, keys in this order:
+//   number, reference, shapes {A, B: vertices, edges, faces, flat, extent},
+//   edge_pairs [{a, b, triple_products [{name, value, sign, exact_sign,
+//   differs}], minkowski_face {value, exact}, parallel {value, exact}}],
+//   axes [{axis, separation, exact_separation, difference, error_bound,
+//   exact_zero}], flat_pair, chosen [{config, sat, overlap, feature,
+//   feature_text, separation}], manifold {exact, value, comparison}, notes,
+//   check {valid, unexplained, findings}.
+// ("value" is the audited number type's result, "exact" the mpq one.)
 #pragma once
 
-#include <functional>
-#include <string>
+#include <ostream>
 
 #include "case.hpp"
 
 namespace sepax::fuzz {
 
-/// Turns a shape argument of `audit A B` into a ShapeSpec (float-valued
-/// vertices and a face list); throws InvalidInput naming the argument.
-using ShapeLoader = std::function<ShapeSpec(const std::string&)>;
+struct AuditOptions {
+  bool use_double = false;  ///< audit double instead of float
+  bool json = false;        ///< one JSON object instead of the text report
+};
 
-int fuzz_main(int argc, char** argv);
-/// `audit` with the built-in shapes (builtin_shape in generators.hpp).
-int audit_main(int argc, char** argv);
-/// `audit` with the shapes resolved by `load`; `shapes_help` is the usage
-/// line's description of what A and B may be.
-int audit_main(int argc, char** argv, const ShapeLoader& load, const std::string& shapes_help);
+/// Prints the audit of c to out.  Returns 0 when the differential check finds
+/// no unexplained disagreement, 1 otherwise.  Throws InvalidInput when a shape
+/// of c is not a valid convex polyhedron in float.
+int run_audit(const FuzzCase& c, const AuditOptions& opt, std::ostream& out);
 
 }  // namespace sepax::fuzz
