@@ -135,7 +135,7 @@ Options parse_options(const std::vector<std::string>& args, bool allow_batch, bo
       } catch (const InvalidInput& e) {
         throw UsageError(e.what());
       }
-    } else if (a.size() > 1 && a[0] == '-' && !as_number(a)) {
+    } else if (a.size() > 1 && a[0] == '-' && !as_number(a) && !a.starts_with("-:") && !a.starts_with("-#")) {
       throw UsageError("unknown option '" + args[i] + "'");
     } else {
       o.positional.push_back(args[i]);
@@ -202,8 +202,8 @@ int run_query(const std::vector<std::string>& args, std::istream& in, std::ostre
   }
   if (const std::string why = unsupported_reason(o.cfg); !why.empty()) return usage_error(err, "query", why);
   try {
-    const io::ShapeData a = io::load_shape(o.positional[0]);
-    const io::ShapeData b = io::load_shape(o.positional[1]);
+    const io::ShapeData a = io::load_shape(o.positional[0], in);
+    const io::ShapeData b = io::load_shape(o.positional[1], in);
     const RunOutcome r = run_sat(a, b, o.pose ? &*o.pose : nullptr, o.cfg);
     if (o.json) {
       out << json::write(query_json(r, o.cfg)) << "\n";
@@ -234,6 +234,10 @@ int run_info(const std::vector<std::string>& args, std::ostream& out, std::ostre
   }
   if (o.cfg.robust) return usage_error(err, "info", "--robust does not apply to info");
   try {
+    if (const auto listing = io::object_listing(o.positional[0]); listing && !o.json) {
+      out << *listing;
+      return 0;
+    }
     const io::ShapeData s = io::load_shape(o.positional[0]);
     const ShapeCounts c = shape_counts(s, o.cfg.number, o.pose ? &*o.pose : nullptr);
     if (o.json) {
