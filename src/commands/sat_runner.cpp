@@ -117,13 +117,12 @@ SatResult<T> run_algorithm(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<
 
 template <Number T>
 RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b, const RunConfig& cfg) {
-  // Both shapes are built re-centred by one exact translation (a small pair
-  // far from the origin is resolved as well as near it); positions are
-  // reported in world coordinates.
-  const std::vector<Vec3<T>> world[] = {shape_points<T>(sa), shape_points<T>(sb, pose_b)};
-  const Vec3<T> centre = io::exact_centre<T>(world);
-  const ConvexPolyhedron<T> a = build_shape<T>(sa, nullptr, &centre);
-  const ConvexPolyhedron<T> b = build_shape<T>(sb, pose_b, &centre);
+  // Both shapes in one frame near them (shape_builder.hpp, build_pair), so
+  // a small pair far from the origin is resolved as well as near it;
+  // positions are reported in world coordinates.
+  const ShapePair<T> pair = build_pair<T>(sa, sb, pose_b);
+  const ConvexPolyhedron<T>& a = pair.a;
+  const ConvexPolyhedron<T>& b = pair.b;
   SatResult<T> r;
   if (cfg.robust) {
 #if SEPAX_CLI_HAVE_ROBUST
@@ -152,7 +151,7 @@ RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pos
   out.normal = n;
   out.a = counts_of(a);
   out.b = counts_of(b);
-  out.manifold = manifold_out(contact_manifold(a, b, r), centre);
+  out.manifold = manifold_out(contact_manifold(a, b, r), pair.origin);
   return out;
 }
 

@@ -21,13 +21,14 @@
 //
 // With a centre c (io/exact_centre.hpp), the shape is built at its
 // coordinates in T minus c, each subtraction exact: the caller adds c back
-// to the positions it reports.
+// to the positions it reports.  build_pair chooses the frame of a query.
 //
 // InvalidInput messages are prefixed with the shape's name, and with
 // "FILE:LINE" of the face they name when the face came from a file.
 #pragma once
 
 #include <cctype>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -171,6 +172,46 @@ ConvexPolyhedron<T> build_shape(const io::ShapeData& s, const Pose* pose = nullp
   } catch (const InvalidInput& e) {
     throw InvalidInput(e.code(), detail::located_message(s, e.what()));
   }
+}
+
+/// A query's two shapes in one frame, and that frame's origin in world
+/// coordinates (add it to positions to report them).
+template <Number T>
+struct ShapePair {
+  ConvexPolyhedron<T> a, b;
+  Vec3<T> origin;
+};
+
+/// A and B (B posed by pose_b) built for one query.  Normally both at their
+/// coordinates in T minus one exact centre (io/exact_centre.hpp): the shapes
+/// read, only moved.  When that frame is too far from one of them for T
+/// (two small shapes far apart from each other, in float), each is built and
+/// validated around its own exact centre, and B is then expressed in A's
+/// frame: its vertices' coordinates minus A's centre, rounded to T once, not
+/// re-validated there (as a posed shape is).
+template <Number T>
+ShapePair<T> build_pair(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b) {
+  const std::vector<Vec3<T>> world[] = {shape_points<T>(sa), shape_points<T>(sb, pose_b)};
+  const Vec3<T> c = io::exact_centre<T>(world);
+  if (io::resolvable_around(world[0], c) && io::resolvable_around(world[1], c)) {
+    return ShapePair<T>{build_shape<T>(sa, nullptr, &c), build_shape<T>(sb, pose_b, &c), c};
+  }
+  const Vec3<T> ca = io::exact_centre<T>(std::span(world, 1));
+  const Vec3<T> cb = io::exact_centre<T>(std::span(world + 1, 1));
+  ConvexPolyhedron<T> b = build_shape<T>(sb, pose_b, &cb);
+  std::vector<Vec3<T>> moved;
+  moved.reserve(b.vertices().size());
+  for (const auto& v : b.vertices()) {
+    // float: the sum of three floats in double (exact for coordinates within
+    // 2^29 of each other's magnitude), rounded once; double: v + cb restores
+    // the coordinate read (exact), minus ca rounded once.
+    if constexpr (std::is_same_v<T, float>) {
+      moved.push_back(vec_from_double<T>(Vec3<double>(vec_to_double(v) + vec_to_double(cb) - vec_to_double(ca))));
+    } else {
+      moved.push_back(Vec3<T>(Vec3<T>(v + cb) - ca));
+    }
+  }
+  return ShapePair<T>{build_shape<T>(sa, nullptr, &ca), b.with_vertices(std::move(moved)), ca};
 }
 
 }  // namespace sepax::cli

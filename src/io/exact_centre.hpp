@@ -22,10 +22,13 @@
 // origin.  Exact types need no re-centring: c = 0.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <span>
 #include <vector>
 
 #include <sepax/number_traits.hpp>
+#include <sepax/tolerances.hpp>
 #include <sepax/vec3.hpp>
 
 namespace sepax::cli::io {
@@ -53,6 +56,32 @@ Vec3<T> exact_centre(std::span<const std::vector<Vec3<T>>> point_sets) {
     }
   }
   return c;
+}
+
+/// Whether points, moved by -c, are near enough to the origin for T to
+/// resolve them as a shape: their largest |coordinate| at most half of
+/// planarity * extent / (16 u), the bound beyond which the hull builder (and
+/// validation) cannot resolve a shape's planes (sepax/tolerances.hpp: about
+/// 40 extents for float, 2e5 for double).  Always true for exact T.
+template <Number T>
+bool resolvable_around(const std::vector<Vec3<T>>& points, const Vec3<T>& c) {
+  if constexpr (number_traits<T>::is_exact) {
+    return true;
+  } else {
+    if (points.empty()) return true;
+    Vec3<double> lo = vec_to_double(points[0]), hi = lo;
+    double far = 0;
+    for (const auto& p : points) {
+      const Vec3<double> q = vec_to_double(p), d = vec_to_double(Vec3<T>(p - c));
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], q[k]);
+        hi[k] = std::max(hi[k], q[k]);
+        far = std::max(far, std::abs(d[k]));
+      }
+    }
+    const double extent = std::sqrt(squared_norm(Vec3<double>(hi - lo)));
+    return far <= Tolerances<T>::planarity / (32 * number_traits<T>::unit_roundoff) * extent;
+  }
 }
 
 /// points - c, each subtraction exact when c = exact_centre of a family of

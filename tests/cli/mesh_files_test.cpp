@@ -124,6 +124,41 @@ TEST_CASE("mesh files: a 0.4-unit piece 150 units from the origin works in float
   }
 }
 
+TEST_CASE("mesh files: a small piece far from the origin against a shape at the origin, in float", "[mesh]") {
+  // No one frame is near both: each is built around its own exact centre and
+  // the piece is expressed in the cube's frame (rounded to float once).
+  for (const char* piece : {"#convex_2", "#convex_0"}) {
+    INFO(piece);
+    const std::vector<std::string> args{"cube", "hull:" + kPieces + piece, "--json", "--robust"};
+    std::vector<std::string> in_float = args, in_double = args;
+    in_float.insert(in_float.end(), {"--number", "float"});
+    in_double.insert(in_double.end(), {"--number", "double"});
+    const Run f = query(in_float);
+    const Run d = query(in_double);
+    REQUIRE(f.status == 0);
+    REQUIRE(d.status == 0);
+    const json::Value vf = json::parse(f.out), vd = json::parse(d.out);
+    CHECK_FALSE(vf.find("overlap")->as_bool());
+    const double sep = vd.find("separation")->as_double();
+    CHECK(sep > 140);
+    // float rounds coordinates near 150 by up to 2^-17 ~ 7.6e-6, which turns
+    // the normals of the piece's faces (about 0.2 across) by up to ~1e-4 rad
+    // together: along an axis 173 units long, a separation within 1e-4 of it
+    CHECK(vf.find("separation")->as_double() == Approx(sep).margin(1e-4 * sep));
+    CHECK(json::write(*vf.find("feature")->find("type")) == json::write(*vd.find("feature")->find("type")));
+  }
+  // and the other way round, with a contact far from the origin: the cube
+  // moved next to the piece, touching its face at x = 150
+  const Run t = query({kPieces + "#convex_0", "cube", "--pose", "149", "-37.1", "88.2", "--number", "float", "--json"});
+  REQUIRE(t.status == 0);
+  const json::Value w = json::parse(t.out);
+  CHECK(w.find("overlap")->as_bool());
+  CHECK(w.find("separation")->as_double() == Approx(0).margin(1e-4));
+  const auto& points = w.find("manifold")->find("points")->as_array();
+  REQUIRE_FALSE(points.empty());
+  for (const auto& p : points) CHECK(p.find("position")->as_array()[0].as_double() == Approx(150).margin(1e-4));
+}
+
 TEST_CASE("mesh files: hull: makes any mesh or point file its convex hull", "[mesh]") {
   const std::string dent = test::temp_file(
       "dent.obj",
