@@ -232,10 +232,10 @@ const char* builtin_shapes_help() {
          "  prism:N            regular N-gon prism around z, circumradius 1, z in [-1,1]\n"
          "  polygon:N          double-sided regular N-gon in the plane z = 0, circumradius 1\n"
          "  triangle           double-sided triangle (0,0,0), (1,0,0), (0,1,0)\n"
-         "  FILE.off, FILE.obj, FILE.ply, FILE.stl   face lists (one face: a double-sided polygon;\n"
-         "                     a closed convex mesh, e.g. triangulated, is its polyhedron)\n"
-         "  FILE.obj#NAME, FILE.obj#K   one object ('o' or 'g') of an OBJ file\n"
-         "  FILE.pts, FILE.xyz, FILE.txt   points (hulled)\n"
+         "  FILE.off|.obj|.ply|.stl   a face list (one face: a double-sided polygon; a closed\n"
+         "                     convex mesh, e.g. triangulated, is the polyhedron it bounds)\n"
+         "  FILE.obj#NAME|#K   one object ('o', else 'g') of an OBJ file (K counts from 0)\n"
+         "  FILE.pts|.xyz|.txt points (hulled)\n"
          "  hull:SHAPE         the convex hull of SHAPE's vertices\n"
          "  -, -:FORMAT        standard input (FORMAT off, obj, ply, stl or pts; - alone guesses)\n";
 }

@@ -40,13 +40,6 @@ Run info(const std::vector<std::string>& args) {
   return {s, out.str(), err.str()};
 }
 
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 }  // namespace
 
 TEST_CASE("mesh files: a V-HACD-style decomposition is queried piece against piece", "[mesh]") {
@@ -178,17 +171,17 @@ TEST_CASE("mesh files: hull: makes any mesh or point file its convex hull", "[me
 }
 
 TEST_CASE("mesh files: - reads a shape from standard input", "[mesh]") {
-  const std::string cube_off = file_text(kData + "cube.off");
+  const std::string cube_off = test::file_text(kData + "cube.off");
   const Run ref = query({kData + "cube.off", "cube", "--pose", "2.5", "0", "0", "--json"});
   REQUIRE(ref.status == 0);
   // the format guessed from the content, or named
   for (const auto& [spec, text] : std::vector<std::pair<std::string, std::string>>{
            {"-", cube_off},
            {"-:off", cube_off},
-           {"-", file_text(kData + "cube_tri.obj")},
-           {"-", file_text(kData + "cube.ply")},
-           {"-", file_text(kData + "cube.stl")},
-           {"-:stl", file_text(kData + "cube_binary.stl")},
+           {"-", test::file_text(kData + "cube_tri.obj")},
+           {"-", test::file_text(kData + "cube.ply")},
+           {"-", test::file_text(kData + "cube.stl")},
+           {"-:stl", test::file_text(kData + "cube_binary.stl")},
            {"-", "# points\n1 1 1\n1 1 -1\n1 -1 1\n1 -1 -1\n-1 1 1\n-1 1 -1\n-1 -1 1\n-1 -1 -1\n"},
            {"-:pts", "1 1 1\n1 1 -1\n1 -1 1\n1 -1 -1\n-1 1 1\n-1 1 -1\n-1 -1 1\n-1 -1 -1\n"},
        }) {
@@ -198,7 +191,7 @@ TEST_CASE("mesh files: - reads a shape from standard input", "[mesh]") {
     CHECK(json::parse(r.out).find("separation")->as_double() == 0.5);
   }
   // one object of an OBJ on standard input
-  const Run piece = query({"-#convex_1", kPieces + "#convex_0", "--json"}, file_text(kPieces));
+  const Run piece = query({"-#convex_1", kPieces + "#convex_0", "--json"}, test::file_text(kPieces));
   REQUIRE(piece.status == 0);
   CHECK(json::parse(piece.out).find("separation")->as_double() == Approx(-0.01).margin(1e-9));
   // errors: empty, read twice, not recognisable, an unknown format name, bad content

@@ -35,13 +35,6 @@ void check_triangulated_cube(const io::ShapeData& d) {
   }
 }
 
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 }  // namespace
 
 TEST_CASE("soup readers: the ASCII STL, binary STL and PLY cubes of tests/data", "[soup]") {
@@ -49,9 +42,9 @@ TEST_CASE("soup readers: the ASCII STL, binary STL and PLY cubes of tests/data",
   check_triangulated_cube(io::read_stl_file(kData + "cube_binary.stl"));
   check_triangulated_cube(io::read_ply_file(kData + "cube.ply"));
   // the same from a stream (standard input)
-  std::istringstream stl(file_text(kData + "cube_binary.stl"));
+  std::istringstream stl(test::file_text(kData + "cube_binary.stl"));
   check_triangulated_cube(io::read_stl(stl, "standard input"));
-  std::istringstream ply(file_text(kData + "cube.ply"));
+  std::istringstream ply(test::file_text(kData + "cube.ply"));
   check_triangulated_cube(io::read_ply(ply, "standard input"));
 }
 
