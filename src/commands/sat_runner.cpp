@@ -93,8 +93,10 @@ ShapeCounts counts_of(const ConvexPolyhedron<T>& p) {
   return ShapeCounts{p.vertex_count(), p.edge_count(), p.face_count(), p.is_flat()};
 }
 
+/// The manifold of shapes built at their coordinates minus centre, with the
+/// positions back in world coordinates.
 template <Number T>
-ManifoldOut manifold_out(const ContactManifold<T>& m) {
+ManifoldOut manifold_out(const ContactManifold<T>& m, const Vec3<T>& centre) {
   ManifoldOut out;
   out.kind = to_string(m.kind);
   out.reference_shape = m.reference_shape;
@@ -102,7 +104,8 @@ ManifoldOut manifold_out(const ContactManifold<T>& m) {
   out.incident_face = m.incident_face;
   out.candidate_points = m.candidate_points;
   for (const auto& p : m.points) {
-    out.points.push_back(ContactOut{vec_to_double(p.position), sepax::to_double(p.separation), to_string(p.id)});
+    out.points.push_back(ContactOut{Vec3<double>(vec_to_double(p.position) + vec_to_double(centre)),
+                                    sepax::to_double(p.separation), to_string(p.id)});
   }
   return out;
 }
@@ -114,8 +117,12 @@ SatResult<T> run_algorithm(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<
 
 template <Number T>
 RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b, const RunConfig& cfg) {
-  const ConvexPolyhedron<T> a = build_shape<T>(sa);
-  const ConvexPolyhedron<T> b = build_shape<T>(sb, pose_b);
+  // Both shapes in one frame near them (shape_builder.hpp, build_pair), so
+  // a small pair far from the origin is resolved as well as near it;
+  // positions are reported in world coordinates.
+  const ShapePair<T> pair = build_pair<T>(sa, sb, pose_b);
+  const ConvexPolyhedron<T>& a = pair.a;
+  const ConvexPolyhedron<T>& b = pair.b;
   SatResult<T> r;
   if (cfg.robust) {
 #if SEPAX_CLI_HAVE_ROBUST
@@ -144,7 +151,7 @@ RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pos
   out.normal = n;
   out.a = counts_of(a);
   out.b = counts_of(b);
-  out.manifold = manifold_out(contact_manifold(a, b, r));
+  out.manifold = manifold_out(contact_manifold(a, b, r), pair.origin);
   return out;
 }
 
@@ -160,11 +167,20 @@ RunOutcome run_sat(const io::ShapeData& a, const io::ShapeData& b, const Pose* p
   throw std::invalid_argument("unknown number type");
 }
 
+namespace {
+template <Number T>
+ShapeCounts counts_centred(const io::ShapeData& s, const Pose* pose) {
+  const std::vector<Vec3<T>> world[] = {shape_points<T>(s, pose)};
+  const Vec3<T> centre = io::exact_centre<T>(world);
+  return counts_of(build_shape<T>(s, pose, &centre));
+}
+}  // namespace
+
 ShapeCounts shape_counts(const io::ShapeData& s, NumberKind number, const Pose* pose) {
   switch (number) {
-    case NumberKind::Float: return counts_of(build_shape<float>(s, pose));
-    case NumberKind::Double: return counts_of(build_shape<double>(s, pose));
-    case NumberKind::Exact: return counts_of(build_shape<mpq_class>(s, pose));
+    case NumberKind::Float: return counts_centred<float>(s, pose);
+    case NumberKind::Double: return counts_centred<double>(s, pose);
+    case NumberKind::Exact: return counts_centred<mpq_class>(s, pose);
   }
   throw std::invalid_argument("unknown number type");
 }

@@ -15,11 +15,20 @@
 //   points               the pose (if any) applied in double, then
 //                        sepax::convex_hull<T> on the points converted to T
 //
+// A face list that validation refuses but is read from a file is accepted
+// when it is a closed convex mesh (io/convex_mesh.hpp: a triangulated cube
+// is the cube); otherwise the error suggests hull:FILE.
+//
+// With a centre c (io/exact_centre.hpp), the shape is built at its
+// coordinates in T minus c, each subtraction exact: the caller adds c back
+// to the positions it reports.  build_pair chooses the frame of a query.
+//
 // InvalidInput messages are prefixed with the shape's name, and with
 // "FILE:LINE" of the face they name when the face came from a file.
 #pragma once
 
 #include <cctype>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,10 +37,13 @@
 #include <sepax/error.hpp>
 
 #include "commands/pose.hpp"
+#include "io/exact_centre.hpp"
 #include "io/shape_data.hpp"
 
 #if __has_include(<sepax/convex_hull.hpp>)
 #include <sepax/convex_hull.hpp>
+
+#include "io/convex_mesh.hpp"
 #define SEPAX_CLI_HAVE_HULL 1
 #else
 #define SEPAX_CLI_HAVE_HULL 0
@@ -79,42 +91,127 @@ std::vector<Vec3<T>> converted(const io::ShapeData& s, const std::vector<Vec3<do
   return out;
 }
 
+/// The face list of s on the vertices v (s's, in T): validated as it is, or,
+/// for a file's face list that validation refuses, as a closed convex mesh.
 template <Number T>
-ConvexPolyhedron<T> build_unnamed(const io::ShapeData& s, const Pose* pose) {
+ConvexPolyhedron<T> face_polyhedron(const io::ShapeData& s, std::vector<Vec3<T>> v) {
+  try {
+    return ConvexPolyhedron<T>::from_faces(v, s.closed_faces());
+  } catch (const InvalidInput& e) {
+    if (!s.from_file || s.faces.size() < 2) throw;
+    switch (e.code()) {
+      case ErrorCode::NotConvex:
+      case ErrorCode::NotManifold:
+      case ErrorCode::BadEuler:
+      case ErrorCode::NonPlanarFace:
+      case ErrorCode::NonConvexFace:
+      case ErrorCode::InwardFaces:
+#if SEPAX_CLI_HAVE_HULL
+        return io::convex_mesh<T>(s, v);
+#endif
+      case ErrorCode::DegenerateFace:
+      case ErrorCode::UnusedVertex:
+        throw InvalidInput(e.code(), e.what() + std::string(io::kHullHint));
+      default:
+        throw;
+    }
+  }
+}
+
+/// The coordinates of s in T as it is placed (posed when pose is given): the
+/// points exact_centre<T> is taken over.
+template <Number T>
+std::vector<Vec3<T>> world_points(const io::ShapeData& s, const Pose* pose) {
+  if (!pose) return converted<T>(s, s.vertices);
+  std::vector<Vec3<double>> moved = s.vertices;
+  for (auto& p : moved) p = pose->apply(p);
+  return converted<T>(s, moved);
+}
+
+template <Number T>
+ConvexPolyhedron<T> build_unnamed(const io::ShapeData& s, const Pose* pose, const Vec3<T>& c) {
   if (s.kind == io::ShapeData::Kind::Points) {
 #if SEPAX_CLI_HAVE_HULL
-    std::vector<Vec3<double>> pts = s.vertices;
-    if (pose) {
-      for (auto& p : pts) p = pose->apply(p);
-    }
-    return convex_hull<T>(converted<T>(s, pts));
+    return convex_hull<T>(io::minus(world_points<T>(s, pose), c));
 #else
     (void)pose;
     throw InvalidInput(ErrorCode::Parse, "this build of sepax has no hull builder (sepax/convex_hull.hpp)");
 #endif
   }
-  if (!pose) return ConvexPolyhedron<T>::from_faces(converted<T>(s, s.vertices), s.closed_faces());
-  const auto base = ConvexPolyhedron<double>::from_faces(s.vertices, s.closed_faces());
+  if (!pose) return face_polyhedron<T>(s, io::minus(converted<T>(s, s.vertices), c));
+  const auto base = face_polyhedron<double>(s, s.vertices);
   std::vector<Vec3<double>> moved;
-  moved.reserve(s.vertices.size());
+  moved.reserve(base.vertices().size());
   for (const auto& p : base.vertices()) moved.push_back(pose->apply(p));
-  const auto posed = base.with_vertices(std::move(moved));
+  std::vector<Vec3<T>> local = io::minus(converted<T>(s, moved), c);
   if constexpr (std::is_same_v<T, double>) {
-    return posed;
+    return base.with_vertices(std::move(local));
   } else {
-    return ConvexPolyhedron<T>::convert_from(posed);
+    return ConvexPolyhedron<T>::convert_from(base).with_vertices(std::move(local));
   }
 }
 
 }  // namespace detail
 
+/// The coordinates of s in T as placed (posed by pose); errors named like
+/// build_shape's.
 template <Number T>
-ConvexPolyhedron<T> build_shape(const io::ShapeData& s, const Pose* pose = nullptr) {
+std::vector<Vec3<T>> shape_points(const io::ShapeData& s, const Pose* pose = nullptr) {
   try {
-    return detail::build_unnamed<T>(s, pose);
+    return detail::world_points<T>(s, pose);
   } catch (const InvalidInput& e) {
     throw InvalidInput(e.code(), detail::located_message(s, e.what()));
   }
+}
+
+/// s built in T (posed by pose), at its coordinates minus *centre when given.
+template <Number T>
+ConvexPolyhedron<T> build_shape(const io::ShapeData& s, const Pose* pose = nullptr, const Vec3<T>* centre = nullptr) {
+  try {
+    return detail::build_unnamed<T>(s, pose, centre ? *centre : Vec3<T>(T(0), T(0), T(0)));
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(e.code(), detail::located_message(s, e.what()));
+  }
+}
+
+/// A query's two shapes in one frame, and that frame's origin in world
+/// coordinates (add it to positions to report them).
+template <Number T>
+struct ShapePair {
+  ConvexPolyhedron<T> a, b;
+  Vec3<T> origin;
+};
+
+/// A and B (B posed by pose_b) built for one query.  Normally both at their
+/// coordinates in T minus one exact centre (io/exact_centre.hpp): the shapes
+/// read, only moved.  When that frame is too far from one of them for T
+/// (two small shapes far apart from each other, in float), each is built and
+/// validated around its own exact centre, and B is then expressed in A's
+/// frame: its vertices' coordinates minus A's centre, rounded to T once, not
+/// re-validated there (as a posed shape is).
+template <Number T>
+ShapePair<T> build_pair(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b) {
+  const std::vector<Vec3<T>> world[] = {shape_points<T>(sa), shape_points<T>(sb, pose_b)};
+  const Vec3<T> c = io::exact_centre<T>(world);
+  if (io::resolvable_around(world[0], c) && io::resolvable_around(world[1], c)) {
+    return ShapePair<T>{build_shape<T>(sa, nullptr, &c), build_shape<T>(sb, pose_b, &c), c};
+  }
+  const Vec3<T> ca = io::exact_centre<T>(std::span(world, 1));
+  const Vec3<T> cb = io::exact_centre<T>(std::span(world + 1, 1));
+  ConvexPolyhedron<T> b = build_shape<T>(sb, pose_b, &cb);
+  std::vector<Vec3<T>> moved;
+  moved.reserve(b.vertices().size());
+  for (const auto& v : b.vertices()) {
+    // float: the sum of three floats in double (exact for coordinates within
+    // 2^29 of each other's magnitude), rounded once; double: v + cb restores
+    // the coordinate read (exact), minus ca rounded once.
+    if constexpr (std::is_same_v<T, float>) {
+      moved.push_back(vec_from_double<T>(Vec3<double>(vec_to_double(v) + vec_to_double(cb) - vec_to_double(ca))));
+    } else {
+      moved.push_back(Vec3<T>(Vec3<T>(v + cb) - ca));
+    }
+  }
+  return ShapePair<T>{build_shape<T>(sa, nullptr, &ca), b.with_vertices(std::move(moved)), ca};
 }
 
 }  // namespace sepax::cli

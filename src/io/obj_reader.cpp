@@ -1,20 +1,67 @@
 // src/io/obj_reader.cpp -- see obj_reader.hpp.
 #include "io/obj_reader.hpp"
 
-#include <limits>
+#include <charconv>
+#include <map>
+
+#include <sepax/error.hpp>
 
 #include "io/open_file.hpp"
 #include "io/text_input.hpp"
 
 namespace sepax::cli::io {
 
-ShapeData read_obj(std::istream& in, const std::string& name) {
+namespace {
+
+/// The name an 'o' or 'g' statement gives: the rest of the line, or "" (the
+/// default group) when there is none.
+std::string statement_name(const std::vector<std::string_view>& tok) {
+  std::string n;
+  for (std::size_t k = 1; k < tok.size(); ++k) {
+    if (k > 1) n += ' ';
+    n += tok[k];
+  }
+  return n;
+}
+
+/// One object: the faces whose 'o' (or, without any 'o', 'g') name is name,
+/// with the vertices they use, renumbered in file order.
+ShapeData object_shape(const ShapeData& all, const std::string& name, const std::vector<std::size_t>& faces) {
+  ShapeData out;
+  out.kind = ShapeData::Kind::Faces;
+  out.name = name;
+  out.from_file = true;
+  std::vector<int> renumber(all.vertices.size(), -1);
+  for (const std::size_t f : faces) {
+    for (const int v : all.faces[f]) renumber[static_cast<std::size_t>(v)] = 0;
+  }
+  for (std::size_t v = 0; v < renumber.size(); ++v) {
+    if (renumber[v] < 0) continue;
+    renumber[v] = static_cast<int>(out.vertices.size());
+    out.vertices.push_back(all.vertices[v]);
+  }
+  for (const std::size_t f : faces) {
+    std::vector<int> loop;
+    for (const int v : all.faces[f]) loop.push_back(renumber[static_cast<std::size_t>(v)]);
+    out.faces.push_back(std::move(loop));
+    out.face_lines.push_back(all.face_lines[f]);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<ObjObject> read_obj_objects(std::istream& in, const std::string& name) {
   LineReader r(in, name);
   ShapeData out;
   out.kind = ShapeData::Kind::Faces;
   out.name = name;
   std::string line;
   bool any_content = false;
+  // The current 'o' and 'g' names, and each face's.
+  std::string o_name, g_name;
+  bool any_o = false;
+  std::vector<std::string> face_o, face_g;
   while (r.next(line)) {
     const auto tok = tokens(line);
     if (tok.empty()) continue;
@@ -62,13 +109,74 @@ ShapeData read_obj(std::istream& in, const std::string& name) {
       }
       out.faces.push_back(std::move(face));
       out.face_lines.push_back(r.line_number());
+      face_o.push_back(o_name);
+      face_g.push_back(g_name);
+    } else if (tok[0] == "o") {
+      o_name = statement_name(tok);
+      any_o = true;
+    } else if (tok[0] == "g") {
+      g_name = statement_name(tok);
     }
     // every other statement is ignored
   }
   if (!any_content) r.fail("empty file: no 'v' or 'f' statements");
   if (out.vertices.empty()) r.fail("no vertices ('v' lines) in the file");
   if (out.faces.empty()) r.fail("no faces ('f' lines) in the file (for a point set, use a points file)");
-  return out;
+
+  // Objects by 'o' name when the file has 'o' statements, else by 'g' name;
+  // statements of the same name are one object, in order of first use.
+  const std::vector<std::string>& key = any_o ? face_o : face_g;
+  std::vector<std::string> names;
+  std::map<std::string, std::vector<std::size_t>> faces_of;
+  for (std::size_t f = 0; f < key.size(); ++f) {
+    auto& list = faces_of[key[f]];
+    if (list.empty()) names.push_back(key[f]);
+    list.push_back(f);
+  }
+  std::vector<ObjObject> objects;
+  if (names.size() == 1) {
+    // One object: the file itself (vertices no face uses are dropped).
+    objects.push_back(ObjObject{names[0], object_shape(out, name, faces_of[names[0]])});
+    return objects;
+  }
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    objects.push_back(ObjObject{names[k], object_shape(out, name + "#" + (names[k].empty() ? std::to_string(k) : names[k]),
+                                                       faces_of[names[k]])});
+  }
+  return objects;
+}
+
+std::string object_list(const std::vector<ObjObject>& objects) {
+  std::string s;
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    s += (k ? ", " : "") + std::to_string(k) + " '" + objects[k].name + "'";
+  }
+  return s;
+}
+
+ShapeData select_object(const std::vector<ObjObject>& objects, const std::string& file,
+                        const std::optional<std::string>& selector) {
+  if (!selector) {
+    if (objects.size() == 1) return objects[0].shape;
+    throw InvalidInput(ErrorCode::Parse, file + ": the file holds " + std::to_string(objects.size()) +
+                                             " objects (" + object_list(objects) + "); select one with " + file +
+                                             "#NAME or " + file + "#K ('sepax info " + file + "' lists them)");
+  }
+  for (const auto& o : objects) {
+    if (o.name == *selector) return o.shape;
+  }
+  std::size_t k = 0;
+  const auto r = std::from_chars(selector->data(), selector->data() + selector->size(), k);
+  if (!selector->empty() && r.ec == std::errc() && r.ptr == selector->data() + selector->size() &&
+      k < objects.size()) {
+    return objects[k].shape;
+  }
+  throw InvalidInput(ErrorCode::Parse, file + ": no object '" + *selector + "' (the file holds " +
+                                           std::to_string(objects.size()) + ": " + object_list(objects) + ")");
+}
+
+ShapeData read_obj(std::istream& in, const std::string& name) {
+  return select_object(read_obj_objects(in, name), name, std::nullopt);
 }
 
 ShapeData read_obj_file(const std::string& path) {

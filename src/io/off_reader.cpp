@@ -34,6 +34,7 @@ ShapeData read_off(std::istream& in, const std::string& name) {
   ShapeData out;
   out.kind = ShapeData::Kind::Faces;
   out.name = name;
+  out.from_file = true;
   std::string line;
   std::vector<std::string_view> tok;
 

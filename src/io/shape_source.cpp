@@ -6,12 +6,18 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
 
 #include <sepax/shapes.hpp>
 
 #include "io/obj_reader.hpp"
 #include "io/off_reader.hpp"
+#include "io/open_file.hpp"
 #include "io/points_reader.hpp"
+#include "io/soup_reader.hpp"
+#include "io/text_input.hpp"
 
 namespace sepax::cli::io {
 
@@ -113,17 +119,110 @@ ShapeData builtin_shape_unnamed(const std::string& spec) {
 
 }  // namespace
 
-ShapeData load_shape(const std::string& spec) {
+namespace {
+
+/// "FILE.obj#SEL" -> ("FILE.obj", "SEL"); anything else -> (spec, none).
+std::pair<std::string, std::optional<std::string>> split_selector(const std::string& spec) {
+  const std::size_t hash = spec.rfind('#');
+  if (hash == std::string::npos) return {spec, std::nullopt};
+  const std::string file = spec.substr(0, hash);
+  if (lower_extension(file) != ".obj" && file != "-" && file != "-:obj") return {spec, std::nullopt};
+  return {file, spec.substr(hash + 1)};
+}
+
+/// The format of a mesh on standard input, from its first statement:
+/// "OFF" (and COFF, NOFF, ...), "ply", "solid" (ASCII STL), an OBJ keyword
+/// (v, vt, vn, f, o, g, ...), or a line of three numbers (a points file).
+std::string sniffed_format(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto tok = tokens(line, /*commas_separate=*/true);
+    if (tok.empty()) continue;
+    const std::string_view t = tok[0];
+    if (t.ends_with("OFF")) return "off";
+    if (t == "ply") return "ply";
+    if (t == "solid") return "stl";
+    static constexpr std::string_view obj_words[] = {"v", "vt", "vn", "vp", "f", "o", "g", "s", "l", "p", "usemtl", "mtllib"};
+    for (const auto w : obj_words) {
+      if (t == w) return "obj";
+    }
+    if (tok.size() == 3 && std::isdigit(static_cast<unsigned char>(t.back()))) return "pts";
+    break;
+  }
+  throw InvalidInput(ErrorCode::Parse,
+                     "standard input: cannot tell the format from the content; name it: -:off, -:obj, -:ply, "
+                     "-:stl or -:pts");
+}
+
+ShapeData read_stdin(const std::string& spec, const std::optional<std::string>& selector, std::istream& in) {
+  std::string format = spec == "-" ? "" : spec.substr(2);
+  std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (!in.good() || in.peek() == std::char_traits<char>::eof()) {
+    throw InvalidInput(ErrorCode::Parse, "standard input: nothing to read (empty, or already read by another '-')");
+  }
+  std::ostringstream all;
+  all << in.rdbuf();
+  const std::string text = all.str();
+  if (format.empty()) format = sniffed_format(text);
+  std::istringstream s(text);
+  const std::string name = "standard input";
+  if (format == "off") return read_off(s, name);
+  if (format == "obj") return select_object(read_obj_objects(s, name), name, selector);
+  if (format == "pts" || format == "xyz" || format == "txt") return read_points(s, name);
+  if (format == "ply") return read_ply(s, name);
+  if (format == "stl") return read_stl(s, name);
+  throw InvalidInput(ErrorCode::Parse, "'" + spec + "': unknown format '" + format + "' (off, obj, ply, stl or pts)");
+}
+
+/// A face list's vertices as a point set (to be hulled).
+ShapeData as_points(ShapeData d, const std::string& spec) {
+  d.kind = ShapeData::Kind::Points;
+  d.name = spec;
+  d.faces.clear();
+  d.face_lines.clear();
+  return d;
+}
+
+}  // namespace
+
+ShapeData load_shape(const std::string& spec, std::istream& standard_input) {
   if (spec.empty()) throw InvalidInput(ErrorCode::Parse, "empty shape argument");
+  if (spec.starts_with("hull:")) return as_points(load_shape(spec.substr(5), standard_input), spec);
   if (is_builtin_shape(spec)) return builtin_shape(spec);
-  const std::string ext = lower_extension(spec);
+  const auto [file, selector] = split_selector(spec);
+  if (file == "-" || file.starts_with("-:")) return read_stdin(file, selector, standard_input);
+  const std::string ext = lower_extension(file);
+  if (ext == ".obj") {
+    auto in = open_input(file);
+    return select_object(read_obj_objects(in, file), file, selector);
+  }
   if (ext == ".off") return read_off_file(spec);
-  if (ext == ".obj") return read_obj_file(spec);
   if (ext == ".pts" || ext == ".xyz" || ext == ".txt") return read_points_file(spec);
+  if (ext == ".ply") return read_ply_file(spec);
+  if (ext == ".stl") return read_stl_file(spec);
   throw InvalidInput(ErrorCode::Parse,
                      "'" + spec + "' is neither a built-in shape (" +
                          "cube, box:HX,HY,HZ, tetra, prism:N, polygon:N, triangle) nor a file with a known " +
-                         "extension (.off, .obj, or .pts/.xyz/.txt for a points file)");
+                         "extension (.off, .obj, .ply, .stl, or .pts/.xyz/.txt for a points file), nor - " +
+                         "(standard input)");
+}
+
+ShapeData load_shape(const std::string& spec) { return load_shape(spec, std::cin); }
+
+std::optional<std::string> object_listing(const std::string& spec) {
+  if (lower_extension(spec) != ".obj" || spec.starts_with("hull:")) return std::nullopt;
+  auto in = open_input(spec);
+  const auto objects = read_obj_objects(in, spec);
+  if (objects.size() < 2) return std::nullopt;
+  std::string s = spec + ": " + std::to_string(objects.size()) + " objects (select one with " + spec +
+                  "#NAME or " + spec + "#K)\n";
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    const ShapeData& d = objects[k].shape;
+    s += "  " + std::to_string(k) + "  " + (objects[k].name.empty() ? "(no name)" : objects[k].name) + ": " +
+         std::to_string(d.vertices.size()) + " vertices, " + std::to_string(d.faces.size()) + " faces in the file\n";
+  }
+  return s;
 }
 
 const char* builtin_shapes_help() {
@@ -133,8 +232,12 @@ const char* builtin_shapes_help() {
          "  prism:N            regular N-gon prism around z, circumradius 1, z in [-1,1]\n"
          "  polygon:N          double-sided regular N-gon in the plane z = 0, circumradius 1\n"
          "  triangle           double-sided triangle (0,0,0), (1,0,0), (0,1,0)\n"
-         "  FILE.off, FILE.obj face lists (one face: a double-sided polygon);\n"
-         "                     FILE.pts, FILE.xyz, FILE.txt: points (hulled)\n";
+         "  FILE.off|.obj|.ply|.stl   a face list (one face: a double-sided polygon; a closed\n"
+         "                     convex mesh, e.g. triangulated, is the polyhedron it bounds)\n"
+         "  FILE.obj#NAME|#K   one object ('o', else 'g') of an OBJ file (K counts from 0)\n"
+         "  FILE.pts|.xyz|.txt points (hulled)\n"
+         "  hull:SHAPE         the convex hull of SHAPE's vertices\n"
+         "  -, -:FORMAT        standard input (FORMAT off, obj, ply, stl or pts; - alone guesses)\n";
 }
 
 }  // namespace sepax::cli::io

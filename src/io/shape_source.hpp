@@ -17,6 +17,8 @@
 // on as a face list.  Errors: InvalidInput naming the argument or FILE:LINE.
 #pragma once
 
+#include <istream>
+#include <optional>
 #include <string>
 
 #include "io/shape_data.hpp"
@@ -29,8 +31,14 @@ bool is_builtin_shape(const std::string& spec);
 /// The built-in shape spec as a face list (InvalidInput for bad parameters).
 ShapeData builtin_shape(const std::string& spec);
 
-/// A built-in shape or a file (by extension).
+/// A built-in shape, a file (by extension), hull:SPEC, or - (read from
+/// standard_input; std::cin in the one-argument form).
+ShapeData load_shape(const std::string& spec, std::istream& standard_input);
 ShapeData load_shape(const std::string& spec);
+
+/// For an OBJ file of several objects, one line per object (index, name,
+/// counts) for `sepax info`; nullopt for any other shape argument.
+std::optional<std::string> object_listing(const std::string& spec);
 
 /// One line per built-in, for --help.
 const char* builtin_shapes_help();

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <system_error>
 
@@ -35,6 +36,14 @@ struct TempDir {
     return p.string();
   }
 };
+
+/// The whole content of the file at path (binary-safe; "" when unreadable).
+inline std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 /// A file `name` with `text` in this process's temporary directory; its path.
 inline std::string temp_file(const std::string& name, const std::string& text) {

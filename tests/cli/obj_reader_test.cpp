@@ -1,6 +1,7 @@
 // Tests for src/io/obj_reader.cpp.
 #include <catch2/catch.hpp>
 
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -101,4 +102,73 @@ TEST_CASE("obj: malformed files are rejected naming FILE:LINE and the problem", 
 
 TEST_CASE("obj: a missing file is an error naming it", "[obj]") {
   CHECK_THROWS_WITH(io::read_obj_file("/nonexistent/x.obj"), Catch::StartsWith("/nonexistent/x.obj: cannot open"));
+}
+
+TEST_CASE("obj: each 'o' is one object; indices stay global, negative ones relative", "[obj]") {
+  // two tetrahedra, the second written with negative indices and after it a
+  // third object; a 'g' inside an object does not split it
+  const std::string text =
+      "o first\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\ng part\nf 1 4 3\nf 2 3 4\n"
+      "o second\nv 5 0 0\nv 6 0 0\nv 5 1 0\nv 5 0 1\nf -4 -2 -3\nf -4 -3 -1\nf -4 -1 -2\nf -3 -2 -1\n"
+      "o third\nf 5 7 6\nf 5 6 8\nf 5 8 7\nf 6 7 8\n";
+  std::istringstream in(text);
+  const auto objects = io::read_obj_objects(in, "p.obj");
+  REQUIRE(objects.size() == 3);
+  CHECK(objects[0].name == "first");
+  CHECK(objects[1].name == "second");
+  CHECK(objects[0].shape.name == "p.obj#first");
+  CHECK(objects[0].shape.faces.size() == 4);
+  CHECK(objects[0].shape.vertices.size() == 4);
+  // the second object's own vertices, renumbered from 0 in file order
+  CHECK(objects[1].shape.vertices.front() == Vec3<double>(5, 0, 0));
+  CHECK(objects[1].shape.faces.front() == std::vector<int>{0, 2, 1});
+  CHECK(objects[1].shape.face_lines.front() == 16);
+  // the third reuses the second's vertices through global indices
+  CHECK(objects[2].shape.vertices == objects[1].shape.vertices);
+  CHECK(ConvexPolyhedron<double>::from_faces(objects[2].shape.vertices, objects[2].shape.faces).face_count() == 4);
+
+  CHECK(io::select_object(objects, "p.obj", std::string("second")).name == "p.obj#second");
+  CHECK(io::select_object(objects, "p.obj", std::string("2")).name == "p.obj#third");
+  CHECK_THROWS_WITH(io::select_object(objects, "p.obj", std::nullopt),
+                    Catch::Contains("p.obj: the file holds 3 objects (0 'first', 1 'second', 2 'third')") &&
+                        Catch::Contains("p.obj#NAME"));
+  CHECK_THROWS_WITH(io::select_object(objects, "p.obj", std::string("fourth")),
+                    Catch::Contains("no object 'fourth'") && Catch::Contains("2 'third'"));
+  CHECK_THROWS_WITH(io::select_object(objects, "p.obj", std::string("3")), Catch::Contains("no object '3'"));
+  std::istringstream again(text);
+  CHECK_THROWS_WITH(io::read_obj(again, "p.obj"), Catch::Contains("holds 3 objects"));
+}
+
+TEST_CASE("obj: without 'o' statements each 'g' is one object; one object is the file", "[obj]") {
+  const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  std::istringstream groups(tet + "g a\nf 1 3 2\nf 1 2 4\ng b\nf 1 4 3\ng a\nf 2 3 4\n");
+  const auto objects = io::read_obj_objects(groups, "g.obj");
+  REQUIRE(objects.size() == 2);
+  CHECK(objects[0].name == "a");
+  CHECK(objects[0].shape.faces.size() == 3);  // both 'g a' runs
+  CHECK(objects[1].shape.faces.size() == 1);
+  // faces before any name form the object "" (named by its index)
+  std::istringstream unnamed(tet + "f 1 3 2\ng b\nf 1 2 4\n");
+  const auto u = io::read_obj_objects(unnamed, "u.obj");
+  REQUIRE(u.size() == 2);
+  CHECK(u[0].name.empty());
+  CHECK(u[0].shape.name == "u.obj#0");
+  // one object: the file's name, unused vertices dropped
+  std::istringstream one("v 9 9 9\n" + tet + "o only\nf 2 4 3\nf 2 3 5\nf 2 5 4\nf 3 4 5\n");
+  const auto d = io::read_obj(one, "one.obj");
+  CHECK(d.name == "one.obj");
+  CHECK(d.vertices.size() == 4);
+  CHECK(d.vertices.front() == Vec3<double>(0, 0, 0));
+}
+
+TEST_CASE("obj: the V-HACD-style file of tests/data has three pieces", "[obj]") {
+  const auto objects = [] {
+    std::ifstream in(std::string(SEPAX_SOURCE_DIR) + "/tests/data/vhacd_pieces.obj");
+    return io::read_obj_objects(in, "vhacd_pieces.obj");
+  }();
+  REQUIRE(objects.size() == 3);
+  CHECK(objects[0].name == "convex_0");
+  CHECK(objects[2].name == "convex_2");
+  CHECK(objects[0].shape.faces.size() == 12);  // triangulated box
+  CHECK(objects[2].shape.vertices.size() == 14);
 }

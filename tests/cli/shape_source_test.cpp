@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <unistd.h>
@@ -100,7 +101,9 @@ TEST_CASE("shape source: files are read by extension", "[shapes]") {
   CHECK(io::load_shape(txt).kind == io::ShapeData::Kind::Points);
   CHECK(io::load_shape(dir.write("c.pts", "0 0 0\n")).vertices.size() == 1);
 
-  CHECK_THROWS_WITH(io::load_shape(dir.write("c.stl", "solid")), Catch::Contains("known extension"));
+  CHECK_THROWS_WITH(io::load_shape(dir.write("c.3ds", "solid")), Catch::Contains("known extension"));
+  // .stl and .ply are read (soup_reader.hpp): an STL without facets is an error naming it
+  CHECK_THROWS_WITH(io::load_shape(dir.write("c.stl", "solid")), Catch::Contains("c.stl: no vertices"));
   CHECK_THROWS_WITH(io::load_shape((dir.path / "missing.off").string()), Catch::Contains("missing.off: cannot open"));
   CHECK_THROWS_WITH(io::load_shape(""), Catch::Contains("empty shape argument"));
   // a built-in name wins over a file; ./name reads the file
@@ -108,4 +111,44 @@ TEST_CASE("shape source: files are read by extension", "[shapes]") {
   CHECK_THROWS_WITH(io::load_shape("./cube"), Catch::Contains("known extension"));
   CHECK_FALSE(io::is_builtin_shape("cubes"));
   CHECK_FALSE(io::is_builtin_shape("boxes.off"));
+}
+
+TEST_CASE("shape source: OBJ objects by #NAME or #K, hull:, and - for standard input", "[shapes]") {
+  const test::TempDir dir("sepax_shape_source_objects");
+  const std::string tet = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\n";
+  const std::string faces = "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
+  const std::string two = dir.write("two.obj", "o a\n" + tet + faces + "o b piece\n" + tet + "f -4 -3 -2\nf -4 -1 -3\nf -4 -2 -1\nf -3 -1 -2\n");
+  CHECK(io::load_shape(two + "#a").name == two + "#a");
+  CHECK(io::load_shape(two + "#b piece").vertices.size() == 4);
+  CHECK(io::load_shape(two + "#1").name == two + "#b piece");
+  CHECK_THROWS_WITH(io::load_shape(two), Catch::Contains("holds 2 objects (0 'a', 1 'b piece')"));
+  CHECK_THROWS_WITH(io::load_shape(two + "#c"), Catch::Contains("no object 'c'"));
+  // a '#' in another file's name is part of the name
+  CHECK_THROWS_WITH(io::load_shape(dir.path.string() + "/x#1.off"), Catch::Contains("x#1.off: cannot open"));
+  const auto listing = io::object_listing(two);
+  REQUIRE(listing);
+  CHECK_THAT(*listing, Catch::Contains("2 objects") && Catch::Contains("1  b piece: 4 vertices, 4 faces"));
+  CHECK_FALSE(io::object_listing(two + "#a"));
+  CHECK_FALSE(io::object_listing("cube"));
+
+  // hull: the vertices as a point set, named as written
+  const auto h = io::load_shape("hull:" + two + "#a");
+  CHECK(h.kind == io::ShapeData::Kind::Points);
+  CHECK(h.name == "hull:" + two + "#a");
+  CHECK(h.vertices.size() == 4);
+  CHECK(h.faces.empty());
+  CHECK(io::load_shape("hull:cube").vertices.size() == 8);
+  CHECK_THROWS_WITH(io::load_shape("hull:"), Catch::Contains("empty shape argument"));
+
+  // standard input
+  std::istringstream obj(tet + faces);
+  const auto s = io::load_shape("-", obj);
+  CHECK(s.name == "standard input");
+  CHECK(s.faces.size() == 4);
+  std::istringstream objects("o a\n" + tet + faces + "o b\n" + tet + faces);
+  CHECK(io::load_shape("-:obj#b", objects).vertices.size() == 4);
+  std::istringstream points("1,1,1\n1,-1,-1\n-1,1,-1\n-1,-1,1\n");
+  CHECK(io::load_shape("hull:-", points).kind == io::ShapeData::Kind::Points);
+  std::istringstream counts("4 4 6\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+  CHECK(io::load_shape("-:OFF", counts).faces.size() == 4);  // a header-less OFF must be named
 }
