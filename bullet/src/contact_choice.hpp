@@ -86,23 +86,23 @@ inline SatResult<float> choose_contact(const ConvexPolyhedron<float>& a, const C
   Vec3<float> axis;
   for (int i = 0; i < 3; ++i) axis[i] = dot(pose_a.column(i), r.axis);
   const Vec3<float> neg(-axis[0], -axis[1], -axis[2]);
-  detail::FaceQuery qa, qb;
-  if (t == FeatureType::FaceA) {
-    qa.face = r.feature.a;
-    qa.support = r.feature.b;
-    qa.separation = to_double(r.separation);
-  } else {
-    qa = detail::face_query(a, axis);
-    detail::face_separation(a, bp, qa);
-  }
-  if (t == FeatureType::FaceB) {
-    qb.face = r.feature.b;
-    qb.support = r.feature.a;
-    qb.separation = to_double(r.separation);
-  } else {
-    qb = detail::face_query(bp, neg);
-    detail::face_separation(bp, a, qb);
-  }
+  // Each shape's candidate face: the SAT's own when it is a face of that
+  // shape, else the face most aligned with the axis (towards the other).
+  auto candidate = [&](bool from_sat, int face, int support, const ConvexPolyhedron<float>& p,
+                       const ConvexPolyhedron<float>& q, const Vec3<float>& d) {
+    detail::FaceQuery fq;
+    if (from_sat) {
+      fq.face = face;
+      fq.support = support;
+      fq.separation = to_double(r.separation);
+    } else {
+      fq = detail::face_query(p, d);
+      detail::face_separation(p, q, fq);
+    }
+    return fq;
+  };
+  const detail::FaceQuery qa = candidate(t == FeatureType::FaceA, r.feature.a, r.feature.b, a, bp, axis);
+  const detail::FaceQuery qb = candidate(t == FeatureType::FaceB, r.feature.b, r.feature.a, bp, a, neg);
   const double tol = kAbsTolerance * std::min(a.extent(), bp.extent());
   const bool use_b = qb.separation > kRelFace * qa.separation + tol;
   const detail::FaceQuery& qf = use_b ? qb : qa;
