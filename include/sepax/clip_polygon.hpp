@@ -66,9 +66,9 @@ inline int shared_corner(int t1, int h1, int t2, int h2) {
 
 /// Clip `in` against `plane` into `out` (cleared first).  `incident_face` is
 /// the incident face index (the incident feature of reference corners).
-template <Number T>
-void clip_polygon(const std::vector<ClipVertex<T>>& in, const ClipPlane<T>& plane, int incident_face,
-                  std::vector<ClipVertex<T>>& out) {
+/// Poly: std::vector<ClipVertex<T>> or a SmallVector of them.
+template <Number T, class Poly>
+void clip_polygon(const Poly& in, const ClipPlane<T>& plane, int incident_face, Poly& out) {
   out.clear();
   const std::size_t n = in.size();
   if (n == 0) return;
@@ -131,8 +131,8 @@ void clip_polygon(const std::vector<ClipVertex<T>>& in, const ClipPlane<T>& plan
 /// vertex kept before them.  The first vertex of a run is kept, with the label
 /// of the last one (the segment leaving the run).  tol2 = 0 removes exact
 /// duplicates only (the exact-type case).
-template <Number T>
-void weld_polygon(std::vector<ClipVertex<T>>& poly, const T& tol2) {
+template <Number T, class Poly>
+void weld_polygon(Poly& poly, const T& tol2) {
   if (poly.size() < 2) return;
   auto close = [&](const ClipVertex<T>& x, const ClipVertex<T>& y) {
     return !(squared_norm(Vec3<T>(x.point - y.point)) > tol2);

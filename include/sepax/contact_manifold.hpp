@@ -66,6 +66,7 @@
 #include "sat_gauss_map.hpp"
 #include "sat_result.hpp"
 #include "separation.hpp"
+#include "small_vector.hpp"
 #include "tolerances.hpp"
 
 namespace sepax {
@@ -111,6 +112,15 @@ struct ClipStep {
   int vertices_out = 0;
 };
 
+/// Inline capacities (small_vector.hpp): a manifold keeps up to
+/// kManifoldInlinePoints points without allocating (with ManifoldOptions::
+/// reduce, the default, it keeps at most 4); the clipped incident polygon
+/// and its candidate points use up to kManifoldInlineClip vertices on the
+/// stack (the reduction's tables: manifold_reduction.hpp).  Beyond these
+/// sizes they spill to the heap.
+inline constexpr std::size_t kManifoldInlinePoints = 8;
+inline constexpr std::size_t kManifoldInlineClip = kReductionInlinePoints;
+
 template <class T>
 struct ContactManifold {
   ContactKind kind = ContactKind::None;
@@ -132,7 +142,7 @@ struct ContactManifold {
   /// Face contact whose clipped incident face was empty: the manifold is the
   /// support vertex alone (a safety net; see docs/contacts.md).
   bool support_fallback = false;
-  std::vector<ContactPoint<T>> points;
+  SmallVector<ContactPoint<T>, kManifoldInlinePoints> points;
   /// Filled when ManifoldOptions::record_steps is set.
   std::vector<ClipStep> clip_steps;
 
@@ -253,10 +263,15 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   m.incident_face = inc;
 
   // The incident polygon, with its features.
-  std::vector<ClipVertex<T>> poly, tmp;
-  poly.reserve(static_cast<std::size_t>(I.face(inc).count) + 8);
-  tmp.reserve(poly.capacity());
+  // Two buffers, swapped by pointer after each clip step.
+  using Poly = SmallVector<ClipVertex<T>, kManifoldInlineClip>;
+  Poly buf0, buf1;
+  Poly* pp = &buf0;
+  Poly* tp = &buf1;
+  pp->reserve(static_cast<std::size_t>(I.face(inc).count) + 8);
+  tp->reserve(pp->capacity());
   {
+    Poly& poly = *pp;
     int h = I.face(inc).edge;
     for (int i = 0; i < I.face(inc).count; ++i, h = I.half_edge(h).next) {
       ClipVertex<T> v;
@@ -272,7 +287,9 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   const T weld2 = extent_tolerance(a, b, Tolerances<T>::contact_weld, 2);
   {
     int h = R.face(ref_face).edge;
-    for (int i = 0; i < R.face(ref_face).count && !poly.empty(); ++i, h = R.half_edge(h).next) {
+    for (int i = 0; i < R.face(ref_face).count && !pp->empty(); ++i, h = R.half_edge(h).next) {
+      Poly& poly = *pp;
+      Poly& tmp = *tp;
       const int tail = R.half_edge(h).origin;
       const int head = R.half_edge(R.half_edge(h).next).origin;
       ClipPlane<T> cp;
@@ -286,12 +303,13 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
       if (opt.record_steps) {
         m.clip_steps.push_back(ClipStep{cp.edge, static_cast<int>(poly.size()), static_cast<int>(tmp.size())});
       }
-      poly.swap(tmp);
+      std::swap(pp, tp);
     }
   }
+  Poly& poly = *pp;
   // Keep the points below the reference face (within the margin).
   const T n2 = norm2_of(nr);
-  std::vector<ContactPoint<T>> pts;
+  SmallVector<ContactPoint<T>, kManifoldInlineClip> pts;
   pts.reserve(poly.size());
   auto keep_points = [&] {
     for (const auto& v : poly) {
@@ -330,11 +348,12 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   }
   m.candidate_points = static_cast<int>(pts.size());
   if (!opt.reduce || pts.size() <= 4) {
-    m.points = std::move(pts);
+    m.points.clear();
+    m.points.append(pts.begin(), pts.end());
     return;
   }
-  std::vector<Vec3<T>> pos;
-  std::vector<T> keys;
+  SmallVector<Vec3<T>, kManifoldInlineClip> pos;
+  SmallVector<T, kManifoldInlineClip> keys;
   pos.reserve(pts.size());
   keys.reserve(pts.size());
   for (const auto& c : pts) {
@@ -343,7 +362,8 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   }
   const T area_tol = extent_tolerance(a, b, Tolerances<T>::contact_area, 3);
   const T key_tol = extent_tolerance(a, b, Tolerances<T>::contact_weld, 1);
-  const auto keep = reduce_contact_points(pos, keys, nr, key_tol, area_tol);
+  SmallVector<int, 4> keep;
+  reduce_contact_points_into(pos, keys, nr, key_tol, area_tol, keep);
   for (int i : keep) m.points.push_back(pts[static_cast<std::size_t>(i)]);
 }
 
@@ -455,7 +475,7 @@ void side_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
     Vec3<T> point;
     ContactFeatureId id;  // R's feature first
   };
-  std::vector<End> ends;
+  SmallVector<End, 2> ends;
   auto at = [&](const T& g) {  // the point of p -> q where d.(x - t) == g
     const T lambda = T(g - gp) / T(gq - gp);
     return Vec3<T>(p[0] + lambda * (q[0] - p[0]), p[1] + lambda * (q[1] - p[1]), p[2] + lambda * (q[2] - p[2]));

@@ -52,8 +52,11 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <initializer_list>
 #include <utility>
 #include <vector>
+
+#include "small_vector.hpp"
 
 #include "vec3.hpp"
 
@@ -104,9 +107,9 @@ T contact_hull_area2(const std::vector<Vec3<T>>& points, const std::vector<int>&
 /// count as straight: a polygon convex up to rounding and near-collinear clip
 /// points takes the O(n^2) scan, whose H then differs from the hull area by no
 /// more than such tolerances (near-ties).
-template <Number T>
-bool weakly_convex_sequence(const std::vector<Vec3<T>>& points, const std::vector<int>& q, const Vec3<T>& normal,
-                            int& sigma, const T& tol = T(0)) {
+template <Number T, class Points = std::vector<Vec3<T>>, class Seq = std::vector<int>>
+bool weakly_convex_sequence(const Points& points, const Seq& q, const Vec3<T>& normal, int& sigma,
+                            const T& tol = T(0)) {
   const std::size_t n = q.size();
   auto P = [&](std::size_t i) -> const Vec3<T>& { return points[static_cast<std::size_t>(q[i % n])]; };
   auto sgn_tol = [&](const T& x) { return x > tol ? 1 : (x < T(-tol) ? -1 : 0); };
@@ -143,16 +146,38 @@ bool weakly_convex_sequence(const std::vector<Vec3<T>>& points, const std::vecto
 /// header comment).  `keys[i]` orders depth: smaller = deeper.  `key_tol`,
 /// `area_tol`: float near-tie tolerances (a key, an H value); 0 for exact T.
 /// `force_general`: always use the O(n^3) scan (tests compare both scans).
+///
+/// reduce_contact_points_into is the same with any containers: points and
+/// keys indexable with size(), out with clear() and push_back() (the kept
+/// indices, at most 4).  Its working tables are SmallVectors: no allocation
+/// for up to kReductionInlinePoints points (the O(n^3) general scan, taken
+/// when the points are not in weakly convex order, for up to
+/// kReductionInlineGeneral).
+inline constexpr std::size_t kReductionInlinePoints = 64;
+inline constexpr std::size_t kReductionInlineGeneral = 16;
+
+template <Number T, class Points, class Keys, class Out>
+void reduce_contact_points_into(const Points& points, const Keys& keys, const Vec3<T>& normal, const T& key_tol,
+                                const T& area_tol, Out& out, bool force_general = false);
+
 template <Number T>
 std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const std::vector<T>& keys,
                                        const Vec3<T>& normal, const T& key_tol, const T& area_tol,
                                        bool force_general = false) {
-  const int n = static_cast<int>(points.size());
   std::vector<int> out;
-  if (n == 0) return out;
+  reduce_contact_points_into(points, keys, normal, key_tol, area_tol, out, force_general);
+  return out;
+}
+
+template <Number T, class Points, class Keys, class Out>
+void reduce_contact_points_into(const Points& points, const Keys& keys, const Vec3<T>& normal, const T& key_tol,
+                                const T& area_tol, Out& out, bool force_general) {
+  const int n = static_cast<int>(points.size());
+  out.clear();
+  if (n == 0) return;
   if (n <= 4) {
     for (int i = 0; i < n; ++i) out.push_back(i);
-    return out;
+    return;
   }
   using reduction_detail::lex_less;
   using reduction_detail::orient;
@@ -165,14 +190,23 @@ std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const
   while (keys[static_cast<std::size_t>(d)] > kmin + key_tol) ++d;
   out.push_back(d);
   // The others in cyclic order after d: q[0] = d, q[1..n-1].
-  std::vector<int> q(static_cast<std::size_t>(n));
+  SmallVector<int, kReductionInlinePoints> q(static_cast<std::size_t>(n));
   for (int t = 0; t < n; ++t) q[static_cast<std::size_t>(t)] = (d + t) % n;
   auto Q = [&](int t) { return q[static_cast<std::size_t>(t)]; };
   auto cyc = [&](int i) { return (i - d + n) % n; };  // position of index i in q
-  auto emit = [&](std::vector<int> others) {
-    std::sort(others.begin(), others.end(), [&](int x, int y) { return cyc(x) < cyc(y); });
-    out.insert(out.end(), others.begin(), others.end());
-    return out;
+  auto emit = [&](std::initializer_list<int> list) {
+    // up to 3 indices, in cyclic order after d (insertion sort)
+    std::array<int, 3> others{};
+    std::size_t k = 0;
+    for (int x : list) {
+      std::size_t at = k++;
+      while (at > 0 && cyc(x) < cyc(others[at - 1])) {
+        others[at] = others[at - 1];
+        --at;
+      }
+      others[at] = x;
+    }
+    for (std::size_t i = 0; i < k; ++i) out.push_back(others[i]);
   };
 
   // 2./3. M4 and the best triple.
@@ -185,7 +219,7 @@ std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const
     // 1 <= a < c < b <= n-1 of j, k, l.
     const Vec3<T> ns = sigma > 0 ? normal : Vec3<T>(-normal);
     const int m = n - 1;
-    std::vector<T> bj(static_cast<std::size_t>(n)), bl(static_cast<std::size_t>(n));
+    SmallVector<T, kReductionInlinePoints> bj(static_cast<std::size_t>(n)), bl(static_cast<std::size_t>(n));
     for (int c = 2; c <= m - 1; ++c) {
       T x = orient(P(d), P(Q(1)), P(Q(c)), ns);
       for (int a = 2; a < c; ++a) {
@@ -226,7 +260,8 @@ std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const
     // (the same terms in the same order as contact_hull_area2, with the
     // triangles at d tabulated): the maximum, then the first triple in index
     // order within area_tol of it (the smallest sorted triple).
-    std::vector<T> td(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), T(0));
+    SmallVector<T, kReductionInlineGeneral * kReductionInlineGeneral> td(
+        static_cast<std::size_t>(n) * static_cast<std::size_t>(n), T(0));
     auto TD = [&](int a, int b) -> T& { return td[static_cast<std::size_t>(a) * static_cast<std::size_t>(n) + static_cast<std::size_t>(b)]; };
     for (int a = 0; a < n; ++a)
       for (int b = a + 1; b < n; ++b)
@@ -288,7 +323,7 @@ std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const
   };
   T r1;
   const int p1 = farthest(d, r1);
-  if (!(r1 > area_tol)) return out;  // every point at d
+  if (!(r1 > area_tol)) return;  // every point at d
   T r2;
   const int p2 = farthest(p1, r2);
   // d is an end of the line when it is (nearly) as far from p1 as p2 is.

@@ -183,7 +183,7 @@ class PlainKernel {
   /// in double (exact comparison of the two numbers given).
   int compare_margin(const Separation<T>& s, const Feature&, double m) const {
     if constexpr (number_traits<T>::is_exact) {
-      return compare(s, Separation<T>{from_double<T>(m), T(1)});
+      return sepax::compare(s, Separation<T>{from_double<T>(m), T(1)});
     } else {
       const double v = static_cast<double>(s.num);
       return (v > m) - (v < m);

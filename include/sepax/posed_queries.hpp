@@ -23,6 +23,7 @@
 
 #include "prepared_shape.hpp"
 #include "sat.hpp"
+#include "contact_manifold.hpp"
 #include "sat_cache.hpp"
 
 namespace sepax::sat {
@@ -84,3 +85,34 @@ SatResult<T> run(SatAlgorithm algorithm, const PreparedShape<T>& a, const RigidT
 }
 
 }  // namespace sepax::sat
+
+namespace sepax {
+
+/// The contact manifold of a posed pair from a posed SAT result `r` of the
+/// same pair and poses (sat::traversal / gauss_map / brute_force on prepared
+/// shapes): built in A's frame on (A, B') exactly as contact_manifold(A, B',
+/// r_local) builds it (r_local: r with its local axis), then the points mapped
+/// to world by pose_a (pose_a.apply) and normal = r.axis (world).  Keeps the
+/// points within opt.margin (ManifoldOptions::margin); at most 4 (reduce).
+/// No allocation for float/double (inline capacities: contact_manifold.hpp;
+/// B' is the posed query's, reused when the poses are the same).
+template <Number T>
+ContactManifold<T> contact_manifold(const PreparedShape<T>& a, const RigidTransform<T>& pose_a,
+                                    const PreparedShape<T>& b, const RigidTransform<T>& pose_b,
+                                    const SatResult<T>& r, const SatOptions& opt = {}) {
+  check_options(opt);
+  if (a.polyhedron().empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape A is empty (moved from)");
+  const ConvexPolyhedron<T>& bp = b.posed_scratch(relative_pose(pose_a, pose_b));
+  ManifoldOptions mo;
+  mo.margin = opt.margin;
+  ContactManifold<T> m = contact_manifold(a.polyhedron(), bp, r, mo);
+  for (auto& p : m.points) {
+    p.position = pose_a.apply(p.position);
+    p.point_a = pose_a.apply(p.point_a);
+    p.point_b = pose_a.apply(p.point_b);
+  }
+  m.normal = r.axis;
+  return m;
+}
+
+}  // namespace sepax
