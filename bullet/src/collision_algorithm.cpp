@@ -1,0 +1,374 @@
+// sepax::bullet: the btCollisionAlgorithm (see collision_algorithm.hpp).
+#include "sepax/bullet/collision_algorithm.hpp"
+
+#include <atomic>
+#include <vector>
+
+#include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
+#include <BulletCollision/CollisionDispatch/btCollisionObject.h>
+#include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
+#include <BulletCollision/CollisionDispatch/btManifoldResult.h>
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/CollisionShapes/btConvexPointCloudShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+
+#include <sepax/contact_manifold.hpp>
+#include <sepax/convex_hull.hpp>
+#include <sepax/prepared_shape.hpp>
+#include <sepax/robust/robust_kernel.hpp>
+
+#include "posed_manifold.hpp"
+
+namespace sepax::bullet {
+
+struct Prepared {
+  PreparedShape<float> shape;
+};
+
+namespace {
+
+constexpr int kSupported[] = {BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_POINT_CLOUD_SHAPE_PROXYTYPE};
+
+/// The hull sepax collides for a supported shape, in its local frame (the
+/// polyhedral geometry, see the header): btPolyhedralConvexShape::getVertex
+/// gives a box's corners at its half extents with margin and a hull's or
+/// point cloud's scaled points.
+ConvexPolyhedron<float> local_hull(const btCollisionShape& shape) {
+  const auto& poly = static_cast<const btPolyhedralConvexShape&>(shape);
+  std::vector<Vec3<float>> pts;
+  const int n = poly.getNumVertices();
+  pts.reserve(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    btVector3 v;
+    poly.getVertex(i, v);
+    pts.emplace_back(v.x(), v.y(), v.z());
+  }
+  return convex_hull<float>(pts);
+}
+
+RigidTransform<float> pose_of(const btTransform& t) {
+  RigidTransform<float> x;
+  const btMatrix3x3& r = t.getBasis();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) x.rotation(i, j) = r[i][j];
+    x.translation[i] = t.getOrigin()[i];
+  }
+  return x;
+}
+
+btVector3 bt(const Vec3<float>& v) { return btVector3(v[0], v[1], v[2]); }
+
+}  // namespace
+
+bool is_supported(int shape_type) {
+  for (int t : kSupported) {
+    if (t == shape_type) return true;
+  }
+  return false;
+}
+
+ShapeKey shape_key(const btCollisionShape& shape) {
+  ShapeKey k;
+  const int type = shape.getShapeType();
+  if (!is_supported(type)) return k;
+  k.type = type;
+  const btVector3& s = shape.getLocalScaling();
+  for (int i = 0; i < 3; ++i) k.scaling[i] = s[i];
+  if (type == BOX_SHAPE_PROXYTYPE) {
+    const btVector3 h = static_cast<const btBoxShape&>(shape).getHalfExtentsWithMargin();
+    for (int i = 0; i < 3; ++i) k.size[i] = h[i];
+  } else if (type == CONVEX_HULL_SHAPE_PROXYTYPE) {
+    const auto& hull = static_cast<const btConvexHullShape&>(shape);
+    k.points = hull.getUnscaledPoints();
+    k.point_count = hull.getNumPoints();
+  } else {
+    const auto& cloud = static_cast<const btConvexPointCloudShape&>(shape);
+    k.points = cloud.getUnscaledPoints();
+    k.point_count = cloud.getNumPoints();
+  }
+  return k;
+}
+
+// ---- ShapeCache ----------------------------------------------------------------
+
+ShapeCache::ShapeCache() = default;
+ShapeCache::~ShapeCache() = default;
+
+std::shared_ptr<const Prepared> ShapeCache::get(const btCollisionShape& shape, const ShapeKey& key) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = entries_.find(&shape);
+    if (it != entries_.end() && it->second.key == key) return it->second.prepared;
+  }
+  // Prepared outside the lock (a large hull takes a while); a racing thread
+  // may prepare the same shape too, and the last one stored wins.
+  auto p = std::make_shared<const Prepared>(Prepared{PreparedShape<float>(local_hull(shape))});
+  std::lock_guard<std::mutex> lock(mutex_);
+  entries_[&shape] = Entry{key, p};
+  ++preparations_;
+  return p;
+}
+
+void ShapeCache::forget(const btCollisionShape* shape) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  entries_.erase(shape);
+}
+
+std::size_t ShapeCache::size() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return entries_.size();
+}
+
+std::int64_t ShapeCache::preparations() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return preparations_;
+}
+
+// ---- counters ------------------------------------------------------------------
+
+struct CreateFunc::Live {
+  std::atomic<std::int64_t> queries{0}, early_outs{0}, manifolds{0}, points{0}, id_matches{0}, errors{0},
+      fallback_pairs{0};
+  std::mutex error_mutex;
+  std::string last_error;
+
+  void error(const std::string& what) {
+    errors.fetch_add(1, std::memory_order_relaxed);
+    std::lock_guard<std::mutex> lock(error_mutex);
+    last_error = what;
+  }
+};
+
+Counters CreateFunc::counters() const {
+  Counters c;
+  c.queries = live_->queries.load();
+  c.early_outs = live_->early_outs.load();
+  c.manifolds = live_->manifolds.load();
+  c.points = live_->points.load();
+  c.id_matches = live_->id_matches.load();
+  c.errors = live_->errors.load();
+  c.fallback_pairs = live_->fallback_pairs.load();
+  std::lock_guard<std::mutex> lock(live_->error_mutex);
+  c.last_error = live_->last_error;
+  return c;
+}
+
+void CreateFunc::reset_counters() {
+  live_->queries = 0;
+  live_->early_outs = 0;
+  live_->manifolds = 0;
+  live_->points = 0;
+  live_->id_matches = 0;
+  live_->errors = 0;
+  live_->fallback_pairs = 0;
+  std::lock_guard<std::mutex> lock(live_->error_mutex);
+  live_->last_error.clear();
+}
+
+// ---- the algorithm ---------------------------------------------------------------
+
+struct CollisionAlgorithm::State {
+  const btCollisionShape* shape_a = nullptr;
+  const btCollisionShape* shape_b = nullptr;
+  ShapeKey key_a, key_b;
+  std::shared_ptr<const Prepared> a, b;
+  SatCache<float> cache;
+  ContactManifold<float> manifold;  // reused between steps
+};
+
+namespace {
+
+/// The manifold's feature id of one body: (kind, index) as Bullet's
+/// (partId, index).
+void set_ids(btManifoldPoint& p, const ContactFeatureId& id, bool swapped) {
+  const ShapeFeature& f0 = swapped ? id.b : id.a;
+  const ShapeFeature& f1 = swapped ? id.a : id.b;
+  p.m_partId0 = static_cast<int>(f0.kind);
+  p.m_index0 = f0.index;
+  p.m_partId1 = static_cast<int>(f1.kind);
+  p.m_index1 = f1.index;
+}
+
+bool same_ids(const btManifoldPoint& x, const btManifoldPoint& y) {
+  return x.m_partId0 == y.m_partId0 && x.m_index0 == y.m_index0 && x.m_partId1 == y.m_partId1 &&
+         x.m_index1 == y.m_index1;
+}
+
+/// Writes the world-space manifold m of (w0, w1) into `man` (see the header):
+/// points built as btManifoldResult::addContactPoint builds them, matched to
+/// the manifold's points by their feature ids.  Returns the id matches.
+int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0, const btCollisionObjectWrapper* w1,
+                 const ContactManifold<float>& m) {
+  const btCollisionObject* o0 = w0->getCollisionObject();
+  const btCollisionObject* o1 = w1->getCollisionObject();
+  const bool swapped = man.getBody0() != o0;
+  const btCollisionObject* ma = swapped ? o1 : o0;  // the manifold's body 0
+  const btCollisionObject* mb = swapped ? o0 : o1;
+  const btScalar threshold = man.getContactBreakingThreshold();
+  const btVector3 n = bt(m.normal);  // from w0's shape to w1's
+
+  btManifoldPoint fresh[MANIFOLD_CACHE_SIZE];
+  int count = 0;
+  for (const auto& c : m.points) {
+    if (count == MANIFOLD_CACHE_SIZE) break;
+    const btScalar depth = static_cast<btScalar>(to_double(c.separation));
+    if (depth > threshold) continue;
+    // Bullet's convention: the normal on the manifold's body 1, pointing to
+    // body 0; the point on body 1; the point on body 0 = that + normal depth.
+    const btVector3 normal_on_b = swapped ? n : -n;
+    const btVector3 point_b = bt(swapped ? c.point_a : c.point_b);
+    const btVector3 point_a = point_b + normal_on_b * depth;
+    btManifoldPoint p(ma->getWorldTransform().invXform(point_a), mb->getWorldTransform().invXform(point_b),
+                      normal_on_b, depth);
+    p.m_positionWorldOnA = point_a;
+    p.m_positionWorldOnB = point_b;
+    p.m_combinedFriction = gCalculateCombinedFrictionCallback(o0, o1);
+    p.m_combinedRestitution = gCalculateCombinedRestitutionCallback(o0, o1);
+    p.m_combinedRollingFriction = gCalculateCombinedRollingFrictionCallback(o0, o1);
+    p.m_combinedSpinningFriction = gCalculateCombinedSpinningFrictionCallback(o0, o1);
+    if ((o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_HAS_CONTACT_STIFFNESS_DAMPING) {
+      p.m_combinedContactDamping1 = gCalculateCombinedContactDampingCallback(o0, o1);
+      p.m_combinedContactStiffness1 = gCalculateCombinedContactStiffnessCallback(o0, o1);
+      p.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
+    }
+    if ((o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_HAS_FRICTION_ANCHOR) {
+      p.m_contactPointFlags |= BT_CONTACT_FLAG_FRICTION_ANCHOR;
+    }
+    btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
+    set_ids(p, c.id, swapped);
+    fresh[count++] = p;
+  }
+
+  const bool new_collision = man.getNumContacts() == 0;
+  // Points whose features left the contact go (backwards: removal moves the
+  // last point into the hole, which has been looked at already).
+  for (int i = man.getNumContacts() - 1; i >= 0; --i) {
+    bool kept = false;
+    for (int j = 0; j < count && !kept; ++j) kept = same_ids(man.getContactPoint(i), fresh[j]);
+    if (!kept) man.removeContactPoint(i);
+  }
+  int matches = 0;
+  bool taken[MANIFOLD_CACHE_SIZE] = {false, false, false, false};
+  const bool custom = (o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK;
+  for (int j = 0; j < count; ++j) {
+    int at = -1;
+    for (int i = 0; i < man.getNumContacts() && at < 0; ++i) {
+      if (!taken[i] && same_ids(man.getContactPoint(i), fresh[j])) at = i;
+    }
+    if (at >= 0) {
+      man.replaceContactPoint(fresh[j], at);
+      ++matches;
+    } else {
+      at = man.addManifoldPoint(fresh[j]);
+    }
+    taken[at] = true;
+    if (gContactAddedCallback && custom) {
+      const btCollisionObjectWrapper* x0 = swapped ? w1 : w0;
+      const btCollisionObjectWrapper* x1 = swapped ? w0 : w1;
+      const btManifoldPoint& q = fresh[j];
+      (*gContactAddedCallback)(man.getContactPoint(at), x0, q.m_partId0, q.m_index0, x1, q.m_partId1, q.m_index1);
+    }
+  }
+  if (gContactStartedCallback && new_collision && man.getNumContacts() > 0) gContactStartedCallback(&man);
+  return matches;
+}
+
+}  // namespace
+
+CollisionAlgorithm::CollisionAlgorithm(const btCollisionAlgorithmConstructionInfo& ci,
+                                       const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                                       CreateFunc& owner)
+    : btActivatingCollisionAlgorithm(ci, body0, body1), owner_(owner), state_(std::make_unique<State>()) {}
+
+CollisionAlgorithm::~CollisionAlgorithm() {
+  if (manifold_) m_dispatcher->releaseManifold(manifold_);
+}
+
+void CollisionAlgorithm::getAllContactManifolds(btManifoldArray& out) {
+  if (manifold_) out.push_back(manifold_);
+}
+
+void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
+                                          const btCollisionObjectWrapper* body1, const btDispatcherInfo&,
+                                          btManifoldResult* result) {
+  if (!manifold_) manifold_ = m_dispatcher->getNewManifold(body0->getCollisionObject(), body1->getCollisionObject());
+  result->setPersistentManifold(manifold_);
+  State& s = *state_;
+  auto& live = *owner_.live_;
+  try {
+    // The prepared hulls: looked up again only when a shape or its key changed.
+    const btCollisionShape* sa = body0->getCollisionShape();
+    const btCollisionShape* sb = body1->getCollisionShape();
+    const ShapeKey ka = shape_key(*sa), kb = shape_key(*sb);
+    if (sa != s.shape_a || !(ka == s.key_a) || !s.a) {
+      s.a = owner_.shapes_.get(*sa, ka);
+      s.shape_a = sa;
+      s.key_a = ka;
+      s.cache = SatCache<float>{};
+    }
+    if (sb != s.shape_b || !(kb == s.key_b) || !s.b) {
+      s.b = owner_.shapes_.get(*sb, kb);
+      s.shape_b = sb;
+      s.key_b = kb;
+      s.cache = SatCache<float>{};
+    }
+    const RigidTransform<float> pa = pose_of(body0->getWorldTransform());
+    const RigidTransform<float> pb = pose_of(body1->getWorldTransform());
+    SatOptions opt;
+    opt.early_out = true;
+    opt.margin = static_cast<double>(manifold_->getContactBreakingThreshold());
+    const SatResult<float> r = sat::traversal<policy::Robust>(s.a->shape, pa, s.b->shape, pb, opt, &s.cache);
+    live.queries.fetch_add(1, std::memory_order_relaxed);
+    if (r.early_out) {
+      live.early_outs.fetch_add(1, std::memory_order_relaxed);
+      if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
+      return;
+    }
+    posed_manifold(s.a->shape, pa, s.b->shape, pb, r, opt.margin, s.manifold);
+    live.manifolds.fetch_add(1, std::memory_order_relaxed);
+    live.points.fetch_add(s.manifold.size(), std::memory_order_relaxed);
+    live.id_matches.fetch_add(write_points(*manifold_, body0, body1, s.manifold), std::memory_order_relaxed);
+  } catch (const InvalidInput& e) {
+    // sepax refused the pair at this pose (for example a pose too far from
+    // the origin for float to resolve): no contact from sepax; counted.
+    live.error(std::string(to_string(e.code())) + ": " + e.what());
+    if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
+  }
+}
+
+// ---- the create function -----------------------------------------------------------
+
+CreateFunc::CreateFunc(btCollisionConfiguration& config) : config_(config), live_(std::make_shared<Live>()) {}
+
+btCollisionAlgorithm* CreateFunc::CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& ci,
+                                                           const btCollisionObjectWrapper* body0,
+                                                           const btCollisionObjectWrapper* body1) {
+  const btCollisionShape* sa = body0->getCollisionShape();
+  const btCollisionShape* sb = body1->getCollisionShape();
+  bool ok = is_supported(sa->getShapeType()) && is_supported(sb->getShapeType());
+  if (ok) {
+    try {
+      shapes_.get(*sa, shape_key(*sa));
+      shapes_.get(*sb, shape_key(*sb));
+    } catch (const InvalidInput& e) {
+      live_->error(std::string("shape refused, Bullet's algorithm used: ") + to_string(e.code()) + ": " + e.what());
+      ok = false;
+    }
+  }
+  if (!ok) {
+    live_->fallback_pairs.fetch_add(1, std::memory_order_relaxed);
+    btCollisionAlgorithmCreateFunc* f = config_.getCollisionAlgorithmCreateFunc(sa->getShapeType(), sb->getShapeType());
+    return f->CreateCollisionAlgorithm(ci, body0, body1);
+  }
+  void* mem = ci.m_dispatcher1->allocateCollisionAlgorithm(sizeof(CollisionAlgorithm));
+  return new (mem) CollisionAlgorithm(ci, body0, body1, *this);
+}
+
+void register_algorithm(btCollisionDispatcher& dispatcher, CreateFunc& cf) {
+  for (int a : kSupported) {
+    for (int b : kSupported) dispatcher.registerCollisionCreateFunc(a, b, &cf);
+  }
+}
+
+}  // namespace sepax::bullet
