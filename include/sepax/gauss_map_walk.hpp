@@ -154,7 +154,7 @@ class GaussMapWalk {
   /// stays about as deep relative to the face spacing as N grows (measured:
   /// 16 probes at N = 256 left ~105 faces per query whose seed and deepest
   /// probe both failed; 28 probes are 6-7% faster there, while 24 instead of
-  /// 16 at N = 32 were 10% slower, docs/traversal.md "Speed round 6").
+  /// 16 at N = 32 were 10% slower, docs/traversal.md "Why it is built this way").
   static constexpr int probe_count(int nv) {
     const int k = nv / 8 < kMinProbes ? kMinProbes : nv / 8 > kMaxProbes ? kMaxProbes : nv / 8;
     return k < nv ? k : nv;

@@ -137,7 +137,7 @@ inline constexpr int kTraversalInlineFaces = 1024;
 /// (GaussMapWalk::face_chunks()) in one pass when a shape's chunks hold at
 /// least this many faces on average; on shorter chunks (small shapes) the
 /// per-chunk loop exits cost more than the one-face loop's mispredicted
-/// seed tests (docs/traversal.md, "Speed round 7").
+/// seed tests (docs/traversal.md, "Why it is built this way").
 inline constexpr int kTraversalMinMeanChunk = 12;
 
 /// Counters of one traversal query (beyond SatStats), for tests and tuning.
@@ -680,7 +680,7 @@ class Traversal {
   // climb ends; on a convex polytope it ends at a furthest vertex unless
   // rounding of the keys makes a tie.  (It replaced a scan of every vertex
   // of both shapes and a full support scan for the start face: -6% wall
-  // time at N = 256, docs/traversal.md "Speed round 7".)
+  // time at N = 256, docs/traversal.md "Why it is built this way".)
   static int furthest(const ConvexPolyhedron<T>& p, const GaussMapWalk& w, const double (&d)[3]) {
     auto key = [&](int i) {
       const Vec3<T>& v = p.vertex(i);
