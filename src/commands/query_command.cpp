@@ -110,7 +110,7 @@ int run_query(const std::vector<std::string>& args, std::istream& in, std::ostre
       if (app.count(only)) throw UsageError(std::string(only) + " applies to --batch only");
     ShapePair p;
     try {
-      p = load_pair(shapes, hull);
+      p = load_pair(shapes, hull, in);
       if (pose && p.from_case) throw UsageError("--pose cannot be used with a .case file (the case places B)");
       const RunOutcome r = run_sat(p.a, p.b, pose ? &*pose : nullptr, cfg);
       if (json) out << json::write(query_json(r, cfg)) << "\n";

@@ -4,6 +4,8 @@
 #include "commands/command_line.hpp"
 #include "io/shape_source.hpp"
 
+#include <utility>
+
 #ifdef SEPAX_HAVE_FUZZ
 #include <sepax/fuzz/case.hpp>
 #endif
@@ -37,7 +39,7 @@ io::ShapeData from_spec(const fuzz::ShapeSpec& s, const std::string& name, bool 
 
 }  // namespace
 
-ShapePair load_pair(const std::vector<std::string>& positional, bool hull) {
+ShapePair load_pair(const std::vector<std::string>& positional, bool hull, std::istream& standard_input) {
   if (positional.size() == 1 && is_case_file(positional[0])) {
 #ifdef SEPAX_HAVE_FUZZ
     const fuzz::FuzzCase c = fuzz::read_case_file(positional[0]);
@@ -49,8 +51,9 @@ ShapePair load_pair(const std::vector<std::string>& positional, bool hull) {
   if (positional.size() != 2)
     throw UsageError("expected two shapes A and B, got " + std::to_string(positional.size()) + " (arguments: " +
                      pair_arguments_help() + ")");
-  return {io::load_shape(shape_argument(positional[0], hull)), io::load_shape(shape_argument(positional[1], hull)),
-          false};
+  io::ShapeData first = io::load_shape(shape_argument(positional[0], hull), standard_input);
+  io::ShapeData second = io::load_shape(shape_argument(positional[1], hull), standard_input);
+  return {std::move(first), std::move(second), false};
 }
 
 }  // namespace sepax::cli

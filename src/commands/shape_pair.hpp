@@ -13,6 +13,8 @@
 // their point sets.
 #pragma once
 
+#include <iostream>
+
 #include <string>
 #include <vector>
 
@@ -33,7 +35,8 @@ std::string shape_argument(const std::string& arg, bool hull);
 
 /// Throws UsageError (command_line.hpp) for a wrong number of arguments or a
 /// .case in a build without the fuzzer, InvalidInput for unreadable input.
-ShapePair load_pair(const std::vector<std::string>& positional, bool hull);
+/// `-` arguments read `standard_input`.
+ShapePair load_pair(const std::vector<std::string>& positional, bool hull, std::istream& standard_input = std::cin);
 
 /// The one-line description of the accepted arguments, for usage errors.
 const char* pair_arguments_help();
