@@ -87,6 +87,17 @@ std::string option_in(const std::string& message) {
 
 std::optional<int> CommandLine::parse(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::vector<std::string> rev = has_pose_ ? join_pose_tokens(args) : args;
+  // `-:FMT` and `-#NAME` are shape arguments (standard input), not short options: they pass CLI11 with
+  // a marker in place of the dash, which every positional option turns back into '-'.
+  constexpr char kStdinMark = '\x1e';
+  for (std::string& a : rev)
+    if (a.size() > 1 && a[0] == '-' && (a[1] == ':' || a[1] == '#')) a[0] = kStdinMark;
+  for (CLI::Option* o : app.get_options())
+    if (o->get_positional())
+      o->transform([](std::string v) {
+        if (!v.empty() && v[0] == kStdinMark) v[0] = '-';
+        return v;
+      });
   std::reverse(rev.begin(), rev.end());
   try {
     app.parse(rev);

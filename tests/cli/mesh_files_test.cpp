@@ -67,23 +67,23 @@ TEST_CASE("mesh files: a V-HACD-style decomposition is queried piece against pie
       const Run r = query(args);
       REQUIRE(r.status == 0);
       const json::Value v = json::parse(r.out);
-      CHECK(v.find("overlap")->as_bool());
-      CHECK(v.find("separation")->as_double() == Approx(-0.01).margin(1e-5));
-      CHECK(json::write(*v.find("normal")) == "[1,0,0]");
-      const auto& points = v.find("manifold")->find("points")->as_array();
+      CHECK(v.at("overlap").get<bool>());
+      CHECK(v.at("separation").get<double>() == Approx(-0.01).margin(1e-5));
+      CHECK(json::write(v.at("normal")) == "[1,0,0]");
+      const auto& points = v.at("manifold").at("points");
       REQUIRE(points.size() == 4);
       for (const auto& p : points) {
-        const auto& x = p.find("position")->as_array();
-        CHECK(x[0].as_double() == Approx(150.395).margin(1e-4));
-        CHECK(std::abs(x[1].as_double() + 37.1) <= 0.15 + 1e-5);
-        CHECK(std::abs(x[2].as_double() - 88.2) <= 0.15 + 1e-5);
+        const auto& x = p.at("position");
+        CHECK(x[0].get<double>() == Approx(150.395).margin(1e-4));
+        CHECK(std::abs(x[1].get<double>() + 37.1) <= 0.15 + 1e-5);
+        CHECK(std::abs(x[2].get<double>() - 88.2) <= 0.15 + 1e-5);
       }
       args[1] = kPieces + "#convex_2";
       const Run s = query(args);
       REQUIRE(s.status == 0);
       const json::Value w = json::parse(s.out);
-      CHECK_FALSE(w.find("overlap")->as_bool());
-      CHECK(w.find("separation")->as_double() == Approx(0.165).margin(1e-5));
+      CHECK_FALSE(w.at("overlap").get<bool>());
+      CHECK(w.at("separation").get<double>() == Approx(0.165).margin(1e-5));
     }
   }
 }
@@ -104,16 +104,16 @@ TEST_CASE("mesh files: a 0.4-unit piece 150 units from the origin works in float
   const Run r = query({"hull:" + kPieces + "#convex_2", kPieces + "#convex_0", "--number", "float", "--json"});
   REQUIRE(r.status == 0);
   const json::Value v = json::parse(r.out);
-  CHECK(v.find("separation")->as_double() == Approx(0.165).margin(1e-5));
+  CHECK(v.at("separation").get<double>() == Approx(0.165).margin(1e-5));
   // touching pieces: the contact points are at the pieces' world position
   const Run t = query({"hull:" + kPieces + "#convex_2", kPieces + "#convex_0", "--number", "float", "--pose", "0",
                        "0", "0.165", "--json"});
   REQUIRE(t.status == 0);
   const json::Value w = json::parse(t.out);
-  CHECK(std::abs(w.find("separation")->as_double()) <= 1e-4);
-  for (const auto& p : w.find("manifold")->find("points")->as_array()) {
-    CHECK(p.find("position")->as_array()[0].as_double() == Approx(150.2).margin(0.25));
-    CHECK(p.find("position")->as_array()[2].as_double() == Approx(88.565).margin(1e-3));
+  CHECK(std::abs(w.at("separation").get<double>()) <= 1e-4);
+  for (const auto& p : w.at("manifold").at("points")) {
+    CHECK(p.at("position")[0].get<double>() == Approx(150.2).margin(0.25));
+    CHECK(p.at("position")[2].get<double>() == Approx(88.565).margin(1e-3));
   }
 }
 
@@ -131,25 +131,25 @@ TEST_CASE("mesh files: a small piece far from the origin against a shape at the 
     REQUIRE(f.status == 0);
     REQUIRE(d.status == 0);
     const json::Value vf = json::parse(f.out), vd = json::parse(d.out);
-    CHECK_FALSE(vf.find("overlap")->as_bool());
-    const double sep = vd.find("separation")->as_double();
+    CHECK_FALSE(vf.at("overlap").get<bool>());
+    const double sep = vd.at("separation").get<double>();
     CHECK(sep > 140);
     // float rounds coordinates near 150 by up to 2^-17 ~ 7.6e-6, which turns
     // the normals of the piece's faces (about 0.2 across) by up to ~1e-4 rad
     // together: along an axis 173 units long, a separation within 1e-4 of it
-    CHECK(vf.find("separation")->as_double() == Approx(sep).margin(1e-4 * sep));
-    CHECK(json::write(*vf.find("feature")->find("type")) == json::write(*vd.find("feature")->find("type")));
+    CHECK(vf.at("separation").get<double>() == Approx(sep).margin(1e-4 * sep));
+    CHECK(json::write(vf.at("feature").at("type")) == json::write(vd.at("feature").at("type")));
   }
   // and the other way round, with a contact far from the origin: the cube
   // moved next to the piece, touching its face at x = 150
   const Run t = query({kPieces + "#convex_0", "cube", "--pose", "149", "-37.1", "88.2", "--number", "float", "--json"});
   REQUIRE(t.status == 0);
   const json::Value w = json::parse(t.out);
-  CHECK(w.find("overlap")->as_bool());
-  CHECK(w.find("separation")->as_double() == Approx(0).margin(1e-4));
-  const auto& points = w.find("manifold")->find("points")->as_array();
+  CHECK(w.at("overlap").get<bool>());
+  CHECK(w.at("separation").get<double>() == Approx(0).margin(1e-4));
+  const auto& points = w.at("manifold").at("points");
   REQUIRE_FALSE(points.empty());
-  for (const auto& p : points) CHECK(p.find("position")->as_array()[0].as_double() == Approx(150).margin(1e-4));
+  for (const auto& p : points) CHECK(p.at("position")[0].get<double>() == Approx(150).margin(1e-4));
 }
 
 TEST_CASE("mesh files: hull: makes any mesh or point file its convex hull", "[mesh]") {
@@ -163,7 +163,7 @@ TEST_CASE("mesh files: hull: makes any mesh or point file its convex hull", "[me
   CHECK_THAT(refused.err, Catch::Contains("not convex") && Catch::Contains("hull:FILE"));
   const Run hulled = query({"hull:" + dent, "cube", "--pose", "2.5", "0", "0", "--json"});
   REQUIRE(hulled.status == 0);
-  CHECK(json::parse(hulled.out).find("separation")->as_double() == 0.5);
+  CHECK(json::parse(hulled.out).at("separation").get<double>() == 0.5);
   const Run i = info({"hull:" + kData + "cube.stl", "--number", "exact"});
   CHECK(i.status == 0);
   CHECK_THAT(i.out, Catch::Contains("8 vertices, 12 edges, 6 faces"));
@@ -188,12 +188,12 @@ TEST_CASE("mesh files: - reads a shape from standard input", "[mesh]") {
     INFO(spec << " " << text.substr(0, 20));
     const Run r = query({spec, "cube", "--pose", "2.5", "0", "0", "--json"}, text);
     REQUIRE(r.status == 0);
-    CHECK(json::parse(r.out).find("separation")->as_double() == 0.5);
+    CHECK(json::parse(r.out).at("separation").get<double>() == 0.5);
   }
   // one object of an OBJ on standard input
   const Run piece = query({"-#convex_1", kPieces + "#convex_0", "--json"}, test::file_text(kPieces));
   REQUIRE(piece.status == 0);
-  CHECK(json::parse(piece.out).find("separation")->as_double() == Approx(-0.01).margin(1e-9));
+  CHECK(json::parse(piece.out).at("separation").get<double>() == Approx(-0.01).margin(1e-9));
   // errors: empty, read twice, not recognisable, an unknown format name, bad content
   CHECK_THAT(query({"-", "cube"}).err, Catch::Contains("standard input: nothing to read"));
   CHECK_THAT(query({"-", "-"}, cube_off).err, Catch::Contains("already read"));
