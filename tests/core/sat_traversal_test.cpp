@@ -7,40 +7,7 @@
 
 #include "traversal_shapes.hpp"
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-// Count heap allocations (for the no-allocation-per-query test).  The
-// replacement delete frees what the replacement new malloc'ed; g++ cannot see
-// that pairing through inlining and warns, hence the pragma.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-namespace {
-std::atomic<long> g_allocations{0};
-}
-void* operator new(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return ::operator new(n); }
-// The nothrow forms too (Catch2 registers its tests with them): every
-// replaced delete below frees with std::free, so every new must malloc.
-// AddressSanitizer reported the mismatch (SEPAX_SANITIZE=ON).
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  try {
-    return ::operator new(n);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t n, const std::nothrow_t& t) noexcept { return ::operator new(n, t); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#include "alloc_counter.hpp"
 
 using namespace sepax;
 using test::V3;
@@ -392,19 +359,19 @@ TEST_CASE("traversal with precomputed walk data does not allocate per query (flo
   const auto af = ConvexPolyhedron<float>::convert_from(ad);
   const auto bf = ConvexPolyhedron<float>::convert_from(bd);
   const GaussMapWalk wa(ad), wb(bd);
-  const long before = g_allocations.load();
-  const auto rd = sat::traversal(ad, wa, bd, wb);
-  const auto rf = sat::traversal(af, wa, bf, wb);
-  const auto re = sat::traversal(af, wa, bf, wb, {.early_out = true});
-  const long after = g_allocations.load();
-  CHECK(after == before);
+  SatResult<double> rd;
+  SatResult<float> rf, re;
+  const long allocations = test::count_allocations([&] {
+    rd = sat::traversal(ad, wa, bd, wb);
+    rf = sat::traversal(af, wa, bf, wb);
+    re = sat::traversal(af, wa, bf, wb, {.early_out = true});
+  });
+  CHECK(allocations == 0);
   CHECK(rd.feature == sat::gauss_map(ad, bd).feature);
   CHECK(rf.feature == sat::gauss_map(af, bf).feature);
   CHECK(re.overlap == rf.overlap);
   // the convenience overload builds the walk data (allocates): the counter works
-  const long b2 = g_allocations.load();
-  (void)sat::traversal(ad, bd);
-  CHECK(g_allocations.load() > b2);
+  CHECK(test::count_allocations([&] { (void)sat::traversal(ad, bd); }) > 0);
 }
 
 TEST_CASE("traversal beyond the inline scratch (more than 1024 faces in total)", "[traversal]") {
