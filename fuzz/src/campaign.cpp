@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -11,11 +12,14 @@
 #include <iterator>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <sepax/error.hpp>
 #include <sepax/fuzz/check_manifold.hpp>
 #include <sepax/fuzz/cli.hpp>
 #include <sepax/fuzz/generators.hpp>
 #include <sepax/fuzz/shrink.hpp>
+#include <sepax/fuzz/workers.hpp>
 
 namespace sepax::fuzz {
 
@@ -199,7 +203,8 @@ namespace {
 
 int usage(const char* msg) {
   std::cerr << "sepax fuzz: " << msg << "\n"
-            << "usage: sepax fuzz [--seconds S] [--cases N] [--seed K] [--families a,b,...] [--out DIR] [--json] [--quiet]\n"
+            << "usage: sepax fuzz [--seconds S] [--cases N] [--seed K] [--jobs N] [--families a,b,...] [--out DIR] [--json]\n"
+            << "                  [--quiet]\n"
             << "                  [--shrink-steps N] [--shrink-seconds S] [--shrink-max N]\n"
             << "       sepax fuzz --replay FILE_OR_DIR... [--bytes] [--json] [--shrink] [--out DIR]\n"
             << "       (--bytes: the files are libFuzzer inputs, decoded as sepax_libfuzzer decodes them;\n"
@@ -219,7 +224,7 @@ bool parse_number(const char* s, double& out) {
 }  // namespace
 
 int fuzz_main(int argc, char** argv) {
-  double seconds = 30, max_cases = 0, seed_d = 1;
+  double seconds = 30, max_cases = 0, seed_d = 1, jobs = 0;
   bool json = false, quiet = false, replay = false, shrink_replays = false, bytes = false, out_given = false;
   // Shrinking (shrink.hpp): each unexplained finding, up to shrink_max per
   // run, is shrunk within this budget; the original reproducer is kept too.
@@ -238,6 +243,8 @@ int fuzz_main(int argc, char** argv) {
       if (!value(seconds)) return usage("--seconds needs a non-negative number");
     } else if (a == "--cases") {
       if (!value(max_cases)) return usage("--cases needs a non-negative number");
+    } else if (a == "--jobs") {
+      if (!value(jobs) || jobs != std::floor(jobs) || jobs > 4096) return usage("--jobs needs a whole number of workers (0: every core)");
     } else if (a == "--seed") {
       if (!value(seed_d)) return usage("--seed needs a non-negative integer");
     } else if (a == "--families") {
@@ -360,53 +367,38 @@ int fuzz_main(int argc, char** argv) {
     return status != 0 ? status : (rep.unexplained() ? 1 : 0);
   }
 
+  // The progress line rewrites itself with '\r': only on a terminal, never in a CI log.
+  const bool progress = !quiet && isatty(fileno(stderr));
   double last_progress = 0;
-  std::uint64_t index = 0;
-  while (true) {
-    const double now = elapsed();
-    if (max_cases > 0 && static_cast<double>(rep.cases + rep.rejected) >= max_cases) break;
-    if (max_cases == 0 && now >= seconds) break;
-    const std::string& fam = families[index % families.size()];
-    const std::uint64_t case_seed = rep.seed * 1000003ull + index;
-    ++index;
-    FuzzCase c;
-    CaseReport r;
-    try {
-      c = generate(fam, case_seed);
-      r = check_case_guarded(c);
-    } catch (const InvalidInput& e) {
-      r.valid = false;
-      r.reject_reason = e.what();
-    } catch (const std::exception& e) {
-      // Not bad input: a library component failed (e.g. the hull builder's
-      // logic_error).  A finding, like an unexplained disagreement.
-      r = CaseReport{};
-      r.valid = true;
-      r.by_comparison["internal_error"].add(Klass::unexplained);
-      r.by_config["internal_error/" + fam].add(Klass::unexplained);
-      r.unexplained.push_back({"internal_error", fam, "-", e.what()});
-      r.unexplained_count = 1;
-    }
-    rep.add(fam, r);
-    if (r.unexplained_count) {
-      try {
-        const std::string original = write_reproducer(out_dir, c, r);
-        rep.reproducers.push_back(original);
-        shrink_finding(rep, original, "", c, r);
-      } catch (const std::exception& e) {
-        std::cerr << "sepax fuzz: could not write a reproducer: " << e.what() << "\n";
-      }
-    }
-    if (!quiet && now - last_progress >= 1.0) {
-      last_progress = now;
-      std::fprintf(stderr, "\r[sepax fuzz] %6.1f s  %8lld cases  %7.1f cases/s  unexplained %lld   ", now,
-                   static_cast<long long>(rep.cases), now > 0 ? static_cast<double>(rep.cases) / now : 0.0,
-                   static_cast<long long>(rep.unexplained()));
-      std::fflush(stderr);
-    }
-  }
+  const auto n_cases = static_cast<std::uint64_t>(max_cases);
+  run_in_order(
+      static_cast<int>(jobs),
+      [&](std::uint64_t index) { return n_cases > 0 ? index < n_cases : elapsed() < seconds; },
+      [&](std::uint64_t index) { return run_case(families, rep.seed, index); },
+      [&](CaseOutcome&& o) {
+        const FuzzCase& c = o.c;
+        const CaseReport& r = o.r;
+        rep.add(o.family, r);
+        if (r.unexplained_count) {
+          try {
+            const std::string original = write_reproducer(out_dir, c, r);
+            rep.reproducers.push_back(original);
+            shrink_finding(rep, original, "", c, r);
+          } catch (const std::exception& e) {
+            std::cerr << "sepax fuzz: could not write a reproducer: " << e.what() << "\n";
+          }
+        }
+        const double now = elapsed();
+        if (progress && now - last_progress >= 1.0) {
+          last_progress = now;
+          std::fprintf(stderr, "\r[sepax fuzz] %6.1f s  %8lld cases  %7.1f cases/s  unexplained %lld   ", now,
+                       static_cast<long long>(rep.cases), now > 0 ? static_cast<double>(rep.cases) / now : 0.0,
+                       static_cast<long long>(rep.unexplained()));
+          std::fflush(stderr);
+        }
+      });
   rep.seconds = elapsed();
-  if (!quiet) std::fprintf(stderr, "\n");
+  if (progress) std::fprintf(stderr, "\n");
   if (json) print_json(std::cout, rep);
   else print_text(std::cout, rep);
   return rep.unexplained() ? 1 : 0;
