@@ -59,7 +59,7 @@ namespace detail {
 /// for float/double returns the rigid-image terms of B (local data: its
 /// normal_conditioning, max |coordinate|, pose_conditioning) under x.
 template <Number T>
-ConvexPolyhedron<T>::RigidImageTerms pose_terms(const RigidTransform<T>& x, double local_conditioning,
+typename ConvexPolyhedron<T>::RigidImageTerms pose_terms(const RigidTransform<T>& x, double local_conditioning,
                                                 double local_max_abs,
                                                 const typename ConvexPolyhedron<T>::PoseConditioning& pc) {
   typename ConvexPolyhedron<T>::RigidImageTerms terms;
