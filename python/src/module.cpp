@@ -1,0 +1,775 @@
+// python/src/module.cpp
+//
+// The Python module `sepax` (docs/python.md): shapes from numpy arrays,
+// prepared once per number type; posed queries (traversal, Gauss map, brute
+// force; float/double with the robust or the plain policy, or exact GMP
+// rationals), margins, per-pair caches, contact manifolds, and a batch query
+// over arrays of poses.  Python objects are made and read with the GIL held;
+// queries, hulls and batches run with it released (query_core.hpp).
+#include <pybind11/eval.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <sepax/convex_hull.hpp>
+#include <sepax/shapes.hpp>
+#include <sepax/version.hpp>
+
+#include "query_core.hpp"
+
+namespace py = pybind11;
+
+namespace sepax::python {
+namespace {
+
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// ---- errors ---------------------------------------------------------------
+
+py::object& invalid_input_type() {
+  static py::object type;  // set once in the module init (kept alive by the module)
+  return type;
+}
+
+[[noreturn]] void usage_error(const std::string& message) { throw py::value_error(message); }
+
+std::string shape_string(const py::array& a) {
+  std::ostringstream s;
+  s << "(";
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) s << (i ? ", " : "") << a.shape(i);
+  s << (a.ndim() == 1 ? ",)" : ")");
+  return s.str();
+}
+
+// ---- shapes -----------------------------------------------------------------
+
+/// A validated convex hull (double), prepared for each number type on first use.
+struct Shape {
+  std::shared_ptr<const PreparedShape<double>> d;
+  std::shared_ptr<const PreparedShape<float>> f;  // lazily (the GIL guards it)
+  std::shared_ptr<const ExactShape> q;            // lazily
+
+  explicit Shape(ConvexPolyhedron<double> p) : d(std::make_shared<const PreparedShape<double>>(std::move(p))) {}
+
+  const ConvexPolyhedron<double>& poly() const { return d->polyhedron(); }
+  const PreparedShape<float>& as_float() {
+    if (!f) f = std::make_shared<const PreparedShape<float>>(ConvexPolyhedron<float>::convert_from(poly()));
+    return *f;
+  }
+  const ExactShape& as_exact() {
+    if (!q) q = make_exact_shape(poly());
+    return *q;
+  }
+};
+
+std::vector<Vec3<double>> points_from(const py::handle& obj, const char* what) {
+  const DoubleArray a = DoubleArray::ensure(obj);
+  if (!a) usage_error(std::string(what) + " must be an array-like of numbers of shape (N, 3)");
+  if (a.ndim() != 2 || a.shape(1) != 3) {
+    usage_error(std::string(what) + " must have shape (N, 3), not " + shape_string(a));
+  }
+  std::vector<Vec3<double>> out;
+  out.reserve(static_cast<std::size_t>(a.shape(0)));
+  const auto r = a.unchecked<2>();
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) out.emplace_back(r(i, 0), r(i, 1), r(i, 2));
+  return out;
+}
+
+py::array_t<double> vec_rows(const std::vector<Vec3<double>>& v) {
+  py::array_t<double> out({static_cast<py::ssize_t>(v.size()), py::ssize_t{3}});
+  auto w = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    for (int j = 0; j < 3; ++j) w(static_cast<py::ssize_t>(i), j) = v[i][j];
+  }
+  return out;
+}
+
+py::array_t<double> array3(const std::array<double, 3>& a) {
+  py::array_t<double> out(3);
+  for (py::ssize_t j = 0; j < 3; ++j) out.mutable_at(j) = a[static_cast<std::size_t>(j)];
+  return out;
+}
+
+// ---- poses ------------------------------------------------------------------
+
+void check_finite(double x, const std::string& what) {
+  if (!std::isfinite(x)) throw InvalidInput(ErrorCode::NonFinite, what + " is not finite (" + format_number(x) + ")");
+}
+
+/// R (3,3) and t (3,) from rows i of stacked arrays (or the single ones).
+PoseD pose_from_parts(const double* r, const double* t, const std::string& what) {
+  PoseD p;
+  for (std::size_t k = 0; k < 9; ++k) {
+    check_finite(r[k], what + ": rotation entry (" + std::to_string(k / 3) + ", " + std::to_string(k % 3) + ")");
+    p.r[k] = r[k];
+  }
+  for (std::size_t k = 0; k < 3; ++k) {
+    check_finite(t[k], what + ": translation entry " + std::to_string(k));
+    p.t[k] = t[k];
+  }
+  return p;
+}
+
+PoseD pose_from_matrix(const double* m, const std::string& what) {
+  const double r[9] = {m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10]};
+  const double t[3] = {m[3], m[7], m[11]};
+  PoseD p = pose_from_parts(r, t, what);
+  if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1) {
+    throw InvalidInput(ErrorCode::BadScale, what + ": the last row of a 4x4 pose is (" + format_number(m[12]) + ", " +
+                                                format_number(m[13]) + ", " + format_number(m[14]) + ", " +
+                                                format_number(m[15]) + "), not (0, 0, 0, 1)");
+  }
+  return p;
+}
+
+/// Poses from None (identity), a (4,4) matrix, a (3,) translation, an
+/// (R, t) pair, or stacks of them: (K,4,4), (R (K,3,3), t (K,3)).
+/// `batch` allows the stacked forms; the result has 1 or K entries.
+std::vector<PoseD> poses_from(const py::handle& obj, const std::string& what, bool batch) {
+  if (obj.is_none()) return {PoseD{}};
+  if ((py::isinstance<py::tuple>(obj) || py::isinstance<py::list>(obj)) && py::len(obj) == 2) {
+    const DoubleArray r = DoubleArray::ensure(obj[py::int_(0)]);
+    const DoubleArray t = DoubleArray::ensure(obj[py::int_(1)]);
+    if (!r || !t) usage_error(what + ": (R, t) must be arrays of numbers");
+    const bool single = r.ndim() == 2 && r.shape(0) == 3 && r.shape(1) == 3 && t.ndim() == 1 && t.shape(0) == 3;
+    const bool stacked = batch && r.ndim() == 3 && r.shape(1) == 3 && r.shape(2) == 3 && t.ndim() == 2 &&
+                         t.shape(1) == 3 && r.shape(0) == t.shape(0);
+    if (single) return {pose_from_parts(r.data(), t.data(), what)};
+    if (!stacked) {
+      usage_error(what + ": (R, t) must have shapes ((3, 3), (3,))" +
+                  std::string(batch ? " or ((K, 3, 3), (K, 3))" : "") + ", not (" + shape_string(r) + ", " +
+                  shape_string(t) + ")");
+    }
+    std::vector<PoseD> out;
+    for (py::ssize_t k = 0; k < r.shape(0); ++k) {
+      out.push_back(pose_from_parts(r.data(k, 0, 0), t.data(k, 0), what + "[" + std::to_string(k) + "]"));
+    }
+    return out;
+  }
+  const DoubleArray a = DoubleArray::ensure(obj);
+  if (!a) usage_error(what + " must be None, a (4, 4) matrix, a (3,) translation or an (R, t) pair");
+  if (a.ndim() == 1 && a.shape(0) == 3) {
+    const double r[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    return {pose_from_parts(r, a.data(), what)};
+  }
+  if (a.ndim() == 2 && a.shape(0) == 4 && a.shape(1) == 4) return {pose_from_matrix(a.data(), what)};
+  if (batch && a.ndim() == 3 && a.shape(1) == 4 && a.shape(2) == 4) {
+    std::vector<PoseD> out;
+    for (py::ssize_t k = 0; k < a.shape(0); ++k) {
+      out.push_back(pose_from_matrix(a.data(k, 0, 0), what + "[" + std::to_string(k) + "]"));
+    }
+    return out;
+  }
+  usage_error(what + " must be None, a (4, 4) matrix, a (3,) translation or an (R, t) pair" +
+              std::string(batch ? ", or stacks (K, 4, 4) / ((K, 3, 3), (K, 3))" : "") + "; got shape " +
+              shape_string(a));
+}
+
+py::array_t<double> pose_matrix(const PoseD& p) {
+  py::array_t<double> out({py::ssize_t{4}, py::ssize_t{4}});
+  auto w = out.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < 4; ++i) {
+    for (py::ssize_t j = 0; j < 4; ++j) {
+      const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+      w(i, j) = i == 3 ? (j == 3 ? 1.0 : 0.0) : (j == 3 ? p.t[ui] : p.r[3 * ui + uj]);
+    }
+  }
+  return out;
+}
+
+// ---- options ----------------------------------------------------------------
+
+enum class NumberKind { Float, Double, Exact };
+
+NumberKind parse_number(const std::string& s) {
+  if (s == "float") return NumberKind::Float;
+  if (s == "double") return NumberKind::Double;
+  if (s == "exact") return NumberKind::Exact;
+  usage_error("number must be \"float\", \"double\" or \"exact\", not \"" + s + "\"");
+}
+
+SatAlgorithm parse_algorithm(const std::string& s) {
+  if (s == "traversal") return SatAlgorithm::traversal;
+  if (s == "gauss_map" || s == "gauss") return SatAlgorithm::gauss_map;
+  if (s == "brute_force" || s == "brute") return SatAlgorithm::brute_force;
+  usage_error("algorithm must be \"traversal\", \"gauss_map\" or \"brute_force\", not \"" + s + "\"");
+}
+
+/// A per-pair warm-start cache; one SatCache per number type, a mutex so that
+/// a cache shared between threads is used by one query at a time.
+struct Cache {
+  std::mutex mutex;
+  SatCache<float> f;
+  SatCache<double> d;
+  std::unique_ptr<ExactCache, void (*)(ExactCache*)> q{nullptr, [](ExactCache*) {}};
+
+  ExactCache& exact() {
+    if (!q) q = make_exact_cache();
+    return *q;
+  }
+  std::int64_t hits() const { return f.hits + d.hits + (q ? exact_cache_hits(*q) : 0); }
+  std::int64_t misses() const { return f.misses + d.misses + (q ? exact_cache_misses(*q) : 0); }
+  void reset() {
+    f.reset();
+    d.reset();
+    if (q) reset_exact_cache(*q);
+  }
+};
+
+struct Request {
+  QueryOptions opt;
+  NumberKind number = NumberKind::Double;
+  std::string number_name, algorithm_name;
+};
+
+Request make_request(const std::string& number, bool robust, const std::string& algorithm, double margin,
+                     bool early_out, bool manifold, const Cache* cache) {
+  Request q;
+  q.number = parse_number(number);
+  q.opt.algorithm = parse_algorithm(algorithm);
+  q.opt.robust = robust && q.number != NumberKind::Exact;
+  q.opt.margin = margin;
+  q.opt.early_out = early_out;
+  q.opt.manifold = manifold;
+  q.number_name = number;
+  q.algorithm_name = to_string(q.opt.algorithm);
+  if (cache && q.number != NumberKind::Exact && !q.opt.robust && q.opt.algorithm == SatAlgorithm::traversal) {
+    usage_error("a cache cannot warm-start the plain float/double traversal (its climb is in rounding arithmetic): "
+                "use robust=True, another algorithm, or no cache");
+  }
+  return q;
+}
+
+/// Prepares what the request needs with the GIL held, then runs `fn(a, b,
+/// cache)` with the GIL released and the cache locked.
+template <class Fn>
+void dispatch(const Request& q, Shape& a, Shape& b, Cache* cache, Fn&& fn) {
+  switch (q.number) {
+    case NumberKind::Float: {
+      const PreparedShape<float>& pa = a.as_float();
+      const PreparedShape<float>& pb = b.as_float();
+      py::gil_scoped_release release;
+      std::unique_lock<std::mutex> lock;
+      if (cache) lock = std::unique_lock<std::mutex>(cache->mutex);
+      fn(pa, pb, cache ? &cache->f : nullptr);
+      return;
+    }
+    case NumberKind::Double: {
+      py::gil_scoped_release release;
+      std::unique_lock<std::mutex> lock;
+      if (cache) lock = std::unique_lock<std::mutex>(cache->mutex);
+      fn(*a.d, *b.d, cache ? &cache->d : nullptr);
+      return;
+    }
+    case NumberKind::Exact: {
+      const ExactShape& pa = a.as_exact();
+      const ExactShape& pb = b.as_exact();
+      ExactCache* qc = cache ? &cache->exact() : nullptr;
+      py::gil_scoped_release release;
+      std::unique_lock<std::mutex> lock;
+      if (cache) lock = std::unique_lock<std::mutex>(cache->mutex);
+      fn(pa, pb, qc);
+      return;
+    }
+  }
+}
+
+// ---- results ------------------------------------------------------------------
+
+struct Manifold {
+  std::string kind;
+  py::array_t<double> normal, points, points_a, points_b, separations;
+  py::array_t<std::int32_t> ids;
+  py::array_t<std::uint64_t> id_keys;
+  std::vector<std::string> id_names;
+  int reference_shape = -1, reference_face = -1, incident_face = -1;
+};
+
+struct Result {
+  bool overlap = false, early_out = false, robust = false;
+  double separation = 0;
+  py::array_t<double> axis;
+  Feature feature;
+  py::dict stats;
+  py::object separation_exact = py::none();
+  py::object manifold = py::none();
+  std::string number, algorithm;
+};
+
+Manifold make_manifold(const QueryOut& o) {
+  Manifold m;
+  m.kind = to_string(o.kind);
+  m.normal = array3(o.normal);
+  const auto n = static_cast<py::ssize_t>(o.points.size());
+  m.points = py::array_t<double>({n, py::ssize_t{3}});
+  m.points_a = py::array_t<double>({n, py::ssize_t{3}});
+  m.points_b = py::array_t<double>({n, py::ssize_t{3}});
+  m.separations = py::array_t<double>(n);
+  m.ids = py::array_t<std::int32_t>({n, py::ssize_t{4}});
+  m.id_keys = py::array_t<std::uint64_t>(n);
+  auto wp = m.points.mutable_unchecked<2>();
+  auto wa = m.points_a.mutable_unchecked<2>();
+  auto wb = m.points_b.mutable_unchecked<2>();
+  auto ws = m.separations.mutable_unchecked<1>();
+  auto wi = m.ids.mutable_unchecked<2>();
+  auto wk = m.id_keys.mutable_unchecked<1>();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const PointOut& p = o.points[static_cast<std::size_t>(i)];
+    for (py::ssize_t j = 0; j < 3; ++j) {
+      const auto uj = static_cast<std::size_t>(j);
+      wp(i, j) = p.position[uj];
+      wa(i, j) = p.point_a[uj];
+      wb(i, j) = p.point_b[uj];
+    }
+    ws(i) = p.separation;
+    wi(i, 0) = static_cast<std::int32_t>(p.id.a.kind);
+    wi(i, 1) = p.id.a.index;
+    wi(i, 2) = static_cast<std::int32_t>(p.id.b.kind);
+    wi(i, 3) = p.id.b.index;
+    wk(i) = p.id.key();
+    m.id_names.push_back(to_string(p.id));
+  }
+  m.reference_shape = o.reference_shape;
+  m.reference_face = o.reference_face;
+  m.incident_face = o.incident_face;
+  return m;
+}
+
+Result make_result(const QueryOut& o, const Request& q) {
+  Result r;
+  r.overlap = o.overlap;
+  r.early_out = o.early_out;
+  r.robust = q.opt.robust;
+  r.separation = o.separation;
+  r.axis = array3(o.axis);
+  r.feature = o.feature;
+  r.stats["face_axes"] = o.stats.face_axes;
+  r.stats["edge_pairs"] = o.stats.edge_pairs;
+  r.stats["minkowski_faces"] = o.stats.minkowski_faces;
+  r.stats["side_axes"] = o.stats.side_axes;
+  r.stats["exact_fallbacks"] = o.stats.exact_fallbacks;
+  if (q.number == NumberKind::Exact) {
+    const py::object fraction = py::module_::import("fractions").attr("Fraction");
+    r.separation_exact = py::make_tuple(fraction(o.separation_num), fraction(o.separation_norm2));
+  }
+  if (o.has_manifold) r.manifold = py::cast(make_manifold(o));
+  r.number = q.number_name;
+  r.algorithm = q.algorithm_name;
+  return r;
+}
+
+Result query(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b, const std::string& number,
+             bool robust, const std::string& algorithm, double margin, bool early_out, Cache* cache, bool manifold) {
+  const Request q = make_request(number, robust, algorithm, margin, early_out, manifold, cache);
+  const PoseD pa = poses_from(pose_a, "pose_a", false).front();
+  const PoseD pb = poses_from(pose_b, "pose_b", false).front();
+  QueryOut out;
+  dispatch(q, a, b, cache, [&](const auto& sa, const auto& sb, auto* c) {
+    using S = std::decay_t<decltype(sa)>;
+    if constexpr (std::is_same_v<S, ExactShape>) {
+      run_query_exact(q.opt, sa, pa, sb, pb, c, out);
+    } else {
+      run_query(q.opt, sa, pa, sb, pb, c, out);
+    }
+  });
+  return make_result(out, q);
+}
+
+struct BatchResult {
+  py::array_t<bool> overlap, early_out;
+  py::array_t<double> separation, axis;
+  py::array_t<std::int8_t> feature_type;
+  py::array_t<std::int32_t> feature;
+  py::array_t<std::int64_t> exact_fallbacks;
+  py::object contact_count = py::none(), contact_points = py::none(), contact_separations = py::none(),
+             contact_ids = py::none();
+  std::string number, algorithm;
+  bool robust = false;
+  std::size_t size = 0;
+};
+
+BatchResult query_batch(Shape& a, Shape& b, const py::object& poses_a, const py::object& poses_b,
+                        const std::string& number, bool robust, const std::string& algorithm, double margin,
+                        bool early_out, Cache* cache, bool manifold) {
+  const Request q = make_request(number, robust, algorithm, margin, early_out, manifold, cache);
+  const std::vector<PoseD> pa = poses_from(poses_a, "poses_a", true);
+  const std::vector<PoseD> pb = poses_from(poses_b, "poses_b", true);
+  BatchPoses poses{pa.data(), pa.size(), pb.data(), pb.size(), std::max(pa.size(), pb.size())};
+  if ((pa.size() != 1 && pa.size() != poses.k) || (pb.size() != 1 && pb.size() != poses.k)) {
+    usage_error("poses_a and poses_b hold " + std::to_string(pa.size()) + " and " + std::to_string(pb.size()) +
+                " poses: each must hold K or 1");
+  }
+  const auto k = static_cast<py::ssize_t>(poses.k);
+  BatchResult r;
+  r.size = poses.k;
+  r.number = q.number_name;
+  r.algorithm = q.algorithm_name;
+  r.robust = q.opt.robust;
+  r.overlap = py::array_t<bool>(k);
+  r.early_out = py::array_t<bool>(k);
+  r.separation = py::array_t<double>(k);
+  r.axis = py::array_t<double>({k, py::ssize_t{3}});
+  r.feature_type = py::array_t<std::int8_t>(k);
+  r.feature = py::array_t<std::int32_t>({k, py::ssize_t{2}});
+  r.exact_fallbacks = py::array_t<std::int64_t>(k);
+  BatchColumns c;
+  c.overlap = r.overlap.mutable_data();
+  c.early_out = r.early_out.mutable_data();
+  c.separation = r.separation.mutable_data();
+  c.axis = r.axis.mutable_data();
+  c.feature_type = r.feature_type.mutable_data();
+  c.feature = r.feature.mutable_data();
+  c.exact_fallbacks = r.exact_fallbacks.mutable_data();
+  if (manifold) {
+    const py::ssize_t np = kBatchPoints;
+    py::array_t<std::int32_t> count(k);
+    py::array_t<double> points({k, np, py::ssize_t{3}});
+    py::array_t<double> seps({k, np});
+    py::array_t<std::int32_t> ids({k, np, py::ssize_t{4}});
+    c.contact_count = count.mutable_data();
+    c.contact_points = points.mutable_data();
+    c.contact_separations = seps.mutable_data();
+    c.contact_ids = ids.mutable_data();
+    r.contact_count = count;
+    r.contact_points = points;
+    r.contact_separations = seps;
+    r.contact_ids = ids;
+  }
+  dispatch(q, a, b, cache, [&](const auto& sa, const auto& sb, auto* cc) {
+    using S = std::decay_t<decltype(sa)>;
+    if constexpr (std::is_same_v<S, ExactShape>) {
+      run_batch_exact(q.opt, sa, sb, poses, cc, c);
+    } else {
+      run_batch(q.opt, sa, sb, poses, cc, c);
+    }
+  });
+  return r;
+}
+
+// ---- repr ---------------------------------------------------------------------
+
+std::string feature_repr(const Feature& f) {
+  return "Feature('" + std::string(type_name(f.type)) + "', " + std::to_string(f.a) + ", " + std::to_string(f.b) + ")";
+}
+
+std::string number_repr(double x) { return format_number(x); }
+
+}  // namespace
+}  // namespace sepax::python
+
+using namespace sepax;
+using namespace sepax::python;
+
+PYBIND11_MODULE(sepax, m) {
+  m.doc() =
+      "sepax: exact-predicate separating axis tests and contact manifolds for convex polyhedra.\n\n"
+      "Shapes are convex hulls given as numpy (N, 3) float64 arrays; queries take poses (4x4 matrices,\n"
+      "(R, t) pairs, (3,) translations or None) and answer in world coordinates.  See docs/python.md.";
+  m.attr("__version__") = SEPAX_VERSION_STRING;
+
+  // errors
+  py::enum_<ErrorCode>(m, "ErrorCode", "Which rule an input broke (sepax/error.hpp).")
+      .value("NonFinite", ErrorCode::NonFinite, "NaN or infinity in a coordinate")
+      .value("TooFewPoints", ErrorCode::TooFewPoints, "fewer than 3 distinct points (or 4 for a solid face list)")
+      .value("Collinear", ErrorCode::Collinear, "all points on one line")
+      .value("BadIndex", ErrorCode::BadIndex, "a face refers to a vertex that does not exist")
+      .value("DegenerateFace", ErrorCode::DegenerateFace, "a face with < 3 vertices, a repeated vertex, or zero area")
+      .value("NotManifold", ErrorCode::NotManifold, "an edge not shared by exactly two faces")
+      .value("BadEuler", ErrorCode::BadEuler, "V - E + F != 2")
+      .value("UnusedVertex", ErrorCode::UnusedVertex, "a vertex on no face")
+      .value("NonPlanarFace", ErrorCode::NonPlanarFace, "a face's vertices are not on one plane")
+      .value("NonConvexFace", ErrorCode::NonConvexFace, "a face polygon that turns the wrong way")
+      .value("NotConvex", ErrorCode::NotConvex, "a vertex above some face plane, or coplanar adjacent faces")
+      .value("InwardFaces", ErrorCode::InwardFaces, "faces oriented inward")
+      .value("BadScale", ErrorCode::BadScale, "zero extent, coordinates out of range, a non-rigid pose, a bad margin")
+      .value("Parse", ErrorCode::Parse, "a malformed input file");
+  {
+    py::dict ns;
+    ns["__name__"] = "sepax";
+    py::exec(R"(
+class InvalidInput(ValueError):
+    """Bad input refused by sepax (a ValueError).
+
+    Attributes: code (sepax.ErrorCode: which rule the input broke) and
+    code_name (its short name, e.g. "non-finite"); str(e) names the
+    offending element (vertex, face, pose entry)."""
+
+    def __init__(self, message, code, code_name):
+        super().__init__(message)
+        self.code = code
+        self.code_name = code_name
+
+    def __reduce__(self):
+        return (type(self), (self.args[0], self.code, self.code_name))
+)",
+             ns, ns);
+    invalid_input_type() = ns["InvalidInput"];
+    invalid_input_type().attr("__module__") = "sepax";
+    m.attr("InvalidInput") = invalid_input_type();
+  }
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InvalidInput& e) {
+      const py::object exc = invalid_input_type()(py::str(e.what()), py::cast(e.code()), sepax::to_string(e.code()));
+      PyErr_SetObject(invalid_input_type().ptr(), exc.ptr());
+    }
+  });
+
+  // shapes
+  py::class_<Shape>(m, "Shape",
+                    "A convex polyhedron in its local frame, validated in double and prepared once per number "
+                    "type it is queried in (float: the vertices rounded to float; exact: their exact values; "
+                    "same faces and plane triples).  Immutable; may be queried from several threads.")
+      .def(py::init([](const py::object& vertices, const std::vector<std::vector<int>>& faces) {
+             std::vector<Vec3<double>> v = points_from(vertices, "vertices");
+             py::gil_scoped_release release;
+             return Shape(ConvexPolyhedron<double>::from_faces(std::move(v), faces));
+           }),
+           py::arg("vertices"), py::arg("faces"),
+           "Shape(vertices, faces): vertices (N, 3); faces: lists of vertex indices, counter-clockwise seen "
+           "from outside (a flat shape: the polygon and the same polygon reversed).  Validated; raises "
+           "sepax.InvalidInput naming the problem.")
+      .def_property_readonly("vertices", [](const Shape& s) { return vec_rows(s.poly().vertices()); },
+                             "(N, 3) float64 array of the vertices (a copy).")
+      .def_property_readonly("faces",
+                             [](const Shape& s) {
+                               std::vector<std::vector<int>> f;
+                               for (int i = 0; i < s.poly().face_count(); ++i) f.push_back(s.poly().face_vertices(i));
+                               return f;
+                             },
+                             "The faces as lists of vertex indices (counter-clockwise seen from outside).")
+      .def_property_readonly("normals",
+                             [](const Shape& s) {
+                               std::vector<Vec3<double>> n;
+                               for (const auto& p : s.poly().planes()) n.push_back(p.normal);
+                               return vec_rows(n);
+                             },
+                             "(F, 3) unit outward face normals.")
+      .def_property_readonly("offsets",
+                             [](const Shape& s) {
+                               py::array_t<double> o(s.poly().face_count());
+                               for (int i = 0; i < s.poly().face_count(); ++i) {
+                                 o.mutable_at(i) = s.poly().planes()[static_cast<std::size_t>(i)].offset;
+                               }
+                               return o;
+                             },
+                             "(F,) plane offsets: normals[f] . x == offsets[f] on face f.")
+      .def_property_readonly("edges",
+                             [](const Shape& s) {
+                               const auto& he = s.poly().half_edges();
+                               py::array_t<std::int32_t> e({py::ssize_t{s.poly().edge_count()}, py::ssize_t{2}});
+                               auto w = e.mutable_unchecked<2>();
+                               for (py::ssize_t i = 0; i < s.poly().edge_count(); ++i) {
+                                 w(i, 0) = he[static_cast<std::size_t>(2 * i)].origin;
+                                 w(i, 1) = he[static_cast<std::size_t>(2 * i + 1)].origin;
+                               }
+                               return e;
+                             },
+                             "(E, 2) int32 vertex pairs; row e is undirected edge e (feature and contact ids).")
+      .def_property_readonly("vertex_count", [](const Shape& s) { return s.poly().vertex_count(); })
+      .def_property_readonly("edge_count", [](const Shape& s) { return s.poly().edge_count(); })
+      .def_property_readonly("face_count", [](const Shape& s) { return s.poly().face_count(); })
+      .def_property_readonly("is_flat", [](const Shape& s) { return s.poly().is_flat(); },
+                             "True for a double-sided polygon (two opposite faces).")
+      .def_property_readonly("bounds",
+                             [](const Shape& s) {
+                               return vec_rows({s.poly().bounds_min(), s.poly().bounds_max()});
+                             },
+                             "(2, 3): the bounding box's min and max corners.")
+      .def("__repr__", [](const Shape& s) {
+        return "<sepax.Shape: " + std::to_string(s.poly().vertex_count()) + " vertices, " +
+               std::to_string(s.poly().edge_count()) + " edges, " + std::to_string(s.poly().face_count()) +
+               " faces" + (s.poly().is_flat() ? ", flat" : "") + ">";
+      });
+
+  m.def(
+      "convex_hull",
+      [](const py::object& points) {
+        std::vector<Vec3<double>> p = points_from(points, "points");
+        py::gil_scoped_release release;
+        return Shape(convex_hull<double>(p));
+      },
+      py::arg("points"),
+      "convex_hull(points) -> Shape: the convex hull of an (N, 3) point array, built and validated in double "
+      "(vertices are input points; coplanar points give a flat double-sided polygon).  Raises "
+      "sepax.InvalidInput: NonFinite (NaN/inf, naming the point), TooFewPoints, Collinear, BadScale.");
+  m.def(
+      "box", [](double hx, double hy, double hz) { return Shape(shapes::box<double>(hx, hy, hz)); }, py::arg("hx"),
+      py::arg("hy"), py::arg("hz"), "box(hx, hy, hz) -> Shape: the axis-aligned box with these half extents.");
+  m.def(
+      "cube", [](double half) { return Shape(shapes::cube<double>(half)); }, py::arg("half") = 1.0,
+      "cube(half=1.0) -> Shape: the cube [-half, half]^3.");
+  m.def(
+      "tetrahedron", [](double s) { return Shape(shapes::tetrahedron<double>(s)); }, py::arg("s") = 1.0,
+      "tetrahedron(s=1.0) -> Shape: (s,s,s), (s,-s,-s), (-s,s,-s), (-s,-s,s).");
+  m.def(
+      "prism", [](int n, double r, double h) { return Shape(shapes::prism<double>(n, r, h)); }, py::arg("n"),
+      py::arg("r") = 1.0, py::arg("h") = 1.0, "prism(n, r=1.0, h=1.0) -> Shape: the regular n-gon prism around z.");
+  m.def(
+      "polygon",
+      [](const py::object& loop) {
+        return Shape(ConvexPolyhedron<double>::polygon(points_from(loop, "loop")));
+      },
+      py::arg("loop"),
+      "polygon(loop) -> Shape: the double-sided convex polygon with these (N, 3) vertices in order.");
+
+  // poses
+  m.def(
+      "pose",
+      [](const py::object& translation, const py::object& quaternion) {
+        const DoubleArray t = DoubleArray::ensure(translation), qa = DoubleArray::ensure(quaternion);
+        if (!t || t.ndim() != 1 || t.shape(0) != 3) usage_error("translation must have shape (3,)");
+        if (!qa || qa.ndim() != 1 || qa.shape(0) != 4) usage_error("quaternion must have shape (4,) as (w, x, y, z)");
+        const auto x = RigidTransform<double>::from_quaternion(qa.at(0), qa.at(1), qa.at(2), qa.at(3),
+                                                               Vec3<double>(t.at(0), t.at(1), t.at(2)));
+        PoseD p;
+        for (int i = 0; i < 3; ++i) {
+          for (int j = 0; j < 3; ++j) p.r[static_cast<std::size_t>(3 * i + j)] = x.rotation(i, j);
+          p.t[static_cast<std::size_t>(i)] = x.translation[i];
+        }
+        return pose_matrix(pose_from_parts(p.r.data(), p.t.data(), "pose"));
+      },
+      py::arg("translation") = py::make_tuple(0.0, 0.0, 0.0), py::arg("quaternion") = py::make_tuple(1.0, 0.0, 0.0, 0.0),
+      "pose(translation=(0,0,0), quaternion=(1,0,0,0)) -> (4, 4) array: rotation by the quaternion (w, x, y, z), "
+      "normalised first, then translation; the same matrix as the CLI's --pose.");
+
+  // features and caches
+  py::class_<Feature>(m, "Feature",
+                      "The SAT feature of a result: type 'faceA' (a = face of A, b = support vertex of B), "
+                      "'faceB' (a = vertex of A, b = face of B), 'edges' (a = edge of A, b = edge of B), "
+                      "'sideA'/'sideB' (flat shapes in one plane).")
+      .def_property_readonly("type", [](const Feature& f) { return std::string(type_name(f.type)); })
+      .def_readonly("a", &Feature::a)
+      .def_readonly("b", &Feature::b)
+      .def("__eq__", [](const Feature& x, const Feature& y) { return x == y; })
+      .def("__hash__", [](const Feature& f) {
+        return py::hash(py::make_tuple(static_cast<int>(f.type), f.a, f.b));
+      })
+      .def("__repr__", &feature_repr);
+  m.attr("FEATURE_TYPES") = py::make_tuple("faceA", "faceB", "edges", "sideA", "sideB");
+  m.attr("VERTEX") = static_cast<int>(ShapeFeatureKind::Vertex);
+  m.attr("EDGE") = static_cast<int>(ShapeFeatureKind::Edge);
+  m.attr("FACE") = static_cast<int>(ShapeFeatureKind::Face);
+
+  py::class_<Cache>(m, "Cache",
+                    "Per-pair warm-start cache (sepax/sat_cache.hpp): pass the same Cache for the same pair at "
+                    "every step.  A cached query returns the fresh query's verdict, feature and separation "
+                    "(with early_out: a separating axis beyond the margin, maybe found at once).  A foreign "
+                    "or stale cache costs one re-evaluation.  Thread-safe (one query at a time uses it).")
+      .def(py::init<>())
+      .def_property_readonly("hits", &Cache::hits, "early-out queries answered by the cached feature")
+      .def_property_readonly("misses", &Cache::misses, "queries that ran the SAT")
+      .def("reset", &Cache::reset, "forget the cached feature");
+
+  py::class_<Manifold>(m, "Manifold",
+                       "Contact manifold in world coordinates (docs/contacts.md).  At most 4 points; "
+                       "separations < 0 are penetrations, > 0 only within the speculative margin.")
+      .def_readonly("kind", &Manifold::kind, "'face', 'edge', 'side' or 'none'")
+      .def_readonly("normal", &Manifold::normal, "(3,) unit normal from A to B")
+      .def_readonly("points", &Manifold::points, "(M, 3) contact points (midpoints of points_a and points_b)")
+      .def_readonly("points_a", &Manifold::points_a, "(M, 3) the points on A")
+      .def_readonly("points_b", &Manifold::points_b, "(M, 3) the points on B")
+      .def_readonly("separations", &Manifold::separations, "(M,) signed separation of each point along normal")
+      .def_property_readonly(
+          "depths", [](const Manifold& mf) { return py::array_t<double>(py::reinterpret_steal<py::object>(
+                                                 PyNumber_Negative(mf.separations.ptr()))); },
+          "(M,) penetration depths: -separations")
+      .def_readonly("ids", &Manifold::ids,
+                    "(M, 4) int32 feature ids (kind A, index A, kind B, index B), kinds sepax.VERTEX/EDGE/FACE; "
+                    "stable while the same features stay in contact (warm starting)")
+      .def_readonly("id_keys", &Manifold::id_keys, "(M,) uint64 keys of the ids (ContactFeatureId::key)")
+      .def_readonly("id_names", &Manifold::id_names, "the ids as text, e.g. 'A:face 1/B:vertex 4'")
+      .def_readonly("reference_shape", &Manifold::reference_shape, "face contacts: 0 reference face on A, 1 on B")
+      .def_readonly("reference_face", &Manifold::reference_face)
+      .def_readonly("incident_face", &Manifold::incident_face)
+      .def("__len__", [](const Manifold& mf) { return mf.id_names.size(); })
+      .def("__repr__", [](const Manifold& mf) {
+        return "<sepax.Manifold: " + mf.kind + ", " + std::to_string(mf.id_names.size()) + " points>";
+      });
+
+  py::class_<Result>(m, "Result", "The answer of sepax.query (world coordinates).")
+      .def_readonly("overlap", &Result::overlap, "the shapes share a point (touching counts)")
+      .def_readonly("separation", &Result::separation,
+                    "signed separation along axis (> 0 apart, <= 0 overlapping); exact: the nearest double")
+      .def_property_readonly(
+          "depth", [](const Result& r) { return r.overlap ? -r.separation : 0.0; },
+          "penetration depth (-separation when overlapping, else 0)")
+      .def_readonly("axis", &Result::axis, "(3,) unit axis from A towards B (exact: normalised in double)")
+      .def_readonly("feature", &Result::feature)
+      .def_readonly("early_out", &Result::early_out, "the query stopped at a separation proven > margin")
+      .def_readonly("stats", &Result::stats, "face_axes, edge_pairs, minkowski_faces, side_axes, exact_fallbacks")
+      .def_readonly("separation_exact", &Result::separation_exact,
+                    "number='exact': (num, norm2) as fractions.Fraction, separation = num / sqrt(norm2); else None")
+      .def_readonly("manifold", &Result::manifold, "the contact Manifold, or None (not asked, or early_out)")
+      .def_readonly("number", &Result::number)
+      .def_readonly("algorithm", &Result::algorithm)
+      .def_readonly("robust", &Result::robust)
+      .def("__repr__", [](const Result& r) {
+        return std::string("<sepax.Result: ") + (r.overlap ? "overlap" : "separated") +
+               ", separation " + number_repr(r.separation) + ", " + feature_repr(r.feature) + ">";
+      });
+
+  py::class_<BatchResult>(m, "BatchResult", "The answers of sepax.query_batch as arrays (one row per pose pair).")
+      .def_readonly("overlap", &BatchResult::overlap, "(K,) bool")
+      .def_readonly("early_out", &BatchResult::early_out, "(K,) bool")
+      .def_readonly("separation", &BatchResult::separation, "(K,) float64")
+      .def_readonly("axis", &BatchResult::axis, "(K, 3) float64, unit, world")
+      .def_readonly("feature_type", &BatchResult::feature_type, "(K,) int8 index into sepax.FEATURE_TYPES")
+      .def_readonly("feature", &BatchResult::feature, "(K, 2) int32: the feature's a and b")
+      .def_readonly("exact_fallbacks", &BatchResult::exact_fallbacks, "(K,) int64")
+      .def_readonly("contact_count", &BatchResult::contact_count, "(K,) int32 or None (manifold=False)")
+      .def_readonly("contact_points", &BatchResult::contact_points, "(K, 4, 3) float64, unused rows NaN, or None")
+      .def_readonly("contact_separations", &BatchResult::contact_separations, "(K, 4) float64, unused NaN, or None")
+      .def_readonly("contact_ids", &BatchResult::contact_ids, "(K, 4, 4) int32 ids as Manifold.ids, unused -1, or None")
+      .def_readonly("number", &BatchResult::number)
+      .def_readonly("algorithm", &BatchResult::algorithm)
+      .def_readonly("robust", &BatchResult::robust)
+      .def("__len__", [](const BatchResult& r) { return r.size; })
+      .def("__repr__", [](const BatchResult& r) { return "<sepax.BatchResult: " + std::to_string(r.size) + " rows>"; });
+
+  m.def("query", &query, py::arg("a"), py::arg("b"), py::arg("pose_a") = py::none(), py::arg("pose_b") = py::none(),
+        py::kw_only(), py::arg("number") = "double", py::arg("robust") = true, py::arg("algorithm") = "traversal",
+        py::arg("margin") = 0.0, py::arg("early_out") = false, py::arg("cache") = nullptr, py::arg("manifold") = true,
+        R"(query(a, b, pose_a=None, pose_b=None, *, number="double", robust=True, algorithm="traversal",
+      margin=0.0, early_out=False, cache=None, manifold=True) -> Result
+
+Separating axis test of shapes a and b at their poses (world = R local + t).  A pose is None
+(identity), a (4, 4) matrix, an (R (3, 3), t (3,)) pair or a (3,) translation.
+
+number:    "double", "float" (the shapes' vertices rounded to float), or "exact" (GMP rationals:
+           the exact values of the vertices and pose entries; every decision and value exact).
+robust:    float/double: every decision an exact filtered predicate (policy::Robust).  False:
+           plain rounding arithmetic.  Ignored for "exact".
+algorithm: "traversal", "gauss_map" or "brute_force" (same answer, different speed).
+margin:    speculative margin (>= 0): the manifold keeps points separated by at most margin;
+           with early_out=True the query stops at an axis proven to separate by more.
+cache:     a sepax.Cache for this pair (warm start).
+manifold:  build the contact manifold (when the query did not stop early).
+
+The GIL is released while the query runs.  Raises sepax.InvalidInput (a ValueError with .code)
+for a non-finite or non-rigid pose or a bad margin, ValueError for malformed arguments.)");
+
+  m.def("query_batch", &query_batch, py::arg("a"), py::arg("b"), py::arg("poses_a"), py::arg("poses_b"),
+        py::kw_only(), py::arg("number") = "double", py::arg("robust") = true, py::arg("algorithm") = "traversal",
+        py::arg("margin") = 0.0, py::arg("early_out") = false, py::arg("cache") = nullptr,
+        py::arg("manifold") = false,
+        R"(query_batch(a, b, poses_a, poses_b, *, number="double", robust=True, algorithm="traversal",
+            margin=0.0, early_out=False, cache=None, manifold=False) -> BatchResult
+
+sepax.query for K pose pairs in one call, answers as arrays.  poses_a / poses_b: (K, 4, 4), or
+(R (K, 3, 3), t (K, 3)), or one pose of any form query takes (broadcast to every row).  Row i
+equals query(a, b, poses_a[i], poses_b[i], ...) exactly; with a cache, the rows run in order
+with the cache carried from one to the next (a trajectory).  The GIL is released for the whole
+batch.)");
+}
