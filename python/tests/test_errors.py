@@ -1,0 +1,125 @@
+"""Bad input: sepax.InvalidInput (a ValueError) with the error code and a message naming the problem."""
+
+import pickle
+
+import numpy as np
+import pytest
+
+import sepax
+
+
+def check(excinfo, code, code_name):
+    e = excinfo.value
+    assert isinstance(e, ValueError)
+    assert e.code == code and e.code_name == code_name
+
+
+def test_invalid_input_is_a_value_error_with_code():
+    assert issubclass(sepax.InvalidInput, ValueError)
+    with pytest.raises(ValueError) as ei:  # catchable as ValueError
+        sepax.convex_hull([[0, 0, 0], [1, 0, 0], [0, np.nan, 0], [0, 0, 1]])
+    check(ei, sepax.ErrorCode.NonFinite, "non-finite")
+    assert "point 2" in str(ei.value)
+    e = pickle.loads(pickle.dumps(ei.value))  # survives multiprocessing
+    assert type(e) is sepax.InvalidInput and e.code == sepax.ErrorCode.NonFinite and str(e) == str(ei.value)
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_non_finite_points(bad):
+    p = np.random.default_rng(0).normal(size=(10, 3))
+    p[7, 1] = bad
+    with pytest.raises(sepax.InvalidInput, match="point 7") as ei:
+        sepax.convex_hull(p)
+    check(ei, sepax.ErrorCode.NonFinite, "non-finite")
+    v = sepax.cube().vertices
+    v[3, 2] = bad
+    with pytest.raises(sepax.InvalidInput) as ei:
+        sepax.Shape(v, sepax.cube().faces)
+    check(ei, sepax.ErrorCode.NonFinite, "non-finite")
+
+
+def test_degenerate_point_sets():
+    with pytest.raises(sepax.InvalidInput) as ei:
+        sepax.convex_hull([[0, 0, 0], [1, 1, 1]])
+    check(ei, sepax.ErrorCode.TooFewPoints, "too-few-points")
+    with pytest.raises(sepax.InvalidInput) as ei:
+        sepax.convex_hull([[0, 0, 0]] * 5)
+    check(ei, sepax.ErrorCode.TooFewPoints, "too-few-points")
+    with pytest.raises(sepax.InvalidInput) as ei:
+        sepax.convex_hull([[t, 2 * t, -t] for t in np.linspace(0, 1, 9)])
+    check(ei, sepax.ErrorCode.Collinear, "collinear")
+    with pytest.raises(sepax.InvalidInput) as ei:
+        sepax.convex_hull(np.zeros((0, 3)))
+    check(ei, sepax.ErrorCode.TooFewPoints, "too-few-points")
+    # coplanar points are not an error: a double-sided polygon
+    flat = sepax.convex_hull([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0]])
+    assert flat.is_flat and flat.vertex_count == 4 and flat.face_count == 2
+
+
+def test_bad_face_lists():
+    v, f = sepax.cube().vertices, sepax.cube().faces
+    with pytest.raises(sepax.InvalidInput) as ei:
+        sepax.Shape(v, f[:-1] + [[0, 1, 99]])
+    check(ei, sepax.ErrorCode.BadIndex, "bad-index")
+    with pytest.raises(sepax.InvalidInput) as ei:
+        sepax.Shape(v, [list(reversed(x)) for x in f])
+    check(ei, sepax.ErrorCode.InwardFaces, "inward-faces")
+    with pytest.raises(sepax.InvalidInput) as ei:
+        sepax.Shape(v, f[:-1])
+    assert ei.value.code in (sepax.ErrorCode.NotManifold, sepax.ErrorCode.UnusedVertex, sepax.ErrorCode.BadEuler)
+
+
+def test_malformed_arrays_are_value_errors():
+    with pytest.raises(ValueError, match=r"shape \(N, 3\)"):
+        sepax.convex_hull(np.zeros((5, 2)))
+    with pytest.raises(ValueError, match="number"):
+        sepax.query(sepax.cube(), sepax.cube(), number="half")
+    with pytest.raises(ValueError, match="algorithm"):
+        sepax.query(sepax.cube(), sepax.cube(), algorithm="magic")
+    with pytest.raises(ValueError, match="pose_b"):
+        sepax.query(sepax.cube(), sepax.cube(), None, np.eye(3))
+
+
+@pytest.mark.parametrize("number", ["float", "double", "exact"])
+def test_bad_poses(number):
+    a, b = sepax.cube(), sepax.tetrahedron()
+    p = np.eye(4)
+    p[1, 3] = np.nan
+    with pytest.raises(sepax.InvalidInput, match="pose_b: translation entry 1") as ei:
+        sepax.query(a, b, None, p, number=number)
+    check(ei, sepax.ErrorCode.NonFinite, "non-finite")
+    p = np.eye(4)
+    p[3, 0] = 0.5
+    with pytest.raises(sepax.InvalidInput, match="last row") as ei:
+        sepax.query(a, b, p, None, number=number)
+    check(ei, sepax.ErrorCode.BadScale, "bad-scale")
+    mirror = np.diag([1.0, 1.0, -1.0, 1.0])  # det R < 0: refused by every number type
+    with pytest.raises(sepax.InvalidInput) as ei:
+        sepax.query(a, b, None, mirror, number=number)
+    check(ei, sepax.ErrorCode.BadScale, "bad-scale")
+    if number != "exact":  # float/double refuse |R^T R - I| > 1e-3 (exact T: only det R <= 0)
+        with pytest.raises(sepax.InvalidInput) as ei:
+            sepax.query(a, b, None, np.diag([2.0, 2.0, 2.0, 1.0]), number=number)
+        check(ei, sepax.ErrorCode.BadScale, "bad-scale")
+    stack = np.stack([np.eye(4)] * 3)
+    stack[2, 0, 0] = np.inf
+    with pytest.raises(sepax.InvalidInput, match=r"poses_b\[2\]") as ei:
+        sepax.query_batch(a, b, None, stack, number=number)
+    check(ei, sepax.ErrorCode.NonFinite, "non-finite")
+
+
+@pytest.mark.parametrize("margin,code", [(-0.1, sepax.ErrorCode.BadScale), (np.inf, sepax.ErrorCode.BadScale),
+                                         (np.nan, sepax.ErrorCode.BadScale)])
+def test_bad_margin(margin, code):
+    with pytest.raises(sepax.InvalidInput, match="margin") as ei:
+        sepax.query(sepax.cube(), sepax.cube(), None, [3, 0, 0], margin=margin)
+    assert ei.value.code == code
+
+
+def test_float_range():
+    # finite in double, beyond float: refused when first queried in float, with the coordinate named
+    big = sepax.cube(1e39)
+    assert sepax.query(big, sepax.cube(), None, [0, 0, 3e39]).separation == pytest.approx(2e39)
+    with pytest.raises(sepax.InvalidInput, match="beyond the range of float") as ei:
+        sepax.query(big, sepax.cube(), None, [0, 0, 3e39], number="float")
+    check(ei, sepax.ErrorCode.BadScale, "bad-scale")
