@@ -587,6 +587,19 @@ class InvalidInput(ValueError):
                                return vec_rows({s.poly().bounds_min(), s.poly().bounds_max()});
                              },
                              "(2, 3): the bounding box's min and max corners.")
+      .def(py::pickle(
+          [](const Shape& s) {
+            std::vector<std::vector<int>> f;
+            for (int i = 0; i < s.poly().face_count(); ++i) f.push_back(s.poly().face_vertices(i));
+            return py::make_tuple(vec_rows(s.poly().vertices()), f);
+          },
+          [](const py::tuple& t) {
+            if (t.size() != 2) usage_error("Shape: a pickled shape is (vertices, faces)");
+            std::vector<Vec3<double>> v = points_from(t[0], "vertices");
+            const auto f = t[1].cast<std::vector<std::vector<int>>>();
+            py::gil_scoped_release release;
+            return Shape(ConvexPolyhedron<double>::from_faces(std::move(v), f));
+          }))
       .def("__repr__", [](const Shape& s) {
         return "<sepax.Shape: " + std::to_string(s.poly().vertex_count()) + " vertices, " +
                std::to_string(s.poly().edge_count()) + " edges, " + std::to_string(s.poly().face_count()) +

@@ -129,6 +129,18 @@ def test_poses_of_both_shapes_and_pose_forms():
     assert r3.separation == pytest.approx(r.separation, abs=1e-12)
 
 
+def test_shapes_pickle():
+    import pickle
+
+    a = random_hull(np.random.default_rng(4), 25)
+    b = pickle.loads(pickle.dumps(a))
+    np.testing.assert_array_equal(b.vertices, a.vertices)
+    assert b.faces == a.faces
+    p = sepax.pose([0.9, 0.3, -0.2], [0.4, 0.1, -0.6, 0.2])
+    ra, rb = sepax.query(a, sepax.cube(), None, p), sepax.query(b, sepax.cube(), None, p)
+    assert (ra.separation, ra.feature) == (rb.separation, rb.feature)
+
+
 # ---- against the C++ program ---------------------------------------------------
 
 
@@ -335,6 +347,39 @@ def test_queries_release_the_gil():
     assert end - start > 0.05, "the batch is too short to tell"
     inside = [t for t in ticks if start + 0.1 * (end - start) < t < end - 0.1 * (end - start)]
     assert len(inside) > 100  # Python ran in this thread while the batch ran in the other one
+
+
+def test_threads_give_the_serial_answers():
+    # the posed queries keep per-thread scratch: threads querying the same shapes (and a shared cache)
+    # must give the answers of a serial run
+    rng = np.random.default_rng(9)
+    shapes = [random_hull(rng, 30), random_hull(rng, 16, 0.6), sepax.box(1, 0.5, 0.25)]
+    poses = random_poses(rng, 300, 1.5)
+    jobs = [(shapes[i % 3], shapes[(i + 1) % 3], number) for i in range(6) for number in ("float", "double")]
+    serial = [sepax.query_batch(a, b, None, poses, number=n, manifold=True) for a, b, n in jobs]
+    out = [None] * len(jobs)
+    shared = sepax.Cache()
+    mismatches = []
+
+    def run(j):
+        a, b, n = jobs[j]
+        out[j] = sepax.query_batch(a, b, None, poses, number=n, manifold=True)
+        for i in range(0, 300, 7):  # single queries through one cache shared by every thread
+            r = sepax.query(a, b, None, poses[i], number=n, cache=shared)
+            if r.separation != serial[j].separation[i]:
+                mismatches.append((j, i))
+
+    threads = [threading.Thread(target=run, args=(j,)) for j in range(len(jobs))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not mismatches
+    for got, want in zip(out, serial):
+        np.testing.assert_array_equal(got.separation, want.separation)
+        np.testing.assert_array_equal(got.feature, want.feature)
+        np.testing.assert_array_equal(got.contact_points, want.contact_points)
+        np.testing.assert_array_equal(got.contact_ids, want.contact_ids)
 
 
 # ---- stubs -----------------------------------------------------------------------------------
