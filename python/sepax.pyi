@@ -210,6 +210,9 @@ def query(
     cache: Optional[Cache] = None,
     manifold: bool = True,
 ) -> Result: ...
+def audit(
+    a: Shape, b: Shape, pose_a: Pose = None, pose_b: Pose = None, *, number: Literal["float", "double"] = "double"
+) -> dict[str, npt.NDArray[np.generic]]: ...
 def query_batch(
     a: Shape,
     b: Shape,

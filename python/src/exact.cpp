@@ -40,6 +40,23 @@ void run_query_exact(const QueryOptions& o, const ExactShape& a, const PoseD& po
   run_query(o, a.shape, pose_a, b.shape, pose_b, cache ? &cache->cache : nullptr, out);
 }
 
+namespace {
+template <Number U>
+void exact_sign_table_of(const ConvexPolyhedron<U>& a, const ConvexPolyhedron<U>& b, SignTable& t) {
+  const auto qa = ConvexPolyhedron<mpq_class>::convert_from(a);
+  const auto qb = ConvexPolyhedron<mpq_class>::convert_from(b);
+  kernel_t<policy::Plain, mpq_class> k(qa, qb);
+  fill_sign_table(k, qa.edge_count(), qb.edge_count(), t);
+}
+}  // namespace
+
+void exact_sign_table(const ConvexPolyhedron<double>& a, const ConvexPolyhedron<double>& b, SignTable& t) {
+  exact_sign_table_of(a, b, t);
+}
+void exact_sign_table(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float>& b, SignTable& t) {
+  exact_sign_table_of(a, b, t);
+}
+
 void run_batch_exact(const QueryOptions& o, const ExactShape& a, const ExactShape& b, const BatchPoses& poses,
                      ExactCache* cache, const BatchColumns& c) {
   run_batch(o, a.shape, b.shape, poses, cache ? &cache->cache : nullptr, c);

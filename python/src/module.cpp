@@ -456,6 +456,69 @@ BatchResult query_batch(Shape& a, Shape& b, const py::object& poses_a, const py:
   return r;
 }
 
+/// audit(): the sign tables of the plain and the robust kernel in T on (A,
+/// B'), and the exact one on their exact images, as numpy columns.
+template <Number T>
+py::dict audit_in(const PreparedShape<T>& a, const PoseD& pa, const PreparedShape<T>& b, const PoseD& pb) {
+  SignTable plain, robust, exact;
+  const int ea = a.polyhedron().edge_count(), eb = b.polyhedron().edge_count();
+  {
+    py::gil_scoped_release release;
+    sign_table<policy::Plain>(a, pa, b, pb, plain);
+    sign_table<policy::Robust>(a, pa, b, pb, robust);
+    // B' again (the scratch holds it: same shape, same pose), its exact image
+    const ConvexPolyhedron<T>& bp = b.posed_scratch(relative_pose(to_transform<T>(pa), to_transform<T>(pb)));
+    exact_sign_table(a.polyhedron(), bp, exact);
+  }
+  const auto rows = static_cast<py::ssize_t>(plain.parallel.size());
+  py::array_t<std::int32_t> edges({rows, py::ssize_t{2}});
+  auto we = edges.mutable_unchecked<2>();
+  py::ssize_t r = 0;
+  for (int i = 0; i < ea; ++i) {
+    for (int j = 0; j < eb; ++j, ++r) {
+      we(r, 0) = i;
+      we(r, 1) = j;
+    }
+  }
+  const auto signs = [rows](const SignTable& t) {
+    py::array_t<std::int8_t> out({rows, py::ssize_t{4}});
+    std::copy(t.signs.begin(), t.signs.end(), out.mutable_data());
+    return out;
+  };
+  const auto flags = [rows](const SignTable& t, bool parallel) {
+    py::array_t<bool> out(rows);
+    bool* w = out.mutable_data();
+    for (std::size_t i = 0; i < t.parallel.size(); ++i) {
+      const ArcSigns s{t.signs[4 * i], t.signs[4 * i + 1], t.signs[4 * i + 2], t.signs[4 * i + 3]};
+      w[i] = parallel ? t.parallel[i] != 0 : s.minkowski_face();
+    }
+    return out;
+  };
+  py::dict d;
+  d["edges"] = edges;
+  d["plain"] = signs(plain);
+  d["robust"] = signs(robust);
+  d["exact"] = signs(exact);
+  d["minkowski_plain"] = flags(plain, false);
+  d["minkowski_robust"] = flags(robust, false);
+  d["minkowski_exact"] = flags(exact, false);
+  d["parallel_plain"] = flags(plain, true);
+  d["parallel_robust"] = flags(robust, true);
+  d["parallel_exact"] = flags(exact, true);
+  return d;
+}
+
+py::dict audit(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b, const std::string& number) {
+  const PoseD pa = poses_from(pose_a, "pose_a", false).front();
+  const PoseD pb = poses_from(pose_b, "pose_b", false).front();
+  switch (parse_number(number)) {
+    case NumberKind::Float: return audit_in(a.as_float(), pa, b.as_float(), pb);
+    case NumberKind::Double: return audit_in(*a.d, pa, *b.d, pb);
+    case NumberKind::Exact: break;
+  }
+  usage_error("audit compares float or double against exact: number must be \"float\" or \"double\"");
+}
+
 // ---- repr ---------------------------------------------------------------------
 
 std::string feature_repr(const Feature& f) {
@@ -772,6 +835,19 @@ manifold:  build the contact manifold (when the query did not stop early).
 
 The GIL is released while the query runs.  Raises sepax.InvalidInput (a ValueError with .code)
 for a non-finite or non-rigid pose or a bad margin, ValueError for malformed arguments.)");
+
+  m.def("audit", &audit, py::arg("a"), py::arg("b"), py::arg("pose_a") = py::none(), py::arg("pose_b") = py::none(),
+        py::kw_only(), py::arg("number") = "double",
+        R"(audit(a, b, pose_a=None, pose_b=None, *, number="double") -> dict
+
+The per-edge-pair sign table of the Minkowski-face test on the input a posed query decides on
+(A and B posed into A's frame in `number`, "float" or "double"), decided three ways: the plain
+kernel (rounding arithmetic), the robust kernel (exact filtered predicates) and the exact kernel
+on the exact images of the same two polyhedra.  Keys: "edges" (n, 2) int32 (edge of A, edge of
+B; row ea * B.edge_count + eb); "plain", "robust", "exact" (n, 4) int8 signs (cba, dba, adc,
+bdc: sepax/sat_kernel.hpp ArcSigns); "minkowski_*" (n,) bool (the pair is a face of A - B);
+"parallel_*" (n,) bool.  The robust columns equal the exact ones by contract; the plain ones
+may not (near-degenerate inputs).  Only the sign table of the CLI's `sepax audit`.)");
 
   m.def("query_batch", &query_batch, py::arg("a"), py::arg("b"), py::arg("poses_a"), py::arg("poses_b"),
         py::kw_only(), py::arg("number") = "double", py::arg("robust") = true, py::arg("algorithm") = "traversal",

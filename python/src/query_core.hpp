@@ -213,6 +213,43 @@ void run_batch(const QueryOptions& o, const PreparedShape<T>& a, const PreparedS
   }
 }
 
+/// The per-edge-pair sign table of an audit: for every edge pair (ea, eb),
+/// row ea * |E_B| + eb, the four triple-product signs of the Minkowski-face
+/// test (ArcSigns: cba, dba, adc, bdc) and whether the edges are parallel,
+/// as kernel K decides them.
+struct SignTable {
+  std::vector<std::int8_t> signs;     // rows x 4
+  std::vector<std::uint8_t> parallel;  // rows
+};
+
+template <SatKernel K>
+void fill_sign_table(K& k, int edges_a, int edges_b, SignTable& t) {
+  const auto rows = static_cast<std::size_t>(edges_a) * static_cast<std::size_t>(edges_b);
+  t.signs.assign(4 * rows, 0);
+  t.parallel.assign(rows, 0);
+  std::size_t r = 0;
+  for (int ea = 0; ea < edges_a; ++ea) {
+    for (int eb = 0; eb < edges_b; ++eb, ++r) {
+      const ArcSigns s = k.arc_signs(ea, eb);
+      t.signs[4 * r + 0] = static_cast<std::int8_t>(s.cba);
+      t.signs[4 * r + 1] = static_cast<std::int8_t>(s.dba);
+      t.signs[4 * r + 2] = static_cast<std::int8_t>(s.adc);
+      t.signs[4 * r + 3] = static_cast<std::int8_t>(s.bdc);
+      t.parallel[r] = k.edges_parallel(ea, eb) ? 1 : 0;
+    }
+  }
+}
+
+/// The sign table of A and B' = B posed into A's frame (the input every
+/// posed query decides on) under Policy.
+template <class Policy, Number T>
+void sign_table(const PreparedShape<T>& a, const PoseD& pose_a, const PreparedShape<T>& b, const PoseD& pose_b,
+                SignTable& t) {
+  const ConvexPolyhedron<T>& bp = b.posed_scratch(relative_pose(to_transform<T>(pose_a), to_transform<T>(pose_b)));
+  kernel_t<Policy, T> k(a.polyhedron(), bp);
+  fill_sign_table(k, a.polyhedron().edge_count(), bp.edge_count(), t);
+}
+
 // ---- the exact number type (exact.cpp: mpq_class), behind opaque handles ----
 
 struct ExactShape;  // PreparedShape<mpq_class>
@@ -226,6 +263,10 @@ std::int64_t exact_cache_misses(const ExactCache& c);
 void reset_exact_cache(ExactCache& c);
 void run_query_exact(const QueryOptions& o, const ExactShape& a, const PoseD& pose_a, const ExactShape& b,
                      const PoseD& pose_b, ExactCache* cache, QueryOut& out);
+/// The exact sign table of the exact images of a and b (both in one frame):
+/// what the robust policy's decisions on (a, b) must equal.
+void exact_sign_table(const ConvexPolyhedron<double>& a, const ConvexPolyhedron<double>& b, SignTable& t);
+void exact_sign_table(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float>& b, SignTable& t);
 void run_batch_exact(const QueryOptions& o, const ExactShape& a, const ExactShape& b, const BatchPoses& poses,
                      ExactCache* cache, const BatchColumns& c);
 

@@ -401,3 +401,47 @@ def test_stubs_cover_the_module():
         declared = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
         members = {n for n in dir(getattr(sepax, cls)) if not n.startswith("_")}
         assert members <= declared, (cls, members - declared)
+
+
+# ---- audit: the sign table ---------------------------------------------------------------------
+
+
+def check_audit(a, b, pa, pb, number):
+    t = sepax.audit(a, b, pa, pb, number=number)
+    n = a.edge_count * b.edge_count
+    assert t["edges"].shape == (n, 2) and t["exact"].shape == (n, 4)
+    assert tuple(t["edges"][b.edge_count + 2]) == (1, 2)
+    # the robust policy's decisions are the exact ones (robust_kernel.hpp's contract)
+    np.testing.assert_array_equal(t["robust"], t["exact"])
+    np.testing.assert_array_equal(t["minkowski_robust"], t["minkowski_exact"])
+    np.testing.assert_array_equal(t["parallel_robust"], t["parallel_exact"])
+    return t
+
+
+@pytest.mark.parametrize("number", ["float", "double"])
+def test_audit_double_sided_triangle_on_a_box_face(number):
+    # a double-sided triangle lying in the plane of the box's top face: exactly coplanar faces, exact zeros
+    box = sepax.box(1, 1, 0.5)
+    tri = sepax.polygon([[0, 0, 0], [0.7, 0.1, 0], [0.2, 0.6, 0]])
+    t = check_audit(box, tri, None, [0.1, -0.2, 0.5], number)
+    assert (t["exact"] == 0).any()
+    assert t["minkowski_exact"].sum() > 0
+    # and turned by a tiny angle about an axis in the face: signs near zero, still decided exactly
+    eps = 1e-9
+    t = check_audit(box, tri, None, sepax.pose([0.1, -0.2, 0.5], [1, eps, 2 * eps, 0]), number)
+    r = sepax.query(box, tri, None, sepax.pose([0.1, -0.2, 0.5], [1, eps, 2 * eps, 0]), number=number,
+                    algorithm="brute_force")
+    assert r.overlap
+
+
+def test_audit_random_pairs_and_refusals():
+    rng = np.random.default_rng(13)
+    for _ in range(4):
+        a, b = random_hull(rng, 14), random_hull(rng, 10, 0.7)
+        p = random_poses(rng, 2, 1.2)
+        t = check_audit(a, b, p[0], p[1], "double")
+        # the exact Minkowski faces (non-parallel) are the edge pairs the exact brute force counts
+        r = sepax.query(a, b, p[0], p[1], number="double", algorithm="brute_force")
+        assert r.stats["minkowski_faces"] == int((t["minkowski_exact"] & ~t["parallel_exact"]).sum())
+    with pytest.raises(ValueError, match="float or double"):
+        sepax.audit(sepax.cube(), sepax.cube(), number="exact")
