@@ -318,6 +318,97 @@ FuzzCase touching(Rng& r) {
   return c;
 }
 
+// ---- shapes as collision pipelines produce them ----
+// A point of the ellipsoid sum (x_i / rad_i)^2 = 1 along direction d.
+V on_ellipsoid(const V& d, const V& rad) {
+  const double q = (d[0] / rad[0]) * (d[0] / rad[0]) + (d[1] / rad[1]) * (d[1] / rad[1]) + (d[2] / rad[2]) * (d[2] / rad[2]);
+  return d / std::sqrt(q);
+}
+
+// Two neighbouring pieces of a convex decomposition (what V-HACD and CoACD
+// output): an ellipsoid (sometimes thin: one radius 1e-3..1e-1 of the others)
+// cut by a plane through its centre; each piece is the hull of surface points
+// on its side and of points of the cut section, which both pieces share (so
+// they touch along the cut, and the float rounding of the section makes many
+// nearly coplanar faces); 16..64 points per piece.  B is then left touching,
+// pushed off by a tiny gap or pressed in by a tiny overlap, and the pair is
+// rotated and, one time in two, moved far from the origin at world scale
+// (1..100 units, 1e2..1e4 away).
+FuzzCase decomposition_pair(Rng& r) {
+  V rad = uni3(r, 0.3, 1.5);
+  if (irange(r, 0, 2) == 0) {  // thin piece
+    const int axis = irange(r, 0, 2);
+    rad[axis] *= log_uni(r, 1e-3, 1e-1);
+  }
+  const V n = random_unit(r);
+  const V u = (std::abs(n[0]) < 0.9 ? V(1, 0, 0) : V(0, 1, 0)).cross(n).normalized();
+  const V w = n.cross(u);
+  const int total_a = irange(r, 16, 64), total_b = irange(r, 16, 64);
+  const int ncut = irange(r, 4, 16);
+  std::vector<V> cut;
+  for (int i = 0; i < ncut; ++i) {
+    const double t = uni(r, 0, 6.283185307179586);
+    cut.push_back(on_ellipsoid(std::cos(t) * u + std::sin(t) * w, rad));
+  }
+  auto piece = [&](int total, double side) {
+    std::vector<V> pts = cut;
+    while (static_cast<int>(pts.size()) < std::max(total, ncut + 4)) {
+      const V p = on_ellipsoid(random_unit(r), rad);
+      if (side * n.dot(p) > 1e-3) pts.push_back(p);
+    }
+    return pts;
+  };
+  std::vector<V> pa = piece(total_a, 1), pb = piece(total_b, -1);
+  const int mode = irange(r, 0, 2);  // touching, gap, overlap
+  const double eps = mode == 0 ? 0.0 : log_uni(r, 1e-7, 1e-3) * (mode == 1 ? -1 : 1);
+  for (auto& p : pb) p += eps * n;
+  const Eigen::Matrix3d R = random_rotation(r);
+  const bool world = irange(r, 0, 1) == 1;
+  const double scale = world ? log_uni(r, 1, 100) : 1.0;
+  V far = V::Zero();
+  if (world) {
+    const V dir = random_unit(r);
+    far = dir * log_uni(r, 1e2, 1e4);
+  }
+  for (auto* pts : {&pa, &pb})
+    for (auto& p : *pts) p = V(R * (p * scale));
+  // The hulls are built near the origin (float cannot resolve them far
+  // away), then moved: the far vertices are the float roundings of the moved
+  // ones, as a pipeline that places pieces in the world gives them.
+  FuzzCase c;
+  c.family = "decomposition";
+  c.a = transformed(hull_of(pa), Eigen::Matrix3d::Identity(), far);
+  c.b = transformed(hull_of(pb), Eigen::Matrix3d::Identity(), far);
+  return c;
+}
+
+// A scanned object's hull: 200..2000 points on a smooth closed surface (an
+// ellipsoid, or a superellipsoid with exponent 2.5..4), each moved along a
+// random direction by noise of relative size 1e-4..1e-2, as a depth sensor
+// gives them; its hull has many small, nearly coplanar faces.
+ShapeSpec scanned_hull(Rng& r) {
+  const V rad = uni3(r, 0.4, 1.2);
+  const bool super = irange(r, 0, 1) == 1;
+  const double e = uni(r, 2.5, 4.0), noise = log_uni(r, 1e-4, 1e-2);
+  const int n = static_cast<int>(std::lround(log_uni(r, 200, 2000)));
+  std::vector<V> pts;
+  for (int i = 0; i < n; ++i) {
+    const V d = random_unit(r);
+    V p;
+    if (super) {
+      const double q = std::pow(std::pow(std::abs(d[0] / rad[0]), e) + std::pow(std::abs(d[1] / rad[1]), e) +
+                                    std::pow(std::abs(d[2] / rad[2]), e),
+                                -1.0 / e);
+      p = d * q;
+    } else {
+      p = on_ellipsoid(d, rad);
+    }
+    const V jitter = random_unit(r);
+    pts.push_back(p + jitter * (noise * uni(r, 0, 1)));
+  }
+  return hull_of(pts);
+}
+
 FuzzCase make(const std::string& fam, Rng& r) {
   if (fam == "sphere") {
     const int na = static_cast<int>(std::lround(log_uni(r, 4, 256)));
@@ -380,14 +471,21 @@ FuzzCase make(const std::string& fam, Rng& r) {
     return c;
   }
   if (fam == "touching") return touching(r);
+  if (fam == "decomposition") return decomposition_pair(r);
+  if (fam == "scanned") {
+    // against a small partner: the exact reference costs O(E_A E_B)
+    ShapeSpec a = scanned_hull(r);
+    ShapeSpec b = irange(r, 0, 1) ? random_box(r) : random_tetra(r);
+    return place(r, fam, std::move(a), std::move(b));
+  }
   throw std::invalid_argument("unknown case family '" + fam + "'");
 }
 
 }  // namespace
 
 const std::vector<std::string>& family_names() {
-  static const std::vector<std::string> names{"sphere", "boxes",     "tetra",  "flat",
-                                              "prisms", "perturbed", "scales", "touching"};
+  static const std::vector<std::string> names{"sphere",    "boxes",  "tetra",    "flat",          "prisms",
+                                              "perturbed", "scales", "touching", "decomposition", "scanned"};
   return names;
 }
 
