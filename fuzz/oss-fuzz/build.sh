@@ -40,7 +40,7 @@ compile() {  # source -> $obj/NAME.o
   $CXX $CXXFLAGS $flags -c "$root/fuzz/src/$src" -o "$obj/${src%.cpp}.o"
 }
 
-sources=(case_io.cpp check.cpp check_manifold.cpp generators.cpp libfuzzer_target.cpp case_fuzz_target.cpp)
+sources=(case_io.cpp check.cpp check_manifold.cpp check_posed.cpp generators.cpp libfuzzer_target.cpp case_fuzz_target.cpp)
 pids=()
 for src in "${sources[@]}"; do
   while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do sleep 0.2; done
@@ -49,7 +49,7 @@ for src in "${sources[@]}"; do
 done
 for pid in "${pids[@]}"; do wait "$pid"; done
 
-core=("$obj/case_io.o" "$obj/check.o" "$obj/check_manifold.o" "$obj/generators.o")
+core=("$obj/case_io.o" "$obj/check.o" "$obj/check_manifold.o" "$obj/check_posed.o" "$obj/generators.o")
 for target in sepax_libfuzzer sepax_case_fuzzer; do
   case $target in
     sepax_libfuzzer) main=$obj/libfuzzer_target.o ;;

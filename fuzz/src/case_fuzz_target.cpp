@@ -8,14 +8,12 @@
 // An unexplained disagreement aborts, so libFuzzer keeps the input; decoded
 // inputs replay with `sepax fuzz --replay FILE`.
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 #include <string>
 
 #include <sepax/error.hpp>
 #include <sepax/fuzz/case.hpp>
-#include <sepax/fuzz/check.hpp>
+#include <sepax/fuzz/libfuzzer_check.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
@@ -28,13 +26,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Keep every input fast under the sanitizers: the checking core is
   // O(E_A E_B (V_A + V_B)) in rationals on the brute force.
   if (c.a.vertices.size() > 128 || c.b.vertices.size() > 128) return 0;
-  sepax::fuzz::CheckOptions opt;
-  opt.exact_brute_budget = 50'000;
-  const sepax::fuzz::CaseReport r = sepax::fuzz::check_case_guarded(c, opt);
-  if (r.unexplained_count > 0) {
-    for (const auto& f : r.unexplained)
-      std::fprintf(stderr, "[%s %s %s] %s\n", f.comparison.c_str(), f.config.c_str(), f.sat.c_str(), f.detail.c_str());
-    std::abort();
-  }
+  sepax::fuzz::check_or_abort(c);
   return 0;
 }
