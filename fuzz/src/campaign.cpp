@@ -11,12 +11,15 @@
 #include <iterator>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 #include <sepax/error.hpp>
 #include <sepax/fuzz/check_manifold.hpp>
 #include <sepax/fuzz/cli.hpp>
 #include <sepax/fuzz/generators.hpp>
 #include <sepax/fuzz/shrink.hpp>
+#include <sepax/fuzz/workers.hpp>
 
 namespace sepax::fuzz {
 
@@ -187,7 +190,6 @@ void print_text(std::ostream& out, const Report& r) {
 
 int run_campaign(const CampaignOptions& opt, std::ostream& out) {
   const double seconds = opt.seconds;
-  const double max_cases = static_cast<double>(opt.cases);
   const bool json = opt.json, quiet = opt.quiet, replay = opt.replay, shrink_replays = opt.shrink_replays,
              bytes = opt.bytes, out_given = opt.out_given;
   // Shrinking (shrink.hpp): each unexplained finding, up to shrink_max per
@@ -276,53 +278,37 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
     return status != 0 ? status : (rep.unexplained() ? 1 : 0);
   }
 
+  // The progress line rewrites itself with '\r': only on a terminal, never in a CI log.
+  const bool progress = !quiet && isatty(fileno(stderr));
   double last_progress = 0;
-  std::uint64_t index = 0;
-  while (true) {
-    const double now = elapsed();
-    if (max_cases > 0 && static_cast<double>(rep.cases + rep.rejected) >= max_cases) break;
-    if (max_cases == 0 && now >= seconds) break;
-    const std::string& fam = families[index % families.size()];
-    const std::uint64_t case_seed = rep.seed * 1000003ull + index;
-    ++index;
-    FuzzCase c;
-    CaseReport r;
-    try {
-      c = generate(fam, case_seed);
-      r = check_case_guarded(c);
-    } catch (const InvalidInput& e) {
-      r.valid = false;
-      r.reject_reason = e.what();
-    } catch (const std::exception& e) {
-      // Not bad input: a library component failed (e.g. the hull builder's
-      // logic_error).  A finding, like an unexplained disagreement.
-      r = CaseReport{};
-      r.valid = true;
-      r.by_comparison["internal_error"].add(Klass::unexplained);
-      r.by_config["internal_error/" + fam].add(Klass::unexplained);
-      r.unexplained.push_back({"internal_error", fam, "-", e.what()});
-      r.unexplained_count = 1;
-    }
-    rep.add(fam, r);
-    if (r.unexplained_count) {
-      try {
-        const std::string original = write_reproducer(out_dir, c, r);
-        rep.reproducers.push_back(original);
-        shrink_finding(rep, original, "", c, r);
-      } catch (const std::exception& e) {
-        std::cerr << "sepax fuzz: could not write a reproducer: " << e.what() << "\n";
-      }
-    }
-    if (!quiet && now - last_progress >= 1.0) {
-      last_progress = now;
-      std::fprintf(stderr, "\r[sepax fuzz] %6.1f s  %8lld cases  %7.1f cases/s  unexplained %lld   ", now,
-                   static_cast<long long>(rep.cases), now > 0 ? static_cast<double>(rep.cases) / now : 0.0,
-                   static_cast<long long>(rep.unexplained()));
-      std::fflush(stderr);
-    }
-  }
+  const std::uint64_t n_cases = opt.cases;
+  run_in_order(
+      opt.jobs, [&](std::uint64_t index) { return n_cases > 0 ? index < n_cases : elapsed() < seconds; },
+      [&](std::uint64_t index) { return run_case(families, rep.seed, index); },
+      [&](CaseOutcome&& o) {
+        const FuzzCase& c = o.c;
+        const CaseReport& r = o.r;
+        rep.add(o.family, r);
+        if (r.unexplained_count) {
+          try {
+            const std::string original = write_reproducer(out_dir, c, r);
+            rep.reproducers.push_back(original);
+            shrink_finding(rep, original, "", c, r);
+          } catch (const std::exception& e) {
+            std::cerr << "sepax fuzz: could not write a reproducer: " << e.what() << "\n";
+          }
+        }
+        const double now = elapsed();
+        if (progress && now - last_progress >= 1.0) {
+          last_progress = now;
+          std::fprintf(stderr, "\r[sepax fuzz] %6.1f s  %8lld cases  %7.1f cases/s  unexplained %lld   ", now,
+                       static_cast<long long>(rep.cases), now > 0 ? static_cast<double>(rep.cases) / now : 0.0,
+                       static_cast<long long>(rep.unexplained()));
+          std::fflush(stderr);
+        }
+      });
   rep.seconds = elapsed();
-  if (!quiet) std::fprintf(stderr, "\n");
+  if (progress) std::fprintf(stderr, "\n");
   if (json) print_json(out, rep);
   else print_text(out, rep);
   return rep.unexplained() ? 1 : 0;

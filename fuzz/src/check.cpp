@@ -18,6 +18,9 @@
 #include <sepax/fuzz/sat_list.hpp>
 #include <sepax/fuzz/classify.hpp>
 #include <sepax/fuzz/check_manifold.hpp>
+#include <sepax/fuzz/bitwise.hpp>
+#include <sepax/fuzz/check_posed.hpp>
+#include <sepax/fuzz/recorder.hpp>
 
 namespace sepax::fuzz {
 
@@ -86,6 +89,13 @@ int sign_sep_diff(const Separation<Q>& x, const Separation<Q>& y, const Q& b) {
   // sign(X^2 - Y^2) = sign(R - S sqrt(mn)) = sign_sqrt_diff(R, 1, S, mn)
   const int sq = sign_sqrt_diff(R, Q(1), S, mn);
   return sx > 0 ? sq : -sq;
+}
+
+// Does x exceed y by more than the bound b (value(x) - value(y) > b),
+// exactly?  An infinite (or NaN) bound never lets it: a bound that is not
+// finite shows nothing (as in within and close), and it has no rational value.
+bool beats(const Separation<Q>& x, const Separation<Q>& y, double b) {
+  return std::isfinite(b) && sign_sep_diff(x, y, Q(b)) > 0;
 }
 
 // |value(x) - value(y)| <= bound for two exact separations with (possibly)
@@ -227,26 +237,6 @@ Separation<Q> exact_side_height(const CPQ& p, int e, const CPQ& q, int v) {
 bool same_axis(const Feature& x, const Feature& y) {
   return x.type == y.type && x.primary() == y.primary() && x.secondary() == y.secondary();
 }
-
-// ---- per-configuration bookkeeping ----
-struct Recorder {
-  CaseReport& rep;
-  const CheckOptions& opt;
-  std::map<std::string, int> kept;
-  void add(const std::string& cmp, const std::string& cfg, const std::string& sat, Klass k,
-           const std::function<std::string()>& detail, std::int64_t times = 1) {
-    rep.by_comparison[cmp].add(k, times);
-    rep.by_config[cmp + "/" + cfg].add(k, times);
-    if (k == Klass::unexplained) {
-      rep.unexplained_count += times;
-      if (kept[cmp]++ < opt.max_findings) rep.unexplained.push_back({cmp, cfg, sat, detail()});
-    }
-  }
-  /// A comparison not made (size budget): counted in CaseReport::skipped.
-  void skip(const std::string& cmp, const std::string& cfg, const std::string& sat) {
-    ++rep.skipped[cmp + "/" + cfg + "/" + sat];
-  }
-};
 
 template <class F>
 Vec3<F> unit_axis(const Vec3<F>& da, const Vec3<F>& db) {
@@ -465,7 +455,7 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
   // (ii) and (iii), candidate by candidate
   std::string bad;
   auto measured = [&](const Separation<Q>& v, const Feature& f) {
-    if (!bad.empty() || sign_sep_diff(v, *own, Q(bf + S.bound(sat, f))) <= 0) return;
+    if (!bad.empty() || !beats(v, *own, bf + S.bound(sat, f))) return;
     bad = "it measured " + to_string(f) + " at exact value " + num(sepax::to_double(v)) + ", beyond its choice";
   };
   for (int f = 0; f < E.A.face_count(); ++f)
@@ -498,7 +488,7 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
         measured(orientation_flipped(k, E, f) ? Separation<Q>{Q(-x.num), x.norm2} : x, f);
       } else if (exact_candidate) {
         const Separation<Q> x = exact_value(E, sat, f);
-        if (sign_sep_diff(x, *own, Q(bf + S.bound(sat, f))) <= 0) continue;  // does not beat it
+        if (!beats(x, *own, bf + S.bound(sat, f))) continue;  // does not beat it
         if (skipped && parallel_band<F>(A.edge_dir(ea), B.edge_dir(eb)) == ParallelBand::inside) continue;  // (6)
         if (!skipped && !brute) continue;  // its arc test: classified per pair (2)
         if (!skipped) {  // the exact brute force measures only exactly supported pairs
@@ -512,6 +502,103 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
   if (!bad.empty()) return fail(bad);
   d.ok = true;
   return d;
+}
+
+// Is a plain run's value sf of feature f within its bound bf of the exact
+// value of f as the plain kernel may have decided it: xf, or for a Gauss-map
+// or traversal edge pair the flipped orientation when the flip is within the
+// band (8), or for a brute-force edge pair either orientation's gap (9)?
+template <class F>
+bool plain_value_within(const FloatSide<F>& S, Sat sat, const Feature& f, double sf, const Separation<Q>& xf,
+                        double bf) {
+  if (within(sf, xf, bf)) return true;
+  if (f.type != FeatureType::EdgePair) return false;
+  if (sat == Sat::brute_force) {
+    const EdgeGaps g = exact_edge_gaps(S.E, f.a, f.b);
+    return within(sf, g.plus(), bf) || within(sf, g.minus(), bf);
+  }
+  return S.orientation_may_flip(f.a, f.b) && within(sf, Separation<Q>{Q(-xf.num), xf.norm2}, bf);
+}
+
+// The speculative margin (SatOptions::margin with early_out), against the
+// full result r of the same configuration and SAT and the exact answer R:
+//   * no early exit: the result is the full result, bit for bit;
+//   * an early exit: not overlapping, and the reported feature's separation is
+//     beyond the margin (robust: exactly; plain: the float value, and its
+//     exact value within its bound of it);
+//   * robust: it exits early exactly when the exact maximum separation is
+//     greater than the margin (decided in rationals); plain: when it does not
+//     agree with that, the exact maximum is within the bounds of the margin
+//     (explained) or the difference is unexplained.
+// Margins: 0, half and twice the exact separation (when positive), and 2 % of
+// the shapes' extent (an engine's speculative margin).
+template <class F, class Policy, class Cls>
+void check_margins(const FloatSide<F>& S, Sat sat, const SatResult<F>& full, const SatResult<Q>& R,
+                   const std::string& cfg, bool exact_decisions, const Cls& cls, Recorder& rec) {
+  const double se_d = std::max(0.0, sepax::to_double(R.separation));
+  double extent = 0;
+  for (const auto* p : {&S.A, &S.B})
+    for (const auto& v : p->vertices())
+      for (int c = 0; c < 3; ++c) extent = std::max(extent, std::abs(double(v[c])));
+  const double margins[4] = {0.0, 0.02 * extent, 0.5 * se_d, 2 * se_d};
+  const double be = S.bound(sat, R.feature);
+  for (int i = 0; i < 4; ++i) {
+    const double m = margins[i];
+    if (!std::isfinite(m) || (i >= 2 && se_d == 0)) continue;
+    SatOptions o;
+    o.early_out = true;
+    o.margin = m;
+    const SatResult<F> r = run_sat<Policy>(sat, S.A, S.B, o);
+    const Q qm(m);
+    const bool exact_beyond = cmp_rational_sep(qm, R.separation) < 0;  // exact max separation > m
+    Klass k = Klass::agree;
+    std::string why;
+    if (!r.early_out) {
+      if (!same_bits(r, full)) {
+        k = Klass::unexplained;
+        why = "without an early exit the result is not the full result";
+      } else if (exact_beyond) {
+        // it found no axis beyond the margin, exact arithmetic has one
+        k = exact_decisions ? Klass::unexplained
+                            : close(R.separation, Separation<Q>{qm, Q(1)}, S.bound(sat, full.feature) + be)
+                                  ? Klass::explained
+                                  : Klass::unexplained;
+        why = "no early exit, but the exact maximum separation is beyond the margin";
+      }
+    } else {
+      const Separation<Q> xf = exact_value(S.E, sat, r.feature);
+      const double bf = S.bound(sat, r.feature);
+      const bool exact_feature_beyond = cmp_rational_sep(qm, xf) < 0;
+      if (r.overlap) {
+        k = Klass::unexplained;
+        why = "an early exit that reports overlap";
+      } else if (exact_decisions) {
+        if (!exact_feature_beyond || !exact_beyond) {
+          k = Klass::unexplained;
+          why = "an early exit at a feature whose exact separation is not beyond the margin";
+        }
+      } else if (!(r.separation_as_double() > m)) {
+        k = Klass::unexplained;
+        why = "an early exit whose float separation is not beyond the margin";
+      } else if (r.feature == full.feature && same_bits(r.separation, full.separation)) {
+        // the full result's feature and value: classified by the feature and
+        // separation comparisons (its own decisions included)
+      } else if (!plain_value_within(S, sat, r.feature, r.separation_as_double(), xf, bf)) {
+        k = Klass::unexplained;
+        why = "an early exit whose float separation is not within its bound of its feature's exact value";
+      } else if (!exact_feature_beyond) {
+        k = Klass::explained;  // the float value is beyond, the exact one within its bound of it
+      }
+    }
+    rec.add("margin", cfg, sat_name(sat), cls(k), [&] {
+      std::ostringstream s;
+      s << why << ": " << cfg << " " << sat_name(sat) << " margin " << num(m) << " early_out=" << r.early_out
+        << " overlap=" << r.overlap << " feature " << to_string(r.feature) << " separation "
+        << num(r.separation_as_double()) << "; full result: feature " << to_string(full.feature) << " separation "
+        << num(full.separation_as_double()) << "; exact maximum " << num(sepax::to_double(R.separation));
+      return s.str();
+    });
+  }
 }
 
 template <class F, class Policy>
@@ -680,6 +767,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     rec.add("overlap", cfg, sat_name(sat), cls(ko), describe("overlap verdict differs"));
     rec.add("feature", cfg, sat_name(sat), cls(kf), describe("feature differs"));
     rec.add("separation", cfg, sat_name(sat), cls(ks), describe("separation outside its bound"));
+    if (opt.margins) check_margins<F, Policy>(S, sat, r, R, cfg, exact_decisions, cls, rec);
   }
 }
 
@@ -853,6 +941,7 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, opt, rec);
 #endif
   if (opt.manifolds) check_manifolds(Af, Bf, E.A, E.B, E.ref, opt, rep);
+  if (opt.posed) check_posed(Af, Bf, c.seed, opt, rep);
   return rep;
 }
 

@@ -5,23 +5,34 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <random>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
 #include <sepax/convex_hull.hpp>
 #include <sepax/shapes.hpp>
+#include <sepax/fuzz/random.hpp>
 
 namespace sepax::fuzz {
 
 namespace {
 
-using Rng = std::mt19937_64;
 using V = Vec3<double>;
 
-double uni(Rng& r, double a, double b) { return std::uniform_real_distribution<double>(a, b)(r); }
-int irange(Rng& r, int a, int b) { return std::uniform_int_distribution<int>(a, b)(r); }
+double uni(Rng& r, double a, double b) { return r.uniform(a, b); }
+int irange(Rng& r, int a, int b) { return r.uniform_int(a, b); }
 double log_uni(Rng& r, double a, double b) { return std::exp(uni(r, std::log(a), std::log(b))); }
+
+// Several draws in one expression must be sequenced: the order in which a
+// call's arguments are evaluated is unspecified (compilers differ), so every
+// multi-draw value below is built from named draws in a fixed order.
+V uni3(Rng& r, double a, double b) {
+  const double x = uni(r, a, b), y = uni(r, a, b), z = uni(r, a, b);  // declarators are sequenced
+  return V(x, y, z);
+}
+V int3(Rng& r, int a, int b) {
+  const int x = irange(r, a, b), y = irange(r, a, b), z = irange(r, a, b);
+  return V(x, y, z);
+}
 
 ShapeSpec spec_from(const ConvexPolyhedron<double>& p) {
   ShapeSpec s;
@@ -32,15 +43,20 @@ ShapeSpec spec_from(const ConvexPolyhedron<double>& p) {
 
 V random_unit(Rng& r) {
   for (;;) {
-    V v(uni(r, -1, 1), uni(r, -1, 1), uni(r, -1, 1));
+    const V v = uni3(r, -1, 1);
     const double n = v.norm();
     if (n > 1e-3 && n <= 1) return v / n;
   }
 }
 
+// A uniformly distributed rotation: a point uniform in the unit 4-ball (by
+// rejection) as a quaternion, normalised by quat_matrix.
 std::array<double, 4> random_quat(Rng& r) {
-  std::normal_distribution<double> g;
-  return {g(r), g(r), g(r), g(r)};
+  for (;;) {
+    const std::array<double, 4> q{uni(r, -1, 1), uni(r, -1, 1), uni(r, -1, 1), uni(r, -1, 1)};
+    const double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+    if (n2 > 1e-6 && n2 <= 1) return q;
+  }
 }
 
 // The 24 rotations of the cube: signed permutation matrices with det +1.
@@ -125,12 +141,13 @@ ShapeSpec random_box(Rng& r) {
 
 ShapeSpec random_tetra(Rng& r) {
   std::array<V, 4> p;
-  for (auto& x : p) x = V(uni(r, -1, 1), uni(r, -1, 1), uni(r, -1, 1));
+  for (auto& x : p) x = uni3(r, -1, 1);
   if (irange(r, 0, 1)) {
     // sliver: the 4th point eps off the plane of the first three, inside their triangle
     const V n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
     const double w0 = uni(r, 0.1, 0.8), w1 = uni(r, 0.1, 1 - w0 - 0.05);
-    const double eps = log_uni(r, 1e-6, 1e-1) * (irange(r, 0, 1) ? 1 : -1);
+    const double mag = log_uni(r, 1e-6, 1e-1);
+    const double eps = irange(r, 0, 1) ? mag : -mag;
     p[3] = w0 * p[0] + w1 * p[1] + (1 - w0 - w1) * p[2] + eps * n;
   }
   return tetra_of(p);
@@ -139,7 +156,10 @@ ShapeSpec random_tetra(Rng& r) {
 ShapeSpec random_flat(Rng& r) {
   std::vector<V> loop;
   if (irange(r, 0, 1)) {
-    for (int i = 0; i < 3; ++i) loop.emplace_back(uni(r, -1, 1), uni(r, -1, 1), 0.0);
+    for (int i = 0; i < 3; ++i) {
+      const double x = uni(r, -1, 1), y = uni(r, -1, 1);
+      loop.emplace_back(x, y, 0.0);
+    }
     if ((loop[1] - loop[0]).cross(loop[2] - loop[0])[2] < 0) std::swap(loop[1], loop[2]);
   } else {
     const double a = uni(r, 0.2, 1.2), b = irange(r, 0, 1) ? a : uni(r, 0.2, 1.2);
@@ -186,13 +206,15 @@ std::pair<ShapeSpec, ShapeSpec> coplanar_flat_pair(Rng& r) {
 
 ShapeSpec random_prism(Rng& r) {
   const int n = irange(r, 3, 32);
-  return spec_from(shapes::prism<double>(n, uni(r, 0.3, 1.2), uni(r, 0.2, 1.2)));
+  const double radius = uni(r, 0.3, 1.2), half_height = uni(r, 0.2, 1.2);
+  return spec_from(shapes::prism<double>(n, radius, half_height));
 }
 
 ShapeSpec perturbed(Rng& r, ShapeSpec s) {
   const double ext = 2 * radius_of(s);
   const int v = irange(r, 0, static_cast<int>(s.vertices.size()) - 1);
-  s.vertices[static_cast<std::size_t>(v)] += random_unit(r) * ext * log_uni(r, 1e-8, 5e-6);
+  const V dir = random_unit(r);
+  s.vertices[static_cast<std::size_t>(v)] += dir * ext * log_uni(r, 1e-8, 5e-6);
   round_to_float(s);
   return s;
 }
@@ -218,9 +240,10 @@ FuzzCase place(Rng& r, const std::string& fam, ShapeSpec a, ShapeSpec b, bool gr
   V t;
   if (grid) {
     const double step = 0.25;
-    t = V(irange(r, -8, 8) * step, irange(r, -8, 8) * step, irange(r, -8, 8) * step);
+    t = int3(r, -8, 8) * step;
   } else {
-    t = random_unit(r) * (ra + rb) * uni(r, 0.3, 1.15);
+    const V dir = random_unit(r);
+    t = dir * (ra + rb) * uni(r, 0.3, 1.15);
   }
   c.b = transformed(b, RB, t);
   return c;
@@ -229,17 +252,20 @@ FuzzCase place(Rng& r, const std::string& fam, ShapeSpec a, ShapeSpec b, bool gr
 // ---- exactly touching placements ----
 ShapeSpec int_shape(Rng& r) {
   switch (irange(r, 0, 3)) {
-    case 0: return spec_from(shapes::box<double>(irange(r, 1, 4), irange(r, 1, 4), irange(r, 1, 4)));
+    case 0: {
+      const V h = int3(r, 1, 4);
+      return spec_from(shapes::box<double>(h[0], h[1], h[2]));
+    }
     case 1:
       for (;;) {
         std::array<V, 4> p;
-        for (auto& x : p) x = V(irange(r, -4, 4), irange(r, -4, 4), irange(r, -4, 4));
+        for (auto& x : p) x = int3(r, -4, 4);
         if ((p[1] - p[0]).cross(p[2] - p[0]).dot(p[3] - p[0]) != 0) return tetra_of(p);
       }
     case 2:
       for (;;) {
         std::vector<V> t;
-        for (int i = 0; i < 3; ++i) t.emplace_back(irange(r, -4, 4), irange(r, -4, 4), irange(r, -4, 4));
+        for (int i = 0; i < 3; ++i) t.push_back(int3(r, -4, 4));
         if (!(t[1] - t[0]).cross(t[2] - t[0]).isZero()) return flat_of(t);
       }
     default: {
@@ -292,15 +318,117 @@ FuzzCase touching(Rng& r) {
   return c;
 }
 
+// ---- shapes as collision pipelines produce them ----
+// A point of the ellipsoid sum (x_i / rad_i)^2 = 1 along direction d.
+V on_ellipsoid(const V& d, const V& rad) {
+  const double q = (d[0] / rad[0]) * (d[0] / rad[0]) + (d[1] / rad[1]) * (d[1] / rad[1]) + (d[2] / rad[2]) * (d[2] / rad[2]);
+  return d / std::sqrt(q);
+}
+
+// Two neighbouring pieces of a convex decomposition (what V-HACD and CoACD
+// output): an ellipsoid (sometimes thin: one radius 1e-3..1e-1 of the others)
+// cut by a plane through its centre; each piece is the hull of surface points
+// on its side and of points of the cut section, which both pieces share (so
+// they touch along the cut, and the float rounding of the section makes many
+// nearly coplanar faces); 16..64 points per piece.  B is then left touching,
+// pushed off by a tiny gap or pressed in by a tiny overlap, and the pair is
+// rotated and, one time in two, moved far from the origin at world scale
+// (1..100 units, 1e2..1e4 away).
+FuzzCase decomposition_pair(Rng& r) {
+  V rad = uni3(r, 0.3, 1.5);
+  if (irange(r, 0, 2) == 0) {  // thin piece
+    const int axis = irange(r, 0, 2);
+    rad[axis] *= log_uni(r, 1e-3, 1e-1);
+  }
+  const V n = random_unit(r);
+  const V u = (std::abs(n[0]) < 0.9 ? V(1, 0, 0) : V(0, 1, 0)).cross(n).normalized();
+  const V w = n.cross(u);
+  const int total_a = irange(r, 16, 64), total_b = irange(r, 16, 64);
+  const int ncut = irange(r, 4, 16);
+  std::vector<V> cut;
+  for (int i = 0; i < ncut; ++i) {
+    const double t = uni(r, 0, 6.283185307179586);
+    cut.push_back(on_ellipsoid(std::cos(t) * u + std::sin(t) * w, rad));
+  }
+  auto piece = [&](int total, double side) {
+    std::vector<V> pts = cut;
+    while (static_cast<int>(pts.size()) < std::max(total, ncut + 4)) {
+      const V p = on_ellipsoid(random_unit(r), rad);
+      if (side * n.dot(p) > 1e-3) pts.push_back(p);
+    }
+    return pts;
+  };
+  std::vector<V> pa = piece(total_a, 1), pb = piece(total_b, -1);
+  const int mode = irange(r, 0, 2);  // touching, gap, overlap
+  const double eps = mode == 0 ? 0.0 : log_uni(r, 1e-7, 1e-3) * (mode == 1 ? -1 : 1);
+  for (auto& p : pb) p += eps * n;
+  const Eigen::Matrix3d R = random_rotation(r);
+  const bool world = irange(r, 0, 1) == 1;
+  const double scale = world ? log_uni(r, 1, 100) : 1.0;
+  V far = V::Zero();
+  if (world) {
+    const V dir = random_unit(r);
+    far = dir * log_uni(r, 1e2, 1e4);
+  }
+  for (auto* pts : {&pa, &pb})
+    for (auto& p : *pts) p = V(R * (p * scale));
+  // The hulls are built near the origin (float cannot resolve them far
+  // away), then moved: the far vertices are the float roundings of the moved
+  // ones, as a pipeline that places pieces in the world gives them.
+  FuzzCase c;
+  c.family = "decomposition";
+  c.a = transformed(hull_of(pa), Eigen::Matrix3d::Identity(), far);
+  c.b = transformed(hull_of(pb), Eigen::Matrix3d::Identity(), far);
+  return c;
+}
+
+// A scanned object's hull: 200..2000 points on a smooth closed surface (an
+// ellipsoid, or a superellipsoid with exponent 2.5..4), each moved along a
+// random direction by noise of relative size 1e-4..1e-2, as a depth sensor
+// gives them; its hull has many small, nearly coplanar faces.
+ShapeSpec scanned_hull(Rng& r) {
+  const V rad = uni3(r, 0.4, 1.2);
+  const bool super = irange(r, 0, 1) == 1;
+  const double e = uni(r, 2.5, 4.0), noise = log_uni(r, 1e-4, 1e-2);
+  const int n = static_cast<int>(std::lround(log_uni(r, 200, 2000)));
+  std::vector<V> pts;
+  for (int i = 0; i < n; ++i) {
+    const V d = random_unit(r);
+    V p;
+    if (super) {
+      const double q = std::pow(std::pow(std::abs(d[0] / rad[0]), e) + std::pow(std::abs(d[1] / rad[1]), e) +
+                                    std::pow(std::abs(d[2] / rad[2]), e),
+                                -1.0 / e);
+      p = d * q;
+    } else {
+      p = on_ellipsoid(d, rad);
+    }
+    const V jitter = random_unit(r);
+    pts.push_back(p + jitter * (noise * uni(r, 0, 1)));
+  }
+  return hull_of(pts);
+}
+
 FuzzCase make(const std::string& fam, Rng& r) {
   if (fam == "sphere") {
     const int na = static_cast<int>(std::lround(log_uni(r, 4, 256)));
     // B mostly smaller: the exact reference costs O(E_A E_B) rational work
     const int nb = static_cast<int>(std::lround(log_uni(r, 4, irange(r, 0, 7) == 0 ? 256 : 48)));
-    return place(r, fam, sphere_hull(r, na), sphere_hull(r, nb));
+    ShapeSpec a = sphere_hull(r, na);
+    ShapeSpec b = sphere_hull(r, nb);
+    return place(r, fam, std::move(a), std::move(b));
   }
-  if (fam == "boxes") return place(r, fam, random_box(r), random_box(r), irange(r, 0, 1) == 0);
-  if (fam == "tetra") return place(r, fam, random_tetra(r), irange(r, 0, 1) ? random_tetra(r) : any_solid(r));
+  if (fam == "boxes") {
+    ShapeSpec a = random_box(r);
+    ShapeSpec b = random_box(r);
+    const bool grid = irange(r, 0, 1) == 0;
+    return place(r, fam, std::move(a), std::move(b), grid);
+  }
+  if (fam == "tetra") {
+    ShapeSpec a = random_tetra(r);
+    ShapeSpec b = irange(r, 0, 1) ? random_tetra(r) : any_solid(r);
+    return place(r, fam, std::move(a), std::move(b));
+  }
   if (fam == "flat") {
     if (irange(r, 0, 3) == 0) {
       // coplanar polygons, placed as drawn (no pose: a pose would round them
@@ -312,41 +440,57 @@ FuzzCase make(const std::string& fam, Rng& r) {
       c.b = std::move(b);
       return c;
     }
-    FuzzCase c = place(r, fam, random_flat(r), irange(r, 0, 2) == 0 ? random_flat(r) : any_solid(r),
-                       irange(r, 0, 2) == 0);
+    ShapeSpec a = random_flat(r);
+    ShapeSpec b = irange(r, 0, 2) == 0 ? random_flat(r) : any_solid(r);
+    const bool grid = irange(r, 0, 2) == 0;
+    FuzzCase c = place(r, fam, std::move(a), std::move(b), grid);
     if (irange(r, 0, 1)) std::swap(c.a, c.b);
     return c;
   }
-  if (fam == "prisms")
-    return place(r, fam, random_prism(r), irange(r, 0, 1) ? random_prism(r) : random_box(r), irange(r, 0, 2) == 0);
+  if (fam == "prisms") {
+    ShapeSpec a = random_prism(r);
+    ShapeSpec b = irange(r, 0, 1) ? random_prism(r) : random_box(r);
+    const bool grid = irange(r, 0, 2) == 0;
+    return place(r, fam, std::move(a), std::move(b), grid);
+  }
   if (fam == "perturbed") {
     ShapeSpec a = irange(r, 0, 1) ? random_box(r) : random_prism(r);
-    return place(r, fam, perturbed(r, a), irange(r, 0, 1) ? perturbed(r, random_box(r)) : any_solid(r));
+    a = perturbed(r, std::move(a));
+    ShapeSpec b = irange(r, 0, 1) ? perturbed(r, random_box(r)) : any_solid(r);
+    return place(r, fam, std::move(a), std::move(b));
   }
   if (fam == "scales") {
     static const char* inner[] = {"boxes", "tetra", "flat", "prisms", "sphere"};
     FuzzCase c = make(inner[irange(r, 0, 4)], r);
     const double s = log_uni(r, 1e-4, 1e4);
-    const V far = random_unit(r) * s * log_uni(r, 1, 300);
+    const V dir = random_unit(r);
+    const V far = dir * s * log_uni(r, 1, 300);
     c.a = transformed(c.a, Eigen::Matrix3d::Identity(), far, s);
     c.b = transformed(c.b, Eigen::Matrix3d::Identity(), far, s);
     c.family = fam;
     return c;
   }
   if (fam == "touching") return touching(r);
+  if (fam == "decomposition") return decomposition_pair(r);
+  if (fam == "scanned") {
+    // against a small partner: the exact reference costs O(E_A E_B)
+    ShapeSpec a = scanned_hull(r);
+    ShapeSpec b = irange(r, 0, 1) ? random_box(r) : random_tetra(r);
+    return place(r, fam, std::move(a), std::move(b));
+  }
   throw std::invalid_argument("unknown case family '" + fam + "'");
 }
 
 }  // namespace
 
 const std::vector<std::string>& family_names() {
-  static const std::vector<std::string> names{"sphere", "boxes",     "tetra",  "flat",
-                                              "prisms", "perturbed", "scales", "touching"};
+  static const std::vector<std::string> names{"sphere",    "boxes",  "tetra",    "flat",          "prisms",
+                                              "perturbed", "scales", "touching", "decomposition", "scanned"};
   return names;
 }
 
 FuzzCase generate(const std::string& family, std::uint64_t seed) {
-  Rng r(seed * 0x9E3779B97F4A7C15ull + std::hash<std::string>{}(family));
+  Rng r(seed * 0x9E3779B97F4A7C15ull + name_hash(family));
   FuzzCase c = make(family, r);
   c.seed = seed;
   return c;
@@ -430,6 +574,10 @@ struct ByteReader {
     const int hi = u8(), lo = u8();
     return static_cast<std::int16_t>(static_cast<std::uint16_t>(hi << 8 | lo)) * scale;
   }
+  V v3(double scale) {  // x, y, z in this order (declarators are sequenced)
+    const double x = s16(scale), y = s16(scale), z = s16(scale);
+    return V(x, y, z);
+  }
 };
 
 ShapeSpec decode_shape(ByteReader& br) {
@@ -438,19 +586,26 @@ ShapeSpec decode_shape(ByteReader& br) {
     case 0: {  // hull of 4..19 points on a 1/1024 grid
       const int n = 4 + br.u8() % 16;
       std::vector<V> pts;
-      for (int i = 0; i < n; ++i) pts.emplace_back(br.s16(1.0 / 1024), br.s16(1.0 / 1024), br.s16(1.0 / 1024));
+      for (int i = 0; i < n; ++i) pts.push_back(br.v3(1.0 / 1024));
       return hull_of(pts);
     }
-    case 1: return spec_from(shapes::box<double>(1 + br.u8() / 64.0, 1 + br.u8() / 64.0, 1 + br.u8() / 64.0));
+    case 1: {
+      const double hx = 1 + br.u8() / 64.0, hy = 1 + br.u8() / 64.0, hz = 1 + br.u8() / 64.0;
+      return spec_from(shapes::box<double>(hx, hy, hz));
+    }
     case 2: {
       std::array<V, 4> p;
-      for (auto& x : p) x = V(br.s16(1.0 / 1024), br.s16(1.0 / 1024), br.s16(1.0 / 1024));
+      for (auto& x : p) x = br.v3(1.0 / 1024);
       return tetra_of(p);
     }
-    case 3: return spec_from(shapes::prism<double>(3 + br.u8() % 14, 1.0, 0.25 + br.u8() / 128.0));
+    case 3: {
+      const int sides = 3 + br.u8() % 14;
+      const double half_height = 0.25 + br.u8() / 128.0;
+      return spec_from(shapes::prism<double>(sides, 1.0, half_height));
+    }
     case 4: {
       std::vector<V> t;
-      for (int i = 0; i < 3; ++i) t.emplace_back(br.s16(1.0 / 1024), br.s16(1.0 / 1024), br.s16(1.0 / 1024));
+      for (int i = 0; i < 3; ++i) t.push_back(br.v3(1.0 / 1024));
       return flat_of(t);
     }
     default: return spec_from(shapes::regular_polygon<double>(3 + br.u8() % 6, 1.0));

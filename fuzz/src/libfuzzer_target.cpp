@@ -12,21 +12,12 @@
 // An unexplained disagreement aborts (so libFuzzer saves the crashing input);
 // ASan/UBSan report memory errors and undefined behaviour; -timeout catches hangs.
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 
-#include <sepax/fuzz/check.hpp>
+#include <sepax/fuzz/libfuzzer_check.hpp>
 #include <sepax/fuzz/generators.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const sepax::fuzz::FuzzCase c = sepax::fuzz::decode_bytes(data, size);
-  sepax::fuzz::CheckOptions opt;
-  opt.exact_brute_budget = 50'000;  // keep each input fast under the sanitizers
-  const sepax::fuzz::CaseReport r = sepax::fuzz::check_case_guarded(c, opt);
-  if (r.unexplained_count > 0) {
-    for (const auto& f : r.unexplained)
-      std::fprintf(stderr, "[%s %s %s] %s\n", f.comparison.c_str(), f.config.c_str(), f.sat.c_str(), f.detail.c_str());
-    std::abort();
-  }
+  sepax::fuzz::check_or_abort(c);
   return 0;
 }

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include <Eigen/Eigenvalues>
+
 #include <sepax/error.hpp>
 #include <sepax/fuzz/campaign.hpp>
 #include <sepax/fuzz/generators.hpp>
@@ -90,4 +92,48 @@ TEST_CASE("invalid shapes are rejected, never crash", "[fuzz][io]") {
   CHECK_THROWS_AS(builtin_shape("dodecahedron"), InvalidInput);
   CHECK_THROWS_AS(builtin_shape("prism:2"), InvalidInput);
   CHECK_THROWS_AS(builtin_shape("box:1,x,2"), InvalidInput);
+}
+
+TEST_CASE("decomposition and scanned families: the shapes they imitate", "[fuzz][generators]") {
+  int touching_or_near = 0, thin = 0, far = 0;
+  for (std::uint64_t seed = 0; seed < 12; ++seed) {
+    const FuzzCase d = generate("decomposition", seed);
+    CHECK(d.family == "decomposition");
+    for (const ShapeSpec* s : {&d.a, &d.b}) {
+      CHECK(s->vertices.size() >= 4);
+      CHECK(s->vertices.size() <= 64);  // hulls of 16..64 points
+    }
+    // neighbouring pieces: they share the vertices of the cut section, B
+    // moved by a gap or overlap of at most 1e-3 (of radii >= 0.3, times the
+    // world scale), so their closest vertices are within 4e-3 of A's extent
+    sepax::Vec3<double> mn = d.a.vertices[0], mx = mn;
+    double closest = 1e300, lo = 1e300;
+    for (const auto& p : d.a.vertices) {
+      mn = mn.cwiseMin(p);
+      mx = mx.cwiseMax(p);
+      lo = std::min(lo, p.norm());
+      for (const auto& q : d.b.vertices) closest = std::min(closest, (p - q).norm());
+    }
+    const double extent = (mx - mn).maxCoeff();
+    touching_or_near += closest <= 4e-3 * extent;
+    far += lo > 50;  // moved 1e2..1e4 from the origin
+    // thin: the vertices' covariance is flat (rotation invariant)
+    sepax::Vec3<double> c = sepax::Vec3<double>::Zero();
+    for (const auto& p : d.a.vertices) c += p;
+    c /= static_cast<double>(d.a.vertices.size());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const auto& p : d.a.vertices) cov += (p - c) * (p - c).transpose();
+    const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvalues();
+    thin += ev[0] < 0.04 * ev[2];
+  }
+  CHECK(touching_or_near >= 10);
+  CHECK(far >= 2);
+  CHECK(thin >= 1);
+  for (std::uint64_t seed = 0; seed < 3; ++seed) {
+    const FuzzCase c = generate("scanned", seed);
+    CHECK(c.family == "scanned");
+    CHECK(c.a.vertices.size() >= 60);     // a dense hull: most of the 200..2000 noisy points
+    CHECK(c.a.vertices.size() <= 2000);
+    CHECK(c.b.vertices.size() <= 8);      // a small partner (box or tetrahedron)
+  }
 }

@@ -20,6 +20,10 @@
 //   separation      the reported separation against the exact optimum
 //   exact           exact configurations and exact SATs among themselves
 //   manifold        float against exact contact manifolds (check_manifold.hpp)
+//   margin          early exits at a speculative margin (SatOptions::margin)
+//   posed, posed_exact, posed_rational, warm
+//                   posed queries on prepared shapes and cached coherent
+//                   sequences (check_posed.hpp)
 //
 // Classes of a comparison:
 //   agree        identical (separation: the float value equals the exact one)
@@ -118,6 +122,16 @@ struct CheckOptions {
   int max_findings = 8;
   /// Compare float and exact contact manifolds (check_manifold.hpp).
   bool manifolds = true;
+  /// Speculative margins (SatOptions::margin with early_out): the "margin"
+  /// comparison (check.cpp, check_margins).
+  bool margins = true;
+  /// Posed queries on prepared shapes and warm (cached) coherent sequences:
+  /// the "posed", "posed_exact", "posed_rational" and "warm" comparisons
+  /// (check_posed.hpp).
+  bool posed = true;
+  /// The exact references of posed queries (mpq SATs on the posed input, and
+  /// exact rational poses) only when E_A*E_B is at most this.
+  std::int64_t posed_exact_pair_budget = 2'500;
 };
 
 /// The four arc-test signs of every edge pair (index ea * E_B + eb), exactly,

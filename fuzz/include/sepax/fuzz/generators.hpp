@@ -17,6 +17,12 @@
 //   touching    exactly touching placements: integer shapes, the 24 cube
 //               rotations and dyadic translations, so contact survives the
 //               conversion to float exactly
+//   decomposition  neighbouring pieces of a convex decomposition (V-HACD,
+//               CoACD output): hulls of 16..64 points of an ellipsoid cut by a
+//               plane, sharing the cut section (touching, or a 1e-7..1e-3 gap
+//               or overlap), thin pieces, world scale far from the origin
+//   scanned     a scanned object's hull (200..2000 noisy points on an ellipsoid
+//               or superellipsoid) against a box or a tetrahedron
 // All coordinates are rounded to float (case.hpp).
 #pragma once
 
