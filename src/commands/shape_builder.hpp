@@ -177,7 +177,7 @@ ConvexPolyhedron<T> build_shape(const io::ShapeData& s, const Pose* pose = nullp
 /// A query's two shapes in one frame, and that frame's origin in world
 /// coordinates (add it to positions to report them).
 template <Number T>
-struct ShapePair {
+struct BuiltPair {
   ConvexPolyhedron<T> a, b;
   Vec3<T> origin;
 };
@@ -190,11 +190,11 @@ struct ShapePair {
 /// frame: its vertices' coordinates minus A's centre, rounded to T once, not
 /// re-validated there (as a posed shape is).
 template <Number T>
-ShapePair<T> build_pair(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b) {
+BuiltPair<T> build_pair(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b) {
   const std::vector<Vec3<T>> world[] = {shape_points<T>(sa), shape_points<T>(sb, pose_b)};
   const Vec3<T> c = io::exact_centre<T>(world);
   if (io::resolvable_around(world[0], c) && io::resolvable_around(world[1], c)) {
-    return ShapePair<T>{build_shape<T>(sa, nullptr, &c), build_shape<T>(sb, pose_b, &c), c};
+    return BuiltPair<T>{build_shape<T>(sa, nullptr, &c), build_shape<T>(sb, pose_b, &c), c};
   }
   const Vec3<T> ca = io::exact_centre<T>(std::span(world, 1));
   const Vec3<T> cb = io::exact_centre<T>(std::span(world + 1, 1));
@@ -211,7 +211,7 @@ ShapePair<T> build_pair(const io::ShapeData& sa, const io::ShapeData& sb, const 
       moved.push_back(Vec3<T>(Vec3<T>(v + cb) - ca));
     }
   }
-  return ShapePair<T>{build_shape<T>(sa, nullptr, &ca), b.with_vertices(std::move(moved)), ca};
+  return BuiltPair<T>{build_shape<T>(sa, nullptr, &ca), b.with_vertices(std::move(moved)), ca};
 }
 
 }  // namespace sepax::cli
