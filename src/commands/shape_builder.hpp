@@ -37,6 +37,7 @@
 #include <sepax/error.hpp>
 
 #include "commands/pose.hpp"
+#include "io/closed_mesh.hpp"
 #include "io/exact_centre.hpp"
 #include "io/shape_data.hpp"
 
@@ -95,6 +96,17 @@ std::vector<Vec3<T>> converted(const io::ShapeData& s, const std::vector<Vec3<do
 /// for a file's face list that validation refuses, as a closed convex mesh.
 template <Number T>
 ConvexPolyhedron<T> face_polyhedron(const io::ShapeData& s, std::vector<Vec3<T>> v) {
+  // A file's face list that is open or not a 2-manifold is no polyhedron of
+  // either kind: said at once, before validation walks the millions of faces
+  // of a scanned mesh.  (A face repeating a point is left to validation,
+  // whose message names the vertex as the file numbers it.)
+  if (s.from_file && s.faces.size() >= 2) {
+    try {
+      (void)io::closed_mesh(s);
+    } catch (const InvalidInput& e) {
+      if (e.code() == ErrorCode::NotManifold) throw;
+    }
+  }
   try {
     return ConvexPolyhedron<T>::from_faces(v, s.closed_faces());
   } catch (const InvalidInput& e) {

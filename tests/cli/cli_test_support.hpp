@@ -133,6 +133,7 @@ struct ProgramRun {
   bool timed_out = false;
   std::string out, err;
   long max_rss_kb = 0;   // its peak resident memory
+  double cpu_seconds = 0;  // its user + system time
   double seconds = 0;    // wall time
 };
 
@@ -180,6 +181,8 @@ inline ProgramRun run_program(std::vector<std::string> args, const std::string& 
   if (WIFEXITED(wstatus)) r.status = WEXITSTATUS(wstatus);
   if (WIFSIGNALED(wstatus)) r.signal = WTERMSIG(wstatus);
   r.max_rss_kb = usage.ru_maxrss;
+  r.cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                  static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-6;
   if (stdout_path.empty()) r.out = file_text(out_path);
   r.err = file_text(err_path);
   return r;
