@@ -131,11 +131,14 @@ int run_info(const std::vector<std::string>& args, std::ostream& out, std::ostre
     const std::optional<Pose> pose = cl.pose();
     if (shapes.size() != 1) throw UsageError("expected one shape, got " + std::to_string(shapes.size()));
     try {
-      if (const auto listing = io::object_listing(shapes[0]); listing && !json && !hull) {
-        out << *listing;
-        return kExitOk;
+      std::optional<io::ShapeData> read;
+      if (!hull) {
+        if (const auto listing = io::object_listing(shapes[0], &read); listing && !json) {
+          out << *listing;
+          return kExitOk;
+        }
       }
-      const io::ShapeData s = io::load_shape(shape_argument(shapes[0], hull));
+      const io::ShapeData s = read ? std::move(*read) : io::load_shape(shape_argument(shapes[0], hull));
       const ShapeCounts c = shape_counts(s, cfg.number, pose ? &*pose : nullptr);
       if (json) {
         out << json::write(json::Value{{"shape", s.name},
