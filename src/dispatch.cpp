@@ -116,16 +116,26 @@ int run(int argc, char** argv) {
     print_help(std::cerr);
     return kExitUsage;
   }
+  int status = kExitInternal;
   try {
-    return v->run(argc - 1, argv + 1);
+    status = v->run(argc - 1, argv + 1);
   } catch (const std::bad_alloc&) {
     std::cerr << "sepax " << verb << ": internal error: out of memory\n";
+    return kExitInternal;
   } catch (const std::exception& e) {
     std::cerr << "sepax " << verb << ": internal error: " << e.what() << "\n";
+    return kExitInternal;
   } catch (...) {
     std::cerr << "sepax " << verb << ": internal error: unknown exception\n";
+    return kExitInternal;
   }
-  return kExitInternal;
+  // Output that did not reach standard output (a full disk, a closed pipe)
+  // is not a success.
+  if (!std::cout.flush()) {
+    std::cerr << "sepax " << verb << ": error: cannot write standard output\n";
+    if (status == kExitOk) status = kExitInput;
+  }
+  return status;
 }
 
 }  // namespace sepax::cli

@@ -1,64 +1,77 @@
 // src/commands/audit_command.cpp -- see audit_command.hpp.
 #include "commands/audit_command.hpp"
 
-#include <cmath>
 #include <cstddef>
 #include <iostream>
+#include <optional>
 #include <vector>
 
 #include <sepax/error.hpp>
 #include <sepax/fuzz/cli.hpp>
-#include <sepax/fuzz/generators.hpp>
 
 #include "commands/command_line.hpp"
-#include "commands/shape_pair.hpp"
+#include "commands/shape_builder.hpp"
 #include "io/shape_source.hpp"
 
 namespace sepax::cli {
 
 namespace {
 
-fuzz::ShapeSpec audit_spec(const io::ShapeData& d, std::ostream& note) {
-  fuzz::ShapeSpec tmp{d.vertices, {}};
-  fuzz::round_to_float(tmp);
-  std::size_t changed = 0;
-  for (std::size_t i = 0; i < d.vertices.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      if (!std::isfinite(tmp.vertices[i][c])) {
-        throw InvalidInput(ErrorCode::BadScale, d.name + ": coordinate " + "xyz"[c] + " of " +
-                                                    (d.kind == io::ShapeData::Kind::Points ? "point " : "vertex ") +
-                                                    std::to_string(i) + " (" + format_number(d.vertices[i][c]) +
-                                                    ") overflows float, which the audit's input must be");
-      }
-      if (tmp.vertices[i][c] != d.vertices[i][c]) ++changed;
-    }
-  }
-  if (changed != 0) {
-    note << "sepax audit: note: " << d.name << ": " << changed
-         << " coordinate(s) rounded to float (float, double and exact runs see the same float-valued input)\n";
-  }
-  if (d.kind == io::ShapeData::Kind::Points) {
-    try {
-      return fuzz::hull_of(tmp.vertices);
-    } catch (const InvalidInput& e) {
-      throw InvalidInput(e.code(), d.name + ": " + e.what());
-    }
-  }
-  tmp.faces = d.closed_faces();
-  return tmp;
+fuzz::ShapeSpec spec_of(const ConvexPolyhedron<float>& p) {
+  fuzz::ShapeSpec s;
+  s.vertices.reserve(p.vertices().size());
+  for (const auto& v : p.vertices()) s.vertices.push_back(vec_to_double(v));
+  for (int f = 0; f < p.face_count(); ++f) s.faces.push_back(p.face_vertices(f));
+  return s;
+}
+
+/// How many coordinates of d are not float values (d builds in float, so
+/// every coordinate is within float's range).
+std::size_t rounded_coordinates(const io::ShapeData& d) {
+  std::size_t n = 0;
+  for (const auto& v : d.vertices)
+    for (int c = 0; c < 3; ++c)
+      if (static_cast<double>(static_cast<float>(v[c])) != v[c]) ++n;
+  return n;
+}
+
+/// A shape of a .case as the case holds it (validated in float first, so
+/// that an error names the case); its hull with --hull.
+fuzz::ShapeSpec case_spec(const io::ShapeData& d) {
+  const ConvexPolyhedron<float> built = build_shape<float>(d);
+  if (d.kind == io::ShapeData::Kind::Points) return spec_of(built);
+  return fuzz::ShapeSpec{d.vertices, d.closed_faces()};
 }
 
 }  // namespace
 
-fuzz::ShapeSpec audit_shape(const std::string& spec, std::ostream& note) { return audit_spec(io::load_shape(spec), note); }
+fuzz::FuzzCase audit_case(const ShapePair& p, const Pose* pose_b, std::ostream& note) {
+  fuzz::FuzzCase c;
+  c.family = "audit";
+  if (p.from_case) {
+    c.a = case_spec(p.a);
+    c.b = case_spec(p.b);
+    return c;
+  }
+  const BuiltPair<float> built = build_pair<float>(p.a, p.b, pose_b);
+  for (const io::ShapeData* d : {&p.a, &p.b}) {
+    if (const std::size_t n = rounded_coordinates(*d); n != 0) {
+      note << "sepax audit: note: " << d->name << ": " << n
+           << " coordinate(s) rounded to float (float, double and exact runs see the same float-valued input)\n";
+    }
+  }
+  const Vec3<double> o = vec_to_double(built.origin);
+  if (o[0] != 0 || o[1] != 0 || o[2] != 0) {
+    note << "sepax audit: note: the shapes are audited moved by -(" << format_number(o[0]) << ", "
+         << format_number(o[1]) << ", " << format_number(o[2])
+         << "), an exact translation near them (as sepax query builds them): positions are relative to that point\n";
+  }
+  c.a = spec_of(built.a);
+  c.b = spec_of(built.b);
+  return c;
+}
 
-namespace {
-
-fuzz::ShapeSpec audit_spec(const io::ShapeData& d, std::ostream& note);
-
-}  // namespace
-
-int run_audit(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int run_audit(const std::vector<std::string>& args, std::istream& in, std::ostream& out, std::ostream& err) {
   std::vector<std::string> shapes;
   std::string case_file;
   RunConfig cfg;
@@ -68,8 +81,10 @@ int run_audit(const std::vector<std::string>& args, std::ostream& out, std::ostr
                  "Every decision the SATs make for one pair, in float (or double) against exact mpq arithmetic: "
                  "the triple products of every edge pair, every candidate axis with its error bound, the features "
                  "every configuration chooses, the contact manifold; then the full differential check of the case.",
-                 std::string("shapes: ") + io::builtin_shapes_help() +
-                     "\nCoordinates are rounded to float; points files are hulled in float; the pose applies to B.\n"
+                 std::string("shapes (A, B):\n") + io::builtin_shapes_help() +
+                     "FILE.case as the only argument: a fuzzer reproducer, audited as it is\n"
+                     "\nA and B are built as 'sepax query A B --number float' builds them: coordinates rounded to "
+                     "float,\npoints hulled in float, B posed, both moved by an exact centre near them.\n"
                      "\nExit status: 0 no unexplained disagreement, 1 at least one, 2 usage error, 3 an input that "
                      "cannot be read, parsed or built, 4 internal error.\n");
   auto& app = cl.app;
@@ -96,37 +111,22 @@ int run_audit(const std::vector<std::string>& args, std::ostream& out, std::ostr
   if (const auto status = cl.parse(args, out, err)) return *status;
   try {
     const std::optional<Pose> pose = cl.pose();
-    fuzz::FuzzCase c;
     if (!case_file.empty() && !shapes.empty()) throw UsageError("give either --case FILE or the shapes, not both");
-    if (!case_file.empty() || (shapes.size() == 1 && is_case_file(shapes[0]))) {
-      if (pose) throw UsageError("--pose cannot be used with a case file (the case places B)");
-      c = fuzz::read_case_file(case_file.empty() ? shapes[0] : case_file);
-      if (hull) {
-        c.a = fuzz::hull_of(c.a.vertices);
-        c.b = fuzz::hull_of(c.b.vertices);
-      }
-    } else {
-      const ShapePair p = load_pair(shapes, hull);  // UsageError for a wrong count
-      c.a = audit_spec(p.a, err);
-      c.b = audit_spec(p.b, err);
-      c.family = "audit";
-      if (pose) {
-        const double t[3] = {pose->translation[0], pose->translation[1], pose->translation[2]};
-        c.b = fuzz::posed(c.b, t, pose->rotation.data());
-      }
+    try {
+      const ShapePair p = case_file.empty() ? load_pair(shapes, hull, in) : load_case(case_file, hull);
+      if (pose && p.from_case) throw UsageError("--pose cannot be used with a case file (the case places B)");
+      fuzz::AuditOptions opt;
+      opt.use_double = cfg.number == NumberKind::Double;
+      opt.json = json;
+      return fuzz::run_audit(audit_case(p, pose ? &*pose : nullptr, err), opt, out);
+    } catch (const InvalidInput& e) {
+      return input_error(out, err, json, "audit", e.what());
     }
-    fuzz::AuditOptions opt;
-    opt.use_double = cfg.number == NumberKind::Double;
-    opt.json = json;
-    return fuzz::run_audit(c, opt, out);
   } catch (const UsageError& e) {
     return cl.usage_error(err, e.what());
-  } catch (const InvalidInput& e) {
-    err << "sepax audit: " << e.what() << "\n";
-    return kExitInput;
   }
 }
 
-int audit_main(int argc, char** argv) { return run_audit(arguments(argc, argv), std::cout, std::cerr); }
+int audit_main(int argc, char** argv) { return run_audit(arguments(argc, argv), std::cin, std::cout, std::cerr); }
 
 }  // namespace sepax::cli

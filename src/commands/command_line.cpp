@@ -8,6 +8,8 @@
 
 #include <sepax/error.hpp>
 
+#include "json/json.hpp"
+
 namespace sepax::cli {
 
 std::optional<double> parse_double(const std::string& s) {
@@ -17,6 +19,12 @@ std::optional<double> parse_double(const std::string& s) {
   const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
   if (t.empty() || t[0] == '+' || r.ec != std::errc() || r.ptr != t.data() + t.size()) return std::nullopt;
   return v;
+}
+
+int input_error(std::ostream& out, std::ostream& err, bool json, const std::string& verb, const std::string& what) {
+  err << "sepax " << verb << ": error: " << what << "\n";
+  if (json) out << json::write(json::Value{{"error", what}}) << "\n";
+  return kExitInput;
 }
 
 std::vector<std::string> arguments(int argc, char** argv) {

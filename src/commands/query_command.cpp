@@ -32,12 +32,6 @@ std::string shapes_footer(const char* extra = "") {
 
 const char* const kPoseHelp = "move B: rotate by the quaternion (normalised; default identity), then translate";
 
-int input_error(std::ostream& out, std::ostream& err, bool json, const std::string& verb, const std::string& what) {
-  err << "sepax " << verb << ": error: " << what << "\n";
-  if (json) out << json::write(json::Value{{"error", what}}) << "\n";
-  return kExitInput;
-}
-
 int batch(const CommandLine& cl, const std::string& file, const BatchOptions& opt, std::istream& in,
           std::ostream& out, std::ostream& err) {
   BatchSummary s;
@@ -48,14 +42,10 @@ int batch(const CommandLine& cl, const std::string& file, const BatchOptions& op
     try {
       f = io::open_input(file);
     } catch (const InvalidInput& e) {
-      err << "sepax " << cl.verb() << ": error: " << e.what() << "\n";
-      return kExitInput;
+      return input_error(out, err, false, cl.verb(), e.what());
     }
     s = run_batch(f, out, opt);
-    if (f.bad()) {
-      err << "sepax " << cl.verb() << ": error: " << file << ": read error\n";
-      return kExitInput;
-    }
+    if (f.bad()) return input_error(out, err, false, cl.verb(), file + ": read error");
   }
   if (s.errors > 0) {
     err << "sepax query --batch: " << s.errors << " of " << s.queries << " queries failed\n";
@@ -141,11 +131,14 @@ int run_info(const std::vector<std::string>& args, std::ostream& out, std::ostre
     const std::optional<Pose> pose = cl.pose();
     if (shapes.size() != 1) throw UsageError("expected one shape, got " + std::to_string(shapes.size()));
     try {
-      if (const auto listing = io::object_listing(shapes[0]); listing && !json && !hull) {
-        out << *listing;
-        return kExitOk;
+      std::optional<io::ShapeData> read;
+      if (!hull) {
+        if (const auto listing = io::object_listing(shapes[0], &read); listing && !json) {
+          out << *listing;
+          return kExitOk;
+        }
       }
-      const io::ShapeData s = io::load_shape(shape_argument(shapes[0], hull));
+      const io::ShapeData s = read ? std::move(*read) : io::load_shape(shape_argument(shapes[0], hull));
       const ShapeCounts c = shape_counts(s, cfg.number, pose ? &*pose : nullptr);
       if (json) {
         out << json::write(json::Value{{"shape", s.name},

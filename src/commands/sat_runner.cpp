@@ -120,7 +120,7 @@ RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pos
   // Both shapes in one frame near them (shape_builder.hpp, build_pair), so
   // a small pair far from the origin is resolved as well as near it;
   // positions are reported in world coordinates.
-  const ShapePair<T> pair = build_pair<T>(sa, sb, pose_b);
+  const BuiltPair<T> pair = build_pair<T>(sa, sb, pose_b);
   const ConvexPolyhedron<T>& a = pair.a;
   const ConvexPolyhedron<T>& b = pair.b;
   SatResult<T> r;

@@ -37,6 +37,7 @@
 #include <sepax/error.hpp>
 
 #include "commands/pose.hpp"
+#include "io/closed_mesh.hpp"
 #include "io/exact_centre.hpp"
 #include "io/shape_data.hpp"
 
@@ -95,6 +96,17 @@ std::vector<Vec3<T>> converted(const io::ShapeData& s, const std::vector<Vec3<do
 /// for a file's face list that validation refuses, as a closed convex mesh.
 template <Number T>
 ConvexPolyhedron<T> face_polyhedron(const io::ShapeData& s, std::vector<Vec3<T>> v) {
+  // A file's face list that is open or not a 2-manifold is no polyhedron of
+  // either kind: said at once, before validation walks the millions of faces
+  // of a scanned mesh.  (A face repeating a point is left to validation,
+  // whose message names the vertex as the file numbers it.)
+  if (s.from_file && s.faces.size() >= 2) {
+    try {
+      (void)io::closed_mesh(s);
+    } catch (const InvalidInput& e) {
+      if (e.code() == ErrorCode::NotManifold) throw;
+    }
+  }
   try {
     return ConvexPolyhedron<T>::from_faces(v, s.closed_faces());
   } catch (const InvalidInput& e) {
@@ -177,7 +189,7 @@ ConvexPolyhedron<T> build_shape(const io::ShapeData& s, const Pose* pose = nullp
 /// A query's two shapes in one frame, and that frame's origin in world
 /// coordinates (add it to positions to report them).
 template <Number T>
-struct ShapePair {
+struct BuiltPair {
   ConvexPolyhedron<T> a, b;
   Vec3<T> origin;
 };
@@ -190,11 +202,11 @@ struct ShapePair {
 /// frame: its vertices' coordinates minus A's centre, rounded to T once, not
 /// re-validated there (as a posed shape is).
 template <Number T>
-ShapePair<T> build_pair(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b) {
+BuiltPair<T> build_pair(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b) {
   const std::vector<Vec3<T>> world[] = {shape_points<T>(sa), shape_points<T>(sb, pose_b)};
   const Vec3<T> c = io::exact_centre<T>(world);
   if (io::resolvable_around(world[0], c) && io::resolvable_around(world[1], c)) {
-    return ShapePair<T>{build_shape<T>(sa, nullptr, &c), build_shape<T>(sb, pose_b, &c), c};
+    return BuiltPair<T>{build_shape<T>(sa, nullptr, &c), build_shape<T>(sb, pose_b, &c), c};
   }
   const Vec3<T> ca = io::exact_centre<T>(std::span(world, 1));
   const Vec3<T> cb = io::exact_centre<T>(std::span(world + 1, 1));
@@ -211,7 +223,7 @@ ShapePair<T> build_pair(const io::ShapeData& sa, const io::ShapeData& sb, const 
       moved.push_back(Vec3<T>(Vec3<T>(v + cb) - ca));
     }
   }
-  return ShapePair<T>{build_shape<T>(sa, nullptr, &ca), b.with_vertices(std::move(moved)), ca};
+  return BuiltPair<T>{build_shape<T>(sa, nullptr, &ca), b.with_vertices(std::move(moved)), ca};
 }
 
 }  // namespace sepax::cli

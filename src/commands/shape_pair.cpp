@@ -39,15 +39,18 @@ io::ShapeData from_spec(const fuzz::ShapeSpec& s, const std::string& name, bool 
 
 }  // namespace
 
-ShapePair load_pair(const std::vector<std::string>& positional, bool hull, std::istream& standard_input) {
-  if (positional.size() == 1 && is_case_file(positional[0])) {
+ShapePair load_case(const std::string& path, bool hull) {
 #ifdef SEPAX_HAVE_FUZZ
-    const fuzz::FuzzCase c = fuzz::read_case_file(positional[0]);
-    return {from_spec(c.a, positional[0] + " A", hull), from_spec(c.b, positional[0] + " B", hull), true};
+  const fuzz::FuzzCase c = fuzz::read_case_file(path);
+  return {from_spec(c.a, path + " A", hull), from_spec(c.b, path + " B", hull), true};
 #else
-    throw UsageError(".case files need the fuzzer library, which this build does not have");
+  (void)hull;
+  throw UsageError("'" + path + "': .case files need the fuzzer library, which this build does not have");
 #endif
-  }
+}
+
+ShapePair load_pair(const std::vector<std::string>& positional, bool hull, std::istream& standard_input) {
+  if (positional.size() == 1 && is_case_file(positional[0])) return load_case(positional[0], hull);
   if (positional.size() != 2)
     throw UsageError("expected two shapes A and B, got " + std::to_string(positional.size()) + " (arguments: " +
                      pair_arguments_help() + ")");

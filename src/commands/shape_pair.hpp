@@ -33,6 +33,11 @@ bool is_case_file(const std::string& arg);
 /// The argument io::load_shape is given for `arg` (with `hull:` when hull is set).
 std::string shape_argument(const std::string& arg, bool hull);
 
+/// The two shapes of the fuzzer reproducer at path (named "PATH A" and "PATH
+/// B"; points when hull).  Throws UsageError in a build without the fuzzer,
+/// InvalidInput for an unreadable case.
+ShapePair load_case(const std::string& path, bool hull);
+
 /// Throws UsageError (command_line.hpp) for a wrong number of arguments or a
 /// .case in a build without the fuzzer, InvalidInput for unreadable input.
 /// `-` arguments read `standard_input`.

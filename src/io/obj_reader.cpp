@@ -73,13 +73,13 @@ std::vector<ObjObject> read_obj_objects(std::istream& in, const std::string& nam
       if (n == 5 || n > 7) r.fail(what + " has " + std::to_string(n) + " values; expected x y z [w] or x y z r g b");
       Vec3<double> p;
       for (int c = 0; c < 3; ++c) {
-        p[c] = parse_double(r, tok[static_cast<std::size_t>(c) + 1], "coordinate " + std::string(1, "xyz"[c]) + " of " + what);
+        p[c] = parse_double(r, tok[static_cast<std::size_t>(c) + 1], [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
       }
       if (n == 4) {
-        const double w = parse_double(r, tok[4], "w of " + what);
+        const double w = parse_double(r, tok[4], [&] { return "w of " + what; });
         if (w != 1.0) r.fail(what + " has w = " + std::string(tok[4]) + "; only w = 1 is supported");
       } else {
-        for (std::size_t c = 4; c <= n; ++c) (void)parse_double(r, tok[c], "a colour value of " + what);
+        for (std::size_t c = 4; c <= n; ++c) (void)parse_double(r, tok[c], [&] { return "a colour value of " + what; });
       }
       out.vertices.push_back(p);
     } else if (tok[0] == "f") {
@@ -92,7 +92,7 @@ std::vector<ObjObject> read_obj_objects(std::istream& in, const std::string& nam
       for (std::size_t k = 1; k < tok.size(); ++k) {
         const std::string_view entry = tok[k];
         const std::string_view index = entry.substr(0, entry.find('/'));
-        const long long i = parse_integer(r, index, "a vertex index of " + what);
+        const long long i = parse_integer(r, index, [&] { return "a vertex index of " + what; });
         long long zero_based;
         if (i > 0) {
           zero_based = i - 1;

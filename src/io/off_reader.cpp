@@ -88,7 +88,7 @@ ShapeData read_off(std::istream& in, const std::string& name) {
     }
     Vec3<double> p;
     for (int c = 0; c < 3; ++c) {
-      p[c] = parse_double(r, tok[static_cast<std::size_t>(c)], "coordinate " + std::string(1, "xyz"[c]) + " of " + what);
+      p[c] = parse_double(r, tok[static_cast<std::size_t>(c)], [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
     }
     out.vertices.push_back(p);
   }
@@ -105,7 +105,7 @@ ShapeData read_off(std::istream& in, const std::string& name) {
     }
     std::vector<int> face;
     for (long long k = 1; k <= n; ++k) {
-      const long long idx = parse_integer(r, tok[static_cast<std::size_t>(k)], "a vertex index of " + what);
+      const long long idx = parse_integer(r, tok[static_cast<std::size_t>(k)], [&] { return "a vertex index of " + what; });
       if (idx < 0 || idx >= nv) {
         r.fail(what + ": vertex index " + std::to_string(idx) + " is out of range (the file has " +
                std::to_string(nv) + " vertices, indices 0.." + std::to_string(nv - 1) + ")");

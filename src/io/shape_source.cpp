@@ -210,11 +210,14 @@ ShapeData load_shape(const std::string& spec, std::istream& standard_input) {
 
 ShapeData load_shape(const std::string& spec) { return load_shape(spec, std::cin); }
 
-std::optional<std::string> object_listing(const std::string& spec) {
-  if (lower_extension(spec) != ".obj" || spec.starts_with("hull:")) return std::nullopt;
+std::optional<std::string> object_listing(const std::string& spec, std::optional<ShapeData>* single) {
+  if (lower_extension(spec) != ".obj" || spec.starts_with("hull:") || is_builtin_shape(spec)) return std::nullopt;
   auto in = open_input(spec);
-  const auto objects = read_obj_objects(in, spec);
-  if (objects.size() < 2) return std::nullopt;
+  auto objects = read_obj_objects(in, spec);
+  if (objects.size() < 2) {
+    if (single) *single = std::move(objects[0].shape);
+    return std::nullopt;
+  }
   std::string s = spec + ": " + std::to_string(objects.size()) + " objects (select one with " + spec +
                   "#NAME or " + spec + "#K)\n";
   for (std::size_t k = 0; k < objects.size(); ++k) {

@@ -52,6 +52,20 @@ std::string shown(std::string_view token) {
   return "'" + s + "'";
 }
 
+std::optional<double> quick_double(std::string_view t) {
+  double v = 0;
+  const auto r = std::from_chars(t.data(), t.data() + t.size(), v, std::chars_format::general);
+  if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::optional<long long> quick_integer(std::string_view t) {
+  long long v = 0;
+  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size()) return std::nullopt;
+  return v;
+}
+
 double parse_double(const LineReader& reader, std::string_view token, const std::string& what) {
   std::string_view t = token;
   if (!t.empty() && t[0] == '+') t.remove_prefix(1);

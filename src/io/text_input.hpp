@@ -6,8 +6,10 @@
 //   InvalidInput(ErrorCode::Parse, "FILE:LINE: <what is wrong>").
 #pragma once
 
+#include <concepts>
 #include <cstddef>
 #include <istream>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,6 +52,25 @@ long long parse_count(const LineReader& reader, std::string_view token, const st
 
 /// A (possibly negative) decimal integer; errors like parse_double.
 long long parse_integer(const LineReader& reader, std::string_view token, const std::string& what);
+
+/// The finite double or the integer spelled by token in the common way (no
+/// leading '+'), without building any message; nullopt for anything else.
+std::optional<double> quick_double(std::string_view token);
+std::optional<long long> quick_integer(std::string_view token);
+
+/// parse_double and parse_integer with the description made only for an
+/// error (what() returns it): a reader calls them once per number of a file
+/// of millions.
+template <std::invocable What>
+double parse_double(const LineReader& reader, std::string_view token, const What& what) {
+  if (const auto v = quick_double(token)) return *v;
+  return parse_double(reader, token, std::string(what()));
+}
+template <std::invocable What>
+long long parse_integer(const LineReader& reader, std::string_view token, const What& what) {
+  if (const auto v = quick_integer(token)) return *v;
+  return parse_integer(reader, token, std::string(what()));
+}
 
 /// Shortens a token for an error message (binary garbage can be long).
 std::string shown(std::string_view token);

@@ -3,6 +3,7 @@
 // them to float, and names the file in every error.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "cli/cli_test_support.hpp"
 #include "commands/audit_command.hpp"
+#include "commands/shape_pair.hpp"
 #include "io/shape_source.hpp"
 
 using namespace sepax;
@@ -22,18 +24,10 @@ namespace {
 using Run = test::CommandRun;
 using test::temp_file;
 
-// audit_main prints to std::cout / std::cerr: capture both.
-Run audit(std::vector<std::string> args) {
+// audit_main prints to std::cout / std::cerr: captured.
+Run audit(std::vector<std::string> args, const std::string& stdin_text = "") {
   args.insert(args.begin(), "audit");
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  std::ostringstream out, err;
-  auto* old_out = std::cout.rdbuf(out.rdbuf());
-  auto* old_err = std::cerr.rdbuf(err.rdbuf());
-  const int s = audit_main(static_cast<int>(argv.size()), argv.data());
-  std::cout.rdbuf(old_out);
-  std::cerr.rdbuf(old_err);
-  return {s, out.str(), err.str()};
+  return test::verb_main(&audit_main, std::move(args), stdin_text);
 }
 
 }  // namespace
@@ -80,10 +74,47 @@ TEST_CASE("audit: coordinates are rounded to float, with a note", "[audit]") {
   CHECK(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("tri01.xyz: 2 coordinate(s) rounded to float"));
   std::ostringstream note;
-  const auto spec = audit_shape(tri, note);
-  REQUIRE(spec.vertices.size() == 3);
-  for (const auto& v : spec.vertices)
-    for (int c = 0; c < 3; ++c) CHECK(static_cast<double>(static_cast<float>(v[c])) == v[c]);
+  const fuzz::FuzzCase c = audit_case(load_pair({tri, "cube"}, false), nullptr, note);
+  CHECK_THAT(note.str(), Catch::Contains("2 coordinate(s) rounded to float"));
+  REQUIRE(c.a.vertices.size() == 3);
+  for (const auto& v : c.a.vertices)
+    for (int k = 0; k < 3; ++k) CHECK(static_cast<double>(static_cast<float>(v[k])) == v[k]);
+}
+
+TEST_CASE("audit: shapes are loaded and built as sepax query --number float builds them", "[audit][mesh]") {
+  const std::string data = std::string(SEPAX_SOURCE_DIR) + "/tests/data/";
+  // a triangulated cube OBJ is the cube (a closed convex mesh), as in query
+  const Run tri = audit({data + "cube_tri.obj", "cube", "--pose", "2.5", "0", "0"});
+  CHECK(tri.status == 0);
+  CHECK_THAT(tri.out, Catch::Contains("A: 8 vertices, 12 edges, 6 faces"));
+  const Run builtin = audit({"cube", "cube", "--pose", "2.5", "0", "0"});
+  CHECK(builtin.status == 0);
+  // V-HACD pieces 150 units from the origin: moved exactly near the origin,
+  // with a note; float validates them there
+  const Run pieces = audit({data + "vhacd_pieces.obj#convex_0", data + "vhacd_pieces.obj#1"});
+  CHECK(pieces.status == 0);
+  CHECK_THAT(pieces.err, Catch::Contains("the shapes are audited moved by -(150"));
+  CHECK_THAT(pieces.out, Catch::Contains("no unexplained disagreement"));
+  std::ostringstream note;
+  const fuzz::FuzzCase c =
+      audit_case(load_pair({data + "vhacd_pieces.obj#convex_0", data + "vhacd_pieces.obj#1"}, false), nullptr, note);
+  for (const auto& v : c.a.vertices) CHECK(std::abs(v[0]) < 1);
+  // standard input, with the format guessed from the content
+  const Run in = audit({"-", "cube", "--pose", "2.5", "0", "0"}, test::file_text(data + "cube.off"));
+  CHECK(in.status == 0);
+  CHECK(in.out == builtin.out);
+  // a .case as the pair or through --case: the case as it is
+  const std::string corpus = std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/00-triangle-on-box-face.case";
+  const Run as_pair = audit({corpus});
+  const Run as_option = audit({"--case", corpus});
+  CHECK(as_pair.status == 0);
+  CHECK(as_pair.out == as_option.out);
+  CHECK(as_pair.err.empty());
+  CHECK(audit({corpus, "--pose", "1", "0", "0"}).status == 2);
+  // an invalid case names the file
+  const Run inward = audit({std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/invalid-inward-box.case"});
+  CHECK(inward.status == 3);
+  CHECK_THAT(inward.err, Catch::StartsWith("sepax audit: error: ") && Catch::Contains("invalid-inward-box.case A: "));
 }
 
 TEST_CASE("audit: bad shape arguments name the file and exit 3", "[audit][errors]") {
@@ -93,7 +124,10 @@ TEST_CASE("audit: bad shape arguments name the file and exit 3", "[audit][errors
   const std::string big = temp_file("big.pts", "0 0 0\n1e39 0 0\n0 1 0\n");
   const Run overflow = audit({big, "cube"});
   CHECK(overflow.status == 3);
-  CHECK_THAT(overflow.err, Catch::Contains("big.pts: coordinate x of point 1 (1e+39) overflows float"));
+  CHECK_THAT(overflow.err, Catch::Contains("big.pts: coordinate x of point 1 (1e+39) is beyond the range of float"));
+  const Run overflow_json = audit({big, "cube", "--json"});
+  CHECK(overflow_json.status == 3);
+  CHECK_THAT(overflow_json.out, Catch::StartsWith("{\"error\":\"") && Catch::Contains("is beyond the range of float"));
   const std::string line = temp_file("line.pts", "0 0 0\n1 0 0\n2 0 0\n");
   const Run collinear = audit({"cube", line});
   CHECK(collinear.status == 3);

@@ -14,17 +14,9 @@ using namespace sepax::cli;
 
 namespace {
 
-int fuzz_main_args(std::vector<std::string> args) {
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  return fuzz_main(static_cast<int>(argv.size()), argv.data());
-}
+int fuzz_main_args(std::vector<std::string> args) { return test::verb_main(&fuzz_main, std::move(args)).status; }
 
-int audit_main_args(std::vector<std::string> args) {
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  return audit_main(static_cast<int>(argv.size()), argv.data());
-}
+int audit_main_args(std::vector<std::string> args) { return test::verb_main(&audit_main, std::move(args)).status; }
 
 test::CommandRun fuzz(const std::vector<std::string>& args) {
   std::ostringstream out, err;

@@ -27,18 +27,8 @@ using Run = test::CommandRun;
 const std::string kData = std::string(SEPAX_SOURCE_DIR) + "/tests/data/";
 const std::string kPieces = kData + "vhacd_pieces.obj";
 
-Run query(const std::vector<std::string>& args, const std::string& stdin_text = "") {
-  std::istringstream in(stdin_text);
-  std::ostringstream out, err;
-  const int s = run_query(args, in, out, err);
-  return {s, out.str(), err.str()};
-}
-
-Run info(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int s = run_info(args, out, err);
-  return {s, out.str(), err.str()};
-}
+using test::info;
+using test::query;
 
 }  // namespace
 

@@ -9,6 +9,7 @@
 #include <sepax/error.hpp>
 
 #include "io/obj_reader.hpp"
+#include "cli/malformed_input.hpp"
 
 using namespace sepax;
 using namespace sepax::cli;
@@ -57,17 +58,9 @@ TEST_CASE("obj: index forms, negative indices and ignored statements all give th
   CHECK(d.face_lines.back() == 24);
 }
 
-namespace {
-struct Bad {
-  std::string text;
-  std::size_t line;
-  const char* problem;
-};
-}  // namespace
-
 TEST_CASE("obj: malformed files are rejected naming FILE:LINE and the problem", "[obj]") {
   const std::string v = kVerts;
-  const Bad cases[] = {
+  const std::vector<test::Malformed> cases = {
       {"", 1, "empty file"},
       {"# nothing\n\n", 2, "empty file"},
       {"g only\nvt 0 0\n", 2, "no vertices"},
@@ -87,17 +80,7 @@ TEST_CASE("obj: malformed files are rejected naming FILE:LINE and the problem", 
       {v + "f 1 2 3.5\n", 9, "bad integer '3.5'"},
       {v + "f 1 2 99999999999999999999\n", 9, "too large"},
   };
-  for (const Bad& b : cases) {
-    INFO("input:\n" << b.text);
-    try {
-      (void)read(b.text, "bad.obj");
-      FAIL("accepted a malformed file");
-    } catch (const InvalidInput& e) {
-      CHECK(e.code() == ErrorCode::Parse);
-      CHECK_THAT(e.what(), Catch::StartsWith("bad.obj:" + std::to_string(b.line) + ": "));
-      CHECK_THAT(e.what(), Catch::Contains(b.problem));
-    }
-  }
+  test::check_malformed(cases, [](const std::string& text) { (void)read(text, "bad.obj"); }, "bad.obj");
 }
 
 TEST_CASE("obj: a missing file is an error naming it", "[obj]") {

@@ -8,6 +8,7 @@
 #include <sepax/error.hpp>
 
 #include "io/off_reader.hpp"
+#include "cli/malformed_input.hpp"
 
 using namespace sepax;
 using namespace sepax::cli;
@@ -77,18 +78,10 @@ TEST_CASE("off: accepted quirks give the same shape", "[off]") {
   }
 }
 
-namespace {
-struct Bad {
-  std::string text;
-  std::size_t line;
-  const char* problem;
-};
-}  // namespace
-
 TEST_CASE("off: malformed files are rejected naming FILE:LINE and the problem", "[off]") {
   const std::string v8 = "-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n";  // lines 3..10
   const std::string f6 = "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 0 4 7 3\n4 1 2 6 5\n";  // lines 11..16
-  const Bad cases[] = {
+  const std::vector<test::Malformed> cases = {
       {"", 1, "empty file"},
       {"# only a comment\n\n", 2, "empty file"},
       {"FOO\n", 1, "expected the OFF header"},
@@ -121,17 +114,7 @@ TEST_CASE("off: malformed files are rejected naming FILE:LINE and the problem", 
       {"OFF\n8 6 12\n" + v8 + f6 + "3 0 1 2\n", 17, "unexpected content after the last face"},
       {std::string("OFF\n8 6 12\n-1 -1\0 -1\n", 21), 3, "NUL byte"},
   };
-  for (const Bad& b : cases) {
-    INFO("input:\n" << b.text);
-    try {
-      (void)read(b.text, "dir/bad.off");
-      FAIL("accepted a malformed file");
-    } catch (const InvalidInput& e) {
-      CHECK(e.code() == ErrorCode::Parse);
-      CHECK_THAT(e.what(), Catch::StartsWith("dir/bad.off:" + std::to_string(b.line) + ": "));
-      CHECK_THAT(e.what(), Catch::Contains(b.problem));
-    }
-  }
+  test::check_malformed(cases, [](const std::string& text) { (void)read(text, "dir/bad.off"); }, "dir/bad.off");
 }
 
 TEST_CASE("off: a file that cannot be opened is an error naming it", "[off]") {

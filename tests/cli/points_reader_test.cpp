@@ -7,6 +7,7 @@
 #include <sepax/error.hpp>
 
 #include "io/points_reader.hpp"
+#include "cli/malformed_input.hpp"
 
 using namespace sepax;
 using namespace sepax::cli;
@@ -38,11 +39,7 @@ TEST_CASE("points: decimal input converts to the nearest double", "[points]") {
 }
 
 TEST_CASE("points: malformed files are rejected naming FILE:LINE and the problem", "[points]") {
-  const struct {
-    std::string text;
-    std::size_t line;
-    const char* problem;
-  } cases[] = {
+  const std::vector<test::Malformed> cases = {
       {"", 1, "empty file"},
       {"# nothing\n", 1, "empty file"},
       {"0 0 0\n1 0\n", 2, "point 1 has 2 values; expected 3"},
@@ -51,15 +48,5 @@ TEST_CASE("points: malformed files are rejected naming FILE:LINE and the problem
       {"0 inf 0\n", 1, "NaN and infinity are not allowed"},
       {"0 0 -1e309\n", 1, "out of the range"},
   };
-  for (const auto& b : cases) {
-    INFO("input:\n" << b.text);
-    try {
-      (void)read(b.text);
-      FAIL("accepted a malformed file");
-    } catch (const InvalidInput& e) {
-      CHECK(e.code() == ErrorCode::Parse);
-      CHECK_THAT(e.what(), Catch::StartsWith("p.pts:" + std::to_string(b.line) + ": "));
-      CHECK_THAT(e.what(), Catch::Contains(b.problem));
-    }
-  }
+  test::check_malformed(cases, [](const std::string& text) { (void)read(text); }, "p.pts");
 }

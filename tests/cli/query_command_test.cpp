@@ -24,18 +24,8 @@ namespace {
 using Run = test::CommandRun;
 using test::temp_file;
 
-Run query(const std::vector<std::string>& args, const std::string& stdin_text = "") {
-  std::istringstream in(stdin_text);
-  std::ostringstream out, err;
-  const int s = run_query(args, in, out, err);
-  return {s, out.str(), err.str()};
-}
-
-Run info(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int s = run_info(args, out, err);
-  return {s, out.str(), err.str()};
-}
+using test::info;
+using test::query;
 
 }  // namespace
 
