@@ -134,7 +134,7 @@ def test_svg_equals_the_program_picture(tmp_path):
                             ("box:1,1,1", "box:0.5,0.5,0.5", sepax.box(1, 1, 1), sepax.box(0.5, 0.5, 0.5),
                              [1.25, -0.5, 0.75])]:
         out = tmp_path / "p.svg"
-        subprocess.run([cli, "render", na, nb, "--pose", *map(str, t), "--svg", str(out)], check=True,
+        subprocess.run([cli, "render", na, nb, "--robust", "--pose", *map(str, t), "--svg", str(out)], check=True,
                        capture_output=True)
         assert sepax.render_svg(a, b, None, t, title=f"{na}  vs  {nb}") == out.read_text()
 
