@@ -1,8 +1,9 @@
 """Type stubs for the sepax extension module (python/src/module.cpp; docs/python.md)."""
 
 import enum
+import os
 from fractions import Fraction
-from typing import Literal, Optional, Sequence, Tuple, Union
+from typing import Any, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -210,9 +211,91 @@ def query(
     cache: Optional[Cache] = None,
     manifold: bool = True,
 ) -> Result: ...
+@overload
 def audit(
-    a: Shape, b: Shape, pose_a: Pose = None, pose_b: Pose = None, *, number: Literal["float", "double"] = "double"
+    a: Shape,
+    b: Shape,
+    pose_a: Pose = None,
+    pose_b: Pose = None,
+    *,
+    number: Literal["float", "double"] = "double",
+    report: None = None,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
+@overload
+def audit(
+    a: Shape,
+    b: Shape,
+    pose_a: Pose = None,
+    pose_b: Pose = None,
+    *,
+    number: Literal["float", "double"] = "double",
+    report: Literal["text"],
+) -> str: ...
+@overload
+def audit(
+    a: Shape,
+    b: Shape,
+    pose_a: Pose = None,
+    pose_b: Pose = None,
+    *,
+    number: Literal["float", "double"] = "double",
+    report: Literal["json"],
+) -> dict[str, Any]: ...
+def render_svg(
+    a: Shape,
+    b: Shape,
+    pose_a: Pose = None,
+    pose_b: Pose = None,
+    *,
+    number: Number = "double",
+    robust: bool = True,
+    algorithm: Algorithm = "traversal",
+    margin: float = 0.0,
+    title: Optional[str] = None,
+) -> str: ...
+
+# `sepax.fuzz` is a submodule of the extension (also importable as `sepax.fuzz`); typed here as a namespace.
+class fuzz:
+    """The differential fuzzer's reproducers (fuzz/, docs/fuzz.md)."""
+
+    class CaseReport:
+        """The check of one fuzzer case: every configuration and SAT against the exact reference."""
+
+        @property
+        def path(self) -> str: ...
+        @property
+        def family(self) -> str: ...
+        @property
+        def seed(self) -> int: ...
+        @property
+        def outcome(self) -> Literal["ok", "unexplained", "rejected"]: ...
+        @property
+        def valid(self) -> bool: ...
+        @property
+        def reject_reason(self) -> str: ...
+        @property
+        def unexplained_count(self) -> int: ...
+        @property
+        def comparisons(self) -> dict[str, dict[str, int]]: ...
+        @property
+        def by_config(self) -> dict[str, dict[str, int]]: ...
+        @property
+        def details(self) -> dict[str, dict[str, int]]: ...
+        @property
+        def maxima(self) -> dict[str, float]: ...
+        @property
+        def skipped(self) -> dict[str, int]: ...
+        @property
+        def findings(self) -> list[dict[str, str]]: ...
+        @property
+        def configs_run(self) -> list[str]: ...
+        @property
+        def a(self) -> Tuple[F64, list[list[int]]]: ...
+        @property
+        def b(self) -> Tuple[F64, list[list[int]]]: ...
+
+    @staticmethod
+    def replay(path: Union[str, "os.PathLike[str]"], *, bytes: bool = False) -> "fuzz.CaseReport": ...
 def query_batch(
     a: Shape,
     b: Shape,

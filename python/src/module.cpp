@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -26,6 +27,9 @@
 #include <sepax/version.hpp>
 
 #include "query_core.hpp"
+#ifdef SEPAX_PYTHON_TOOLS
+#include "tools.hpp"
+#endif
 
 namespace py = pybind11;
 
@@ -368,11 +372,7 @@ Result make_result(const QueryOut& o, const Request& q) {
   return r;
 }
 
-Result query(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b, const std::string& number,
-             bool robust, const std::string& algorithm, double margin, bool early_out, Cache* cache, bool manifold) {
-  const Request q = make_request(number, robust, algorithm, margin, early_out, manifold, cache);
-  const PoseD pa = poses_from(pose_a, "pose_a", false).front();
-  const PoseD pb = poses_from(pose_b, "pose_b", false).front();
+QueryOut run_request(const Request& q, Shape& a, Shape& b, const PoseD& pa, const PoseD& pb, Cache* cache) {
   QueryOut out;
   dispatch(q, a, b, cache, [&](const auto& sa, const auto& sb, auto* c) {
     using S = std::decay_t<decltype(sa)>;
@@ -382,7 +382,15 @@ Result query(Shape& a, Shape& b, const py::object& pose_a, const py::object& pos
       run_query(q.opt, sa, pa, sb, pb, c, out);
     }
   });
-  return make_result(out, q);
+  return out;
+}
+
+Result query(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b, const std::string& number,
+             bool robust, const std::string& algorithm, double margin, bool early_out, Cache* cache, bool manifold) {
+  const Request q = make_request(number, robust, algorithm, margin, early_out, manifold, cache);
+  const PoseD pa = poses_from(pose_a, "pose_a", false).front();
+  const PoseD pb = poses_from(pose_b, "pose_b", false).front();
+  return make_result(run_request(q, a, b, pa, pb, cache), q);
 }
 
 struct BatchResult {
@@ -508,16 +516,190 @@ py::dict audit_in(const PreparedShape<T>& a, const PoseD& pa, const PreparedShap
   return d;
 }
 
-py::dict audit(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b, const std::string& number) {
+py::object audit_report_object(Shape& a, Shape& b, const PoseD& pa, const PoseD& pb, bool use_double,
+                               const std::string& report);
+
+py::object audit(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b, const std::string& number,
+                 const py::object& report) {
   const PoseD pa = poses_from(pose_a, "pose_a", false).front();
   const PoseD pb = poses_from(pose_b, "pose_b", false).front();
-  switch (parse_number(number)) {
-    case NumberKind::Float: return audit_in(a.as_float(), pa, b.as_float(), pb);
-    case NumberKind::Double: return audit_in(*a.d, pa, *b.d, pb);
-    case NumberKind::Exact: break;
+  const NumberKind n = parse_number(number);
+  if (n == NumberKind::Exact) {
+    usage_error("audit compares float or double against exact: number must be \"float\" or \"double\"");
   }
-  usage_error("audit compares float or double against exact: number must be \"float\" or \"double\"");
+  if (!report.is_none()) {
+    if (!py::isinstance<py::str>(report)) usage_error("report must be None, \"text\" or \"json\"");
+    return audit_report_object(a, b, pa, pb, n == NumberKind::Double, report.cast<std::string>());
+  }
+  return n == NumberKind::Float ? audit_in(a.as_float(), pa, b.as_float(), pb) : audit_in(*a.d, pa, *b.d, pb);
 }
+
+#ifdef SEPAX_PYTHON_TOOLS
+// ---- tools: the program's renderer and the fuzzer (tools.hpp) -------------------
+
+/// audit(report="text"|"json"): the fuzzer's full audit (sepax audit).
+py::object audit_report_object(Shape& a, Shape& b, const PoseD& pa, const PoseD& pb, bool use_double,
+                               const std::string& report) {
+  if (report != "text" && report != "json") usage_error("report must be None, \"text\" or \"json\", not \"" + report + "\"");
+  AuditReport r;
+  {
+    py::gil_scoped_release release;
+    r = audit_report(a.poly(), pa, b.poly(), pb, use_double, report == "json");
+  }
+  if (r.rounded > 0) {
+    const std::string note = "sepax.audit: " + std::to_string(r.rounded) +
+                             " coordinates changed when rounded to float (the report audits the rounded shapes)";
+    if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();
+  }
+  if (report == "text") return py::str(r.text);
+  return py::module_::import("json").attr("loads")(py::str(r.text));
+}
+
+std::string render_svg(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b,
+                       const std::string& number, bool robust, const std::string& algorithm, double margin,
+                       const py::object& title) {
+  const Request q = make_request(number, robust, algorithm, margin, false, true, nullptr);
+  const PoseD pa = poses_from(pose_a, "pose_a", false).front();
+  const PoseD pb = poses_from(pose_b, "pose_b", false).front();
+  const QueryOut out = run_request(q, a, b, pa, pb, nullptr);
+  std::string t;
+  if (title.is_none()) {
+    t = "sepax.query: " + q.number_name + (q.number == NumberKind::Exact ? "" : q.opt.robust ? " robust" : " plain") +
+        ", " + q.algorithm_name + (margin > 0 ? ", margin " + format_number(margin) : "");
+  } else {
+    t = title.cast<std::string>();
+  }
+  py::gil_scoped_release release;
+  return render_query_svg(a.poly(), pa, b.poly(), pb, out, t);
+}
+
+/// sepax.fuzz.replay's answer.
+struct CaseReportPy {
+  std::string path, family, outcome, reject_reason;
+  std::uint64_t seed = 0;
+  bool valid = false;
+  std::int64_t unexplained_count = 0;
+  py::dict comparisons, by_config, skipped, details, maxima;
+  py::list findings, configs_run;
+  py::object a = py::none(), b = py::none();
+};
+
+py::dict counts_dict(const fuzz::Counts& c) {
+  py::dict d;
+  for (int k = 0; k < fuzz::kKlassCount; ++k) {
+    const auto klass = static_cast<fuzz::Klass>(k);
+    d[fuzz::klass_name(klass)] = c[klass];
+  }
+  return d;
+}
+
+py::dict counts_map(const std::map<std::string, fuzz::Counts>& m) {
+  py::dict d;
+  for (const auto& [key, c] : m) d[py::str(key)] = counts_dict(c);
+  return d;
+}
+
+py::tuple spec_tuple(const fuzz::ShapeSpec& s) { return py::make_tuple(vec_rows(s.vertices), s.faces); }
+
+CaseReportPy replay(const py::object& path_like, bool bytes) {
+  const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like)).cast<std::string>();
+  if (!py::module_::import("os").attr("path").attr("isfile")(path).cast<bool>()) {
+    const py::object err = py::module_::import("builtins").attr("FileNotFoundError");
+    const py::object errno_mod = py::module_::import("errno");
+    PyErr_SetObject(err.ptr(), py::make_tuple(errno_mod.attr("ENOENT"),
+                                              "sepax.fuzz.replay: no such file (a fuzzer reproducer, .case)", path)
+                                   .ptr());
+    throw py::error_already_set();
+  }
+  Replayed rp;
+  {
+    py::gil_scoped_release release;
+    rp = replay_case(path, bytes);
+  }
+  const fuzz::CaseReport& r = rp.r;
+  CaseReportPy o;
+  o.path = path;
+  o.family = rp.c.family;
+  o.seed = rp.c.seed;
+  o.valid = r.valid;
+  o.reject_reason = r.reject_reason;
+  o.unexplained_count = r.unexplained_count;
+  o.outcome = !r.valid ? "rejected" : r.unexplained_count ? "unexplained" : "ok";
+  o.comparisons = counts_map(r.by_comparison);
+  o.by_config = counts_map(r.by_config);
+  o.details = counts_map(r.details);
+  for (const auto& [k, n] : r.skipped) o.skipped[py::str(k)] = n;
+  for (const auto& [k, x] : r.maxima) o.maxima[py::str(k)] = x;
+  for (const auto& f : r.unexplained) {
+    py::dict d;
+    d["comparison"] = f.comparison;
+    d["config"] = f.config;
+    d["sat"] = f.sat;
+    d["detail"] = f.detail;
+    o.findings.append(d);
+  }
+  for (const auto& c : r.configs_run) o.configs_run.append(c);
+  o.a = spec_tuple(rp.c.a);
+  o.b = spec_tuple(rp.c.b);
+  return o;
+}
+
+void add_tools(py::module_& m) {
+  m.def("render_svg", &render_svg, py::arg("a"), py::arg("b"), py::arg("pose_a") = py::none(),
+        py::arg("pose_b") = py::none(), py::kw_only(), py::arg("number") = "double", py::arg("robust") = true,
+        py::arg("algorithm") = "traversal", py::arg("margin") = 0.0, py::arg("title") = py::none(),
+        R"(render_svg(a, b, pose_a=None, pose_b=None, *, number="double", robust=True,
+           algorithm="traversal", margin=0.0, title=None) -> str
+
+The SVG picture of sepax.query(a, b, pose_a, pose_b, ...) (the renderer of `sepax render`):
+left, both shapes in world coordinates (A blue, B red) with the manifold's contact points and
+normal; right, the Gauss maps of A and -B with the Minkowski edge-edge faces and the chosen
+axis.  The header line gives the verdict, separation, feature and contact count of the query.)");
+
+  py::module_ fz = m.def_submodule("fuzz", "The differential fuzzer's reproducers (fuzz/, docs/fuzz.md).");
+  // `import sepax.fuzz` and `from sepax.fuzz import replay` find it too
+  py::module_::import("sys").attr("modules")["sepax.fuzz"] = fz;
+  py::class_<CaseReportPy>(fz, "CaseReport",
+                           "The check of one fuzzer case (sepax/fuzz/check.hpp): every configuration "
+                           "(float/double, plain/robust, exact) and SAT against the exact reference, every "
+                           "disagreement classified.")
+      .def_readonly("path", &CaseReportPy::path)
+      .def_readonly("family", &CaseReportPy::family, "generator family of the case")
+      .def_readonly("seed", &CaseReportPy::seed, "generator seed of the case (informational)")
+      .def_readonly("outcome", &CaseReportPy::outcome,
+                    "'ok' (no unexplained disagreement), 'unexplained' or 'rejected' (invalid shapes)")
+      .def_readonly("valid", &CaseReportPy::valid, "False: the shapes were rejected")
+      .def_readonly("reject_reason", &CaseReportPy::reject_reason)
+      .def_readonly("unexplained_count", &CaseReportPy::unexplained_count)
+      .def_readonly("comparisons", &CaseReportPy::comparisons,
+                    "{comparison: {class: count}}; classes agree, exact_zero, explained, tie, unexplained, "
+                    "nonconvex")
+      .def_readonly("by_config", &CaseReportPy::by_config, "{'comparison/config': {class: count}}")
+      .def_readonly("details", &CaseReportPy::details, "sub-comparisons, e.g. 'manifold.points'")
+      .def_readonly("maxima", &CaseReportPy::maxima, "largest error/bound ratios, e.g. 'manifold.depth'")
+      .def_readonly("skipped", &CaseReportPy::skipped, "comparisons not made (size budgets): key -> count")
+      .def_readonly("findings", &CaseReportPy::findings,
+                    "the first unexplained findings: dicts comparison, config, sat, detail")
+      .def_readonly("configs_run", &CaseReportPy::configs_run, "'config/sat' runs made")
+      .def_readonly("a", &CaseReportPy::a, "shape A of the case: (vertices (N, 3), faces)")
+      .def_readonly("b", &CaseReportPy::b, "shape B of the case: (vertices (N, 3), faces)")
+      .def("__repr__", [](const CaseReportPy& r) {
+        return "<sepax.fuzz.CaseReport: " + r.path + ": " + r.outcome + ">";
+      });
+  fz.def("replay", &replay, py::arg("path"), py::kw_only(), py::arg("bytes") = false,
+         R"(replay(path, *, bytes=False) -> CaseReport
+
+Check one fuzzer case as `sepax fuzz --replay path` does: read the .case file (bytes=True: a
+libFuzzer input) and run it through every configuration and SAT against the exact reference.
+Raises FileNotFoundError naming the path when there is no such file, sepax.InvalidInput (code
+Parse, naming the file and line) when it cannot be parsed.  A case whose shapes are invalid is
+not an error: its outcome is 'rejected', with reject_reason.  The GIL is released while it runs.)");
+}
+#else
+py::object audit_report_object(Shape&, Shape&, const PoseD&, const PoseD&, bool, const std::string&) {
+  usage_error("audit reports need the fuzzer library: this module was built without it (SEPAX_BUILD_CLI=OFF)");
+}
+#endif
 
 // ---- repr ---------------------------------------------------------------------
 
@@ -837,8 +1019,8 @@ The GIL is released while the query runs.  Raises sepax.InvalidInput (a ValueErr
 for a non-finite or non-rigid pose or a bad margin, ValueError for malformed arguments.)");
 
   m.def("audit", &audit, py::arg("a"), py::arg("b"), py::arg("pose_a") = py::none(), py::arg("pose_b") = py::none(),
-        py::kw_only(), py::arg("number") = "double",
-        R"(audit(a, b, pose_a=None, pose_b=None, *, number="double") -> dict
+        py::kw_only(), py::arg("number") = "double", py::arg("report") = py::none(),
+        R"(audit(a, b, pose_a=None, pose_b=None, *, number="double", report=None) -> dict | str
 
 The per-edge-pair sign table of the Minkowski-face test on the input a posed query decides on
 (A and B posed into A's frame in `number`, "float" or "double"), decided three ways: the plain
@@ -847,7 +1029,17 @@ on the exact images of the same two polyhedra.  Keys: "edges" (n, 2) int32 (edge
 B; row ea * B.edge_count + eb); "plain", "robust", "exact" (n, 4) int8 signs (cba, dba, adc,
 bdc: sepax/sat_kernel.hpp ArcSigns); "minkowski_*" (n,) bool (the pair is a face of A - B);
 "parallel_*" (n,) bool.  The robust columns equal the exact ones by contract; the plain ones
-may not (near-degenerate inputs).  Only the sign table of the CLI's `sepax audit`.)");
+may not (near-degenerate inputs).
+
+report="text" or "json": instead the full audit of `sepax audit` (the fuzzer's: every triple
+product with its exact sign, every candidate axis with its separation, error bound and exact
+value, the features every configuration and SAT chose, the manifold float against exact, the
+differential check), as text or as the parsed JSON object, of A and B posed into A's frame with
+every coordinate rounded to float (a UserWarning says how many changed); number="double" audits
+double arithmetic on that input.)");
+#ifdef SEPAX_PYTHON_TOOLS
+  add_tools(m);
+#endif
 
   m.def("query_batch", &query_batch, py::arg("a"), py::arg("b"), py::arg("poses_a"), py::arg("poses_b"),
         py::kw_only(), py::arg("number") = "double", py::arg("robust") = true, py::arg("algorithm") = "traversal",

@@ -401,6 +401,14 @@ def test_stubs_cover_the_module():
         declared = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
         members = {n for n in dir(getattr(sepax, cls)) if not n.startswith("_")}
         assert members <= declared, (cls, members - declared)
+    if hasattr(sepax, "fuzz"):  # the submodule, typed as a namespace class
+        node = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == "fuzz")
+        declared = {n.name for n in node.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+        assert {n for n in dir(sepax.fuzz) if not n.startswith("_")} <= declared
+        report = next(n for n in node.body if isinstance(n, ast.ClassDef) and n.name == "CaseReport")
+        declared = {n.name for n in report.body if isinstance(n, ast.FunctionDef)}
+        members = {n for n in dir(sepax.fuzz.CaseReport) if not n.startswith("_")}
+        assert members <= declared, members - declared
 
 
 # ---- audit: the sign table ---------------------------------------------------------------------

@@ -1,7 +1,7 @@
 """sepax from Python: a box dropped onto a slab, queried step by step and then as one batch.
 
 Run with the built module on the path:
-    PYTHONPATH=build/python/module python3 python/examples/contacts.py
+    PYTHONPATH=build/python/module python3 examples/python/contacts.py
 """
 
 import time
