@@ -95,6 +95,7 @@
 #include "convex_polyhedron.hpp"
 #include "error.hpp"
 #include "number_traits.hpp"
+#include "hull/orientation_filter.hpp"
 #include "tolerances.hpp"
 #include "vec3.hpp"
 
@@ -335,6 +336,7 @@ class Builder {
     const std::vector<PolygonFace>& faces = polygons.faces;
     DeepInside deep(h, faces, 4 * slack + 2 * Tolerances<T>::planarity * extent_, pts_.size());
     std::vector<int> near;  // large solids: the faces measured for a point near the surface
+    std::vector<double> heights;  // (polygon_distance's scratch)
     std::vector<int> seen(faces.size(), -1);
     for (std::size_t i = 0; i < pts_.size(); ++i) {
       if (out_vertex_[i]) continue;  // (the pre-check held it within conv_tol = 2 eps)
@@ -367,7 +369,7 @@ class Builder {
       }
       hp -= slack;
       height = std::max(height, hp / e);
-      hp = std::max(hp, polygon_distance(faces, h.is_flat(), vec_to_double(Q(p)), subset) - slack);
+      hp = std::max(hp, polygon_distance(faces, h.is_flat(), vec_to_double(Q(p)), heights, subset) - slack);
       worst = std::max(worst, hp / e);
       if (hp > repair_tol * e) outside.push_back(p);
     }
@@ -722,15 +724,25 @@ class Builder {
   // face (inside).  (Not "below every face plane": the plane of a tiny face
   // is poorly determined far from it, and a point deep inside can be above
   // it.)  A flat polygon is always measured to its polygon.
-  // (Only the faces listed in subset, if given.)
-  static double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
-                                 const Vec3<double>& x, const std::vector<int>* subset = nullptr) {
+  // (Only the faces listed in subset, if given.)  A solid's point below
+  // every plane is below its nearest face too: 0 without measuring polygons
+  // (heights holds the heights, computed once, so both passes see the same).
+  static double polygon_distance(const std::vector<PolygonFace>& faces, bool flat, const Vec3<double>& x,
+                                 std::vector<double>& heights, const std::vector<int>* subset = nullptr) {
     double best = 1e300;
     bool above = false;  // above a face at the nearest distance (within rounding)
     const std::size_t count = subset != nullptr ? subset->size() : faces.size();
+    heights.resize(count);
+    bool any_above = false;
     for (std::size_t k = 0; k < count; ++k) {
       const auto& fc = faces[subset != nullptr ? sz((*subset)[k]) : k];
-      const double h = dot(fc.n, x) - fc.off;
+      heights[k] = dot(fc.n, x) - fc.off;
+      any_above = any_above || heights[k] > 0;
+    }
+    if (!flat && !any_above) return 0.0;
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto& fc = faces[subset != nullptr ? sz((*subset)[k]) : k];
+      const double h = heights[k];
       if (std::abs(h) > best * (1 + 1e-9)) continue;  // (the polygon is no nearer than its plane)
       bool inside = true;
       double d = 1e300;
@@ -851,12 +863,27 @@ class Builder {
         if (!dup) add_point(i, p);
       }
     }
+    if constexpr (exact) make_shadow();
     if (pts_.size() < 3) {
       throw InvalidInput(ErrorCode::TooFewPoints,
                          "convex_hull: needs at least 3 distinct points, got " +
                              std::to_string(pts_.size()) + " after merging duplicates" +
                              (exact ? "" : " (points closer than the weld tolerance)"));
     }
+  }
+
+  // Exact T: the welded points as doubles, used when every coordinate is
+  // exactly a double (checked exactly): the quickhull predicates are then
+  // decided by orientation_filter, and in T only when it cannot decide.
+  void make_shadow() {
+    shadow_ = true;
+    qd_.resize(q_.size());
+    for (std::size_t i = 0; i < q_.size() && shadow_; ++i)
+      for (int c = 0; c < 3 && shadow_; ++c) {
+        qd_[i][c] = to_double(q_[i][c]);
+        shadow_ = std::isfinite(qd_[i][c]) && from_double<T>(qd_[i][c]) == q_[i][c];
+      }
+    if (!shadow_) qd_.clear();
   }
 
   void add_point(int input_index, const Vec3<T>& loc) {
@@ -869,7 +896,8 @@ class Builder {
   struct Tri {
     std::array<int, 3> v{};   // welded point indices, counter-clockwise from outside
     std::array<int, 3> nb{};  // triangle across edge v[i] -> v[i+1]
-    Plane<T> pl;
+    Plane<T> pl;  // (exact T with double points: computed by plane() when needed)
+    bool has_plane = true;
     bool alive = true;
     std::vector<int> conflict;
     // float T: points above this face by at most eps (on it within the
@@ -881,6 +909,42 @@ class Builder {
   const Vec3<T>& Q(int i) const { return q_[sz(i)]; }
 
   T height(const Plane<T>& pl, int p) const { return T(dot(pl.normal, Q(p)) - pl.offset); }
+
+  // Triangle f's plane (exact T with double points: computed on first use).
+  const Plane<T>& plane(int f) {
+    Tri& t = tris_[sz(f)];
+    if (!t.has_plane) {
+      t.pl = plane_through(Q(t.v[0]), Q(t.v[1]), Q(t.v[2]));
+      t.has_plane = true;
+    }
+    return t.pl;
+  }
+
+  // Exact T: the sign of p's height above triangle f's plane (the sign of
+  // det[v1 - v0, v2 - v0, p - v0]), and in approx an estimate of the
+  // determinant for choosing among points (not for deciding).
+  int side(int f, int p, double& approx) {
+    const Tri& t = tris_[sz(f)];
+    if (shadow_) {
+      const hull::FilteredSign r =
+          hull::orientation_filter(qd_[sz(t.v[0])], qd_[sz(t.v[1])], qd_[sz(t.v[2])], qd_[sz(p)]);
+      approx = r.det;
+      if (r.certain) return r.det > 0 ? 1 : -1;
+    }
+    const T h = height(plane(f), p);
+    if (!shadow_) approx = to_double(h);
+    return sign_of(h);
+  }
+
+  // Whether triangle f has zero area (exactly for exact T).
+  bool zero_area(int f) {
+    if constexpr (exact) {
+      const Tri& t = tris_[sz(f)];
+      if (shadow_ && hull::certainly_nonzero_cross(qd_[sz(t.v[0])], qd_[sz(t.v[1])], qd_[sz(t.v[2])]))
+        return false;
+    }
+    return is_zero(plane(f).normal);
+  }
 
   // Length of a vector as T for float types (not used for exact T).
   static T length(const Vec3<T>& v) {
@@ -1046,7 +1110,8 @@ class Builder {
     t.v = {p0, p1, p2};
     t.nb = {-1, -1, -1};
     if constexpr (exact) {
-      t.pl = plane_through(Q(p0), Q(p1), Q(p2));
+      if (!shadow_) t.pl = plane_through(Q(p0), Q(p1), Q(p2));
+      t.has_plane = !shadow_;
     } else {
       // apex at the largest angle (opposite the longest edge): the cross
       // product of the two edges from there loses the least accuracy
@@ -1078,6 +1143,14 @@ class Builder {
     [[maybe_unused]] T on_height(0);
     for (std::size_t f = sz(first); f < tris_.size(); ++f) {
       if (!tris_[f].alive) continue;
+      if constexpr (exact) {
+        double approx = 0;
+        if (side(static_cast<int>(f), p, approx) > 0) {
+          tris_[f].conflict.push_back(p);
+          return;
+        }
+        continue;
+      }
       const T h = height(tris_[f].pl, p);
       if (h > threshold(p)) {
         tris_[f].conflict.push_back(p);
@@ -1215,12 +1288,26 @@ class Builder {
       // eye: the conflict point farthest above this face
       auto& cf = tris_[fi].conflict;
       std::size_t best = 0;
-      T bh = height(tris_[fi].pl, cf[0]);
-      for (std::size_t i = 1; i < cf.size(); ++i) {
-        const T h = height(tris_[fi].pl, cf[i]);
-        if (h > bh) {
-          bh = h;
-          best = i;
+      if constexpr (exact) {
+        // (any conflict point is a correct eye: the farthest by the
+        // determinant's estimate)
+        double bh = 0;
+        for (std::size_t i = 0; i < cf.size(); ++i) {
+          double h = 0;
+          side(static_cast<int>(fi), cf[i], h);
+          if (i == 0 || h > bh) {
+            bh = h;
+            best = i;
+          }
+        }
+      } else {
+        T bh = height(tris_[fi].pl, cf[0]);
+        for (std::size_t i = 1; i < cf.size(); ++i) {
+          const T h = height(tris_[fi].pl, cf[i]);
+          if (h > bh) {
+            bh = h;
+            best = i;
+          }
         }
       }
       const int eye = cf[best];
@@ -1241,8 +1328,14 @@ class Builder {
           for (int nbf : tris_[sz(f)].nb) {
             if (mark[sz(nbf)] != 0) continue;
             touched.push_back(nbf);
-            const Tri& nt = tris_[sz(nbf)];
-            const bool vis = !is_zero(nt.pl.normal) && height(nt.pl, eye) > T(0);
+            bool vis;
+            if constexpr (exact) {
+              double approx = 0;
+              vis = side(nbf, eye, approx) > 0;  // (a zero-area triangle's side is 0)
+            } else {
+              const Tri& nt = tris_[sz(nbf)];
+              vis = !is_zero(nt.pl.normal) && height(nt.pl, eye) > T(0);
+            }
             mark[sz(nbf)] = vis ? 1 : 2;
             if (vis) stack.push_back(nbf);
           }
@@ -1259,7 +1352,7 @@ class Builder {
         // removes, are then tested against every live face.
         for (int f : touched) {
           if (mark[sz(f)] != 2) continue;
-          const bool flat_tri = is_zero(tris_[sz(f)].pl.normal);
+          const bool flat_tri = zero_area(f);
           if (!flat_tri && (exact || height(tris_[sz(f)].pl, eye) < -eps_)) continue;
           int nvis = 0;
           for (int nbf : tris_[sz(f)].nb) nvis += mark[sz(nbf)] == 1;
@@ -1401,6 +1494,26 @@ class Builder {
   }
 
   // Should groups ga and gb (adjacent, non-degenerate) be one face?
+  // Exact T with double points: whether groups x and y (roots) are certainly
+  // not coplanar, because a vertex of y's root triangle is certainly off the
+  // plane of x's (a group's plane is its root triangle's when that has
+  // area; when it has none, the filter never decides).
+  bool certainly_apart(int x, int y) const {
+    if constexpr (exact) {
+      if (!shadow_) return false;
+      const Tri& tx = tris_[sz(x)];
+      for (int v : tris_[sz(y)].v) {
+        const hull::FilteredSign r =
+            hull::orientation_filter(qd_[sz(tx.v[0])], qd_[sz(tx.v[1])], qd_[sz(tx.v[2])], qd_[sz(v)]);
+        if (r.certain) return true;
+      }
+    } else {
+      (void)x;
+      (void)y;
+    }
+    return false;
+  }
+
   bool coplanar(const Group& ga, const Group& gb) const {
     if constexpr (exact) {
       return is_zero(cross(ga.pl.normal, gb.pl.normal)) && dot(ga.pl.normal, gb.pl.normal) > T(0);
@@ -1462,8 +1575,8 @@ class Builder {
       Group& g = groups_[sz(f)];
       g.verts = {t.v[0], t.v[1], t.v[2]};
       std::sort(g.verts.begin(), g.verts.end());
-      g.pl = t.pl;
-      g.degenerate = is_zero(t.pl.normal);
+      g.pl = plane(f);
+      g.degenerate = is_zero(g.pl.normal);
       if (nomerge_[sz(f)] != 0) g.splits = {nomerge_[sz(f)]};
       if constexpr (!exact) g.area = T(2) * number_traits<T>::sqrt(tri_area2(t)) * t.pl.normal;
     }
@@ -1481,7 +1594,8 @@ class Builder {
             const int x = find(f), y = find(tris_[sz(f)].nb[sz(i)]);
             if (x == y || groups_[sz(x)].degenerate || groups_[sz(y)].degenerate) continue;
             if (split_apart(groups_[sz(x)], groups_[sz(y)])) continue;
-            if (coplanar(groups_[sz(x)], groups_[sz(y)]) && !strands_vertex(x, y)) {
+            if (!certainly_apart(x, y) && coplanar(groups_[sz(x)], groups_[sz(y)]) &&
+                !strands_vertex(x, y)) {
               unite(x, y);
               changed = true;
             }
@@ -1652,6 +1766,11 @@ class Builder {
     // the corner).  Such rejections wait for the next round; the first
     // failing corner of a round is always rejected, so rounds still progress.
     std::vector<char> rejected(q_.size(), 0), witness(q_.size(), 0);
+    std::vector<int> group_size;  // exact T: triangles per group root
+    if constexpr (exact) {
+      group_size.assign(tris_.size(), 0);
+      for (int f : live) ++group_size[sz(find(f))];
+    }
     [[maybe_unused]] int pinned_fallback = -1;
     for (int r : reject) rejected[sz(r)] = 1;
     for (std::size_t li = 0; li < loops.size(); ++li) {
@@ -1665,6 +1784,11 @@ class Builder {
         }
         if (reject.empty()) throw std::logic_error("convex_hull: empty face (a bug)");
         continue;
+      }
+      // Exact T: a face that is one triangle (with area: the zero-area ones
+      // have joined others) turns left at every corner, by |normal|^2.
+      if constexpr (exact) {
+        if (group_size[sz(loop_group[li])] == 1) continue;
       }
       for (std::size_t i = 0; i < n; ++i) {
         const int pa = l[(i + n - 1) % n], pb = l[i], pc = l[(i + 1) % n];
@@ -2011,10 +2135,14 @@ class Builder {
   void prevalidate(std::vector<std::vector<int>>& loops, std::vector<int>& reject,
                    bool flat = false, std::vector<std::pair<int, int>>* merges = nullptr,
                    const std::vector<int>* loop_group = nullptr, std::vector<int>* split = nullptr) {
-    std::vector<int> used;
-    for (const auto& l : loops) used.insert(used.end(), l.begin(), l.end());
-    std::sort(used.begin(), used.end());
-    used.erase(std::unique(used.begin(), used.end()), used.end());
+    std::vector<int> used;  // the loops' vertices, ascending
+    {
+      std::vector<char> on_loop(q_.size(), 0);
+      for (const auto& l : loops)
+        for (int v : l) on_loop[sz(v)] = 1;
+      for (std::size_t v = 0; v < on_loop.size(); ++v)
+        if (on_loop[v]) used.push_back(static_cast<int>(v));
+    }
     Vec3<T> lo = X(used[0]), hi = X(used[0]);
     double max_abs = 0;
     for (int v : used)
@@ -2181,6 +2309,8 @@ class Builder {
   std::vector<std::vector<int>> star_;  // float: vertex -> live triangles around it
   std::vector<int> next_vertex_;  // scratch, per welded point (-1: none)
   std::vector<int> gone_;                          // scratch, per eye
+  std::vector<Vec3<double>> qd_;  // exact T: q_ as doubles, when shadow_
+  bool shadow_ = false;           // exact T: every welded coordinate is exactly a double
   std::vector<std::array<int, 3>> horizon_;        // scratch, per eye
   std::vector<int> degree_;       // scratch, per welded point
   std::vector<int> nomerge_;  // triangle -> id of the face it was split from (0: none)
