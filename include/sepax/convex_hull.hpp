@@ -95,6 +95,7 @@
 #include "convex_polyhedron.hpp"
 #include "error.hpp"
 #include "number_traits.hpp"
+#include "hull/orientation_filter.hpp"
 #include "tolerances.hpp"
 #include "vec3.hpp"
 
@@ -280,7 +281,8 @@ class Builder {
     out_vertex_.assign(pts_.size(), 0);  // (measure every point)
     outside_points(h, lost, lost_height);
     if (lost.empty()) return std::nullopt;
-    const std::vector<PolygonFace> faces = polygon_faces(h);
+    const PolygonFaces polygons = polygon_faces(h);
+    const std::vector<PolygonFace>& faces = polygons.faces;
     double lo = 0, hi = 0, spread = 1e300;
     for (const auto& fc : faces) {
       if (squared_norm(fc.n) == 0) continue;
@@ -330,9 +332,11 @@ class Builder {
     const double e = to_double(eps_);
     const double slack = 8.0 * number_traits<T>::unit_roundoff * max_abs;
     double worst = 0;
-    const std::vector<PolygonFace> faces = polygon_faces(h);
+    const PolygonFaces polygons = polygon_faces(h);
+    const std::vector<PolygonFace>& faces = polygons.faces;
     DeepInside deep(h, faces, 4 * slack + 2 * Tolerances<T>::planarity * extent_, pts_.size());
     std::vector<int> near;  // large solids: the faces measured for a point near the surface
+    std::vector<double> heights;  // (polygon_distance's scratch)
     std::vector<int> seen(faces.size(), -1);
     for (std::size_t i = 0; i < pts_.size(); ++i) {
       if (out_vertex_[i]) continue;  // (the pre-check held it within conv_tol = 2 eps)
@@ -365,7 +369,7 @@ class Builder {
       }
       hp -= slack;
       height = std::max(height, hp / e);
-      hp = std::max(hp, polygon_distance(faces, h.is_flat(), vec_to_double(Q(p)), subset) - slack);
+      hp = std::max(hp, polygon_distance(faces, h.is_flat(), vec_to_double(Q(p)), heights, subset) - slack);
       worst = std::max(worst, hp / e);
       if (hp > repair_tol * e) outside.push_back(p);
     }
@@ -375,10 +379,19 @@ class Builder {
   // Float T: the faces of an output polyhedron as polygons in double, on the
   // local coordinates, with Newell normals (well conditioned for thin faces).
   struct PolygonFace {
-    std::vector<Vec3<double>> v;
+    std::span<const Vec3<double>> v;  // (into PolygonFaces::points)
     Vec3<double> n;
     double off = 0;
     double area = 0;
+  };
+  // Every face of one polyhedron, their corners in one buffer (moved, never
+  // copied: the faces point into it).
+  struct PolygonFaces {
+    std::vector<Vec3<double>> points;
+    std::vector<PolygonFace> faces;
+    PolygonFaces() = default;
+    PolygonFaces(const PolygonFaces&) = delete;
+    PolygonFaces(PolygonFaces&&) = default;
   };
   // Float T, a large solid: whether a point is certainly below every face
   // plane of the output, found without a pass over every face.  Seen from an
@@ -484,7 +497,8 @@ class Builder {
   // is its unit normal, [lo, hi] the points' range of heights along it.
   bool thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& nrm, double& lo, double& hi) const {
     const double e = to_double(eps_);
-    const std::vector<PolygonFace> faces = polygon_faces(h);
+    const PolygonFaces polygons = polygon_faces(h);
+    const std::vector<PolygonFace>& faces = polygons.faces;
     auto width = [&](const Vec3<double>& n, double& l, double& u) {
       l = 1e300;
       u = -1e300;
@@ -669,12 +683,23 @@ class Builder {
     return std::nullopt;
   }
 
-  std::vector<PolygonFace> polygon_faces(const ConvexPolyhedron<T>& h) const {
+  PolygonFaces polygon_faces(const ConvexPolyhedron<T>& h) const {
     const Vec3<double> c = vec_to_double(centre_);
-    std::vector<PolygonFace> faces;
+    PolygonFaces out;
+    out.points.reserve(h.half_edges().size());
+    std::vector<std::size_t> start;
+    start.reserve(sz(h.face_count()) + 1);
+    for (int f = 0; f < h.face_count(); ++f) {
+      start.push_back(out.points.size());
+      int e = h.face(f).edge;
+      for (int k = 0; k < h.face(f).count; ++k, e = h.half_edge(e).next)
+        out.points.push_back(Vec3<double>(vec_to_double(h.vertex(h.half_edge(e).origin)) - c));
+    }
+    start.push_back(out.points.size());
+    out.faces.reserve(sz(h.face_count()));
     for (int f = 0; f < h.face_count(); ++f) {
       PolygonFace fc;
-      for (int v : h.face_vertices(f)) fc.v.push_back(Vec3<double>(vec_to_double(h.vertex(v)) - c));
+      fc.v = std::span<const Vec3<double>>(out.points.data() + start[sz(f)], start[sz(f) + 1] - start[sz(f)]);
       Vec3<double> n(0, 0, 0), m(0, 0, 0);
       for (std::size_t i = 0; i < fc.v.size(); ++i) {
         const Vec3<double>& a = fc.v[i];
@@ -688,9 +713,9 @@ class Builder {
       fc.n = n;
       fc.area = len / 2;
       fc.off = dot(n, Vec3<double>(m / static_cast<double>(fc.v.size())));
-      faces.push_back(std::move(fc));
+      out.faces.push_back(fc);
     }
-    return faces;
+    return out;
   }
 
   // Euclidean distance of x from the polyhedron given by faces: the distance
@@ -699,15 +724,25 @@ class Builder {
   // face (inside).  (Not "below every face plane": the plane of a tiny face
   // is poorly determined far from it, and a point deep inside can be above
   // it.)  A flat polygon is always measured to its polygon.
-  // (Only the faces listed in subset, if given.)
-  static double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
-                                 const Vec3<double>& x, const std::vector<int>* subset = nullptr) {
+  // (Only the faces listed in subset, if given.)  A solid's point below
+  // every plane is below its nearest face too: 0 without measuring polygons
+  // (heights holds the heights, computed once, so both passes see the same).
+  static double polygon_distance(const std::vector<PolygonFace>& faces, bool flat, const Vec3<double>& x,
+                                 std::vector<double>& heights, const std::vector<int>* subset = nullptr) {
     double best = 1e300;
     bool above = false;  // above a face at the nearest distance (within rounding)
     const std::size_t count = subset != nullptr ? subset->size() : faces.size();
+    heights.resize(count);
+    bool any_above = false;
     for (std::size_t k = 0; k < count; ++k) {
       const auto& fc = faces[subset != nullptr ? sz((*subset)[k]) : k];
-      const double h = dot(fc.n, x) - fc.off;
+      heights[k] = dot(fc.n, x) - fc.off;
+      any_above = any_above || heights[k] > 0;
+    }
+    if (!flat && !any_above) return 0.0;
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto& fc = faces[subset != nullptr ? sz((*subset)[k]) : k];
+      const double h = heights[k];
       if (std::abs(h) > best * (1 + 1e-9)) continue;  // (the polygon is no nearer than its plane)
       bool inside = true;
       double d = 1e300;
@@ -828,12 +863,27 @@ class Builder {
         if (!dup) add_point(i, p);
       }
     }
+    if constexpr (exact) make_shadow();
     if (pts_.size() < 3) {
       throw InvalidInput(ErrorCode::TooFewPoints,
                          "convex_hull: needs at least 3 distinct points, got " +
                              std::to_string(pts_.size()) + " after merging duplicates" +
                              (exact ? "" : " (points closer than the weld tolerance)"));
     }
+  }
+
+  // Exact T: the welded points as doubles, used when every coordinate is
+  // exactly a double (checked exactly): the quickhull predicates are then
+  // decided by orientation_filter, and in T only when it cannot decide.
+  void make_shadow() {
+    shadow_ = true;
+    qd_.resize(q_.size());
+    for (std::size_t i = 0; i < q_.size() && shadow_; ++i)
+      for (int c = 0; c < 3 && shadow_; ++c) {
+        qd_[i][c] = to_double(q_[i][c]);
+        shadow_ = std::isfinite(qd_[i][c]) && from_double<T>(qd_[i][c]) == q_[i][c];
+      }
+    if (!shadow_) qd_.clear();
   }
 
   void add_point(int input_index, const Vec3<T>& loc) {
@@ -846,7 +896,8 @@ class Builder {
   struct Tri {
     std::array<int, 3> v{};   // welded point indices, counter-clockwise from outside
     std::array<int, 3> nb{};  // triangle across edge v[i] -> v[i+1]
-    Plane<T> pl;
+    Plane<T> pl;  // (exact T with double points: computed by plane() when needed)
+    bool has_plane = true;
     bool alive = true;
     std::vector<int> conflict;
     // float T: points above this face by at most eps (on it within the
@@ -858,6 +909,42 @@ class Builder {
   const Vec3<T>& Q(int i) const { return q_[sz(i)]; }
 
   T height(const Plane<T>& pl, int p) const { return T(dot(pl.normal, Q(p)) - pl.offset); }
+
+  // Triangle f's plane (exact T with double points: computed on first use).
+  const Plane<T>& plane(int f) {
+    Tri& t = tris_[sz(f)];
+    if (!t.has_plane) {
+      t.pl = plane_through(Q(t.v[0]), Q(t.v[1]), Q(t.v[2]));
+      t.has_plane = true;
+    }
+    return t.pl;
+  }
+
+  // Exact T: the sign of p's height above triangle f's plane (the sign of
+  // det[v1 - v0, v2 - v0, p - v0]), and in approx an estimate of the
+  // determinant for choosing among points (not for deciding).
+  int side(int f, int p, double& approx) {
+    const Tri& t = tris_[sz(f)];
+    if (shadow_) {
+      const hull::FilteredSign r =
+          hull::orientation_filter(qd_[sz(t.v[0])], qd_[sz(t.v[1])], qd_[sz(t.v[2])], qd_[sz(p)]);
+      approx = r.det;
+      if (r.certain) return r.det > 0 ? 1 : -1;
+    }
+    const T h = height(plane(f), p);
+    if (!shadow_) approx = to_double(h);
+    return sign_of(h);
+  }
+
+  // Whether triangle f has zero area (exactly for exact T).
+  bool zero_area(int f) {
+    if constexpr (exact) {
+      const Tri& t = tris_[sz(f)];
+      if (shadow_ && hull::certainly_nonzero_cross(qd_[sz(t.v[0])], qd_[sz(t.v[1])], qd_[sz(t.v[2])]))
+        return false;
+    }
+    return is_zero(plane(f).normal);
+  }
 
   // Length of a vector as T for float types (not used for exact T).
   static T length(const Vec3<T>& v) {
@@ -1023,7 +1110,8 @@ class Builder {
     t.v = {p0, p1, p2};
     t.nb = {-1, -1, -1};
     if constexpr (exact) {
-      t.pl = plane_through(Q(p0), Q(p1), Q(p2));
+      if (!shadow_) t.pl = plane_through(Q(p0), Q(p1), Q(p2));
+      t.has_plane = !shadow_;
     } else {
       // apex at the largest angle (opposite the longest edge): the cross
       // product of the two edges from there loses the least accuracy
@@ -1055,6 +1143,14 @@ class Builder {
     [[maybe_unused]] T on_height(0);
     for (std::size_t f = sz(first); f < tris_.size(); ++f) {
       if (!tris_[f].alive) continue;
+      if constexpr (exact) {
+        double approx = 0;
+        if (side(static_cast<int>(f), p, approx) > 0) {
+          tris_[f].conflict.push_back(p);
+          return;
+        }
+        continue;
+      }
       const T h = height(tris_[f].pl, p);
       if (h > threshold(p)) {
         tris_[f].conflict.push_back(p);
@@ -1192,12 +1288,26 @@ class Builder {
       // eye: the conflict point farthest above this face
       auto& cf = tris_[fi].conflict;
       std::size_t best = 0;
-      T bh = height(tris_[fi].pl, cf[0]);
-      for (std::size_t i = 1; i < cf.size(); ++i) {
-        const T h = height(tris_[fi].pl, cf[i]);
-        if (h > bh) {
-          bh = h;
-          best = i;
+      if constexpr (exact) {
+        // (any conflict point is a correct eye: the farthest by the
+        // determinant's estimate)
+        double bh = 0;
+        for (std::size_t i = 0; i < cf.size(); ++i) {
+          double h = 0;
+          side(static_cast<int>(fi), cf[i], h);
+          if (i == 0 || h > bh) {
+            bh = h;
+            best = i;
+          }
+        }
+      } else {
+        T bh = height(tris_[fi].pl, cf[0]);
+        for (std::size_t i = 1; i < cf.size(); ++i) {
+          const T h = height(tris_[fi].pl, cf[i]);
+          if (h > bh) {
+            bh = h;
+            best = i;
+          }
         }
       }
       const int eye = cf[best];
@@ -1218,8 +1328,14 @@ class Builder {
           for (int nbf : tris_[sz(f)].nb) {
             if (mark[sz(nbf)] != 0) continue;
             touched.push_back(nbf);
-            const Tri& nt = tris_[sz(nbf)];
-            const bool vis = !is_zero(nt.pl.normal) && height(nt.pl, eye) > T(0);
+            bool vis;
+            if constexpr (exact) {
+              double approx = 0;
+              vis = side(nbf, eye, approx) > 0;  // (a zero-area triangle's side is 0)
+            } else {
+              const Tri& nt = tris_[sz(nbf)];
+              vis = !is_zero(nt.pl.normal) && height(nt.pl, eye) > T(0);
+            }
             mark[sz(nbf)] = vis ? 1 : 2;
             if (vis) stack.push_back(nbf);
           }
@@ -1236,7 +1352,7 @@ class Builder {
         // removes, are then tested against every live face.
         for (int f : touched) {
           if (mark[sz(f)] != 2) continue;
-          const bool flat_tri = is_zero(tris_[sz(f)].pl.normal);
+          const bool flat_tri = zero_area(f);
           if (!flat_tri && (exact || height(tris_[sz(f)].pl, eye) < -eps_)) continue;
           int nvis = 0;
           for (int nbf : tris_[sz(f)].nb) nvis += mark[sz(nbf)] == 1;
@@ -1249,6 +1365,9 @@ class Builder {
         if (stack.empty()) break;
       }
       // horizon: directed edges from visible to non-visible faces, as a cycle
+      // (the cycle starts at the first vertex of the hash map's order, as the
+      // reference builder's does: the order of the new faces steers later
+      // float decisions)
       std::unordered_map<int, std::pair<int, int>> next;  // from -> (to, outside face)
       bool simple = true;
       for (int f : visible) {
@@ -1259,7 +1378,8 @@ class Builder {
             simple = false;
         }
       }
-      std::vector<std::array<int, 3>> horizon;  // (from, to, outside)
+      std::vector<std::array<int, 3>>& horizon = horizon_;  // (from, to, outside)
+      horizon.clear();
       if (simple && !next.empty()) {
         const int start = next.begin()->first;
         int cur = start;
@@ -1298,7 +1418,8 @@ class Builder {
       // that are no longer on the surface (inside in exact arithmetic; float:
       // tested like any other point)
       if constexpr (!exact) {
-        std::vector<int> gone;
+        std::vector<int>& gone = gone_;
+        gone.clear();
         for (int f : visible)
           for (int v : tris_[sz(f)].v) gone.push_back(v);
         std::sort(gone.begin(), gone.end());
@@ -1373,6 +1494,26 @@ class Builder {
   }
 
   // Should groups ga and gb (adjacent, non-degenerate) be one face?
+  // Exact T with double points: whether groups x and y (roots) are certainly
+  // not coplanar, because a vertex of y's root triangle is certainly off the
+  // plane of x's (a group's plane is its root triangle's when that has
+  // area; when it has none, the filter never decides).
+  bool certainly_apart(int x, int y) const {
+    if constexpr (exact) {
+      if (!shadow_) return false;
+      const Tri& tx = tris_[sz(x)];
+      for (int v : tris_[sz(y)].v) {
+        const hull::FilteredSign r =
+            hull::orientation_filter(qd_[sz(tx.v[0])], qd_[sz(tx.v[1])], qd_[sz(tx.v[2])], qd_[sz(v)]);
+        if (r.certain) return true;
+      }
+    } else {
+      (void)x;
+      (void)y;
+    }
+    return false;
+  }
+
   bool coplanar(const Group& ga, const Group& gb) const {
     if constexpr (exact) {
       return is_zero(cross(ga.pl.normal, gb.pl.normal)) && dot(ga.pl.normal, gb.pl.normal) > T(0);
@@ -1421,9 +1562,12 @@ class Builder {
     parent_.assign(tris_.size(), 0);
     std::iota(parent_.begin(), parent_.end(), 0);
     if constexpr (!exact) {
-      star_.assign(q_.size(), {});
-      for (int f : live)
-        for (int v : tris_[sz(f)].v) star_[sz(v)].push_back(f);
+      // (read only by strands_vertex, which needs a pinned point)
+      if (any_pinned_) {
+        star_.assign(q_.size(), {});
+        for (int f : live)
+          for (int v : tris_[sz(f)].v) star_[sz(v)].push_back(f);
+      }
     }
     groups_.assign(tris_.size(), Group{});
     for (int f : live) {
@@ -1431,8 +1575,8 @@ class Builder {
       Group& g = groups_[sz(f)];
       g.verts = {t.v[0], t.v[1], t.v[2]};
       std::sort(g.verts.begin(), g.verts.end());
-      g.pl = t.pl;
-      g.degenerate = is_zero(t.pl.normal);
+      g.pl = plane(f);
+      g.degenerate = is_zero(g.pl.normal);
       if (nomerge_[sz(f)] != 0) g.splits = {nomerge_[sz(f)]};
       if constexpr (!exact) g.area = T(2) * number_traits<T>::sqrt(tri_area2(t)) * t.pl.normal;
     }
@@ -1450,7 +1594,8 @@ class Builder {
             const int x = find(f), y = find(tris_[sz(f)].nb[sz(i)]);
             if (x == y || groups_[sz(x)].degenerate || groups_[sz(y)].degenerate) continue;
             if (split_apart(groups_[sz(x)], groups_[sz(y)])) continue;
-            if (coplanar(groups_[sz(x)], groups_[sz(y)]) && !strands_vertex(x, y)) {
+            if (!certainly_apart(x, y) && coplanar(groups_[sz(x)], groups_[sz(y)]) &&
+                !strands_vertex(x, y)) {
               unite(x, y);
               changed = true;
             }
@@ -1495,20 +1640,31 @@ class Builder {
   // ---- loops, clean-up, output ---------------------------------------------------
 
   std::optional<ConvexPolyhedron<T>> extract(const std::vector<int>& live, std::vector<int>& reject) {
-    // boundary edges of each group
-    std::unordered_map<int, std::vector<std::pair<int, int>>> bnd;  // group -> (from, to)
+    // boundary edges of each group, grouped by group (stable: in triangle order)
+    struct BoundaryEdge {
+      int group, from, to;
+    };
+    std::vector<BoundaryEdge> bnd;
+    bnd.reserve(live.size() * 3);
     std::vector<int> roots;
     for (int f : live) {
       const int g = find(f);
-      auto [it, fresh] = bnd.try_emplace(g);
-      if (fresh) roots.push_back(g);
+      if (g == f) roots.push_back(g);
       const Tri& t = tris_[sz(f)];
       for (int i = 0; i < 3; ++i)
-        if (find(t.nb[sz(i)]) != g) it->second.emplace_back(t.v[sz(i)], t.v[sz((i + 1) % 3)]);
+        if (find(t.nb[sz(i)]) != g) bnd.push_back({g, t.v[sz(i)], t.v[sz((i + 1) % 3)]});
     }
+    std::stable_sort(bnd.begin(), bnd.end(),
+                     [](const BoundaryEdge& a, const BoundaryEdge& b) { return a.group < b.group; });
     std::sort(roots.begin(), roots.end());
+    // group -> its edges bnd[edge_start[k], edge_start[k + 1]) for roots[k]
+    std::vector<std::size_t> edge_start(roots.size() + 1, bnd.size());
+    for (std::size_t k = 0, e = 0; k < roots.size(); ++k) {
+      while (e < bnd.size() && bnd[e].group < roots[k]) ++e;
+      edge_start[k] = e;
+    }
     bool collapsed = roots.size() < 4;
-    for (int g : roots) collapsed = collapsed || bnd[g].empty();
+    for (std::size_t k = 0; k < roots.size(); ++k) collapsed = collapsed || edge_start[k] == edge_start[k + 1];
     if (collapsed) {
       // Float only: everything merged into fewer than 4 faces, so the set is
       // flat within the merge tolerance although the simplex test did not
@@ -1518,27 +1674,42 @@ class Builder {
     }
     std::vector<std::vector<int>> loops;
     std::vector<int> loop_group;
-    for (int g : roots) {
-      const auto& edges = bnd[g];
-      std::unordered_map<int, int> next;
-      for (const auto& [u, v] : edges) {
-        if (!next.emplace(u, v).second) reject.push_back(u);  // pinched loop
+    loops.reserve(roots.size());
+    loop_group.reserve(roots.size());
+    next_vertex_.assign(q_.size(), -1);
+    for (std::size_t k = 0; k < roots.size(); ++k) {
+      const int g = roots[k];
+      const std::span<const BoundaryEdge> edges(bnd.data() + edge_start[k], edge_start[k + 1] - edge_start[k]);
+      for (const auto& e : edges) {
+        if (next_vertex_[sz(e.from)] >= 0) {
+          reject.push_back(e.from);  // pinched loop
+        } else {
+          next_vertex_[sz(e.from)] = e.to;
+        }
       }
-      if (!reject.empty()) continue;
+      auto clear_next = [&] {
+        for (const auto& e : edges) next_vertex_[sz(e.from)] = -1;
+      };
+      if (!reject.empty()) {
+        clear_next();
+        continue;
+      }
       // the loop through the first edge; any other edges form extra loops
       std::vector<int> loop;
-      const int start = edges.front().first;
+      const int start = edges.front().from;
       int cur = start;
       do {
         loop.push_back(cur);
-        cur = next.at(cur);
+        cur = next_vertex_[sz(cur)];
+        if (cur < 0) throw std::logic_error("convex_hull: open face boundary (a bug)");
       } while (cur != start && loop.size() <= edges.size());
+      clear_next();
       if (loop.size() != edges.size()) {
         // a face with a hole: reject the vertices of the other loops
         std::vector<int> sorted = loop;
         std::sort(sorted.begin(), sorted.end());
         for (const auto& e : edges)
-          if (!std::binary_search(sorted.begin(), sorted.end(), e.first)) reject.push_back(e.first);
+          if (!std::binary_search(sorted.begin(), sorted.end(), e.from)) reject.push_back(e.from);
         continue;
       }
       loops.push_back(std::move(loop));
@@ -1549,9 +1720,10 @@ class Builder {
       return std::nullopt;
     }
     // Vertices on only two faces lie in the middle of an edge: drop them.
-    std::unordered_map<int, int> degree;
+    std::vector<int>& degree = degree_;
+    degree.assign(q_.size(), 0);
     for (const auto& l : loops)
-      for (int v : l) ++degree[v];
+      for (int v : l) ++degree[sz(v)];
     if constexpr (!exact) {
       // ... unless a repair round pinned them (they were far from the hull
       // without them) and they are more than far_tol * eps from the segment
@@ -1568,10 +1740,10 @@ class Builder {
         const auto& l = loops[li];
         const std::size_t n = l.size();
         for (std::size_t i = 0; i < n; ++i) {
-          if (degree[l[i]] >= 3 || !pinned_[sz(l[i])]) continue;
+          if (degree[sz(l[i])] >= 3 || !pinned_[sz(l[i])]) continue;
           std::size_t a = (i + n - 1) % n, b = (i + 1) % n;
-          while (a != i && degree[l[a]] < 3) a = (a + n - 1) % n;
-          while (b != i && degree[l[b]] < 3) b = (b + 1) % n;
+          while (a != i && degree[sz(l[a])] < 3) a = (a + n - 1) % n;
+          while (b != i && degree[sz(l[b])] < 3) b = (b + 1) % n;
           if (a == i || b == i) continue;
           if (segment_distance(l[i], l[a], l[b]) > far_tol * to_double(eps_))
             folds[l[i]].push_back(loop_group[li]);
@@ -1583,10 +1755,7 @@ class Builder {
       }
     }
     for (auto& l : loops) {
-      std::vector<int> kept;
-      for (int v : l)
-        if (degree[v] >= 3) kept.push_back(v);
-      l = std::move(kept);
+      std::erase_if(l, [&](int v) { return degree[sz(v)] < 3; });
     }
     // Every corner strictly convex; otherwise reject the middle of the three
     // points (it is within tolerance of the segment of the other two).  The
@@ -1597,6 +1766,11 @@ class Builder {
     // the corner).  Such rejections wait for the next round; the first
     // failing corner of a round is always rejected, so rounds still progress.
     std::vector<char> rejected(q_.size(), 0), witness(q_.size(), 0);
+    std::vector<int> group_size;  // exact T: triangles per group root
+    if constexpr (exact) {
+      group_size.assign(tris_.size(), 0);
+      for (int f : live) ++group_size[sz(find(f))];
+    }
     [[maybe_unused]] int pinned_fallback = -1;
     for (int r : reject) rejected[sz(r)] = 1;
     for (std::size_t li = 0; li < loops.size(); ++li) {
@@ -1610,6 +1784,11 @@ class Builder {
         }
         if (reject.empty()) throw std::logic_error("convex_hull: empty face (a bug)");
         continue;
+      }
+      // Exact T: a face that is one triangle (with area: the zero-area ones
+      // have joined others) turns left at every corner, by |normal|^2.
+      if constexpr (exact) {
+        if (group_size[sz(loop_group[li])] == 1) continue;
       }
       for (std::size_t i = 0; i < n; ++i) {
         const int pa = l[(i + n - 1) % n], pb = l[i], pc = l[(i + 1) % n];
@@ -1681,20 +1860,21 @@ class Builder {
       if (!reject.empty()) return std::nullopt;
     }
     // Output: compact vertex numbering, original input coordinates.
-    std::unordered_map<int, int> index;
+    std::vector<int>& index = next_vertex_;  // welded point -> output vertex
+    index.assign(q_.size(), -1);
     std::vector<Vec3<T>> verts;
     out_vertex_.assign(pts_.size(), 0);
     for (const auto& l : loops)
       for (int v : l) out_vertex_[sz(v)] = 1;
-    std::vector<std::vector<int>> faces;
-    for (const auto& l : loops) {
-      std::vector<int> face;
-      for (int v : l) {
-        auto [it, fresh] = index.try_emplace(v, static_cast<int>(verts.size()));
-        if (fresh) verts.push_back(in_[sz(pts_[sz(v)])]);
-        face.push_back(it->second);
+    std::vector<std::vector<int>>& faces = loops;
+    for (auto& l : faces) {
+      for (int& v : l) {
+        if (index[sz(v)] < 0) {
+          index[sz(v)] = static_cast<int>(verts.size());
+          verts.push_back(in_[sz(pts_[sz(v)])]);
+        }
+        v = index[sz(v)];
       }
-      faces.push_back(std::move(face));
     }
     return finish([&] { return ConvexPolyhedron<T>::from_faces(std::move(verts), faces); });
   }
@@ -1912,6 +2092,38 @@ class Builder {
     return best;
   }
 
+  // The directed edges of a set of face loops, by tail vertex: find(u, v) is
+  // the face with edge u -> v and the edge's position in that face's loop
+  // (the last such face, if several have it), or null.
+  class FaceEdges {
+   public:
+    struct Edge {
+      int head, face, pos;
+    };
+    FaceEdges(const std::vector<std::vector<int>>& loops, std::size_t points) : start_(points + 1, 0) {
+      for (const auto& l : loops)
+        for (int v : l) ++start_[sz(v) + 1];
+      for (std::size_t v = 0; v < points; ++v) start_[v + 1] += start_[v];
+      edges_.resize(sz(start_.back()));
+      std::vector<int> fill(start_.begin(), start_.end() - 1);
+      for (std::size_t f = 0; f < loops.size(); ++f) {
+        const auto& l = loops[f];
+        for (std::size_t i = 0; i < l.size(); ++i)
+          edges_[sz(fill[sz(l[i])]++)] = {l[(i + 1) % l.size()], static_cast<int>(f), static_cast<int>(i)};
+      }
+    }
+    const Edge* find(int u, int v) const {
+      for (int k = start_[sz(u) + 1]; k-- > start_[sz(u)];)
+        if (edges_[sz(k)].head == v) return &edges_[sz(k)];
+      return nullptr;
+    }
+    std::size_t size() const { return edges_.size(); }
+
+   private:
+    std::vector<int> start_;
+    std::vector<Edge> edges_;
+  };
+
   // Solids also get: merges, adjacent faces that validation would see as
   // coplanar (and not split apart); split, faces that fail only planarity,
   // convexity or a reflex corner (not a zero or sliver plane triangle).
@@ -1923,10 +2135,14 @@ class Builder {
   void prevalidate(std::vector<std::vector<int>>& loops, std::vector<int>& reject,
                    bool flat = false, std::vector<std::pair<int, int>>* merges = nullptr,
                    const std::vector<int>* loop_group = nullptr, std::vector<int>* split = nullptr) {
-    std::vector<int> used;
-    for (const auto& l : loops) used.insert(used.end(), l.begin(), l.end());
-    std::sort(used.begin(), used.end());
-    used.erase(std::unique(used.begin(), used.end()), used.end());
+    std::vector<int> used;  // the loops' vertices, ascending
+    {
+      std::vector<char> on_loop(q_.size(), 0);
+      for (const auto& l : loops)
+        for (int v : l) on_loop[sz(v)] = 1;
+      for (std::size_t v = 0; v < on_loop.size(); ++v)
+        if (on_loop[v]) used.push_back(static_cast<int>(v));
+    }
     Vec3<T> lo = X(used[0]), hi = X(used[0]);
     double max_abs = 0;
     for (int v : used)
@@ -1946,49 +2162,44 @@ class Builder {
     const T copl_tol = static_cast<T>(2.0 * Tolerances<T>::coplanar / 4 * ext);
     std::vector<Plane<T>> planes;
     // directed edge (u, v) -> (its face, its position in that face's loop)
-    std::unordered_map<std::uint64_t, std::pair<int, int>> edge_face;
-    auto edge_key = [](int u, int v) {
-      return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(v);
-    };
-    std::size_t n_edges = 0;
-    for (const auto& l : loops) n_edges += l.size();
-    edge_face.reserve(n_edges);
-    for (std::size_t f = 0; f < loops.size(); ++f) {
-      const auto& l = loops[f];
-      for (std::size_t i = 0; i < l.size(); ++i)
-        edge_face[edge_key(l[i], l[(i + 1) % l.size()])] = {static_cast<int>(f), static_cast<int>(i)};
-    }
+    const FaceEdges edge_face(loops, q_.size());
     // Convexity: every used vertex against each face plane, or on a large hull
     // the local certificate (as validation): across each edge, the two
     // vertices of the neighbouring face next to that edge.
     const bool scan = flat || static_cast<double>(loops.size()) * static_cast<double>(used.size()) <=
                                   kConvexityScanPairs;
-    std::vector<std::vector<int>> witnesses(scan ? 0 : loops.size());
-    for (std::size_t f = 0; f < witnesses.size(); ++f) {
-      const auto& l = loops[f];
-      for (std::size_t i = 0; i < l.size(); ++i) {
-        const auto it = edge_face.find(edge_key(l[(i + 1) % l.size()], l[i]));
-        if (it == edge_face.end()) continue;  // (from_faces refuses an open surface)
-        const auto [g, j] = it->second;
-        const auto& m = loops[sz(g)];
-        const std::size_t k = m.size();
-        witnesses[f].push_back(m[(sz(j) + 2) % k]);
-        witnesses[f].push_back(m[(sz(j) + k - 1) % k]);
+    // face f's witnesses: witness[witness_start[f], witness_start[f + 1])
+    std::vector<int> witness, witness_start(loops.size() + 1, 0);
+    if (!scan) {
+      witness.reserve(2 * edge_face.size());
+      for (std::size_t f = 0; f < loops.size(); ++f) {
+        const auto& l = loops[f];
+        for (std::size_t i = 0; i < l.size(); ++i) {
+          const auto* twin = edge_face.find(l[(i + 1) % l.size()], l[i]);
+          if (twin == nullptr) continue;  // (from_faces refuses an open surface)
+          const auto& m = loops[sz(twin->face)];
+          const std::size_t k = m.size();
+          witness.push_back(m[(sz(twin->pos) + 2) % k]);
+          witness.push_back(m[(sz(twin->pos) + k - 1) % k]);
+        }
+        witness_start[f + 1] = static_cast<int>(witness.size());
       }
     }
     std::vector<char> bad(loops.size(), 0);
+    std::vector<int> rotated;  // (one loop, rotated)
+    std::vector<Vec3<T>> pts;  // (its points)
     for (std::size_t f = 0; f < loops.size(); ++f) {
      for (std::size_t rot = 0; rot < (flat ? 1 : loops[f].size()); ++rot) {
-      std::vector<int> l = loops[f];
-      std::rotate(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(rot), l.end());
-      std::vector<Vec3<T>> pts;
-      for (int v : l) pts.push_back(X(v));
+      rotated.assign(loops[f].begin(), loops[f].end());
+      std::rotate(rotated.begin(), rotated.begin() + static_cast<std::ptrdiff_t>(rot), rotated.end());
+      pts.clear();
+      for (int v : rotated) pts.push_back(X(v));
       auto t = plane_triple(pts);
       if (flat && f == 1) {  // the back face reuses the front triple, reversed
         std::vector<Vec3<T>> front;
         for (int v : loops[0]) front.push_back(X(v));
         const auto t0 = plane_triple(front);
-        const std::size_t n = l.size();
+        const std::size_t n = rotated.size();
         // loops[1] is loops[0] reversed: position i there is n-1-i here
         t = {static_cast<int>(n - 1 - sz(t0[0])), static_cast<int>(n - 1 - sz(t0[2])),
              static_cast<int>(n - 1 - sz(t0[1]))};
@@ -2002,19 +2213,23 @@ class Builder {
                        2 * Tolerances<T>::sliver;
       }
       const bool shape_ok = ok;
-      for (int v : l) ok = ok && abs_of(h(v)) <= plan_tol;
-      for (int v : scan ? used : witnesses[f]) ok = ok && h(v) <= conv_tol;
+      for (int v : rotated) ok = ok && abs_of(h(v)) <= plan_tol;
+      if (scan) {
+        for (int v : used) ok = ok && h(v) <= conv_tol;
+      } else {
+        for (int w = witness_start[f]; w < witness_start[f + 1] && ok; ++w) ok = h(witness[sz(w)]) <= conv_tol;
+      }
       // corners as validation sees them: no reflex turn about this normal
-      const std::size_t n = l.size();
+      const std::size_t n = rotated.size();
       for (std::size_t i = 0; i < n && ok; ++i) {
-        const Vec3<T> ab(X(l[i]) - X(l[(i + n - 1) % n]));
-        const Vec3<T> bc(X(l[(i + 1) % n]) - X(l[i]));
+        const Vec3<T> ab(X(rotated[i]) - X(rotated[(i + n - 1) % n]));
+        const Vec3<T> bc(X(rotated[(i + 1) % n]) - X(rotated[i]));
         const T lab = length(ab);
         ok = lab > T(0) && !(dot(pl.normal, cross(ab, bc)) < -(conv_tol * lab));
       }
       if (ok) {
         bad[f] = 0;
-        loops[f] = std::move(l);
+        if (rot != 0) loops[f] = rotated;
         planes[f] = pl;
         break;
       }
@@ -2031,9 +2246,9 @@ class Builder {
       if (bad[f]) continue;
       const auto& l = loops[f];
       for (std::size_t i = 0; i < l.size() && !bad[f]; ++i) {
-        const auto it = edge_face.find(edge_key(l[(i + 1) % l.size()], l[i]));
-        if (it == edge_face.end()) continue;
-        const int g = it->second.first;
+        const auto* twin = edge_face.find(l[(i + 1) % l.size()], l[i]);
+        if (twin == nullptr) continue;
+        const int g = twin->face;
         bool coplanar = true;
         for (std::size_t k = 0; k < loops[sz(g)].size() && coplanar; ++k) {
           const int v = loops[sz(g)][k];
@@ -2092,6 +2307,12 @@ class Builder {
   bool any_pinned_ = false;
   std::vector<char> out_vertex_;  // vertices of the last output
   std::vector<std::vector<int>> star_;  // float: vertex -> live triangles around it
+  std::vector<int> next_vertex_;  // scratch, per welded point (-1: none)
+  std::vector<int> gone_;                          // scratch, per eye
+  std::vector<Vec3<double>> qd_;  // exact T: q_ as doubles, when shadow_
+  bool shadow_ = false;           // exact T: every welded coordinate is exactly a double
+  std::vector<std::array<int, 3>> horizon_;        // scratch, per eye
+  std::vector<int> degree_;       // scratch, per welded point
   std::vector<int> nomerge_;  // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
   bool tent_ = true;  // float: may try tent_hull (not in the second build)

@@ -479,8 +479,25 @@ class ConvexPolyhedron {
   void build_topology(const std::vector<std::vector<int>>& faces) {
     const int nv = vertex_count();
     if (faces.size() < 2) fail(ErrorCode::NotManifold, "a closed polyhedron needs at least 2 faces");
-    std::map<std::pair<int, int>, int> directed;  // (u,v) -> half-edge
-    std::map<std::pair<int, int>, int> undirected;  // (min,max) -> edge index
+    // The directed edges leaving each vertex, in the order the loops list
+    // them (out_[out_start[u] ..]), each with its half-edge once assigned:
+    // (u, v) was seen before iff one of u's assigned slots heads to v.
+    struct OutEdge {
+      int head, half_edge;
+    };
+    std::vector<int> out_start(static_cast<std::size_t>(nv) + 1, 0);
+    for (const auto& loop : faces)
+      for (int u : loop)
+        if (u >= 0 && u < nv) ++out_start[static_cast<std::size_t>(u) + 1];
+    for (int v = 0; v < nv; ++v)
+      out_start[static_cast<std::size_t>(v) + 1] += out_start[static_cast<std::size_t>(v)];
+    std::vector<OutEdge> out(static_cast<std::size_t>(out_start.back()));
+    std::vector<int> out_next(out_start.begin(), out_start.end() - 1);  // u's first unassigned slot
+    auto seen = [&](int u, int v) {  // the half-edge of an earlier u -> v, or -1
+      for (int k = out_start[static_cast<std::size_t>(u)]; k < out_next[static_cast<std::size_t>(u)]; ++k)
+        if (out[static_cast<std::size_t>(k)].head == v) return out[static_cast<std::size_t>(k)].half_edge;
+      return -1;
+    };
     half_edges_.clear();
     faces_.clear();
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -505,7 +522,7 @@ class ConvexPolyhedron {
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const int u = loop[i];
         const int v = loop[(i + 1) % loop.size()];
-        if (directed.count({u, v})) {
+        if (seen(u, v) >= 0) {
           fail(ErrorCode::NotManifold,
                "edge " + std::to_string(u) + "->" + std::to_string(v) +
                    " is used twice in the same direction (second time in " + fname +
@@ -513,22 +530,21 @@ class ConvexPolyhedron {
         }
         const auto key = std::minmax(u, v);
         int h;
-        auto it = undirected.find(key);
-        if (it == undirected.end()) {
+        const int twin = seen(v, u);
+        if (twin < 0) {
           const int e = static_cast<int>(half_edges_.size() / 2);
-          undirected[key] = e;
           half_edges_.push_back(HalfEdge{});
           half_edges_.push_back(HalfEdge{});
           h = 2 * e;
         } else {
-          h = 2 * it->second + 1;
+          h = 2 * (twin / 2) + 1;
           if (half_edges_[static_cast<std::size_t>(h)].face != -1) {
             fail(ErrorCode::NotManifold, "edge " + std::to_string(key.first) + "-" +
                                              std::to_string(key.second) +
                                              " is shared by more than two faces");
           }
         }
-        directed[{u, v}] = h;
+        out[static_cast<std::size_t>(out_next[static_cast<std::size_t>(u)]++)] = OutEdge{v, h};
         half_edges_[static_cast<std::size_t>(h)].origin = u;
         half_edges_[static_cast<std::size_t>(h)].face = static_cast<int>(f);
         loop_edges.push_back(h);
