@@ -137,8 +137,17 @@ class LazyDouble {
 /// still holds.  If b - a or c - a themselves overflow, the normal is not
 /// finite; ConvexPolyhedron reports that as BadScale.
 template <Number T>
+inline Plane<T> plane_through_cross(const Vec3<T>& a, const Vec3<T>& e1, const Vec3<T>& e2, const Vec3<T>& c);
+template <Number T>
 inline Plane<T> plane_through(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
-  Vec3<T> n = scaled_cross(Vec3<T>(b - a), Vec3<T>(c - a));
+  const Vec3<T> e1(b - a), e2(c - a);
+  return plane_through_cross(a, e1, e2, Vec3<T>(cross(e1, e2)));
+}
+/// plane_through(a, a + e1, a + e2) given e1 = b - a, e2 = c - a (as T
+/// computes them) and c = cross(e1, e2), computed by the caller.
+template <Number T>
+inline Plane<T> plane_through_cross(const Vec3<T>& a, const Vec3<T>& e1, const Vec3<T>& e2, const Vec3<T>& c) {
+  Vec3<T> n = scaled_cross(e1, e2, c);
   if constexpr (number_traits<T>::normalizes) {
     const T len = number_traits<T>::sqrt(squared_norm(n));
     if (len > T(0)) n = Vec3<T>(n[0] / len, n[1] / len, n[2] / len);
@@ -226,76 +235,18 @@ class ConvexPolyhedron {
     return p;
   }
 
-  /// The terms of the error bound on the normals of a rigid image
-  /// (posing.hpp): set by assign_rigid_image for float/double, whose normals
-  /// are the source's normals rotated, not recomputed from the moved
-  /// vertices.  `rotated` false for every other polyhedron (its normals come
-  /// from its plane triples: normal_conditioning() bounds them).
-  struct RigidImageTerms {
-    bool rotated = false;
-    double local_conditioning = 0;  // the source's normal_conditioning()
-    double scale = 0;               // >= |M|_F, M the linear part
-    double kappa = 0;               // >= |cof(M) - M|_2
-    double omega = 0;               // >= |M^T M - I|_2
-    double vertex_term = 0;         // >= 2 |N' - cof(M) N| / |N| over the faces
-  };
-  const RigidImageTerms& rigid_image_terms() const { return rigid_terms_; }
-
-  /// Float and double: the source-shape terms of the bound on a rigid image's
-  /// normals (posing.hpp): over the faces (the back face of a flat shape
-  /// excluded), with e1, e2 the exact plane-triple differences and N = e1 x e2,
-  ///   edge_ratio  >= max (|e1| + |e2|) / |N|,   inv_normal >= max 1 / |N|,
-  /// from the T differences ẽ and cross products Ñ in double: |e| <= |ẽ|/(1-u)
-  /// and |N| >= |Ñ| - q with q = γ_4 √2 |ẽ1||ẽ2|/(1-u)^2 + √3 η (the bound of
-  /// robust_kernel.hpp, "Error bounds"), times (1 + 1e-6) for the rounding of
-  /// this computation.  +infinity when some |Ñ| <= 2q (or anything overflows).
-  struct PoseConditioning {
-    double edge_ratio = std::numeric_limits<double>::infinity();
-    double inv_normal = std::numeric_limits<double>::infinity();
-  };
-  PoseConditioning pose_conditioning() const {
-    PoseConditioning out;
-    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-      constexpr double u = number_traits<T>::unit_roundoff;
-      constexpr double g4 = 4 * u / (1 - 4 * u);
-      const double eta = static_cast<double>(std::numeric_limits<T>::denorm_min());
-      double er = 0, in = 0;
-      const int nf = is_flat() ? 1 : face_count();
-      for (int f = 0; f < nf; ++f) {
-        const auto& t = face(f).plane_vertices;
-        const Vec3<T>& v0 = vertex(t[0]);
-        const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
-        const Vec3<T> c = cross(e1, e2);
-        auto len = [](const Vec3<T>& v) {
-          const double x = v[0], y = v[1], z = v[2];
-          return std::sqrt(x * x + y * y + z * z);
-        };
-        const double l1 = len(e1), l2 = len(e2), ln = len(c);
-        const double q = g4 * std::numbers::sqrt2 * l1 * l2 / ((1 - u) * (1 - u)) + std::numbers::sqrt3 * eta;
-        if (!(ln > 2 * q) || !std::isfinite(ln) || !std::isfinite(l1 + l2)) return PoseConditioning{};
-        const double nlow = ln - q;
-        er = std::max(er, (l1 + l2) / ((1 - u) * nlow));
-        in = std::max(in, 1 / nlow);
-      }
-      out.edge_ratio = er * (1 + 1e-6);
-      out.inv_normal = in * (1 + 1e-6);
-    }
-    return out;
-  }
-
   /// Make *this the rigid image of src (posing.hpp is the documented entry
-  /// point and states the formula): vertices point(v) for every vertex of
-  /// src; for float/double the planes are src's normals mapped by dir(n) with
-  /// offsets fl(n'.v') at each face's first plane-triple vertex (a flat
-  /// shape's back plane the front one negated), and `terms` recorded; for
-  /// other T the planes are recomputed from the moved vertices (as
-  /// with_vertices does).  The topology is copied from src unless
-  /// same_topology says *this already holds it.  Reuses the capacity of
-  /// *this: no allocation once it has held a shape at least as large.
+  /// point and states the formula): src's topology and plane triples, the
+  /// vertices point(v) for every vertex of src, and everything else
+  /// recomputed from them exactly as with_vertices does (bit for bit the same
+  /// planes, edge arrays, lanes and bounds), in one pass per array, with
+  /// normal_conditioning() computed along with the planes (the robust kernel
+  /// asks for it on every posed query).  The topology is copied from src
+  /// unless same_topology says *this already holds it.  Reuses the capacity
+  /// of *this: no allocation once it has held a shape at least as large.
   /// Throws as with_vertices does (NonFinite, BadScale).
-  template <class Point, class Dir>
-  void assign_rigid_image(const ConvexPolyhedron& src, bool same_topology, Point&& point, Dir&& dir,
-                          const RigidImageTerms& terms) {
+  template <class Point>
+  void assign_rigid_image(const ConvexPolyhedron& src, bool same_topology, Point&& point) {
     if (!same_topology) {
       half_edges_ = src.half_edges_;
       faces_ = src.faces_;
@@ -305,13 +256,7 @@ class ConvexPolyhedron {
     vertices_.resize(src.vertices_.size());
     for (std::size_t i = 0; i < vertices_.size(); ++i) vertices_[i] = point(src.vertices_[i]);
     check_coordinates();
-    (void)dir;
-    (void)terms;
-    // Planes recomputed from the moved vertices (as with_vertices): rotated
-    // normals were measured to widen the robust filters so much on fine
-    // meshes (the moved vertices' rounding tilts small faces by ~u |x| /
-    // edge) that exact fallbacks grew ~1000x at N = 256.
-    compute_derived();
+    compute_derived(true);
     check_new_range();
   }
 
@@ -669,24 +614,39 @@ class ConvexPolyhedron {
     }
   }
 
-  void compute_derived() {
-    planes_.clear();
-    planes_.reserve(faces_.size());
-    for (int f = 0; f < face_count(); ++f) {
-      if (f == 1 && face_count() == 2) {
+  // The planes from the plane triples, then everything after them.  With
+  // eager_conditioning (float/double), normal_conditioning() is computed in
+  // the same pass from the plane triples' differences and cross products
+  // (the value compute_normal_conditioning() gives, bit for bit: the same
+  // expressions and the same scan, NormalConditioningScan).
+  void compute_derived(bool eager_conditioning = false) {
+    const auto nf = faces_.size();
+    planes_.resize(nf);
+    [[maybe_unused]] NormalConditioningScan scan;
+    [[maybe_unused]] const bool cond = eager_conditioning && (std::is_same_v<T, float> || std::is_same_v<T, double>);
+    for (std::size_t f = 0; f < nf; ++f) {
+      if (f == 1 && nf == 2) {
         // Flat shape: the back face's plane is exactly the front one negated.
         // That is what plane_through on the reversed triple gives in exact
         // arithmetic and in plain IEEE arithmetic (a*b - c*d is antisymmetric);
         // under FMA contraction (-march=native -ffp-contract=fast) it is not,
         // and the "exactly opposite normals" invariant broke (tests/fma).
-        planes_.push_back(Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)});
+        planes_[1] = Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)};
         continue;
       }
-      const auto pts = plane_points(f);
-      planes_.push_back(plane_through(pts[0], pts[1], pts[2]));
+      const auto& t = faces_[f].plane_vertices;
+      const Vec3<T>& v0 = vertex(t[0]);
+      const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
+      const Vec3<T> c(cross(e1, e2));
+      planes_[f] = plane_through_cross(v0, e1, e2, c);
+      if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+        if (cond) scan.add(e1, e2, c);
+      }
     }
     normal_conditioning_.reset();  // new coordinates: computed again on first use
-    rigid_terms_ = RigidImageTerms{};
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      if (cond) normal_conditioning_.store(scan.result());
+    }
     compute_edge_data_and_bounds();
   }
 
@@ -695,16 +655,15 @@ class ConvexPolyhedron {
   void compute_edge_data_and_bounds() {
     // per-edge arrays (after the planes: the normals are copies of theirs)
     const auto ne = static_cast<std::size_t>(edge_count());
-    edge_dirs_.clear();
-    edge_n0_.clear();
-    edge_n1_.clear();
-    edge_dirs_.reserve(ne);
-    edge_n0_.reserve(ne);
-    edge_n1_.reserve(ne);
-    for (int e = 0; e < edge_count(); ++e) {
-      edge_dirs_.push_back(edge_direction(e));
-      edge_n0_.push_back(plane(edge_face(e, 0)).normal);
-      edge_n1_.push_back(plane(edge_face(e, 1)).normal);
+    edge_dirs_.resize(ne);
+    edge_n0_.resize(ne);
+    edge_n1_.resize(ne);
+    for (std::size_t e = 0; e < ne; ++e) {
+      const HalfEdge& h0 = half_edges_[2 * e];
+      const HalfEdge& h1 = half_edges_[2 * e + 1];
+      edge_dirs_[e] = Vec3<T>(vertex(h1.origin) - vertex(h0.origin));  // edge_direction(e)
+      edge_n0_[e] = planes_[static_cast<std::size_t>(h0.face)].normal;
+      edge_n1_[e] = planes_[static_cast<std::size_t>(h1.face)].normal;
     }
     compute_lanes();
     Vec3<T> sum(T(0), T(0), T(0));
@@ -769,96 +728,116 @@ class ConvexPolyhedron {
   // shapes on every query (normal_error) until it moved here.
   double compute_normal_conditioning() const {
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-      auto sq = [](const Vec3<T>& v) {
-        const double x = v[0], y = v[1], z = v[2];
-        return x * x + y * y + z * z;
-      };
-      // |ẽ1|^2, |ẽ2|^2 and |Ñ|^2 of face f's plane triple, in double
-      struct Squares {
-        double e1, e2, n;
-      };
-      auto squares = [&](int f) {
+      NormalConditioningScan scan;
+      const int nf = is_flat() ? 1 : face_count();
+      for (int f = 0; f < nf; ++f) {
         const auto& t = face(f).plane_vertices;
         const Vec3<T>& v0 = vertex(t[0]);
-        const Vec3<T> e1(vertex(t[1]) - v0);
-        const Vec3<T> e2(vertex(t[2]) - v0);
-        return Squares{sq(e1), sq(e2), sq(cross(e1, e2))};
-      };
-      const int nf = is_flat() ? 1 : face_count();
-      if constexpr (std::is_same_v<T, float>) {
-        // The maximum of r2 = |ẽ1|^2 |ẽ2|^2 / |Ñ|^2 without a division or a
-        // finiteness test per face: the maximum fraction num/den is tracked by
-        // cross multiplication.  Every factor is a double square of a float
-        // (<= 3 * 2^256), so num * den < 2^1024 cannot overflow; an infinite
-        // or NaN difference or cross product, or a tiny |Ñ|, sets `bad`.  The
-        // one division and sqrt at the end round once each (relative 2^-53,
-        // inside the kernel's margin).
-        double wnum = 0, wden = 1;
-        bool bad = false;
-        for (int f = 0; f < nf; ++f) {
-          const Squares q = squares(f);
-          const double nc2 = q.n;
-          const double num = q.e1 * q.e2;
-          bad |= !(nc2 > kNormalTinySquared && nc2 <= std::numeric_limits<double>::max() &&
-                   num <= std::numeric_limits<double>::max());
-          const bool larger = num * wden > wnum * nc2;
-          wnum = larger ? num : wnum;
-          wden = larger ? nc2 : wden;
-        }
-        if (bad) return std::numeric_limits<double>::infinity();
-        return std::sqrt(wnum / wden);
-      } else {
-        // double: the squares can overflow, so one ratio per face, infinite
-        // when not finite (never NaN, which a maximum would skip).
-        double worst = 0;
-        for (int f = 0; f < nf; ++f) {
-          const Squares q = squares(f);
-          const double nc2 = q.n;
-          double r2 = std::numeric_limits<double>::infinity();
-          if (nc2 > kNormalTinySquared && std::isfinite(nc2)) {
-            r2 = q.e1 / nc2 * q.e2;
-            if (!std::isfinite(r2)) r2 = std::numeric_limits<double>::infinity();
-          }
-          if (r2 > worst) worst = r2;
-        }
-        return std::sqrt(worst);
+        const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
+        scan.add(e1, e2, Vec3<T>(cross(e1, e2)));
       }
+      return scan.result();
     } else {
       return std::numeric_limits<double>::infinity();
     }
   }
 
+  // The scan of compute_normal_conditioning() over the plane triples (v0, v1,
+  // v2), one face at a time, given ẽ1 = fl(v1 - v0), ẽ2 = fl(v2 - v0) and
+  // Ñ = fl(ẽ1 x ẽ2) in T (cross()); their squares in double.
+  struct NormalConditioningScan {
+    // float: the maximum of r2 = |ẽ1|^2 |ẽ2|^2 / |Ñ|^2 without a division or
+    // a finiteness test per face: the maximum fraction num/den is tracked by
+    // cross multiplication.  Every factor is a double square of a float
+    // (<= 3 * 2^256), so num * den < 2^1024 cannot overflow; an infinite or
+    // NaN difference or cross product, or a tiny |Ñ|, sets `bad`.  The one
+    // division and sqrt at the end round once each (relative 2^-53, inside
+    // the kernel's margin).
+    // double: the squares can overflow, so one ratio per face, infinite when
+    // not finite (never NaN, which a maximum would skip).
+    double wnum = 0, wden = 1, worst = 0;
+    bool bad = false;
+
+    void add(const Vec3<T>& e1, const Vec3<T>& e2, const Vec3<T>& n) {
+      auto sq = [](const Vec3<T>& v) {
+        const double x = v[0], y = v[1], z = v[2];
+        return x * x + y * y + z * z;
+      };
+      const double nc2 = sq(n);
+      if constexpr (std::is_same_v<T, float>) {
+        const double num = sq(e1) * sq(e2);
+        bad |= !(nc2 > kNormalTinySquared && nc2 <= std::numeric_limits<double>::max() &&
+                 num <= std::numeric_limits<double>::max());
+        const bool larger = num * wden > wnum * nc2;
+        wnum = larger ? num : wnum;
+        wden = larger ? nc2 : wden;
+      } else {
+        double r2 = std::numeric_limits<double>::infinity();
+        if (nc2 > kNormalTinySquared && std::isfinite(nc2)) {
+          r2 = sq(e1) / nc2 * sq(e2);
+          if (!std::isfinite(r2)) r2 = std::numeric_limits<double>::infinity();
+        }
+        if (r2 > worst) worst = r2;
+      }
+    }
+    double result() const {
+      if constexpr (std::is_same_v<T, float>) {
+        if (bad) return std::numeric_limits<double>::infinity();
+        return std::sqrt(wnum / wden);
+      } else {
+        return std::sqrt(worst);
+      }
+    }
+  };
+
+  // The lane arrays from the per-edge arrays and the vertices, each value
+  // written once (only the padding is zeroed).  lanes_bounded_: every lane
+  // value and every plane normal has |x| <= 2^60 (false for NaN).  The edge
+  // normal lanes are copies (or negations) of plane normals and the padding
+  // is zero, so that is: every plane normal, edge direction and vertex
+  // coordinate; tested without a branch per value.
   void compute_lanes() {
-    lanes_.clear();
     lane_edge_stride_ = lane_vertex_stride_ = 0;
     lanes_bounded_ = false;
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
       auto padded = [](int n) { return (n + kLanePad - 1) / kLanePad * kLanePad; };
       lane_edge_stride_ = padded(edge_count());
       lane_vertex_stride_ = padded(vertex_count());
-      lanes_.assign(static_cast<std::size_t>(9 * lane_edge_stride_ + 3 * lane_vertex_stride_), T(0));
-      for (int e = 0; e < edge_count(); ++e) {
-        const std::size_t i = static_cast<std::size_t>(e);
-        for (int c = 0; c < 3; ++c) {
-          const auto k = static_cast<std::size_t>(c * lane_edge_stride_) + i;
-          const auto stride = static_cast<std::size_t>(3 * lane_edge_stride_);
-          lanes_[k] = edge_n0_[i][c];
-          lanes_[k + stride] = T(-edge_n1_[i][c]);
-          lanes_[k + 2 * stride] = edge_dirs_[i][c];
-        }
-      }
-      for (int v = 0; v < vertex_count(); ++v) {
-        for (int c = 0; c < 3; ++c) {
-          lanes_[static_cast<std::size_t>(9 * lane_edge_stride_ + c * lane_vertex_stride_ + v)] =
-              vertices_[static_cast<std::size_t>(v)][c];
-        }
-      }
+      const auto es = static_cast<std::size_t>(lane_edge_stride_);
+      const auto vs = static_cast<std::size_t>(lane_vertex_stride_);
+      const auto ne = static_cast<std::size_t>(edge_count());
+      const auto nv = static_cast<std::size_t>(vertex_count());
+      lanes_.resize(9 * es + 3 * vs);
+      T* const l = lanes_.data();
       const T big = T(0x1p60);
-      lanes_bounded_ = true;
-      for (const T& x : lanes_) lanes_bounded_ = lanes_bounded_ && std::abs(x) <= big;  // false for NaN
-      for (const auto& pl : planes_) {
-        for (int c = 0; c < 3; ++c) lanes_bounded_ = lanes_bounded_ && std::abs(pl.normal[c]) <= big;
+      bool ok = true;
+      for (std::size_t e = 0; e < ne; ++e) {
+        const Vec3<T>& n0 = edge_n0_[e];
+        const Vec3<T>& n1 = edge_n1_[e];
+        const Vec3<T>& d = edge_dirs_[e];
+        for (std::size_t c = 0; c < 3; ++c) {
+          l[c * es + e] = n0[static_cast<int>(c)];
+          l[(3 + c) * es + e] = T(-n1[static_cast<int>(c)]);
+          l[(6 + c) * es + e] = d[static_cast<int>(c)];
+          ok &= std::abs(d[static_cast<int>(c)]) <= big;
+        }
       }
+      for (std::size_t k = 0; k < 9; ++k) std::fill(l + k * es + ne, l + (k + 1) * es, T(0));
+      T* const lv = l + 9 * es;
+      for (std::size_t v = 0; v < nv; ++v) {
+        for (std::size_t c = 0; c < 3; ++c) {
+          const T x = vertices_[v][static_cast<int>(c)];
+          lv[c * vs + v] = x;
+          ok &= std::abs(x) <= big;
+        }
+      }
+      for (std::size_t c = 0; c < 3; ++c) std::fill(lv + c * vs + nv, lv + (c + 1) * vs, T(0));
+      for (const auto& pl : planes_) {
+        for (int c = 0; c < 3; ++c) ok &= std::abs(pl.normal[c]) <= big;
+      }
+      lanes_bounded_ = ok;
+    } else {
+      lanes_.clear();
     }
   }
 
@@ -912,7 +891,16 @@ class ConvexPolyhedron {
                                     ": the validation tolerances (relative to the extent) fall "
                                     "into its subnormal range");
     }
-    for (int f = 0; f < face_count(); ++f) {  // (cannot fail within the range above)
+    // (cannot fail within the range above)  One pass without a branch per
+    // value; the face is looked for only when some plane is not finite.
+    bool all_finite = true;
+    const T tmax = std::numeric_limits<T>::max();
+    for (const auto& pl : planes_) {
+      all_finite &= std::abs(pl.offset) <= tmax;  // false for NaN and infinities
+      for (int c = 0; c < 3; ++c) all_finite &= std::abs(pl.normal[c]) <= tmax;
+    }
+    if (all_finite) [[likely]] return;
+    for (int f = 0; f < face_count(); ++f) {
       const auto& pl = plane(f);
       bool finite = number_traits<T>::is_finite(pl.offset);
       for (int c = 0; c < 3; ++c) finite = finite && number_traits<T>::is_finite(pl.normal[c]);
@@ -1159,7 +1147,6 @@ class ConvexPolyhedron {
   double extent_ = 0;
   double max_abs_ = 0;
   detail::LazyDouble normal_conditioning_;  // NaN until normal_conditioning() computes it
-  RigidImageTerms rigid_terms_;             // assign_rigid_image (float/double)
 };
 
 }  // namespace sepax

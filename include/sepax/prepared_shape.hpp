@@ -16,8 +16,7 @@
 //
 // Contents: the validated ConvexPolyhedron (planes, per-edge arrays, SIMD
 // lanes, bounds), its GaussMapWalk (the traversal's walk data and probe
-// vertices), and the shape terms posing needs (normal_conditioning,
-// pose_conditioning: posing.hpp).  Immutable after construction, so one
+// vertices).  Immutable after construction, so one
 // PreparedShape may be queried from any number of threads at once.
 //
 // Posing (posing.hpp defines the input exactly): a posed query moves B into
@@ -92,8 +91,6 @@ class PreparedShape {
   explicit PreparedShape(ConvexPolyhedron<T> local)
       : poly_(std::move(local)), walk_(poly_), serial_(detail::next_shape_serial()) {
     if (poly_.empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape: the polyhedron is empty");
-    conditioning_ = poly_.normal_conditioning();
-    pose_conditioning_ = poly_.pose_conditioning();
   }
 
   // Copies share the serial (same content: the scratch may keep the topology);
@@ -103,8 +100,6 @@ class PreparedShape {
   PreparedShape(PreparedShape&& o) noexcept
       : poly_(std::move(o.poly_)),
         walk_(std::move(o.walk_)),
-        conditioning_(o.conditioning_),
-        pose_conditioning_(o.pose_conditioning_),
         serial_(o.serial_) {
     o.poly_ = ConvexPolyhedron<T>();
     o.serial_ = detail::next_shape_serial();
@@ -113,8 +108,6 @@ class PreparedShape {
     if (this != &o) {
       poly_ = std::move(o.poly_);
       walk_ = std::move(o.walk_);
-      conditioning_ = o.conditioning_;
-      pose_conditioning_ = o.pose_conditioning_;
       serial_ = o.serial_;
       o.poly_ = ConvexPolyhedron<T>();
       o.serial_ = detail::next_shape_serial();
@@ -141,8 +134,7 @@ class PreparedShape {
     const bool same_topology = s.serial == serial_;
     s.posed = false;
     s.serial = 0;  // until the posing below has finished (it may throw)
-    const auto terms = detail::pose_terms(x, conditioning_, poly_.max_abs_coordinate(), pose_conditioning_);
-    detail::pose_into(s.poly, poly_, same_topology, x, terms);
+    detail::pose_into(s.poly, poly_, same_topology, x);
     s.serial = serial_;
     s.x = x;
     s.posed = true;
@@ -152,8 +144,6 @@ class PreparedShape {
  private:
   ConvexPolyhedron<T> poly_;
   GaussMapWalk walk_;
-  double conditioning_ = 0;
-  typename ConvexPolyhedron<T>::PoseConditioning pose_conditioning_;
   std::uint64_t serial_ = 0;
 };
 

@@ -102,8 +102,14 @@ inline bool safe_squared_norm(T n2) {
 /// the e that puts the largest |component| of u and w in [1, 2).  Its
 /// direction is that of u x w at any scale; normalise it, never use its length.
 template <class T>
+inline Vec3<T> scaled_cross(const Vec3<T>& u, const Vec3<T>& w, Vec3<T> n);
+template <class T>
 inline Vec3<T> scaled_cross(const Vec3<T>& u, const Vec3<T>& w) {
-  Vec3<T> n = cross(u, w);
+  return scaled_cross(u, w, Vec3<T>(cross(u, w)));
+}
+/// scaled_cross(u, w) given n = cross(u, w), computed by the caller.
+template <class T>
+inline Vec3<T> scaled_cross(const Vec3<T>& u, const Vec3<T>& w, Vec3<T> n) {
   if constexpr (std::is_floating_point_v<T>) {
     if (!detail::safe_squared_norm(squared_norm(n))) {
       const T m = detail::max_abs2(u, w);

@@ -2,6 +2,7 @@
 // double: every posed SAT returns bit for bit what the same SAT returns on
 // the pre-posed pair (A, posed(B, relative_pose(pose_a, pose_b))), axis
 // mapped to world; margins and bad poses.
+#include <cstring>
 #include <random>
 
 #include <catch2/catch.hpp>
@@ -50,4 +51,63 @@ TEST_CASE("a posed result is in world coordinates", "[posed]") {
   CHECK(r.axis[0] == Approx(0).margin(1e-12));
   CHECK(r.axis[1] == Approx(0).margin(1e-12));
   CHECK(r.axis[2] == Approx(1));
+}
+
+// Posing builds B' in one pass per array (ConvexPolyhedron::assign_rigid_image)
+// and computes normal_conditioning() with the planes; every derived array must
+// still be bit for bit what with_vertices computes from the same vertices
+// (transformed(B, X)), lane padding and the lazily computed conditioning
+// included, also when the per-thread scratch last held another shape.
+template <class T>
+void require_same_derived(const ConvexPolyhedron<T>& p, const ConvexPolyhedron<T>& q) {
+  auto same = [](const auto& x, const auto& y) { return std::memcmp(&x, &y, sizeof(x)) == 0; };
+  REQUIRE(p.vertex_count() == q.vertex_count());
+  REQUIRE(p.face_count() == q.face_count());
+  REQUIRE(p.edge_count() == q.edge_count());
+  for (int v = 0; v < p.vertex_count(); ++v) REQUIRE(same(p.vertex(v), q.vertex(v)));
+  for (int f = 0; f < p.face_count(); ++f) {
+    REQUIRE(same(p.plane(f).normal, q.plane(f).normal));
+    REQUIRE(same(p.plane(f).offset, q.plane(f).offset));
+  }
+  for (int e = 0; e < p.edge_count(); ++e) {
+    REQUIRE(same(p.edge_dir(e), q.edge_dir(e)));
+    REQUIRE(same(p.edge_normal(e, 0), q.edge_normal(e, 0)));
+    REQUIRE(same(p.edge_normal(e, 1), q.edge_normal(e, 1)));
+  }
+  REQUIRE(p.lanes_bounded() == q.lanes_bounded());
+  REQUIRE(p.lane_edge_stride() == q.lane_edge_stride());
+  REQUIRE(p.lane_vertex_stride() == q.lane_vertex_stride());
+  for (int k = 0; k < 9; ++k) {
+    REQUIRE(std::memcmp(p.lane_edge(k), q.lane_edge(k), sizeof(T) * std::size_t(p.lane_edge_stride())) == 0);
+  }
+  for (int c = 0; c < 3; ++c) {
+    REQUIRE(std::memcmp(p.lane_vertex(c), q.lane_vertex(c), sizeof(T) * std::size_t(p.lane_vertex_stride())) == 0);
+  }
+  REQUIRE(same(p.centroid(), q.centroid()));
+  REQUIRE(same(p.bounds_min(), q.bounds_min()));
+  REQUIRE(same(p.bounds_max(), q.bounds_max()));
+  REQUIRE(p.extent() == q.extent());
+  REQUIRE(p.max_abs_coordinate() == q.max_abs_coordinate());
+  REQUIRE(p.normal_conditioning() == q.normal_conditioning());
+}
+
+TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[posed]", float, double) {
+  using T = TestType;
+  std::mt19937_64 rng(1802);
+  const auto locals = local_shapes<T>(rng);
+  std::vector<PreparedShape<T>> prepared;
+  for (const auto& s : locals) prepared.emplace_back(s);
+  int checked = 0;
+  for (int round = 0; round < 3; ++round) {
+    // alternate shapes, so the scratch changes topology, grows and shrinks
+    for (std::size_t i = 0; i < prepared.size(); ++i) {
+      const auto x = random_pose<T>(rng, 2.0);
+      const ConvexPolyhedron<T>& posed_b = prepared[i].posed_scratch(x);
+      const ConvexPolyhedron<T> reference = transformed(locals[i], x);
+      require_same_derived(posed_b, reference);
+      require_same_derived(posed(locals[i], x), reference);
+      ++checked;
+    }
+  }
+  CHECK(checked == 3 * int(locals.size()));
 }

@@ -105,15 +105,6 @@
 // false: the decision goes exact.  FMA contraction only removes
 // roundings, so every bound holds with and without it.
 //
-// Rotated normals.  A posed shape (posing.hpp: B moved into A's frame by a
-// pose, ConvexPolyhedron::rigid_image_terms().rotated) stores its normals as
-// fl(M n), the source's unit normals rotated, not recomputed from the moved
-// vertices.  The decisions stay those of the exact plane-triple planes of the
-// moved vertices; only δ_P changes: normal_error() then returns the bound δ'
-// that posing.hpp derives (rotation defect, rounding of the rotation and of
-// the moved vertices), and the vertex-rounding γ terms of that shape's normals
-// are scaled by norm_factor() >= |n'| / (1 + γ_4).
-//
 // Centroids.  PlainKernel<mpq_class> orients an edge-pair axis (O(1) form) by
 // the sign of n*.(pA - cA) + n*.(cB - pB), cA and cB the exact vertex means
 // (axis_side).  For a Minkowski edge pair of exactly convex shapes both terms
@@ -207,15 +198,11 @@ class RobustKernel {
     }
     d_ = sqrt_d(d2) * kMargin;
     const double da_n = normal_error(a), db_n = normal_error(b);
-    // |n| <= (1 + γ_4) for recomputed normals, which the γ terms below
-    // assume; rotated normals (a posed shape, "Rotated normals") are up to
-    // norm_factor() longer, and those terms grow with them.
-    const double na = norm_factor(a), nb = norm_factor(b);
     // kG5S3 = γ_5 √3 (1+1e-6), kG3S3x2 = 2 γ_3 √3 (1+1e-6): compile-time constants (see "Compile-time constants")
-    face_err_a_ = (da_n * d_ + kG5S3 * (ma + mb) * na) * kMargin + 4 * kEta;
-    face_err_b_ = (db_n * d_ + kG5S3 * (ma + mb) * nb) * kMargin + 4 * kEta;
-    support_err_a_ = (kG3S3x2 * mb * na + da_n * db) * kMargin + 4 * kEta;  // B's vertices, A's faces
-    support_err_b_ = (kG3S3x2 * ma * nb + db_n * da) * kMargin + 4 * kEta;
+    face_err_a_ = (da_n * d_ + kG5S3 * (ma + mb)) * kMargin + 4 * kEta;
+    face_err_b_ = (db_n * d_ + kG5S3 * (ma + mb)) * kMargin + 4 * kEta;
+    support_err_a_ = (kG3S3x2 * mb + da_n * db) * kMargin + 4 * kEta;  // B's vertices, A's faces
+    support_err_b_ = (kG3S3x2 * ma + db_n * da) * kMargin + 4 * kEta;
     arc_err_a_ = (da_n + kG5) * db * kMargin + 2 * kEta;  // A's normals . B's edges
     arc_err_b_ = (db_n + kG5) * da * kMargin + 2 * kEta;
     arc_err_a_t_ = round_up(arc_err_a_);
@@ -784,31 +771,7 @@ class RobustKernel {
   // overflows, which gives kNoBound here).  O(1) per query.
   static double normal_error(const P& p) {
     static_assert(P::kNormalTinySquared == kTinySquared);
-    const auto& r = p.rigid_image_terms();
-    if (!r.rotated) [[likely]] return unit_error_from_ratio(p.normal_conditioning());
-    return rotated_normal_error(r);
-  }
-
-  // "Rotated normals": δ' = |M|_F (γ_3 (1 + δ_B) + δ_B) + 2κ + ω + vertex_term
-  // (posing.hpp derives it), δ_B the source shape's bound; kNoBound (every
-  // decision within it exact) when δ_B has none or δ' exceeds 1e-3, beyond
-  // which the γ terms' slack for |n'| > 1 (norm_factor) is not argued.
-  static double rotated_normal_error(const typename P::RigidImageTerms& r) {
-    const double db = unit_error_from_ratio(r.local_conditioning);
-    if (!(db < kNoBound)) return kNoBound;
-    const double d = (r.scale * (detail::gamma_constant<T>(3) * (1 + db) + db) + 2 * r.kappa + r.omega + r.vertex_term) *
-                     kMargin;
-    return d <= 1e-3 ? d : kNoBound;
-  }
-
-  // 1 for recomputed normals (their |n| <= 1 + γ_4 is in the γ terms);
-  // for rotated ones a bound on |n'| = |fl(M n)|: (|M|_2 + γ_3 |M|_F) |n| with
-  // |M|_2 <= sqrt(1 + ω) and |n| <= 1 + δ_B.
-  static double norm_factor(const P& p) {
-    const auto& r = p.rigid_image_terms();
-    if (!r.rotated) [[likely]] return 1.0;
-    const double db = unit_error_from_ratio(r.local_conditioning);
-    return (std::sqrt(1 + r.omega) + detail::gamma_constant<T>(3) * r.scale) * (1 + db) * kMargin;
+    return unit_error_from_ratio(p.normal_conditioning());
   }
 
   static double centroid_error(const P& p) {
