@@ -935,7 +935,7 @@ class ConvexPolyhedron {
   // faces x vertices > kConvexityScanPairs): face f's witnesses are, across
   // each of its edges, the two vertices of the neighbouring face next to that
   // edge.  Every edge convex (those witnesses below f's plane) and every vertex
-  // wound once (check_vertex_windings) on a closed, consistently oriented
+  // wound once (vertex_windings_once) on a closed, consistently oriented
   // genus-0 surface make the surface convex (docs/hull.md, "Validation").
   void local_convexity_witnesses(int f, std::vector<int>& out) const {
     out.clear();
@@ -951,7 +951,13 @@ class ConvexPolyhedron {
   // the plane normal to the sum of its faces' normals (inside the normal cone
   // of a convex corner), turn once around it (a ray-crossing count; exact for
   // exact T).  A star wound twice has convex edges but is not convex.
-  void check_vertex_windings() const {
+  // Returns false at the first vertex that is not wound once.  For float and
+  // double the count is taken on rounded projections with no tolerance, while
+  // the edges are convex only within Tolerances::convexity: a corner whose
+  // faces are convex within that tolerance can count 0.  The certificate is
+  // sufficient, not necessary, so validate_geometry then decides by the full
+  // scan of every vertex against every face plane.
+  bool vertex_windings_once() const {
     for (int v = 0; v < vertex_count(); ++v) {
       const auto fan = vertex_half_edges(v);
       Vec3<T> m(T(0), T(0), T(0));
@@ -979,11 +985,9 @@ class ConvexPolyhedron {
         if (p[1] <= T(0) && q[1] > T(0) && side > T(0)) ++wind;
         if (q[1] <= T(0) && p[1] > T(0) && side < T(0)) --wind;
       }
-      if (wind != 1 && wind != -1) {
-        fail(ErrorCode::NotConvex, "not convex: the faces around vertex " + std::to_string(v) + " turn " +
-                                       std::to_string(wind) + " times around it");
-      }
+      if (wind != 1 && wind != -1) return false;
     }
+    return true;
   }
 
   void validate_geometry() {
@@ -1075,8 +1079,8 @@ class ConvexPolyhedron {
     // global convexity and orientation: every vertex against every face
     // plane, or on large shapes the local certificate (local_convexity_witnesses)
     const bool scan = static_cast<double>(face_count()) * static_cast<double>(vertex_count()) <=
-                      kConvexityScanPairs;
-    if (!scan) check_vertex_windings();
+                          kConvexityScanPairs ||
+                      !vertex_windings_once();
     int faces_all_above = 0;
     int first_bad_face = -1, first_bad_vertex = -1;
     double first_bad_height = 0;

@@ -489,6 +489,35 @@ TEMPLATE_TEST_CASE("large hull: local checks agree with the full scans", "[hull]
   }
 }
 
+// A scanned height field: a 500 x 500 grid of z = 0.1 sin(7x) cos(5y) over
+// [-1, 1]^2. Its hull is large enough for the local certificate, and at a
+// corner of the grid the faces are convex within tolerance yet a vertex counts
+// 0 turns in rounded arithmetic: validation must then decide by the full scan
+// (the certificate is sufficient, not necessary), not refuse a convex hull.
+TEMPLATE_TEST_CASE("large hull: a height-field grid whose corner defeats the winding count", "[hull][large]", float,
+                   double) {
+  using T = TestType;
+  constexpr int n = 500;
+  std::vector<Vec3<T>> pts;
+  pts.reserve(n * n);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const double x = -1.0 + 2.0 * i / (n - 1), y = -1.0 + 2.0 * j / (n - 1);
+      pts.push_back(vec_cast<T>(Vec3<double>(x, y, 0.1 * std::sin(7 * x) * std::cos(5 * y))));
+    }
+  }
+  const auto h = convex_hull(pts);
+  INFO(h.vertex_count() << " vertices, " << h.face_count() << " faces");
+  CHECK(!h.is_flat());
+  const double tol = Tolerances<T>::convexity * h.extent();
+  double worst = -1e300;
+  for (int f = 0; f < h.face_count(); ++f)
+    for (const auto& v : h.vertices())
+      worst = std::max(worst, to_double(T(dot(h.plane(f).normal, v) - h.plane(f).offset)));
+  CHECK(worst <= tol);
+  CHECK(max_outside(h, pts) <= kHullRepairTolerance);
+}
+
 // A 0.4-unit piece 150 units from the origin: built in its own frame, whose
 // origin makes every subtraction exact, so every world vertex is an input point.
 TEMPLATE_TEST_CASE("far piece: convex_hull_local builds it in its own frame", "[hull][local]", float, double) {
