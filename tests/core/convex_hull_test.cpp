@@ -449,6 +449,17 @@ TEMPLATE_TEST_CASE("slab corners that the repair rounds lost are kept", "[hull][
   }
 }
 
+// The full scan the local certificate replaces: the largest height of a
+// vertex over a face plane (<= 0 up to rounding on a convex shape).
+template <class T>
+double max_vertex_height(const ConvexPolyhedron<T>& h) {
+  double worst = -1e300;
+  for (int f = 0; f < h.face_count(); ++f)
+    for (const auto& v : h.vertices())
+      worst = std::max(worst, to_double(T(dot(h.plane(f).normal, v) - h.plane(f).offset)));
+  return worst;
+}
+
 // Hulls large enough that the builder and validation check convexity by the
 // local certificate and measure points by climbs instead of scans
 // (kConvexityScanPairs, kHullPointScanPairs): the result still passes every
@@ -478,12 +489,7 @@ TEMPLATE_TEST_CASE("large hull: local checks agree with the full scans", "[hull]
       CHECK(static_cast<double>(h.vertex_count()) * h.face_count() > kConvexityScanPairs);
     CHECK(static_cast<double>(pts.size()) * h.face_count() > kHullPointScanPairs);
     CHECK(vertices_are_inputs(h, pts));
-    const double tol = Tolerances<T>::convexity * h.extent();
-    double worst = -1e300;
-    for (int f = 0; f < h.face_count(); ++f)
-      for (const auto& v : h.vertices())
-        worst = std::max(worst, to_double(T(dot(h.plane(f).normal, v) - h.plane(f).offset)));
-    CHECK(worst <= tol);
+    CHECK(max_vertex_height(h) <= Tolerances<T>::convexity * h.extent());
     // (a repair round puts back every point farther out than this)
     CHECK(max_outside(h, pts) <= kHullRepairTolerance);
   }
@@ -509,12 +515,7 @@ TEMPLATE_TEST_CASE("large hull: a height-field grid whose corner defeats the win
   const auto h = convex_hull(pts);
   INFO(h.vertex_count() << " vertices, " << h.face_count() << " faces");
   CHECK(!h.is_flat());
-  const double tol = Tolerances<T>::convexity * h.extent();
-  double worst = -1e300;
-  for (int f = 0; f < h.face_count(); ++f)
-    for (const auto& v : h.vertices())
-      worst = std::max(worst, to_double(T(dot(h.plane(f).normal, v) - h.plane(f).offset)));
-  CHECK(worst <= tol);
+  CHECK(max_vertex_height(h) <= Tolerances<T>::convexity * h.extent());
   CHECK(max_outside(h, pts) <= kHullRepairTolerance);
 }
 
