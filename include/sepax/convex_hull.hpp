@@ -926,8 +926,8 @@ class Builder {
   int side(int f, int p, double& approx) {
     const Tri& t = tris_[sz(f)];
     if (shadow_) {
-      const hull::FilteredSign r =
-          hull::orientation_filter(qd_[sz(t.v[0])], qd_[sz(t.v[1])], qd_[sz(t.v[2])], qd_[sz(p)]);
+      const FilteredSign r =
+          orientation_filter(qd_[sz(t.v[0])], qd_[sz(t.v[1])], qd_[sz(t.v[2])], qd_[sz(p)]);
       approx = r.det;
       if (r.certain) return r.det > 0 ? 1 : -1;
     }
@@ -1503,8 +1503,8 @@ class Builder {
       if (!shadow_) return false;
       const Tri& tx = tris_[sz(x)];
       for (int v : tris_[sz(y)].v) {
-        const hull::FilteredSign r =
-            hull::orientation_filter(qd_[sz(tx.v[0])], qd_[sz(tx.v[1])], qd_[sz(tx.v[2])], qd_[sz(v)]);
+        const FilteredSign r =
+            orientation_filter(qd_[sz(tx.v[0])], qd_[sz(tx.v[1])], qd_[sz(tx.v[2])], qd_[sz(v)]);
         if (r.certain) return true;
       }
     } else {
