@@ -393,7 +393,13 @@ bool exactly_supported(const Exact& E, const EdgeGaps& g, const Feature& f, bool
 //   (6) a nearly parallel edge pair is skipped;
 //   (8) a Gauss-map edge axis is oriented the other way (compared per pair as
 //       axis_side);
-//   (9) the brute force accepts a pair within its support tolerance.
+//   (9) the brute force accepts a pair within its support tolerance;
+//   (10) on an input whose exact image is not exactly convex, the
+//       traversal skips an arc of A by its arc bound (docs/traversal.md,
+//       step 3: every pair on the arc is at most max(height(f0, x),
+//       height(f1, x)) for a vertex x of B), which holds only for exactly
+//       convex shapes: a pair beyond its choice is explained when its arc
+//       was prunable by the best it reported (arc_prunable).
 // The SAT's result is explained by them when
 //   (i)   its value sf is within its bound bf of the exact value of its
 //         feature as its kernel decided it (own: the flipped axis's value for
@@ -411,6 +417,25 @@ struct DecisionCheck {
   bool ok = false;
   std::string why;
 };
+
+// (10): could a traversal whose best ended at the computed value sf have
+// skipped the arc of A's edge ea by the arc bound?  It skips it when some
+// vertex x of B has both computed heights over the arc's faces f0, f1 below
+// its best at that time, which is at most sf; a computed height is within
+// its face bound of the exact one, so x must have both exact heights below
+// sf + that bound.  Decided exactly.
+template <class F>
+bool arc_prunable(const FloatSide<F>& S, int ea, double sf) {
+  const Exact& E = S.E;
+  const int f0 = E.A.edge_face(ea, 0), f1 = E.A.edge_face(ea, 1);
+  const Separation<Q> best{Q(sf), Q(1)};
+  for (int x = 0; x < E.B.vertex_count(); ++x) {
+    const bool below0 = !beats(E.k->face_separation_a(f0, x), best, S.bound(Sat::traversal, Feature::face_a(f0, x)));
+    if (below0 && !beats(E.k->face_separation_a(f1, x), best, S.bound(Sat::traversal, Feature::face_a(f1, x))))
+      return true;
+  }
+  return false;
+}
 
 template <class F, class Policy>
 DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>& r, double bf) {
@@ -484,6 +509,7 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
         const EdgeGaps g = exact_edge_gaps(E, ea, eb);  // the lower of the two orientations it may have taken
         measured(sepax::compare(g.plus(), g.minus()) <= 0 ? g.plus() : g.minus(), f);
       } else if (taken) {
+        if (sat == Sat::traversal && !E.convex && arc_prunable(S, ea, sf)) continue;  // (10)
         const Separation<Q> x = E.k->edge_separation(ea, eb);
         measured(orientation_flipped(k, E, f) ? Separation<Q>{Q(-x.num), x.norm2} : x, f);
       } else if (exact_candidate) {

@@ -590,6 +590,57 @@ void check_estimates(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b,
 
 }  // namespace
 
+// The reported axis of an edge pair (axis(), what a contact normal comes
+// from): within kReportedAxisError of the exact unit direction and oriented
+// as exact arithmetic orients it, also for nearly parallel edges whose T
+// cross product points anywhere.
+TEMPLATE_TEST_CASE("robust edge-pair axis: near the exact direction, exactly oriented", "[robust][kernel][axis]",
+                   float, double) {
+  using T = TestType;
+  std::vector<std::pair<ConvexPolyhedron<T>, ConvexPolyhedron<T>>> cases;
+  // two triangles whose first edges make an angle theta, one above the other
+  const Vec3<double> p0(0.31, 0.72, 0.13), d(0.027, 0.011, 0.004), e(0.003, 0.021, -0.002);
+  for (double theta : {1e-2, 1e-4, 1e-6, 1e-7, 1e-8, 1e-10, 1e-12, 1e-14, 1e-16}) {
+    const Vec3<double> axis = cross(d, e).normalized();
+    const Vec3<double> dr = Eigen::AngleAxisd(theta, axis) * d;
+    const Vec3<double> q0 = p0 + Vec3<double>(2e-8, -1e-8, 3e-8);
+    auto tri = [](const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c) {
+      return ConvexPolyhedron<T>::polygon({a.cast<T>(), b.cast<T>(), c.cast<T>()});
+    };
+    cases.emplace_back(tri(p0, p0 + d, p0 + e), tri(q0, q0 + dr, q0 - e));
+    cases.emplace_back(tri(p0, p0 + d, p0 + e), tri(q0 + Vec3<double>(0, 0, 0.01), q0 + dr, q0 + 2 * e));
+  }
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int n : {8, 16}) {
+    const auto ha = random_sphere_hull<T>(rng, n);
+    cases.emplace_back(ha, posed(random_sphere_hull<T>(rng, n), random_rotation(rng),
+                                 Vec3<double>(u(rng), u(rng), u(rng)), 1.0));
+  }
+  int checked = 0;
+  for (const auto& [a, b] : cases) {
+    const auto ae = ConvexPolyhedron<mpq_class>::convert_from(a);
+    const auto be = ConvexPolyhedron<mpq_class>::convert_from(b);
+    const PlainKernel<mpq_class> ke(ae, be);
+    const RobustKernel<T> k(a, b);
+    for (int ea = 0; ea < a.edge_count(); ++ea) {
+      for (int eb = 0; eb < b.edge_count(); ++eb) {
+        if (ke.edges_parallel(ea, eb)) continue;
+        const Feature f = Feature::edges(ea, eb);
+        const Vec3<mpq_class> m = ke.axis(f);  // exact, oriented, not normalised
+        const Vec3<double> md(m[0].get_d(), m[1].get_d(), m[2].get_d());
+        const Vec3<double> exact_unit = md / md.norm();  // relative error ~1e-16
+        const Vec3<T> n = k.axis(f);
+        const double err = (n.template cast<double>() - exact_unit).norm();
+        INFO("edges (" << ea << ", " << eb << "): |axis - exact| = " << err);
+        CHECK(err <= RobustKernel<T>::kReportedAxisError + 8 * std::numeric_limits<T>::epsilon());
+        ++checked;
+      }
+    }
+  }
+  CHECK(checked > 100);
+}
+
 TEMPLATE_TEST_CASE("robust face estimates: within their bound of the exact face separation",
                    "[robust][kernel][estimate]", float, double) {
   using T = TestType;

@@ -623,13 +623,26 @@ class RobustKernel {
     return compare_margin_exact(f, m);
   }
 
+  /// Largest error |n - n*| of a reported edge-pair axis (axis()), unitless
+  /// (a chord of the unit sphere, about the angle in radians).  Beyond it the
+  /// T unit axis is replaced by the exact direction (a few units of roundoff).
+  static constexpr double kReportedAxisError = 0x1p-10;
+
+  /// The feature's unit axis, from A to B.  An edge pair's axis is the T
+  /// unit cross product (PlainKernel's) when its bound delta (|n - n*|, n*
+  /// the exact unit direction) is at most kReportedAxisError; otherwise (edges
+  /// nearly parallel, where the T cross product may point anywhere) it is the
+  /// exact cross product's direction, rounded.  Its orientation is the exact
+  /// one either way (edge_sigma).
   Vec3<T> axis(const Feature& f) const {
     switch (f.type) {
       case FeatureType::FaceA: return a_.plane(f.a).normal;
       case FeatureType::FaceB: return Vec3<T>(-b_.plane(f.b).normal);
       case FeatureType::EdgePair: {
-        const EdgeAxis ax = edge_axis(f.a, f.b);
-        return edge_sigma(f.a, f.b) < 0 ? Vec3<T>(-ax.n) : ax.n;
+        EdgeAxis ax = edge_axis(f.a, f.b);
+        const int sigma = edge_sigma(f.a, f.b);
+        if (!(ax.delta <= kReportedAxisError)) ax = exact_edge_axis(f.a, f.b);
+        return sigma < 0 ? Vec3<T>(-ax.n) : ax.n;
       }
       case FeatureType::SideA: return side_normal(a_, f.a);
       case FeatureType::SideB: return Vec3<T>(-side_normal(b_, f.b));
