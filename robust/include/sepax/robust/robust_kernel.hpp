@@ -22,88 +22,12 @@
 // separation_compare.hpp) only when |value| <= bound.  Argmin/argmax keep the
 // few candidates within the bound and resolve them exactly.
 //
-// ---- Error bounds -------------------------------------------------------------
-// u = unit roundoff of T, γ_k = k u / (1 - k u), η_T = smallest subnormal of T.
-// Per query, O(1) from terms each ConvexPolyhedron computes once (with its
-// planes: max_abs_coordinate, extent, bounds, centroid; on first use:
-// normal_conditioning), no allocation:
-//   M_P   max |coordinate| of P (exact);  D_P  bbox diagonal of P;
-//   D     bbox diagonal of A ∪ B  (|p - q| <= D for any two vertices);
-//   δ_P   bound on |n_f - N_f/|N_f|| over faces f of P, where n_f is the stored
-//         unit normal and N_f the exact cross product of the plane triple.
-// The stored normal is n = fl(Ñ / fl(sqrt(fl(Ñ.Ñ)))), Ñ = fl(ẽ1 x ẽ2), ẽ the
-// rounded triple differences.  Each component of Ñ meets 4 roundings per term
-// (2 differences, product, subtraction): |Ñ - N| <= γ_4 |Q| <= γ_4 √2 |e1||e2|
-// (Q_x = |e1_y e2_z| + |e1_z e2_y|, Σ Q_x^2 <= 2 |e1|^2 |e2|^2), plus √3 η_T for
-// products that underflow.  Normalising: sqrt of a dot of squares has relative
-// error <= γ_3/2 + u, the division u, so |n - Ñ/|Ñ|| <= γ_4; and
-// |x/|x| - y/|y|| <= 2|x - y|/|y|.  With q = γ_4 √2 |ẽ1||ẽ2|/(1-u)^2 + √3 η_T:
-//   δ_f = γ_4 + 2 q / (|Ñ| - q)      (2.5, i.e. "always exact", if |Ñ| <= 2q)
-// and δ_P = max_f δ_f, computed from ρ_P = max_f ρ_f, ρ_f = |ẽ1||ẽ2| / |Ñ|
-// (ConvexPolyhedron::normal_conditioning, once per shape; normal_error).
-// The same formula bounds the unit edge axis n = fl(normalize(dA x dB)) of an
-// edge pair (δ_e, computed per pair).
-//
-// (face value)   h̃ = fl(fl(n.v) - fl(n.a)) vs h = N.(v - a)/|N|:
-//   |fl(n.v) - n.v| <= γ_3 |n||v| <= γ_3 (1+γ_4) √3 M_Q, the same for n.a with M_P,
-//   |(n - N/|N|).(v - a)| <= δ_P D, the final subtraction <= u |h̃ + ...|:
-//   E_face(P) = δ_P D + γ_5 √3 (M_P + M_Q)                         (+ 4 η_T)
-// (support)      two vertices v, w of Q along face f of P, compared through
-//   g = fl(n.v): |(g_v - g_w) - (N/|N|).(v - w)| <= 2 γ_3 (1+γ_4) √3 M_Q + δ_P D_Q = W_P.
-//   One pass keeps the minimum and the second minimum; if they are more than
-//   W_P apart the float argmin is the exact unique argmin, else the vertices
-//   within W_P of the minimum are compared exactly (lowest index wins ties).
-//   The SATs' face scans ask for it only where the feature can matter: a
-//   face whose min-only estimate (face_estimate_*, within E_face of the exact
-//   value) is certainly below the best so far is skipped (best_axis.hpp).
-// (arc sign)     fl(n_f . fl(head - tail)) vs (N/|N|).e:
-//   (δ_P + γ_5) |e| <= (δ_P + γ_5) D_Q = E_arc(P)                   (+ 2 η_T)
-// (edge value)   both the O(1) form fl(n.fl(pB - pA)) and the projection form
-//   fl(min_B fl(n.w) - max_A fl(n.v)) differ from σ (eA x eB).(pB - pA)/|eA x eB|
-//   by at most δ_e D + γ_8 (D + √3 (M_A + M_B)) (for the projection form, shift
-//   every projection by the common (n - n*).o, o the centre of the union bbox:
-//   the shift cancels in min - max, what remains is <= δ_e D/2 per side).
-// (centroid side) fl(n.fl(p - c̃)) vs n*.(p - c) with c the exact mean:
-//   the stored centroid c̃ is a sequential sum and a division, |c̃ - c| <=
-//   √3 γ_{V+1} M_P =: C_P; the error is <= (δ_e + γ_5)(D_P + C_P) + C_P.
-// (parallel)     a finite axis bound δ_e proves eA x eB != 0 (edges_parallel);
-//                otherwise parallel.hpp's own filter.
-// (pair prefilter) float T only (edge_pair_below).  Products of floats are
-//   exact in double, and with both shapes lanes_bounded (|x| <= 2^60) nothing
-//   below overflows or underflows (every double product is >= 2^-298 in
-//   magnitude or zero).  u = 2^-24, u_d = 2^-53.  Exact: N = eA x eB (exact
-//   edge vectors), w* = (pA - cA) + (cB - pB) (exact means), σ* = -1 if
-//   N.w* < 0 else +1 (axis_side's rule), t* = N.(pB - pA), and the pair's
-//   exact separation s* = σ* t*/|N|.  Computed in double from the T data:
-//   Ĉ = fl(ẽA x ẽB), v̂ = fl(Ĉ.ŵ), ŵ = fl((pA - c̃A) + (c̃B - pB)), t̂ = fl(Ĉ.d̂),
-//   d̂ = fl(pB - pA).
-//   - |ẽ - e| <= u|e| per edge, so |ẽA x ẽB - N| <= (2u + u^2)|eA||eB| <=
-//     κ |ẽA||ẽB|, κ = (2u + u^2)/(1 - u)^2; Ĉ rounds each component once:
-//     |Ĉ - N| <= (κ + u_d) K =: ε_N with K = (1+u)^2 D_A D_B >= |ẽA||ẽB|
-//     (|e| <= D_P), and |Ĉ| <= (1 + u_d) K.
-//   - |t̂ - t*| <= γ_3,d |Ĉ||d̂| + |Ĉ| u_d |d| + ε_N |d| <= (κ + 8 u_d) K D =: E_t
-//     (|d| <= D).
-//   - |v̂ - N.w*| <= γ_3,d |Ĉ||ŵ| + |Ĉ||ŵ - w̃| + |Ĉ|(C_A + C_B) + ε_N |w*|
-//     (w̃ the exact sum with the stored centroids: |w̃ - w*| <= C_A + C_B;
-//     |ŵ - w̃| <= 2.0001 u_d S; |w*|, |w̃| <= S, S = D_A + C_A + D_B + C_B)
-//     <= K ((C_A + C_B) + (κ + 8 u_d) S) =: E_σ.  |v̂| > E_σ gives σ* = sign v̂.
-//   - With M = best_err - best > 0 (the best's exact value is >= best -
-//     best_err = -M): s* < -M holds if -σ̂ t̂ - E_t > M (|Ĉ| + ε_N), since
-//     σ* t* <= σ̂ t̂ + E_t and |N| <= |Ĉ| + ε_N.  Both sides positive, so it is
-//     tested squared, with (|Ĉ| + ε_N)^2 <= |Ĉ|^2 + Q, Q = ε_N (2 (1 + u_d) K
-//     + ε_N): y = fl(-σ̂ t̂ - E_t) > 0 and fl(y y) > fl(M M (fl(Ĉ.Ĉ) + Q)) (1+1e-6).
-//     The computed sides are within (1 + 12 u_d) of the real ones, far
-//     inside the margin.  Parallel edges (N = 0, t* = 0, |t̂| <= E_t) never
-//     pass.  With FMA the products are exact anyway and the dot products
-//     lose roundings, so the bounds hold either way.
-// Every bound is computed in double and multiplied by (1 + 1e-6), which covers
-// the rounding of the bound computation itself (relative 1e-15), the
-// (1 + γ_4) factors for float (relative 3e-7) and the absolute underflow terms
-// of the normalisation (<= √3 η_T / |Ñ| with |Ñ|^2 >= 2^40 * FLT/DBL_MIN, far
-// below 1e-6 γ_4; smaller cross products get no bound: always exact).
-// Overflow or NaN anywhere in a bound makes it infinite or the comparison
-// false: the decision goes exact.  FMA contraction only removes
-// roundings, so every bound holds with and without it.
+// Error bounds: error_bounds.hpp.  Per query, O(1) from terms each
+// ConvexPolyhedron computes once (with its planes: max_abs_coordinate, extent,
+// bounds, centroid; on first use: normal_conditioning), no allocation:
+// QueryBounds<T>, one named field per bound with its derivation (face value,
+// support, arc sign, edge value, projection, centroid side, pair prefilter);
+// per edge pair, the unit axis bound δ_e (unit_error_from_ratio).
 //
 // Centroids.  PlainKernel<mpq_class> orients an edge-pair axis (O(1) form) by
 // the sign of n*.(pA - cA) + n*.(cB - pB), cA and cB the exact vertex means
@@ -133,6 +57,7 @@
 #include <type_traits>
 
 #include <sepax/plain_kernel.hpp>
+#include <sepax/robust/error_bounds.hpp>
 #include <sepax/robust/exact_float.hpp>
 #include <sepax/robust/orientation.hpp>
 #include <sepax/robust/parallel.hpp>
@@ -162,87 +87,25 @@ namespace policy {
 struct Robust {};
 }  // namespace policy
 
-template <class T>
-concept RobustFloat = std::is_same_v<T, float> || std::is_same_v<T, double>;
-
-namespace detail {
-/// γ_k = k u / (1 - k u) for T's unit roundoff u.  Used only in RobustKernel's
-/// static constexpr members, which are constant-evaluated (see "Compile-time
-/// constants" there).
-template <class T>
-constexpr double gamma_constant(int k) {
-  constexpr double u = number_traits<T>::unit_roundoff;
-  return k * u / (1.0 - k * u);
-}
-}  // namespace detail
-
 template <RobustFloat T>
-class RobustKernel {
+class RobustKernel : robust::ErrorConstants<T> {
  public:
   using FT = T;
 
-  RobustKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) : a_(a), b_(b) {
-    const double ma = a.max_abs_coordinate(), mb = b.max_abs_coordinate();
-    const double da = padded_extent(a), db = padded_extent(b);
-    // min/max without jumps (minsd/maxsd): the bounding boxes' order is
-    // random per query, and std::min/max compiled to compare-and-branch
-    // (about 3 mispredicted branches per query).  No NaN in the bounds of a
-    // valid shape; with one, minsd/maxsd return one of the operands and the
-    // bound below is NaN or not, as with std::min/max (a NaN bound sends every
-    // decision to the exact stage).
-    double d2 = 0;
-    for (int c = 0; c < 3; ++c) {
-      const double lo = min_d(a.bounds_min()[c], b.bounds_min()[c]);
-      const double hi = max_d(a.bounds_max()[c], b.bounds_max()[c]);
-      d2 += (hi - lo) * (hi - lo);
-    }
-    d_ = sqrt_d(d2) * kMargin;
-    const double da_n = normal_error(a), db_n = normal_error(b);
-    // kG5S3 = γ_5 √3 (1+1e-6), kG3S3x2 = 2 γ_3 √3 (1+1e-6): compile-time constants (see "Compile-time constants")
-    face_err_a_ = (da_n * d_ + kG5S3 * (ma + mb)) * kMargin + 4 * kEta;
-    face_err_b_ = (db_n * d_ + kG5S3 * (ma + mb)) * kMargin + 4 * kEta;
-    support_err_a_ = (kG3S3x2 * mb + da_n * db) * kMargin + 4 * kEta;  // B's vertices, A's faces
-    support_err_b_ = (kG3S3x2 * ma + db_n * da) * kMargin + 4 * kEta;
-    arc_err_a_ = (da_n + kG5) * db * kMargin + 2 * kEta;  // A's normals . B's edges
-    arc_err_b_ = (db_n + kG5) * da * kMargin + 2 * kEta;
-    arc_err_a_t_ = round_up(arc_err_a_);
-    arc_err_b_t_ = round_up(arc_err_b_);
-    support_err_a_t_ = round_up(support_err_a_);
-    support_err_b_t_ = round_up(support_err_b_);
-    edge_abs_ = kG8 * (d_ + kS3 * (ma + mb)) * kMargin + 8 * kEta;
-    proj_abs_a_ = kG3S3x2 * ma * kMargin + 4 * kEta;
-    proj_abs_b_ = kG3S3x2 * mb * kMargin + 4 * kEta;
-    centroid_err_a_ = centroid_error(a);
-    centroid_err_b_ = centroid_error(b);
-    extent_a_ = da;
-    extent_b_ = db;
-    d_margin_ = d_ * kMargin;
-    side_span_ = ((extent_a_ + centroid_err_a_) + (extent_b_ + centroid_err_b_)) * kMargin;
-    side_abs_ = (centroid_err_a_ + centroid_err_b_) * kMargin + 8 * kEta;
-    lanes_ = a.lanes_bounded() && b.lanes_bounded();
-    if constexpr (std::is_same_v<T, float>) {
-      // "(pair prefilter)": K = (1+u)^2 D_A D_B >= |ẽA||ẽB| (da, db are the
-      // padded D_A, D_B), ε = κ + 8 u_d, ε_N = (κ + u_d) K.
-      const double k = kPreK * da * db;
-      const double en = (kPreKappa + kUd) * k;
-      pre_value_err_ = (kPreKappa + 8 * kUd) * k * d_ * kMargin;
-      pre_side_err_ = k * ((centroid_err_a_ + centroid_err_b_) + (kPreKappa + 8 * kUd) * side_span_) * kMargin;
-      pre_norm_sq_ = en * (2 * k * (1 + kUd) + en) * kMargin;
-    }
-    arc_lane_bound_ = arc_err_a_t_ < arc_err_b_t_ ? arc_err_b_t_ : arc_err_a_t_;
-  }
+  RobustKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b)
+      : a_(a), b_(b), e_(a, b), lanes_(a.lanes_bounded() && b.lanes_bounded()) {}
 
   const ConvexPolyhedron<T>& a() const { return a_; }
   const ConvexPolyhedron<T>& b() const { return b_; }
 
   SEPAX_ROBUST_INLINE FaceQuery<T> face_query_a(int f) const {
-    FaceQuery<T> q = face_query(a_, f, b_, support_err_a_, support_err_a_t_);
-    q.separation = snap(q.separation.num, face_err_a_, Feature::face_a(f, q.support_vertex));
+    FaceQuery<T> q = face_query(a_, f, b_, e_.support_a, e_.support_a_t);
+    q.separation = snap(q.separation.num, e_.face_a, Feature::face_a(f, q.support_vertex));
     return q;
   }
   SEPAX_ROBUST_INLINE FaceQuery<T> face_query_b(int f) const {
-    FaceQuery<T> q = face_query(b_, f, a_, support_err_b_, support_err_b_t_);
-    q.separation = snap(q.separation.num, face_err_b_, Feature::face_b(q.support_vertex, f));
+    FaceQuery<T> q = face_query(b_, f, a_, e_.support_b, e_.support_b_t);
+    q.separation = snap(q.separation.num, e_.face_b, Feature::face_b(q.support_vertex, f));
     return q;
   }
 
@@ -254,7 +117,7 @@ class RobustKernel {
   /// reports the same value when its support vertex is the float argmin.
   /// Its error against the face's exact separation h* = min_v h(v) (h(v) =
   /// N.(v - a)/|N|, the exact support vertex's height) is at most E_face,
-  /// face_err_a_ (the header's "(face value)", which bounds
+  /// e_.face_a (error_bounds.hpp, QueryBounds::face_a, which bounds
   /// |fl(g_v - offset) - h(v)| for every vertex v, with or without FMA):
   /// with u the vertex attaining m and w an exact argmin,
   ///   h* <= h(u) <= fl(m - offset) + E_face, and, since g_w >= m and
@@ -262,11 +125,11 @@ class RobustKernel {
   /// No exact stage runs here.
   SEPAX_ROBUST_INLINE FaceEstimate<T> face_estimate_a(int f) const {
     const Plane<T>& pl = a_.plane(f);
-    return FaceEstimate<T>{Separation<T>{T(support_min(pl, b_) - pl.offset), T(1)}, face_err_a_};
+    return FaceEstimate<T>{Separation<T>{T(support_min(pl, b_) - pl.offset), T(1)}, e_.face_a};
   }
   SEPAX_ROBUST_INLINE FaceEstimate<T> face_estimate_b(int f) const {
     const Plane<T>& pl = b_.plane(f);
-    return FaceEstimate<T>{Separation<T>{T(support_min(pl, a_) - pl.offset), T(1)}, face_err_b_};
+    return FaceEstimate<T>{Separation<T>{T(support_min(pl, a_) - pl.offset), T(1)}, e_.face_b};
   }
 
   // Side axes (both shapes flat; best_axis.hpp).  No filter: the case is
@@ -279,16 +142,16 @@ class RobustKernel {
   FaceQuery<T> side_query_b(int e) const { return side_query(b_, e, a_, false); }
 
   Separation<T> face_separation_a(int f, int vb) const {
-    return snap(height(a_.plane(f), b_.vertex(vb)).num, face_err_a_, Feature::face_a(f, vb));
+    return snap(height(a_.plane(f), b_.vertex(vb)).num, e_.face_a, Feature::face_a(f, vb));
   }
   Separation<T> face_separation_b(int f, int va) const {
-    return snap(height(b_.plane(f), a_.vertex(va)).num, face_err_b_, Feature::face_b(va, f));
+    return snap(height(b_.plane(f), a_.vertex(va)).num, e_.face_b, Feature::face_b(va, f));
   }
 
   // ---- the traversal's filtered support comparisons (optional members) ----
   // Two vertices u, v of B below face f of A are compared through
   // g = fl(n_f . p) (the support scan's values): |(g_u - g_v) - (N/|N|).(u - v)|
-  // <= W_A (support_err_a_, "(support)" in the header).  support_filter_a() is
+  // <= W_A (e_.support_a, "(support)" in error_bounds.hpp).  support_filter_a() is
   // W_A rounded up to T, so a T comparison is enough: rounding is monotone and
   // -W is a T value, so fl(g_u - g_v) < -W implies g_u - g_v < -W (exactly),
   // hence N.(u - v) < 0; likewise > W.  FMA contraction inside the dot products
@@ -298,9 +161,9 @@ class RobustKernel {
 
   /// W_A rounded up to T: bound on the error of fl(n_f.u) - fl(n_f.v), f a face
   /// of A, u, v vertices of B.
-  T support_filter_a() const { return support_err_a_t_; }
+  T support_filter_a() const { return e_.support_a_t; }
   /// W_B rounded up to T (faces of B, vertices of A).
-  T support_filter_b() const { return support_err_b_t_; }
+  T support_filter_b() const { return e_.support_b_t; }
   /// Exact sign of N_f . (b_u - b_v), N_f the plane triple's cross product of
   /// face f of A: < 0 when vertex u of B is strictly deeper below f than v.
   /// Out of line (and cold: asked only within the filter): inlined, its
@@ -357,7 +220,7 @@ class RobustKernel {
     const T d = dot(b_.edge_normal(eb, 1), da);
     const T a = dot(a_.edge_normal(ea, 0), db);
     const T b = dot(a_.edge_normal(ea, 1), db);
-    const T eb_ = arc_err_b_t_, ea_ = arc_err_a_t_;  // the bounds rounded up to T
+    const T eb_ = e_.arc_b_t, ea_ = e_.arc_a_t;  // the bounds rounded up to T
     ArcSigns s;
     s.cba = (c > eb_) - (c < -eb_);
     s.dba = (d > eb_) - (d < -eb_);
@@ -378,7 +241,7 @@ class RobustKernel {
     const Vec3<T>& da = a_.edge_dir(ea);
     const T c = dot(b_.edge_normal(eb, 0), da);
     const T d = dot(b_.edge_normal(eb, 1), da);
-    const T eb_ = arc_err_b_t_;
+    const T eb_ = e_.arc_b_t;
     // certainly on the same side (filtered signs both +1 or both -1): the
     // common case.  Comparisons with NaN are false, so NaN goes to the exact
     // stage like any value within the bound.  With lanes_ (both shapes
@@ -398,7 +261,7 @@ class RobustKernel {
     const Vec3<T>& db = b_.edge_dir(eb);
     const T a = dot(a_.edge_normal(ea, 0), db);
     const T b = dot(a_.edge_normal(ea, 1), db);
-    const T ea_ = arc_err_a_t_;
+    const T ea_ = e_.arc_a_t;
     const int adc = (a < -ea_) - (a > ea_);
     const int bdc = (b < -ea_) - (b > ea_);
     if (adc * bdc == 0) [[unlikely]] return minkowski_face_resolve(ea, eb);
@@ -411,8 +274,8 @@ class RobustKernel {
   /// B's lane arrays (simd_lanes.hpp, arc_candidates<true>) computes the same
   /// four values c, d, a, b as minkowski_face, for a few edges at once, and
   /// drops a pair only when both sign patterns of a crossing are certainly
-  /// violated: some value is beyond the bound arc_lane_bound_ = max(arc_err_a_t_,
-  /// arc_err_b_t_) >= the bound of each value (see the header: E_arc, rounded
+  /// violated: some value is beyond the bound e_.arc_lane = max(e_.arc_a_t,
+  /// e_.arc_b_t) >= the bound of each value (error_bounds.hpp: E_arc, rounded
   /// up to T) on the wrong side, so its exact sign is wrong as well.  A
   /// survivor whose four values are all beyond the bound with the crossing
   /// signs (all > bound or all < -bound: every exact sign is certain)
@@ -422,7 +285,7 @@ class RobustKernel {
   /// mispredicted loop exit per edge of A).  Otherwise (some value within the
   /// bound, or NaN) every survivor goes through minkowski_face, which decides
   /// exactly (the certain ones cost it only its filters, which pass: their
-  /// per-side bounds are <= arc_lane_bound_).  So the result is exactly
+  /// per-side bounds are <= e_.arc_lane).  So the result is exactly
   /// {eb : minkowski_face(ea, eb)}, with or without FMA contraction (the bound
   /// holds either way).  The lanes need both shapes lanes_bounded() (no
   /// overflow, no NaN); otherwise every pair takes minkowski_face.
@@ -430,7 +293,7 @@ class RobustKernel {
     if (lanes_) {
       bool uncertain;
       const int m = simd::arc_candidates<true>(b_, lo, hi, a_.edge_dir(ea), a_.edge_normal(ea, 0),
-                                               a_.edge_normal(ea, 1), arc_lane_bound_, out, &uncertain);
+                                               a_.edge_normal(ea, 1), e_.arc_lane, out, &uncertain);
       if (!uncertain) [[likely]] return m;
       return minkowski_faces_resolve(ea, m, out);
     }
@@ -459,7 +322,7 @@ class RobustKernel {
     const Vec3<T>& da = a_.edge_dir(ea);
     const T c = dot(b_.edge_normal(eb, 0), da);
     const T d = dot(b_.edge_normal(eb, 1), da);
-    const T eb_ = arc_err_b_t_;
+    const T eb_ = e_.arc_b_t;
     int cba = (c > eb_) - (c < -eb_);
     int dba = (d > eb_) - (d < -eb_);
     if (cba * dba == 0) resolve_arc_signs_ba(cba, dba, ea, eb, c, d);
@@ -467,7 +330,7 @@ class RobustKernel {
     const Vec3<T>& db = b_.edge_dir(eb);
     const T a = dot(a_.edge_normal(ea, 0), db);
     const T b = dot(a_.edge_normal(ea, 1), db);
-    const T ea_ = arc_err_a_t_;
+    const T ea_ = e_.arc_a_t;
     int adc = (a < -ea_) - (a > ea_);
     int bdc = (b < -ea_) - (b > ea_);
     if (adc * bdc == 0) resolve_arc_signs_dc(adc, bdc, ea, eb, a, b);
@@ -478,7 +341,7 @@ class RobustKernel {
   /// Exact: (head_A - tail_A) x (head_B - tail_B) == 0.  The edge pair's
   /// unit axis (edge_axis, which edge_separation needs next anyway) decides
   /// it first: a bounded axis (delta < kNoBound) means |Ñ| > 2q, q >= |Ñ - N|
-  /// the bound of the header's "δ_f" derivation (Ñ = fl(ẽA x ẽB), N the exact
+  /// the bound of error_bounds.hpp's unit_error_from_ratio (Ñ = fl(ẽA x ẽB), N the exact
   /// cross product of the exact edge vectors), so |N| >= |Ñ| - q > 0: the
   /// edges are certainly not parallel.  (unit_error_from_ratio returns a
   /// finite delta only for q/|Ñ| < 1/2, computed with the (1+1e-6)^2 pad that
@@ -511,7 +374,7 @@ class RobustKernel {
   /// from the T inputs in double, without the unit axis, its bound or an
   /// exact stage, so a pair that exact arithmetic would offer and reject
   /// costs about 40 instructions instead of edges_parallel, edge_separation
-  /// and a comparison.  The bounds are the header's "(pair prefilter)".
+  /// and a comparison.  The bounds are error_bounds.hpp's "(pair prefilter)".
   bool edge_pair_below(int ea, int eb, T best, double best_err) const
     requires std::is_same_v<T, float>
   {
@@ -534,14 +397,14 @@ class RobustKernel {
              (static_cast<double>(cb[i]) - static_cast<double>(pb[i]));
     };
     const double v = cx * wc(0) + cy * wc(1) + cz * wc(2);
-    if (!(std::abs(v) > pre_side_err_)) return false;  // orientation not certain
+    if (!(std::abs(v) > e_.pre_side)) return false;  // orientation not certain
     // t̂ = Ĉ . d̂, d̂ = pB - pA; σ̂ t̂ the oriented value times |Ĉ|.
     const double t = cx * (static_cast<double>(pb[0]) - static_cast<double>(pa[0])) +
                      cy * (static_cast<double>(pb[1]) - static_cast<double>(pa[1])) +
                      cz * (static_cast<double>(pb[2]) - static_cast<double>(pa[2]));
-    const double y = (v < 0 ? t : -t) - pre_value_err_;  // -σ̂ t̂ - E_t
+    const double y = (v < 0 ? t : -t) - e_.pre_value;  // -σ̂ t̂ - E_t
     const double n2 = cx * cx + cy * cy + cz * cz;
-    return (y > 0) & (y * y > m * m * (n2 + pre_norm_sq_) * kMargin);
+    return (y > 0) & (y * y > m * m * (n2 + e_.pre_norm_sq) * kMargin);
   }
 
   Separation<T> edge_separation(int ea, int eb) const {
@@ -564,12 +427,12 @@ class RobustKernel {
     const EdgeAxis ax = edge_axis(ea, eb);
     const Vec3<T>& n = ax.n;
     Extremes ea_x = extremes(a_, n, a_.edge_tail(ea), a_.edge_head(ea));
-    const double wa = proj_abs_a_ + ax.delta * extent_a_ * kMargin;
+    const double wa = e_.proj_abs_a + ax.delta * e_.extent_a * kMargin;
     const bool a_max = all_on_side(a_, ea_x, n, wa, +1, ea, eb);
     const bool a_min = all_on_side(a_, ea_x, n, wa, -1, ea, eb);
     if (!a_max && !a_min) return std::nullopt;
     Extremes eb_x = extremes(b_, n, b_.edge_tail(eb), b_.edge_head(eb));
-    const double wb = proj_abs_b_ + ax.delta * extent_b_ * kMargin;
+    const double wb = e_.proj_abs_b + ax.delta * e_.extent_b * kMargin;
     const bool b_min = a_max && all_on_side(b_, eb_x, n, wb, -1, ea, eb);
     const bool b_max = a_min && all_on_side(b_, eb_x, n, wb, +1, ea, eb);
     const bool plus = a_max && b_min;    // +n from A to B
@@ -655,64 +518,17 @@ class RobustKernel {
 
  private:
   using P = ConvexPolyhedron<T>;
-  static constexpr double kU = number_traits<T>::unit_roundoff;
-  static constexpr double kEta = static_cast<double>(std::numeric_limits<T>::denorm_min());
-  static constexpr double kMargin = 1.0 + 1e-6;
-  // edge_pair_below ("(pair prefilter)"): u_d, κ = (2u + u^2)/(1 - u)^2,
-  // (1 + u)^2 (1 + 1e-6)
-  static constexpr double kUd = 0x1p-53;
-  static constexpr double kPreKappa = (2 * kU + kU * kU) / ((1 - kU) * (1 - kU));
-  static constexpr double kPreK = (1 + kU) * (1 + kU) * kMargin;
-  static constexpr double kNoBound = 2.5;  // |n - n*| <= 2 (1 + γ_4) always
-
-  // Compile-time constants.  sepax::robust is compiled with -frounding-math
-  // (CGAL's flag), under which GCC does not fold inexact constant arithmetic
-  // in ordinary expressions: γ_k, √2, √3 times the margin, ... were
-  // recomputed -- divisions and libm sqrt calls -- on every use, per edge
-  // pair.  As static constexpr members they are constant-evaluated (both
-  // compilers must), rounded to nearest: the values the runtime expressions
-  // had (√2 and √3 are the correctly rounded std::numbers constants, which is
-  // what std::sqrt(2.0) and std::sqrt(3.0) return).  Runtime code uses these
-  // members, never the expressions.
-  /// γ_k for a k known only at run time (centroid_error).
-  static constexpr double gamma_n(int k) { return k * kU / (1.0 - k * kU); }
-  static constexpr double kMargin2 = kMargin * kMargin;
-  static constexpr double kG4 = detail::gamma_constant<T>(4);
-  static constexpr double kG5 = detail::gamma_constant<T>(5);
-  static constexpr double kG8 = detail::gamma_constant<T>(8);
-  static constexpr double kS3 = std::numbers::sqrt3 * kMargin;
-  static constexpr double kG5S3 = kG5 * kS3;
-  static constexpr double kG3S3x2 = 2 * detail::gamma_constant<T>(3) * kS3;
-  // q/|Ñ| = kUnitC ρ (unit_error_from_ratio)
-  static constexpr double kUnitC = kG4 * std::numbers::sqrt2 / ((1 - kU) * (1 - kU));
-  static constexpr double kUnitCM2 = kUnitC * kMargin * kMargin;
-
-  // sqrt of a double, the IEEE (correctly rounded) result as std::sqrt, but
-  // inline: under -frounding-math GCC calls libm's sqrt for it.
-  static double sqrt_d(double x) {
-#if defined(__SSE2__)
-    return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
-#else
-    return std::sqrt(x);
-#endif
-  }
-
-  // x < y ? x : y and x > y ? x : y as one minsd/maxsd (GCC compiled
-  // std::min/max of the constructor's converted floats to jumps).
-  static double min_d(double x, double y) {
-#if defined(__SSE2__)
-    return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(x), _mm_set_sd(y)));
-#else
-    return x < y ? x : y;
-#endif
-  }
-  static double max_d(double x, double y) {
-#if defined(__SSE2__)
-    return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_set_sd(y)));
-#else
-    return x > y ? x : y;
-#endif
-  }
+  using C = robust::ErrorConstants<T>;
+  using C::kEta;
+  using C::kG5;
+  using C::kMargin;
+  using C::kNoBound;
+  using C::kPreK;
+  using C::kPreKappa;
+  using C::kU;
+  using C::kUd;
+  using C::cross_ratio_squared;
+  using C::unit_error_from_ratio;
 
   struct EdgeAxis {
     Vec3<T> n;      // fl(normalize(dA x dB)), unoriented (as PlainKernel)
@@ -724,74 +540,6 @@ class RobustKernel {
     T lo_other, hi_other;   // over all vertices except the edge's endpoints
     T ref;                  // projection of the edge's tail
   };
-
-  // The smallest T >= x (comparisons in T against a double bound).  The bounds
-  // are >= 0: the next T above a finite t >= 0 is the one whose bit pattern is
-  // one more (max() goes to infinity, 0 to denorm_min), without libm's
-  // nextafter call (four per query).
-  // Whether the conversion rounded down is a coin toss per bound, so the
-  // step is added without a jump (it was ~1.4 mispredicted branches per
-  // query): + 0 or + 1 on the bit pattern of t >= 0 (x NaN: t is NaN, the
-  // comparison false, NaN stays).  A negative t (never for these bounds)
-  // takes nextafter.
-  static T round_up(double x) {
-    using Bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
-    const T t = static_cast<T>(x);
-    if (!(t >= T(0))) [[unlikely]]
-      return static_cast<double>(t) < x ? std::nextafter(t, std::numeric_limits<T>::infinity()) : t;
-    return std::bit_cast<T>(static_cast<Bits>(std::bit_cast<Bits>(t) + static_cast<Bits>(static_cast<double>(t) < x)));
-  }
-
-  static double padded_extent(const P& p) { return p.extent() * (1.0 + 4 * kU) * kMargin; }
-
-  // Bound on |n - N/|N|| for n = fl(normalize(fl(e1 x e2))), see the header.
-  // rho = |ẽ1||ẽ2|/|Ñ| as computed (unpadded); q/|Ñ| = kUnitC rho, and both
-  // (1+1e-6) pads (of rho and of q/|Ñ|) are in kUnitCM2, one product.
-  //
-  // 2 qr/(1 - qr) is bounded without a division (a long-latency divsd per
-  // Minkowski pair, on the way to the pair's value bound): for 0 <= x < 1/2,
-  // (1 + 2x)(1 - x) = 1 + x(1 - 2x) >= 1, so x/(1 - x) <= x(1 + 2x), an upper
-  // bound looser by at most 2x^2 (x ~ 1e-7 for a well-conditioned axis).  Its
-  // own few roundings (relative 1e-16) are inside the (1+1e-6) margin.
-  static double unit_error_from_ratio(double rho) {
-    const double qr = kUnitCM2 * rho;
-    if (!(qr < 0.5)) return kNoBound;
-    return (kG4 + 2 * qr * (1 + 2 * qr)) * kMargin;
-  }
-
-  // Norms below this (squared, in T units) risk underflow in the normalisation.
-  static constexpr double kTinySquared =
-      static_cast<double>(std::numeric_limits<T>::min()) * 0x1p40;
-
-  static double squared_norm_d(const Vec3<T>& v) {
-    const double x = v[0], y = v[1], z = v[2];
-    return x * x + y * y + z * z;
-  }
-
-  static double cross_ratio_squared(const Vec3<T>& e1, const Vec3<T>& e2, const Vec3<T>& c) {
-    const double nc2 = squared_norm_d(c);
-    if (!(nc2 > kTinySquared) || !std::isfinite(nc2)) return std::numeric_limits<double>::infinity();
-    const double r2 = squared_norm_d(e1) / nc2 * squared_norm_d(e2);
-    // Overflow (huge coordinates) must not turn into NaN, which every
-    // comparison would silently ignore: it means "no useful bound".
-    return std::isfinite(r2) ? r2 : std::numeric_limits<double>::infinity();
-  }
-
-  // δ_P from the shape's ρ_P = max_f |ẽ1||ẽ2|/|Ñ| (see the header), which
-  // ConvexPolyhedron computes once per shape, on first use after its vertices
-  // were set (normal_conditioning(): the same T differences and cross products of the
-  // plane triples, +infinity when some |Ñ|^2 <= kTinySquared or anything
-  // overflows, which gives kNoBound here).  O(1) per query.
-  static double normal_error(const P& p) {
-    static_assert(P::kNormalTinySquared == kTinySquared);
-    return unit_error_from_ratio(p.normal_conditioning());
-  }
-
-  static double centroid_error(const P& p) {
-    const double k = static_cast<double>(p.vertex_count()) + 1.0;
-    if (!(k * kU < 0.25)) return std::numeric_limits<double>::infinity();
-    return std::numbers::sqrt3 * gamma_n(static_cast<int>(k)) * p.max_abs_coordinate() * kMargin2 + 4 * kEta;
-  }
 
   // neg ? -v : v (the sign bit flipped: -v, as unary minus), without a jump.
   static T negate_if(T v, bool neg) {
@@ -850,7 +598,7 @@ class RobustKernel {
     EdgeAxis ax;
     const T len = std::sqrt(squared_norm(c));
     ax.n = Vec3<T>(c[0] / len, c[1] / len, c[2] / len);
-    ax.delta = unit_error_from_ratio(sqrt_d(r2));
+    ax.delta = unit_error_from_ratio(robust::detail::sqrt_d(r2));
     return ax;
   }
 
@@ -874,14 +622,14 @@ class RobustKernel {
     return ax;
   }
 
-  // δ D (1+1e-6) + edge_abs_, with d_margin_ = D (1+1e-6) summed once per
+  // δ D (1+1e-6) + e_.edge_abs, with e_.d_margin = D (1+1e-6) summed once per
   // query (a reassociated product: its rounding is inside the margin).
-  double edge_value_error(double delta) const { return delta * d_margin_ + edge_abs_; }
+  double edge_value_error(double delta) const { return delta * e_.d_margin + e_.edge_abs; }
 
   double value_error(const Feature& f) const {
     switch (f.type) {
-      case FeatureType::FaceA: return face_err_a_;
-      case FeatureType::FaceB: return face_err_b_;
+      case FeatureType::FaceA: return e_.face_a;
+      case FeatureType::FaceB: return e_.face_b;
       case FeatureType::EdgePair: return edge_value_error(edge_axis(f.a, f.b).delta);
       case FeatureType::SideA:
       case FeatureType::SideB: break;  // always exact (see side_query)
@@ -962,12 +710,12 @@ class RobustKernel {
     const T oa = dot(ax.n, diff(a_.vertex(a_.edge_tail(ea)), a_.centroid()));
     const T ob = dot(ax.n, diff(b_.centroid(), b_.vertex(b_.edge_tail(eb))));
     // The sum of the two per-side bounds ((δ + γ_5)(D_P + C_P) + C_P)(1+1e-6)
-    // (centroid_side's), regrouped: (δ + γ_5) side_span_ + side_abs_ with the
-    // per-query sums side_span_ = (D_A + C_A + D_B + C_B)(1+1e-6) and
-    // side_abs_ = (C_A + C_B)(1+1e-6) + 8η (the regrouping's rounding is
+    // (centroid_side's), regrouped: (δ + γ_5) e_.side_span + e_.side_abs with the
+    // per-query sums e_.side_span = (D_A + C_A + D_B + C_B)(1+1e-6) and
+    // e_.side_abs = (C_A + C_B)(1+1e-6) + 8η (the regrouping's rounding is
     // inside the margin).
     const double sum = static_cast<double>(oa) + static_cast<double>(ob);
-    const double e = (ax.delta + kG5) * side_span_ + side_abs_ +
+    const double e = (ax.delta + kG5) * e_.side_span + e_.side_abs +
                      0x1p-52 * (std::abs(static_cast<double>(oa)) + std::abs(static_cast<double>(ob)));
     // the filtered sign as a value (no jump on the sign itself, see
     // edge_separation); 0 (within the bound, or NaN) goes exact
@@ -1026,9 +774,9 @@ class RobustKernel {
   int edge_sigma(int ea, int eb) const {
     const EdgeAxis ax = edge_axis(ea, eb);
     if (!projection_rule_) return axis_side(ax, ea, eb) < 0 ? -1 : 1;
-    const int sa = centroid_side(a_, a_.edge_tail(ea), ax, centroid_err_a_, extent_a_, ea, eb);
+    const int sa = centroid_side(a_, a_.edge_tail(ea), ax, e_.centroid_a, e_.extent_a, ea, eb);
     if (sa != 0) return sa;
-    const int sb = -centroid_side(b_, b_.edge_tail(eb), ax, centroid_err_b_, extent_b_, ea, eb);
+    const int sb = -centroid_side(b_, b_.edge_tail(eb), ax, e_.centroid_b, e_.extent_b, ea, eb);
     if (sb != 0) return sb;
     return edge_pair_sign(ea, eb) < 0 ? -1 : 1;
   }
@@ -1152,21 +900,21 @@ class RobustKernel {
 
   // The arc signs whose value was within the bound (or NaN), decided exactly.
   SEPAX_ROBUST_COLD void resolve_arc_signs(ArcSigns& s, int ea, int eb, T c, T d, T a, T b) const {
-    if (!(std::fabs(c) > arc_err_b_t_)) s.cba = normal_dot_sign_exact(b_, b_.edge_face(eb, 0), a_, ea);
-    if (!(std::fabs(d) > arc_err_b_t_)) s.dba = normal_dot_sign_exact(b_, b_.edge_face(eb, 1), a_, ea);
-    if (!(std::fabs(a) > arc_err_a_t_)) s.adc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 0), b_, eb);
-    if (!(std::fabs(b) > arc_err_a_t_)) s.bdc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 1), b_, eb);
+    if (!(std::fabs(c) > e_.arc_b_t)) s.cba = normal_dot_sign_exact(b_, b_.edge_face(eb, 0), a_, ea);
+    if (!(std::fabs(d) > e_.arc_b_t)) s.dba = normal_dot_sign_exact(b_, b_.edge_face(eb, 1), a_, ea);
+    if (!(std::fabs(a) > e_.arc_a_t)) s.adc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 0), b_, eb);
+    if (!(std::fabs(b) > e_.arc_a_t)) s.bdc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 1), b_, eb);
   }
 
   // minkowski_face's halves of resolve_arc_signs (same exact predicates).
   SEPAX_ROBUST_COLD void resolve_arc_signs_ba(int& cba, int& dba, int ea, int eb, T c, T d) const {
-    if (!(std::fabs(c) > arc_err_b_t_)) cba = normal_dot_sign_exact(b_, b_.edge_face(eb, 0), a_, ea);
-    if (!(std::fabs(d) > arc_err_b_t_)) dba = normal_dot_sign_exact(b_, b_.edge_face(eb, 1), a_, ea);
+    if (!(std::fabs(c) > e_.arc_b_t)) cba = normal_dot_sign_exact(b_, b_.edge_face(eb, 0), a_, ea);
+    if (!(std::fabs(d) > e_.arc_b_t)) dba = normal_dot_sign_exact(b_, b_.edge_face(eb, 1), a_, ea);
   }
 
   SEPAX_ROBUST_COLD void resolve_arc_signs_dc(int& adc, int& bdc, int ea, int eb, T a, T b) const {
-    if (!(std::fabs(a) > arc_err_a_t_)) adc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 0), b_, eb);
-    if (!(std::fabs(b) > arc_err_a_t_)) bdc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 1), b_, eb);
+    if (!(std::fabs(a) > e_.arc_a_t)) adc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 0), b_, eb);
+    if (!(std::fabs(b) > e_.arc_a_t)) bdc = -normal_dot_sign_exact(a_, a_.edge_face(ea, 1), b_, eb);
   }
 
   SEPAX_ROBUST_COLD int normal_dot_sign_exact(const P& p, int f, const P& q, int ei) const {
@@ -1184,7 +932,7 @@ class RobustKernel {
   // shapes with more than kScalarSupportMax vertices, lanes_bounded), else
   // the scalar loop.
   static constexpr int kScalarSupportMax = 4;
-  // w: W_P of the header's "(support)"; wt: W_P rounded up to T (the
+  // w: W_P of error_bounds.hpp's "(support)"; wt: W_P rounded up to T (the
   // uniqueness check in T: see below).
   SEPAX_ROBUST_INLINE FaceQuery<T> face_query(const P& p, int f, const P& q, double w, T wt) const {
     const Plane<T>& pl = p.plane(f);
@@ -1328,27 +1076,13 @@ class RobustKernel {
 
   const P& a_;
   const P& b_;
-  double d_ = 0;
-  double extent_a_ = 0, extent_b_ = 0;
-  double side_span_ = 0, side_abs_ = 0;        // axis_side's per-query sums
-  double d_margin_ = 0;                        // d_ (1+1e-6)
-  double face_err_a_ = 0, face_err_b_ = 0;
-  double support_err_a_ = 0, support_err_b_ = 0;
-  double arc_err_a_ = 0, arc_err_b_ = 0;
-  T arc_err_a_t_ = 0, arc_err_b_t_ = 0;
-  T support_err_a_t_ = 0, support_err_b_t_ = 0;
-  double edge_abs_ = 0;
-  double proj_abs_a_ = 0, proj_abs_b_ = 0;
-  double centroid_err_a_ = 0, centroid_err_b_ = 0;
-  // edge_pair_below's per-query bounds ("(pair prefilter)"): E_σ, E_t, Q
-  double pre_side_err_ = 0, pre_value_err_ = 0, pre_norm_sq_ = 0;
+  const robust::QueryBounds<T> e_;  // this query's error bounds (error_bounds.hpp)
   struct AxisCache {
     int ea = -1, eb = -1;
     EdgeAxis axis;
   };
   mutable AxisCache axis_cache_;
-  bool lanes_ = false;    // both shapes lanes_bounded(): the SIMD scans apply
-  T arc_lane_bound_ = 0;  // max(arc_err_a_t_, arc_err_b_t_), for arc_candidates
+  bool lanes_ = false;  // both shapes lanes_bounded(): the SIMD scans apply
   mutable std::int64_t fallbacks_ = 0;
   mutable bool projection_rule_ = false;
 };
