@@ -129,10 +129,7 @@ class BestAxis {
   }
 
   // Kernels that expose their value error bounds (RobustKernel).
-  static constexpr bool kBounded = requires(const K& k, const Feature& f, const Separation<T>& s, double e) {
-    { k.error_bound(f) } -> std::same_as<double>;
-    { k.compare_bounded(s, f, e, s, f, e) } -> std::same_as<int>;
-  };
+  static constexpr bool kBounded = HasBoundedCompare<K>;
 
   bool has_ = false;
   Separation<T> sep_;

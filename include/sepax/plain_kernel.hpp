@@ -24,6 +24,8 @@ template <Number T>
 class PlainKernel {
  public:
   using FT = T;
+  /// Decisions are exact only for an exact T (sat_kernel.hpp, exact_decisions_v).
+  static constexpr bool kExactDecisions = number_traits<T>::is_exact;
 
   PlainKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b)
       : a_(a), b_(b), lanes_(a.lanes_bounded() && b.lanes_bounded()) {}
@@ -43,6 +45,30 @@ class PlainKernel {
 
   Separation<T> face_separation_a(int f, int vb) const { return height(a_.plane(f), b_.vertex(vb)); }
   Separation<T> face_separation_b(int f, int va) const { return height(b_.plane(f), a_.vertex(va)); }
+
+  /// Optional members (sat_kernel.hpp, HasSupportFilter), float and double:
+  /// two vertices below a face are compared by their rounded projections
+  /// fl(n.x), with no filter: within it (d = 0, or NaN) they are equal.
+  T support_filter_a() const
+    requires std::is_floating_point_v<T>
+  {
+    return T(0);
+  }
+  T support_filter_b() const
+    requires std::is_floating_point_v<T>
+  {
+    return T(0);
+  }
+  int support_sign_a(int, int, int, T d) const
+    requires std::is_floating_point_v<T>
+  {
+    return (d > T(0)) - (d < T(0));
+  }
+  int support_sign_b(int, int, int, T d) const
+    requires std::is_floating_point_v<T>
+  {
+    return (d > T(0)) - (d < T(0));
+  }
 
   // The arc test reads the per-edge arrays of ConvexPolyhedron (edge_dir,
   // edge_normal): the same T values as head - tail and the face planes'

@@ -158,6 +158,56 @@ concept HasFaceEstimate = requires(const K k, int i, double e) {
   { k.compare_width(e, e) } -> std::same_as<double>;
 };
 
+/// Optional kernel members (not part of SatKernel; RobustKernel has them):
+///   double error_bound(const Feature& f)
+///   int compare_bounded(const Separation<FT>& x, const Feature& fx, double ex,
+///                       const Separation<FT>& y, const Feature& fy, double ey)
+/// error_bound(f) bounds |value - exact value| of the separation the kernel
+/// returns for feature f; compare_bounded is compare() given both bounds, so
+/// a caller that keeps its best's bound compares a candidate with one filter
+/// (BestAxis, the traversal's best).
+template <class K>
+concept HasBoundedCompare = requires(const K& k, const Feature& f, const Separation<typename K::FT>& s, double e) {
+  { k.error_bound(f) } -> std::same_as<double>;
+  { k.compare_bounded(s, f, e, s, f, e) } -> std::same_as<int>;
+};
+
+/// Optional kernel members (not part of SatKernel; PlainKernel<float/double>
+/// and RobustKernel have them): the filtered support comparison.
+///   FT support_filter_a(), support_filter_b()
+///   int support_sign_a(int f, int u, int v, FT d), support_sign_b(...)
+/// Two vertices u, v of the other shape are compared below face f through
+/// g = fl(n_f . x), the face's stored normal: d = fl(g_u - g_v) > W (the
+/// filter) means u is higher, d < -W lower; otherwise (or d NaN) support_sign
+/// gives the sign of height(f, u) - height(f, v).  RobustKernel: W bounds the
+/// rounding of d and support_sign is exact.  PlainKernel: W = 0 and
+/// support_sign is the sign of d, the comparison of the rounded heights.  The
+/// traversal's climb and the face scans use it instead of a Separation and a
+/// compare() per vertex.
+template <class K>
+concept HasSupportFilter = requires(const K& k, int i, typename K::FT d) {
+  { k.support_filter_a() } -> std::same_as<typename K::FT>;
+  { k.support_filter_b() } -> std::same_as<typename K::FT>;
+  { k.support_sign_a(i, i, i, d) } -> std::same_as<int>;
+  { k.support_sign_b(i, i, i, d) } -> std::same_as<int>;
+};
+
+/// Optional kernel constant (not part of SatKernel):
+///   static constexpr bool kExactDecisions
+/// true when every decision the kernel takes (signs, comparisons, support
+/// vertices, parallel edges) is the exact one: RobustKernel, and PlainKernel
+/// over an exact number type.  A kernel without it is taken to decide exactly
+/// if and only if its number type is exact.  Algorithms that guard against
+/// inconsistent rounded decisions (the traversal with a flat shape) ask it.
+template <class K>
+inline constexpr bool exact_decisions_v = [] {
+  if constexpr (requires { K::kExactDecisions; }) {
+    return static_cast<bool>(K::kExactDecisions);
+  } else {
+    return number_traits<typename K::FT>::is_exact;
+  }
+}();
+
 /// Optional kernel member (not part of SatKernel):
 ///   bool edge_pair_below(int ea, int eb, FT best, double best_err)
 /// true only if the edge pair's exact separation (edge_separation's, with its

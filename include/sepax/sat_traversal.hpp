@@ -296,28 +296,17 @@ class Traversal {
   static constexpr int kCertified = 2;  // the vertex is the support vertex (else: a
                                         // vertex whose height is below the best)
 
-  // Kernels with the filtered support comparison (RobustKernel): compare two
-  // vertices below a face through fl(n.v), exact only within the filter.
-  static constexpr bool kFiltered = requires(const K& k, int i) {
-    { k.support_filter_a() } -> std::same_as<T>;
-    { k.support_filter_b() } -> std::same_as<T>;
-    { k.support_sign_a(i, i, i) } -> std::same_as<int>;
-    { k.support_sign_b(i, i, i) } -> std::same_as<int>;
-  };
-  // PlainKernel<float/double>: compare fl(n.v) as T values (filter width 0).
-  static constexpr bool kPlainFloat = std::is_floating_point_v<T> && std::is_same_v<K, PlainKernel<T>>;
-  static constexpr bool kFast = kFiltered || kPlainFloat;
-  // float/double kernels whose decisions are rounded (PlainKernel, or a
-  // wrapper of it), unlike RobustKernel's exact ones: see run().
-  static constexpr bool kRoundingDecisions = std::is_floating_point_v<T> && !kFiltered;
+  // Kernels with the filtered support comparison (sat_kernel.hpp,
+  // HasSupportFilter: PlainKernel<float/double>, RobustKernel): the climb
+  // compares fl(n.v) values, support_sign within the kernel's filter.
+  static constexpr bool kFast = HasSupportFilter<K>;
+  // Kernels whose decisions are rounded (PlainKernel<float/double>, or a
+  // wrapper of it), unlike RobustKernel's and exact kernels': see run().
+  static constexpr bool kRoundingDecisions = !exact_decisions_v<K>;
   // Kernels that expose their value error bounds (RobustKernel): the current
   // best's bound is kept, so comparing a candidate with the best costs one
   // filter (the same filter and exact fallback as k.compare).
-  static constexpr bool kBounded = requires(const K& k, const Feature& f, const Separation<T>& s, double e) {
-    { k.error_bound(f) } -> std::same_as<double>;
-    { k.compare_width(e, e) } -> std::same_as<double>;
-    { k.compare_bounded(s, f, e, s, f, e) } -> std::same_as<int>;
-  };
+  static constexpr bool kBounded = HasBoundedCompare<K>;
 
   // ---- heights -------------------------------------------------------------
   // OfA: face f of A, vertex v of B; else face f of B, vertex v of A.
@@ -444,118 +433,19 @@ class Traversal {
   // height is >= the face's separation, so the face cannot be the answer; it
   // returns (vertex << 2) without kCertified, and certify() resumes the same
   // deterministic climb from there if the support vertex is needed later.
+  // check_seed = false: the caller has just found the seed not below the best.
+  // The climb is written once against a SupportOrder (below): the kernel's
+  // filtered comparison of projections (kFast) or its heights and compare().
   template <bool OfA>
   int climb(int f, int v, bool cutoff, bool check_seed = true) {
-    if constexpr (kFast) {
-      return climb_fast<OfA>(f, v, cutoff, check_seed);
-    } else {
-      return climb_generic<OfA>(f, v, cutoff, check_seed);
-    }
-  }
-
-  // Kernels without the fast path (exact T): heights and k.compare.
-  // check_seed = false: the caller has just found the seed not below the best.
-  template <bool OfA>
-  int climb_generic(int f, int v, bool cutoff, bool check_seed) {
+    const auto o = support_order<OfA>(f);
     const GaussMapWalk& w = OfA ? wb_ : wa_;
-    Separation<T> hv = height<OfA>(f, v);
-    int budget = w.vertex_count() + 1;
-    for (bool check = check_seed;; check = true) {
-      if (cutoff && check && below_best(hv, face_feature<OfA>(f, v))) return v << 2;
-      bool moved = false, tie = false;
-      for (int i = w.adj_begin(v); i < w.adj_end(v); ++i) {
-        const int u = w.adj_vertex(i);
-        const Separation<T> hu = height<OfA>(f, u);
-        const int c = cmp<OfA>(f, u, hu, v, hv);
-        if (c < 0) {
-          v = u;
-          hv = hu;
-          moved = true;
-          break;
-        }
-        if (c == 0) tie = true;
-      }
-      if (!moved && !w.triangulated()) {
-        // The far vertices of v's non-triangular faces (not neighbours of v):
-        // on an exactly convex polytope none is strictly lower, but a face
-        // that is planar only up to rounding (the exact image of a rotated
-        // float box) can dip below v at a far vertex.
-        for (int i = w.adj_begin(v); i < w.adj_end(v) && !moved; ++i) {
-          const int h = w.adj_half_edge(i);
-          for (int g = w.next(w.next(h)); w.next(g) != h; g = w.next(g)) {
-            const int x = w.origin(g);
-            const Separation<T> hx = height<OfA>(f, x);
-            if (cmp<OfA>(f, x, hx, v, hv) < 0) {
-              v = x;
-              hv = hx;
-              moved = true;
-              break;
-            }
-          }
-        }
-      }
-      if (moved) {
-        ++ts_.climb_steps;
-        if (--budget < 0) return scan<OfA>(f);  // inconsistent rounding only
-        continue;
-      }
-      if (!tie) return (v << 2) | kCertified;
-      return (lowest_tied<OfA>(f, v, hv) << 2) | kCertified | kTie;
-    }
-  }
-
-  // Filter width for comparing fl(n.u) - fl(n.v) (0 for plain float).
-  template <bool OfA>
-  T filter() const {
-    if constexpr (kFiltered) {
-      return OfA ? k_.support_filter_a() : k_.support_filter_b();
-    } else {
-      return T(0);
-    }
-  }
-  // The exact sign of height(f, u) - height(f, v), asked only when
-  // d = fl(n.u) - fl(n.v) is within the filter (or NaN).  Plain float: the
-  // filter is 0, d is 0 or NaN here, and the answer is 0 (equal), as
-  // compare() of two rounded values.
-  template <bool OfA>
-  int exact_vs(int f, int u, int v, T d) {
-    if constexpr (kFiltered) {
-      return OfA ? k_.support_sign_a(f, u, v) : k_.support_sign_b(f, u, v);
-    } else {
-      return (d > T(0)) - (d < T(0));
-    }
-  }
-
-  // The sign of height(f, u) - height(f, v), exactly, from d = fl(g_u) - fl(g_v)
-  // (g = fl(n.x)): the filter decides beyond W, exact_vs within it (or NaN).
-  template <bool OfA>
-  SEPAX_TRAVERSAL_INLINE int support_cmp(int f, int u, int v, T d, T W) {
-    if (d > W) return 1;
-    if (d < -W) return -1;
-    return exact_vs<OfA>(f, u, v, d);
-  }
-
-  // Float kernels: the climb compares g = fl(n.v) (the support scan's
-  // values), within the kernel's filter exactly; the same decisions as
-  // climb_generic under policy::Robust (both are the exact sign of
-  // N.(u - v)), with no Separation or kernel call per neighbour.
-  // check_seed = false: the caller has just found the seed not below the best.
-  template <bool OfA>
-  int climb_fast(int f, int v, bool cutoff, bool check_seed = true) {
-    const GaussMapWalk& w = OfA ? wb_ : wa_;
-    const Vec3<T>* vs = (OfA ? k_.b() : k_.a()).vertices().data();
-    const Plane<T>& pl = (OfA ? k_.a() : k_.b()).plane(f);
-    const Vec3<T> n = pl.normal;
-    const T off = pl.offset;
-    const T W = filter<OfA>();
     cutoff = cutoff && best_.has();
-    std::int64_t evals = 1;
     int budget = w.vertex_count() + 1;
-    T gv = dot(n, vs[v]);
+    std::int64_t evals = 1;  // keys computed (heights, as face_separation_* counts them)
+    auto kv = o.key(v);
     for (bool check = check_seed;; check = true) {
-      // fl(gv - off) is bit for bit the kernel's face separation value
-      // (height = fl(fl(n.v) - offset)); the comparison is exact.
-      if (cutoff && check && face_below_best<OfA>(f, v, T(gv - off))) {
+      if (cutoff && check && o.below_best(v, kv)) {
         ts_.height_evals += evals;
         return v << 2;
       }
@@ -563,35 +453,33 @@ class Traversal {
       const int end = w.adj_end(v);
       for (int i = w.adj_begin(v); i < end; ++i) {
         const int u = w.adj_vertex(i);
-        const T gu = dot(n, vs[u]);
+        const auto ku = o.key(u);
         ++evals;
-        const T d = gu - gv;
-        // support_cmp's rule, written out to test the common case first
-        if (d > W) continue;  // the common case: u certainly higher
-        if (!(d < -W)) {      // within the filter (or NaN): exactly
-          const int c = exact_vs<OfA>(f, u, v, d);
-          if (c > 0) continue;
-          if (c == 0) {
-            tie = true;
-            continue;
-          }
+        const int c = o.cmp(u, ku, v, kv);
+        if (c > 0) continue;  // the common case: u higher
+        if (c == 0) {
+          tie = true;
+          continue;
         }
         v = u;
-        gv = gu;
+        kv = ku;
         moved = true;
         break;
       }
       if (!moved && !w.triangulated()) {
-        // far vertices of non-triangular faces (see climb_generic)
+        // The far vertices of v's non-triangular faces (not neighbours of v):
+        // on an exactly convex polytope none is strictly lower, but a face
+        // that is planar only up to rounding (the exact image of a rotated
+        // float box) can dip below v at a far vertex.
         for (int i = w.adj_begin(v); i < end && !moved; ++i) {
           const int h = w.adj_half_edge(i);
           for (int g = w.next(w.next(h)); w.next(g) != h; g = w.next(g)) {
             const int x = w.origin(g);
-            const T gx = dot(n, vs[x]);
+            const auto kx = o.key(x);
             ++evals;
-            if (support_cmp<OfA>(f, x, v, T(gx - gv), W) < 0) {
+            if (o.cmp(x, kx, v, kv) < 0) {
               v = x;
-              gv = gx;
+              kv = kx;
               moved = true;
               break;
             }
@@ -606,10 +494,91 @@ class Traversal {
         }
         continue;
       }
+      if (tie) {
+        // the deepest set through v: its lowest vertex index (the lambda
+        // captures copies, so that v, kv and evals stay in registers above)
+        std::int64_t tied_evals = 0;
+        auto tied = [&o, &tied_evals, v, kv](int u) {
+          ++tied_evals;
+          return o.cmp(u, o.key(u), v, kv) == 0;
+        };
+        v = lowest_tied_with<OfA>(v, tied);
+        evals += tied_evals;
+      }
       ts_.height_evals += evals;
-      if (!tie) return (v << 2) | kCertified;
-      return (lowest_tied_fast<OfA>(f, v, n, gv, W) << 2) | kCertified | kTie;
+      return (v << 2) | kCertified | (tie ? kTie : 0);
     }
+  }
+
+  // The order of the other shape's vertices below face f, as the climb asks
+  // it: a key per vertex, the sign of the difference
+  // of two vertices' heights, and whether a vertex is exactly below the best.
+  //  * FilteredOrder (kFast: sat_kernel.hpp, HasSupportFilter): the key is
+  //    g = fl(n.v), the support scan's value; two keys are compared within
+  //    the kernel's filter (support_cmp), exactly for the robust kernel;
+  //    fl(g - offset) is bit for bit the kernel's face separation value.
+  //  * HeightOrder (any other kernel): the key is the kernel's height, the
+  //    comparison k.compare.
+  // Under policy::Robust and exact arithmetic both are the exact sign of
+  // N.(u - v), so the robust walk and the exact walk climb alike.
+  template <bool OfA>
+  struct FilteredOrder {
+    using Key = T;
+    Traversal& t;
+    int f;
+    const Vec3<T>* vs;
+    Vec3<T> n;
+    T offset;
+    T width;
+    SEPAX_TRAVERSAL_INLINE Key key(int x) const { return dot(n, vs[x]); }
+    SEPAX_TRAVERSAL_INLINE int cmp(int u, Key ku, int v, Key kv) const {
+      return t.template support_cmp<OfA>(f, u, v, T(ku - kv), width);
+    }
+    SEPAX_TRAVERSAL_INLINE bool below_best(int v, Key kv) const {
+      return t.template face_below_best<OfA>(f, v, T(kv - offset));
+    }
+  };
+  template <bool OfA>
+  struct HeightOrder {
+    using Key = Separation<T>;
+    Traversal& t;
+    int f;
+    Key key(int x) const { return OfA ? t.k_.face_separation_a(f, x) : t.k_.face_separation_b(f, x); }
+    int cmp(int u, const Key& ku, int v, const Key& kv) const { return t.template cmp<OfA>(f, u, ku, v, kv); }
+    bool below_best(int v, const Key& kv) const { return t.below_best(kv, face_feature<OfA>(f, v)); }
+  };
+  template <bool OfA>
+  auto support_order(int f) {
+    if constexpr (kFast) {
+      const Plane<T>& pl = (OfA ? k_.a() : k_.b()).plane(f);
+      return FilteredOrder<OfA>{*this, f, (OfA ? k_.b() : k_.a()).vertices().data(), pl.normal, pl.offset,
+                                filter<OfA>()};
+    } else {
+      return HeightOrder<OfA>{*this, f};
+    }
+  }
+
+  // Filter width for comparing fl(n.u) - fl(n.v) (0 for plain float).
+  template <bool OfA>
+  T filter() const {
+    return OfA ? k_.support_filter_a() : k_.support_filter_b();
+  }
+  // The kernel's sign of height(f, u) - height(f, v), asked only when
+  // d = fl(n.u) - fl(n.v) is within the filter (or NaN): exact for the
+  // robust kernel; plain float (filter 0, d 0 or NaN here) answers 0
+  // (equal), as compare() of two rounded values.
+  template <bool OfA>
+  int exact_vs(int f, int u, int v, T d) {
+    return OfA ? k_.support_sign_a(f, u, v, d) : k_.support_sign_b(f, u, v, d);
+  }
+
+  // The sign of height(f, u) - height(f, v), exactly, from d = fl(g_u) - fl(g_v)
+  // (g = fl(n.x)): the filter decides beyond W, exact_vs within it (or NaN).
+  template <bool OfA>
+  SEPAX_TRAVERSAL_INLINE int support_cmp(int f, int u, int v, T d, T W) {
+    if (d > W) return 1;
+    if (d < -W) return -1;
+    return exact_vs<OfA>(f, u, v, d);
   }
 
   // Only reached when rounding made the climb cycle (never for exact
@@ -621,23 +590,6 @@ class Traversal {
     return (q.support_vertex << 2) | kCertified | kTie;
   }
 
-  // The deepest set through v is a face of the other polytope containing v
-  // (a vertex, an edge, or a polygon): v's tied neighbours and, for a polygon,
-  // the loop of the face that contains it.  Returns its lowest vertex index.
-  template <bool OfA>
-  int lowest_tied(int f, int v, const Separation<T>& hv) {
-    auto tied = [&](int u) { return cmp<OfA>(f, u, height<OfA>(f, u), v, hv) == 0; };
-    return lowest_tied_with<OfA>(v, tied);
-  }
-  template <bool OfA>
-  int lowest_tied_fast(int f, int v, const Vec3<T>& n, T gv, T W) {
-    const Vec3<T>* vs = (OfA ? k_.b() : k_.a()).vertices().data();
-    auto tied = [&](int u) {
-      ++ts_.height_evals;
-      return support_cmp<OfA>(f, u, v, T(dot(n, vs[u]) - gv), W) == 0;
-    };
-    return lowest_tied_with<OfA>(v, tied);
-  }
   template <bool OfA, class Tied>
   int lowest_tied_with(int v, Tied&& tied) {
     const GaussMapWalk& w = OfA ? wb_ : wa_;
@@ -889,7 +841,7 @@ class Traversal {
       ++ts_.probe_pruned;
       return false;
     }
-    const int s = climb_fast<OfA>(f, seed, true, false);
+    const int s = climb<OfA>(f, seed, true, false);
     sb[f] = s;
     if (!(s & kCertified)) {
       ++pruned;

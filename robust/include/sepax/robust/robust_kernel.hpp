@@ -91,6 +91,8 @@ template <RobustFloat T>
 class RobustKernel : robust::ErrorConstants<T> {
  public:
   using FT = T;
+  /// Every decision is exact (sat_kernel.hpp, exact_decisions_v).
+  static constexpr bool kExactDecisions = true;
 
   RobustKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b)
       : a_(a), b_(b), e_(a, b), lanes_(a.lanes_bounded() && b.lanes_bounded()) {}
@@ -169,11 +171,12 @@ class RobustKernel : robust::ErrorConstants<T> {
   /// Out of line (and cold: asked only within the filter): inlined, its
   /// orientation filter's registers made the traversal's climb loop spill on
   /// every step although it almost never runs.
-  SEPAX_ROBUST_COLD int support_sign_a(int f, int u, int v) const {
+  /// (d, the filtered difference, is not needed: sat_kernel.hpp, HasSupportFilter.)
+  SEPAX_ROBUST_COLD int support_sign_a(int f, int u, int v, T /*d*/) const {
     return face_pair_sign(a_, f, b_.vertex(v), b_.vertex(u));
   }
   /// Exact sign of N_f . (a_u - a_v), f a face of B.
-  SEPAX_ROBUST_COLD int support_sign_b(int f, int u, int v) const {
+  SEPAX_ROBUST_COLD int support_sign_b(int f, int u, int v, T /*d*/) const {
     return face_pair_sign(b_, f, a_.vertex(v), a_.vertex(u));
   }
 
