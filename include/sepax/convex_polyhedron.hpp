@@ -373,8 +373,8 @@ class ConvexPolyhedron {
   /// plane triple's differences and Ñ their cross product, all rounded to T
   /// (the values the stored normals come from), evaluated in double; +infinity
   /// ("no bound") when some Ñ is tiny or something overflows.  A shape-only
-  /// term of the robust kernel's normal error bound δ_P (robust_kernel.hpp,
-  /// "Error bounds"): computed on the first call after the vertices were set
+  /// term of the robust kernel's normal error bound δ_P (robust/error_bounds.hpp,
+  /// ErrorConstants::normal_error): computed on the first call after the vertices were set
   /// (from_faces, convert_from, with_vertices) and kept, so robust queries
   /// pay for it once per shape and plain ones never.  Thread-safe (a relaxed
   /// atomic; concurrent first calls compute and store the same value).
@@ -713,7 +713,7 @@ class ConvexPolyhedron {
   }
 
   // ρ_P of normal_conditioning(), for the robust kernel's δ_P (derivation in
-  // robust_kernel.hpp, "Error bounds": δ_f = γ_4 + 2q/(|Ñ| - q) with
+  // robust/error_bounds.hpp, unit_error_from_ratio: δ_f = γ_4 + 2q/(|Ñ| - q) with
   // q/|Ñ| = γ_4 √2 ρ_f/(1-u)^2 per face, so the worst face is the one with the
   // largest ρ_f = |ẽ1||ẽ2|/|Ñ|).  ẽ1 = fl(v_j - v_i), ẽ2 = fl(v_k - v_i),
   // Ñ = fl(ẽ1 x ẽ2) in T, as plane_through computes them (see there for the
