@@ -173,31 +173,37 @@ struct Exact {
   }
 };
 
-// The exact side of vertex v of face f's plane: sign(N.v - offset) of the
-// exact image pq (N = (t1 - t0) x (t2 - t0) of the plane triple t, offset
-// N.t0), which is sign det[t1 - t0, t2 - t0, v - t0] on the float
-// coordinates pf.  The core's semi-static filter (orientation_filter.hpp)
-// decides it when it can; otherwise the rationals of pq do.  Vertices of the
-// triple are exactly on it.
-int exact_plane_side(const ConvexPolyhedron<float>& pf, const CPQ& pq, int f, int v) {
-  const auto& t = pf.face(f).plane_vertices;
+}  // namespace
+
+// The exact side of vertex v of face f's plane in the exact image of p:
+// sign(N.v - offset) with N = (t1 - t0) x (t2 - t0) of the plane triple t
+// and offset N.t0 (ConvexPolyhedron<mpq>'s plane), that is
+// sign det[t1 - t0, t2 - t0, v - t0].  The core's semi-static filter
+// (orientation_filter.hpp) decides it when it can; otherwise rationals do.
+// Vertices of the triple are exactly on it.  (A flat shape's back face has
+// the reversed triple: the front plane negated, as ConvexPolyhedron has it.)
+static int exact_plane_side(const ConvexPolyhedron<float>& p, int f, int v) {
+  const auto& t = p.face(f).plane_vertices;
   if (v == t[0] || v == t[1] || v == t[2]) return 0;
-  const FilteredSign s = orientation_filter(vec_cast<double>(pf.vertex(t[0])), vec_cast<double>(pf.vertex(t[1])),
-                                            vec_cast<double>(pf.vertex(t[2])), vec_cast<double>(pf.vertex(v)));
+  const Vec3<float>&a = p.vertex(t[0]), &b = p.vertex(t[1]), &c = p.vertex(t[2]), &x = p.vertex(v);
+  const FilteredSign s = orientation_filter(vec_cast<double>(a), vec_cast<double>(b), vec_cast<double>(c),
+                                            vec_cast<double>(x));
   if (s.certain) return s.det > 0 ? 1 : -1;
-  const Plane<Q>& pl = pq.plane(f);
-  return sgn(Q(dot(pl.normal, pq.vertex(v)) - pl.offset));
+  const Vec3<Q> qa = vec_cast<Q>(a);
+  return sgn(Q(dot(cross(Vec3<Q>(vec_cast<Q>(b) - qa), Vec3<Q>(vec_cast<Q>(c) - qa)), Vec3<Q>(vec_cast<Q>(x) - qa))));
 }
 
-bool exactly_convex(const ConvexPolyhedron<float>& pf, const CPQ& p) {
+bool exactly_convex(const ConvexPolyhedron<float>& p) {
   for (int f = 0; f < p.face_count(); ++f) {
     for (int v : p.face_vertices(f))
-      if (exact_plane_side(pf, p, f, v) != 0) return false;
+      if (exact_plane_side(p, f, v) != 0) return false;
     for (int v = 0; v < p.vertex_count(); ++v)
-      if (exact_plane_side(pf, p, f, v) > 0) return false;
+      if (exact_plane_side(p, f, v) > 0) return false;
   }
   return true;
 }
+
+namespace {
 
 // The exact projections of both shapes on N = eA x eB (the brute force's
 // unnormalised axis) and the two gaps: plus (A below B along N) and minus.
@@ -968,7 +974,7 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   }
   E.arcs = exact_arc_signs(Af, Bf);
   E.ref = run_sat<policy::Plain>(Sat::gauss_map, E.A, E.B);
-  E.convex = exactly_convex(Af, E.A) && exactly_convex(Bf, E.B);
+  E.convex = exactly_convex(Af) && exactly_convex(Bf);
   rep.configs_run.push_back("mpq/gauss_map");
 
   // exact types among themselves
