@@ -14,6 +14,7 @@
 #include <sepax/robust/number_types.hpp>
 #include <sepax/sat_brute_force.hpp>
 #include <sepax/sat_gauss_map.hpp>
+#include <sepax/orientation_filter.hpp>
 #include <sepax/fuzz/error_bounds.hpp>
 #include <sepax/fuzz/sat_list.hpp>
 #include <sepax/fuzz/classify.hpp>
@@ -172,16 +173,37 @@ struct Exact {
   }
 };
 
-bool exactly_convex(const CPQ& p) {
+}  // namespace
+
+// The exact side of vertex v of face f's plane in the exact image of p:
+// sign(N.v - offset) with N = (t1 - t0) x (t2 - t0) of the plane triple t
+// and offset N.t0 (ConvexPolyhedron<mpq>'s plane), that is
+// sign det[t1 - t0, t2 - t0, v - t0].  The core's semi-static filter
+// (orientation_filter.hpp) decides it when it can; otherwise rationals do.
+// Vertices of the triple are exactly on it.  (A flat shape's back face has
+// the reversed triple: the front plane negated, as ConvexPolyhedron has it.)
+static int exact_plane_side(const ConvexPolyhedron<float>& p, int f, int v) {
+  const auto& t = p.face(f).plane_vertices;
+  if (v == t[0] || v == t[1] || v == t[2]) return 0;
+  const Vec3<float>&a = p.vertex(t[0]), &b = p.vertex(t[1]), &c = p.vertex(t[2]), &x = p.vertex(v);
+  const FilteredSign s = orientation_filter(vec_cast<double>(a), vec_cast<double>(b), vec_cast<double>(c),
+                                            vec_cast<double>(x));
+  if (s.certain) return s.det > 0 ? 1 : -1;
+  const Vec3<Q> qa = vec_cast<Q>(a);
+  return sgn(Q(dot(cross(Vec3<Q>(vec_cast<Q>(b) - qa), Vec3<Q>(vec_cast<Q>(c) - qa)), Vec3<Q>(vec_cast<Q>(x) - qa))));
+}
+
+bool exactly_convex(const ConvexPolyhedron<float>& p) {
   for (int f = 0; f < p.face_count(); ++f) {
-    const Plane<Q>& pl = p.plane(f);
     for (int v : p.face_vertices(f))
-      if (sgn(Q(dot(pl.normal, p.vertex(v)) - pl.offset)) != 0) return false;
+      if (exact_plane_side(p, f, v) != 0) return false;
     for (int v = 0; v < p.vertex_count(); ++v)
-      if (sgn(Q(dot(pl.normal, p.vertex(v)) - pl.offset)) > 0) return false;
+      if (exact_plane_side(p, f, v) > 0) return false;
   }
   return true;
 }
+
+namespace {
 
 // The exact projections of both shapes on N = eA x eB (the brute force's
 // unnormalised axis) and the two gaps: plus (A below B along N) and minus.
@@ -627,9 +649,12 @@ void check_margins(const FloatSide<F>& S, Sat sat, const SatResult<F>& full, con
   }
 }
 
+// gauss_out: this configuration's Gauss-map result, for the manifold check
+// (the same query: run once, shared).
 template <class F, class Policy>
 void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B,
-                 const std::string& cfg, bool exact_decisions, const CheckOptions& opt, Recorder& rec) {
+                 const std::string& cfg, bool exact_decisions, const CheckOptions& opt, Recorder& rec,
+                 std::optional<SatResult<F>>& gauss_out) {
   const FloatSide<F> S(A, B, E);
   const int EA = A.edge_count(), EB = B.edge_count();
   // ---- arc signs and Minkowski-face verdicts, every edge pair ----
@@ -726,6 +751,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     const bool crosses = E.cross_sat(sat);
     auto cls = [crosses](Klass k) { return (crosses && k == Klass::unexplained) ? Klass::nonconvex : k; };
     const SatResult<F> r = run_sat<Policy>(sat, A, B);
+    if (sat == Sat::gauss_map) gauss_out = r;
     rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
     const Feature& ff = r.feature;
     const double sf = r.separation_as_double();
@@ -799,7 +825,8 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
 
 template <class T>
 void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, Exact& E,
-                      const std::string& cfg, bool skip_reference, const CheckOptions& opt, Recorder& rec) {
+                      const std::string& cfg, bool skip_reference, const CheckOptions& opt, Recorder& rec,
+                      std::optional<SatResult<T>>* gauss_out = nullptr) {
   const auto A = ConvexPolyhedron<T>::convert_from(Af);
   const auto B = ConvexPolyhedron<T>::convert_from(Bf);
   const double cost = static_cast<double>(A.edge_count()) * B.edge_count() * (A.vertex_count() + B.vertex_count());
@@ -812,6 +839,7 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
       continue;
     }
     const SatResult<T> r = run_sat<policy::Plain>(sat, A, B);
+    if (gauss_out && sat == Sat::gauss_map) *gauss_out = r;
     rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
     // mpq: always against the reference (mpq Gauss map); other exact types:
     // against mpq's run of the same SAT when the input is not exactly convex.
@@ -946,13 +974,14 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   }
   E.arcs = exact_arc_signs(Af, Bf);
   E.ref = run_sat<policy::Plain>(Sat::gauss_map, E.A, E.B);
-  E.convex = exactly_convex(E.A) && exactly_convex(E.B);
+  E.convex = exactly_convex(Af) && exactly_convex(Bf);
   rep.configs_run.push_back("mpq/gauss_map");
 
   // exact types among themselves
   check_exact_type<Q>(Af, Bf, E, "mpq", true, opt, rec);
+  CaseGaussMaps gauss;  // each configuration's Gauss-map result, shared with the manifold check
   if (static_cast<std::int64_t>(E.A.edge_count()) * E.B.edge_count() <= opt.gmpq_pair_budget)
-    check_exact_type<CGAL::Gmpq>(Af, Bf, E, "gmpq", false, opt, rec);
+    check_exact_type<CGAL::Gmpq>(Af, Bf, E, "gmpq", false, opt, rec, &gauss.gmpq);
   else
     for (Sat sat : all_sats()) rec.skip("exact", "gmpq", sat_name(sat));
   check_exact_type<CGAL::Epeck::FT>(Af, Bf, E, "epeck", false, opt, rec);
@@ -960,13 +989,13 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   // float configurations on identical inputs
   const auto Ad = ConvexPolyhedron<double>::convert_from(Af);
   const auto Bd = ConvexPolyhedron<double>::convert_from(Bf);
-  check_float<float, policy::Plain>(E, Af, Bf, "float_plain", false, opt, rec);
-  check_float<double, policy::Plain>(E, Ad, Bd, "double_plain", false, opt, rec);
+  check_float<float, policy::Plain>(E, Af, Bf, "float_plain", false, opt, rec, gauss.float_plain);
+  check_float<double, policy::Plain>(E, Ad, Bd, "double_plain", false, opt, rec, gauss.double_plain);
 #if SEPAX_FUZZ_HAS_ROBUST
-  check_float<float, policy::Robust>(E, Af, Bf, "float_robust", true, opt, rec);
-  check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, opt, rec);
+  check_float<float, policy::Robust>(E, Af, Bf, "float_robust", true, opt, rec, gauss.float_robust);
+  check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, opt, rec, gauss.double_robust);
 #endif
-  if (opt.manifolds) check_manifolds(Af, Bf, E.A, E.B, E.ref, opt, rep);
+  if (opt.manifolds) check_manifolds(Af, Bf, E.A, E.B, E.ref, gauss, opt, rep);
   if (opt.posed) check_posed(Af, Bf, c.seed, opt, rep);
   return rep;
 }

@@ -861,8 +861,8 @@ Klass check_with(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, con
 
 template <class F, class Policy>
 void check_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, const ExactSide& E, const std::string& cfg,
-                  Recorder& rec) {
-  check_with<F>(A, B, E, cfg, rec, run_sat<Policy>(Sat::gauss_map, A, B));
+                  Recorder& rec, const std::optional<SatResult<F>>& given) {
+  check_with<F>(A, B, E, cfg, rec, given ? *given : run_sat<Policy>(Sat::gauss_map, A, B));
 }
 
 ExactSide make_exact(const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq, const SatResult<Q>& exact_sat) {
@@ -878,11 +878,11 @@ ExactSide make_exact(const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& B
 
 // Gmpq against mpq: identical ids and exactly equal values.
 void check_gmpq(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, const ExactSide& E,
-                Recorder& rec) {
+                Recorder& rec, const std::optional<SatResult<CGAL::Gmpq>>& given) {
   using G = CGAL::Gmpq;
   const auto A = ConvexPolyhedron<G>::convert_from(Af);
   const auto B = ConvexPolyhedron<G>::convert_from(Bf);
-  const SatResult<G> r = run_sat<policy::Plain>(Sat::gauss_map, A, B);
+  const SatResult<G> r = given ? *given : run_sat<policy::Plain>(Sat::gauss_map, A, B);
   ManifoldOptions all_opt;
   all_opt.reduce = false;
   std::ostringstream why;
@@ -916,17 +916,18 @@ void counts_line(std::ostream& out, const std::string& name, const Counts& c) {
 
 void check_manifolds(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
                      const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq, const SatResult<Q>& exact_sat,
-                     const CheckOptions& opt, CaseReport& rep) {
+                     const CaseGaussMaps& given, const CheckOptions& opt, CaseReport& rep) {
   Recorder rec{rep, opt};
   const ExactSide E = make_exact(Aq, Bq, exact_sat);
-  if (static_cast<std::int64_t>(Aq.edge_count()) * Bq.edge_count() <= opt.gmpq_pair_budget) check_gmpq(Af, Bf, E, rec);
+  if (static_cast<std::int64_t>(Aq.edge_count()) * Bq.edge_count() <= opt.gmpq_pair_budget)
+    check_gmpq(Af, Bf, E, rec, given.gmpq);
   const auto Ad = ConvexPolyhedron<double>::convert_from(Af);
   const auto Bd = ConvexPolyhedron<double>::convert_from(Bf);
-  check_config<float, policy::Plain>(Af, Bf, E, "float_plain", rec);
-  check_config<double, policy::Plain>(Ad, Bd, E, "double_plain", rec);
+  check_config<float, policy::Plain>(Af, Bf, E, "float_plain", rec, given.float_plain);
+  check_config<double, policy::Plain>(Ad, Bd, E, "double_plain", rec, given.double_plain);
 #if SEPAX_FUZZ_HAS_ROBUST
-  check_config<float, policy::Robust>(Af, Bf, E, "float_robust", rec);
-  check_config<double, policy::Robust>(Ad, Bd, E, "double_robust", rec);
+  check_config<float, policy::Robust>(Af, Bf, E, "float_robust", rec, given.float_robust);
+  check_config<double, policy::Robust>(Ad, Bd, E, "double_robust", rec, given.double_robust);
 #endif
 }
 

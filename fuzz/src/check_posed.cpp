@@ -195,7 +195,9 @@ void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, co
       std::string why;
       for (int k = 0; k <= Poses::kWarmSteps; ++k) {
         const RigidTransform<F> xk = P.b<F>(k);
-        const SatResult<F> fresh = sat::run<Policy>(sat, pa, xa, pb, xk, o);
+        // step 0 without an early exit is the posed query r itself (the same
+        // call: default options, xk == xb): run once
+        const SatResult<F> fresh = (!early && k == 0) ? r : sat::run<Policy>(sat, pa, xa, pb, xk, o);
         const SatResult<F> warm = sat::run<Policy>(sat, pa, xa, pb, xk, o, &cache);
         const bool ok = !early ? same_bits(warm, fresh)
                                : warm.overlap == fresh.overlap && warm.early_out == fresh.early_out &&

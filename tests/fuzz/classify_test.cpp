@@ -7,6 +7,7 @@
 #include <random>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <sepax/fuzz/check.hpp>
 #include <sepax/fuzz/classify.hpp>
 #include <sepax/fuzz/error_bounds.hpp>
 #include <sepax/convex_hull.hpp>
@@ -353,4 +354,45 @@ TEST_CASE("check: a winner inside the float parallel skip is explained, not a ti
   CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 1);
   CHECK(r.by_config.at("feature/float_plain")[Klass::tie] == 0);
   CHECK(r.by_config.at("feature/double_plain")[Klass::agree] == r.by_config.at("feature/double_plain").total());
+}
+
+// exactly_convex (filtered) against the plain rational plane test on the
+// exact image: every face's vertices on its plane, every vertex on or below.
+TEST_CASE("exactly_convex equals the rational plane test of the exact image", "[fuzz][convex]") {
+  auto rational = [](const ConvexPolyhedron<Q>& p) {
+    for (int f = 0; f < p.face_count(); ++f) {
+      const Plane<Q>& pl = p.plane(f);
+      for (int v : p.face_vertices(f))
+        if (sgn(Q(dot(pl.normal, p.vertex(v)) - pl.offset)) != 0) return false;
+      for (int v = 0; v < p.vertex_count(); ++v)
+        if (sgn(Q(dot(pl.normal, p.vertex(v)) - pl.offset)) > 0) return false;
+    }
+    return true;
+  };
+  auto build = [](const ShapeSpec& s) {
+    std::vector<Vec3<float>> v;
+    for (const auto& p : s.vertices) v.push_back(vec_from_double<float>(p));
+    return ConvexPolyhedron<float>::from_faces(std::move(v), s.faces);
+  };
+  int convex = 0, not_convex = 0;
+  for (const std::string fam : {"boxes", "flat", "tetra", "scales", "touching", "perturbed", "sphere", "decomposition"}) {
+    for (std::uint64_t seed = 0; seed < 12; ++seed) {
+      const FuzzCase c = generate(fam, seed);
+      for (const ShapeSpec* s : {&c.a, &c.b}) {
+        ConvexPolyhedron<float> p;
+        try {
+          p = build(*s);
+        } catch (const InvalidInput&) {
+          continue;
+        }
+        const bool want = rational(ConvexPolyhedron<Q>::convert_from(p));
+        INFO(fam << " seed " << seed);
+        REQUIRE(exactly_convex(p) == want);
+        ++(want ? convex : not_convex);
+      }
+    }
+  }
+  // both answers occur (the perturbed family moves vertices off their planes)
+  CHECK(convex > 20);
+  CHECK(not_convex > 0);
 }

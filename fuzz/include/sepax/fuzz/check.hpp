@@ -139,6 +139,12 @@ struct CheckOptions {
 /// the arc_sign comparison; equal to PlainKernel<mpq>::arc_signs).
 std::vector<ArcSigns> exact_arc_signs(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B);
 
+/// Is the exact image of p exactly convex: every face's vertices exactly on
+/// the plane through its plane triple, every vertex on or below every face
+/// plane?  Decided exactly (a semi-static filter, rationals where it cannot
+/// decide).  The cross-SAT exactness claim needs it (Klass::nonconvex).
+bool exactly_convex(const ConvexPolyhedron<float>& p);
+
 /// Robust policy and traversal SAT availability (compiled in or not).
 bool has_robust_policy();
 bool has_traversal_sat();

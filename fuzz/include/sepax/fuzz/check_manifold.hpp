@@ -38,6 +38,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <optional>
 
 #include <gmpxx.h>
 
@@ -48,13 +49,25 @@
 
 namespace sepax::fuzz {
 
+/// The Gauss-map results of a case's configurations that the checking core
+/// has already computed (check.cpp runs them for the SAT comparisons): the
+/// manifold check builds its manifolds from these instead of running the same
+/// deterministic queries on the same inputs again.  One that is missing is run.
+struct CaseGaussMaps {
+  std::optional<SatResult<float>> float_plain, float_robust;
+  std::optional<SatResult<double>> double_plain, double_robust;
+  std::optional<SatResult<CGAL::Gmpq>> gmpq;
+};
+
 /// Compare the float and exact manifolds of one case and record them in
 /// `rep` (by_comparison["manifold"], by_config["manifold/<config>"], details,
 /// maxima, unexplained findings).  `exact_sat` is the mpq Gauss-map result on
-/// the exact images `Aq`, `Bq` of `Af`, `Bf`.
+/// the exact images `Aq`, `Bq` of `Af`, `Bf`; `given` the configurations'
+/// Gauss-map results already computed (CaseGaussMaps).
 void check_manifolds(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
                      const ConvexPolyhedron<mpq_class>& Aq, const ConvexPolyhedron<mpq_class>& Bq,
-                     const SatResult<mpq_class>& exact_sat, const CheckOptions& opt, CaseReport& rep);
+                     const SatResult<mpq_class>& exact_sat, const CaseGaussMaps& given, const CheckOptions& opt,
+                     CaseReport& rep);
 
 /// One float configuration against the exact manifolds, with the float SAT
 /// result given (the core of check_manifolds, for tests): records under the
