@@ -149,12 +149,16 @@ class PlainKernel {
 
   std::optional<Separation<T>> edge_separation_full(int ea, int eb) const {
     const Vec3<T> n = unoriented_axis(ea, eb);
-    T min_a, max_a, min_b, max_b;
-    project(a_, n, min_a, max_a);
-    project(b_, n, min_b, max_b);
     const T ta = support_tolerance(a_), tb = support_tolerance(b_);
     const T pa0 = dot(n, a_.vertex(a_.edge_tail(ea))), pa1 = dot(n, a_.vertex(a_.edge_head(ea)));
     const T pb0 = dot(n, b_.vertex(b_.edge_tail(eb))), pb1 = dot(n, b_.vertex(b_.edge_head(eb)));
+    // Most pairs support neither orientation: the scans stop at the first
+    // vertex that rules out both (project_supporting); the decision below
+    // is then the one the complete extremes give.
+    T min_a, max_a, min_b, max_b;
+    bool may_plus = true, may_minus = true;
+    if (!project_supporting(a_, n, pa0, pa1, ta, min_a, max_a, may_plus, may_minus)) return std::nullopt;
+    if (!project_supporting(b_, n, pb0, pb1, tb, min_b, max_b, may_minus, may_plus)) return std::nullopt;
     // +n from A to B: A's edge at A's max, B's edge at B's min.
     const bool plus = pa0 >= max_a - ta && pa1 >= max_a - ta && pb0 <= min_b + tb && pb1 <= min_b + tb;
     // -n from A to B: A's edge at A's min, B's edge at B's max.
@@ -314,13 +318,33 @@ class PlainKernel {
 
   Vec3<T> oriented_axis_for_report(int ea, int eb) const { return edge_axis(ea, eb); }
 
-  static void project(const ConvexPolyhedron<T>& p, const Vec3<T>& n, T& lo, T& hi) {
+  // p's lowest and highest projections on n (lo, hi) while checking
+  // whether p's edge, whose endpoints project to e0 and e1, can still be
+  // within t of p's maximum (at_max) or minimum (at_min):
+  // edge_separation_full accepts it there when e0, e1 >= fl(hi - t) (resp.
+  // <= fl(lo + t)).  Rounding is monotone, so fl(hi - t) is the largest
+  // fl(h - t) over the projections h: one vertex with e0 or e1 < fl(h - t)
+  // rules out the maximum (resp. > fl(h + t) the minimum).  Returns false,
+  // with lo and hi incomplete, as soon as both are ruled out.  (A NaN h rules
+  // out nothing here, nor updates lo or hi; the complete test decides.)
+  static bool project_supporting(const ConvexPolyhedron<T>& p, const Vec3<T>& n, const T& e0, const T& e1,
+                                 const T& t, T& lo, T& hi, bool& at_max, bool& at_min) {
     lo = hi = dot(n, p.vertex(0));
-    for (int i = 1; i < p.vertex_count(); ++i) {
+    for (int i = 0; i < p.vertex_count(); ++i) {
       const T h = dot(n, p.vertex(i));
       if (h < lo) lo = h;
       if (h > hi) hi = h;
+      if constexpr (number_traits<T>::is_exact) {  // t = 0
+        at_max = at_max && !(e0 < h || e1 < h);
+        at_min = at_min && !(e0 > h || e1 > h);
+      } else {
+        const T below = T(h - t), above = T(h + t);
+        at_max = at_max && !(e0 < below || e1 < below);
+        at_min = at_min && !(e0 > above || e1 > above);
+      }
+      if (!at_max && !at_min) return false;
     }
+    return true;
   }
 
   const ConvexPolyhedron<T>& a_;
