@@ -14,7 +14,9 @@
 // input points (except the documented fallbacks).  Exact T makes every decision exactly.
 #pragma once
 
+#include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "convex_polyhedron.hpp"
@@ -27,18 +29,50 @@
 #include "hull/precheck.hpp"
 #include "hull/quickhull.hpp"
 #include "hull/repair.hpp"
+#include "hull/traits.hpp"
 #include "hull/welded_points.hpp"
 #include "number_traits.hpp"
+#include "tolerances.hpp"
 #include "vec3.hpp"
 
 namespace sepax {
 
-/// The convex hull of points (docs/hull.md for the guarantees).
+namespace hull::detail {
+
+/// The hull algorithm: welding, build passes, and for float T repair passes and the fallback policy.
+template <Number T>
+ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent) {
+  Builder<T> builder(points, allow_tent);
+  // 1. NonFinite, TooFewPoints, BadScale; eps, flat and weld of the extent; the points welded.
+  builder.check_input();
+  builder.weld();
+  RepairLog<T> log;
+  for (int pass = 0;; ++pass) {
+    // 2-7. Initial simplex (or the flat hull), quickhull, face merge, loops and clean-up, pre-check,
+    // validation; rebuilt without the points the clean-up rejects.  A repair pass may lose too many.
+    std::optional<ConvexPolyhedron<T>> hull = builder.build_pass(log.nearest.has_value());
+    if constexpr (!HullTraits<T>::kRepairs) {
+      return std::move(*hull);  // exact T: the exact hull holds every point
+    } else {
+      // 8. Float T: points farther than kHullRepairTolerance x eps from the result are pinned and the
+      // hull rebuilt, at most kHullMaxRepairs times; then the best result or a fallback.
+      std::vector<int> outside;
+      if (hull) builder.measure(std::move(*hull), outside, log);
+      if (!hull || outside.empty() || pass == kHullMaxRepairs) return builder.choose_result(log);
+      builder.pin(outside);
+    }
+  }
+}
+
+}  // namespace hull::detail
+
+/// The convex hull of points (docs/hull.md for the steps and the guarantees).
 /// Throws InvalidInput: NonFinite (naming the point), TooFewPoints (< 3
-/// distinct points), Collinear, BadScale (float extent overflow).
+/// distinct points), Collinear, BadScale (float extent overflow, or points too
+/// far from the origin for float to resolve: use convex_hull_local).
 template <Number T>
 ConvexPolyhedron<T> convex_hull(std::span<const Vec3<T>> points) {
-  return hull::detail::Builder<T>(points).run();
+  return hull::detail::build_hull<T>(points, true);
 }
 
 template <Number T>

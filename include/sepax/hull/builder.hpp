@@ -55,13 +55,30 @@ struct FaceGroup {
   std::vector<int> splits;                       ///< sorted ids of the split faces its triangles came from
 };
 
+/// Float T: the best results of the repair passes (repair.hpp).
+template <Number T>
+struct RepairLog {
+  std::optional<ConvexPolyhedron<T>> nearest;  ///< nearest every point (height or distance, the larger)
+  std::optional<ConvexPolyhedron<T>> lowest;   ///< lowest heights above the face planes
+  double nearest_out = 0, nearest_height = 0, lowest_height = 0;  ///< x eps
+};
+
+/// The hull algorithm of convex_hull (convex_hull.hpp); allow_tent is false for a tent's own build.
+template <Number T>
+ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent);
+
 template <Number T>
 class Builder {
  public:
-  explicit Builder(std::span<const Vec3<T>> input) : in_(input) {}
+  Builder(std::span<const Vec3<T>> input, bool allow_tent) : in_(input), tent_(allow_tent) {}
 
-  /// The whole hull: welding, then build passes (repair.hpp), the fallback policy for float.
-  ConvexPolyhedron<T> run();
+  // The steps build_hull calls, in order.
+  void check_input();
+  void weld();
+  std::optional<ConvexPolyhedron<T>> build_pass(bool may_fail);
+  void measure(ConvexPolyhedron<T> result, std::vector<int>& outside, RepairLog<T>& log);
+  void pin(const std::vector<int>& outside);
+  ConvexPolyhedron<T> choose_result(RepairLog<T>& log);
 
  private:
   using Tri = Triangle<T>;
@@ -69,7 +86,9 @@ class Builder {
   static constexpr bool exact = number_traits<T>::is_exact;
 
   // ---- repair.hpp ----
-  std::optional<ConvexPolyhedron<T>> build_without(std::vector<char>& removed);
+  void try_simplex(RepairLog<T>& log);
+  std::optional<ConvexPolyhedron<T>> try_projected_slab(const RepairLog<T>& log);
+  std::optional<ConvexPolyhedron<T>> try_tent(const ConvexPolyhedron<T>& chosen);
   double outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside, double& height) const;
   // ---- fallbacks.hpp ----
   std::optional<ConvexPolyhedron<T>> tent_hull(const ConvexPolyhedron<T>& h, Vec3<double>& nrm);
@@ -78,9 +97,7 @@ class Builder {
   double shadow_out(const ConvexPolyhedron<T>& h, const Vec3<double>& nrm) const;
   std::optional<ConvexPolyhedron<T>> projected_slab(const Vec3<double>& nrm, double lo, double hi);
   // ---- welded_points.hpp ----
-  void check_input();
   Vec3<T> local(const Vec3<T>& p) const;
-  void weld();
   void make_shadow();
   void add_point(int input_index, const Vec3<T>& loc);
   // ---- quickhull.hpp ----
@@ -150,7 +167,8 @@ class Builder {
   std::array<int, 4> simplex_{-1, -1, -1, -1};  // the first build's initial simplex
   Vec3<T> base_normal_;                         // normal of its initial triangle
   std::vector<Group> groups_;
-  std::vector<char> pinned_;  // float: points a repair pass put back
+  std::vector<char> removed_;  // points the clean-up rejected (put back when pinned)
+  std::vector<char> pinned_;   // float: points a repair pass put back
   bool any_pinned_ = false;
   std::vector<char> out_vertex_;        // vertices of the last output
   std::vector<std::vector<int>> star_;  // float: vertex -> live triangles around it
@@ -162,7 +180,7 @@ class Builder {
   std::vector<int> degree_;                  // scratch, per welded point
   std::vector<int> nomerge_;  // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
-  bool tent_ = true;  // float: may try tent_hull (not in the second build)
+  bool tent_;  // float: may try tent_hull (not in a tent's own build)
 };
 
 }  // namespace sepax::hull::detail

@@ -78,7 +78,7 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
   }
   if (big == faces.size()) return false;
   width(faces[big].n, lo, hi);
-  if (hi - lo > 4 * kHullSlabHalfThickness * e) return false;
+  if (hi - lo > kHullSlabCandidateWidth * e) return false;
   nrm = faces[big].n;
   for (const auto& fc : faces) {
     if (squared_norm(fc.n) == 0) continue;
@@ -99,13 +99,13 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
     n[c] = 1;
     double l = 0, u = 0;
     width(n, l, u);
-    if (u - l <= hi - lo + 2 * e) {
+    if (u - l <= hi - lo + kHullSlabAxisPreference * e) {
       nrm = n;
       lo = l;
       hi = u;
     }
   }
-  return hi - lo <= 2 * kHullSlabHalfThickness * e;
+  return hi - lo <= kHullSlabThickness * e;
 }
 
 // Float T: how far (in units of eps) the points' shadow on a plane (unit
@@ -256,10 +256,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::tent_hull(const ConvexPoly
     const Vec3<double> m = hp < mid ? nrm : Vec3<double>(-nrm);
     aug.push_back(vec_cast<T>(Vec3<double>(vec_to_double(input_point(p)) + lift * m)));
   }
-  Builder<T> second(std::span<const Vec3<T>>(aug.data(), aug.size()));
-  second.tent_ = false;
   try {
-    auto r = second.run();
+    auto r = build_hull<T>(std::span<const Vec3<T>>(aug.data(), aug.size()), false);
     out_vertex_.assign(pts_.size(), 0);  // (its vertices are measured too)
     return r;
   } catch (const InvalidInput&) {

@@ -180,7 +180,7 @@ inline double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
   for (std::size_t k = 0; k < count; ++k) {
     const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
     const double h = heights[k];
-    if (std::abs(h) > best * (1 + 1e-9)) continue;  // (the polygon is no nearer than its plane)
+    if (std::abs(h) > best * (1 + kHullDistanceTie)) continue;  // (the polygon is no nearer than its plane)
     bool inside = true;
     double d = 1e300;
     const std::size_t n = fc.v.size();
@@ -194,10 +194,10 @@ inline double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
       d = std::min(d, std::sqrt(squared_norm(Vec3<double>(ax - t * e))));
     }
     if (inside) d = std::abs(h);
-    if (d < best * (1 - 1e-9)) {
+    if (d < best * (1 - kHullDistanceTie)) {
       best = d;
       above = h > 0;
-    } else if (d <= best * (1 + 1e-9)) {
+    } else if (d <= best * (1 + kHullDistanceTie)) {
       best = std::min(best, d);
       above = above || h > 0;
     }

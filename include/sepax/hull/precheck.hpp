@@ -169,9 +169,9 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
     d2 += w * w;
   }
   const double ext = std::sqrt(d2);
-  const T plan_tol = static_cast<T>(0.5 * Tolerances<T>::planarity * ext);
-  const T conv_tol = static_cast<T>(0.5 * Tolerances<T>::convexity * ext);
-  const T copl_tol = static_cast<T>(2.0 * Tolerances<T>::coplanar / 4 * ext);
+  const T plan_tol = static_cast<T>(kHullPrecheckFraction * Tolerances<T>::planarity * ext);
+  const T conv_tol = static_cast<T>(kHullPrecheckFraction * Tolerances<T>::convexity * ext);
+  const T copl_tol = static_cast<T>(kHullPrecheckCoplanarMargin * Tolerances<T>::coplanar / 4 * ext);
   std::vector<Plane<T>> planes;
   // directed edge (u, v) -> (its face, its position in that face's loop)
   const FaceEdges edge_face(loops, q_.size());
@@ -222,7 +222,7 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
     bool ok = !is_zero(pl.normal);
     if constexpr (!exact) {  // (validation: aspect > sliver; here with a factor 2 margin)
       ok = ok && sepax::detail::triangle_aspect(pts[as_index(t[0])], pts[as_index(t[1])], pts[as_index(t[2])]) >
-                     2 * Tolerances<T>::sliver;
+                     kHullPrecheckSliverMargin * Tolerances<T>::sliver;
     }
     const bool shape_ok = ok;
     for (int v : rotated) ok = ok && abs_of(h(v)) <= plan_tol;
@@ -280,7 +280,7 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
     any = true;
     reject.push_back(least_significant(loops[f]));
   }
-  if (any && 16.0 * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::planarity * ext) {
+  if (any && kHullFarRounding * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::planarity * ext) {
     throw InvalidInput(
         ErrorCode::BadScale,
         "convex_hull: the points are up to " + std::to_string(max_abs) +

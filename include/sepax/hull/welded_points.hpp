@@ -128,6 +128,8 @@ inline void Builder<T>::weld() {
                            std::to_string(pts_.size()) + " after merging duplicates" +
                            (exact ? "" : " (points closer than the weld tolerance)"));
   }
+  removed_.assign(pts_.size(), 0);
+  pinned_.assign(pts_.size(), 0);
 }
 
 // Exact T: the welded points as doubles, used when every coordinate is
