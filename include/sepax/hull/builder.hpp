@@ -10,7 +10,7 @@
 //   precheck.hpp       float: what ConvexPolyhedron validation will check, with half its tolerances
 //   repair.hpp         float: points left outside are pinned and the hull rebuilt; the fallback policy
 //   fallbacks.hpp      float: simplex_hull, thin_plane, projected_slab, tent_hull
-// The float-versus-exact decisions are those of HullTraits<T> (traits.hpp).
+// The float-versus-exact decisions are those of HullTraits<T> (traits.hpp), a friend of the builder.
 #pragma once
 
 #include <array>
@@ -28,6 +28,7 @@
 #include "../vec3.hpp"
 #include "hull_distance.hpp"
 #include "index.hpp"
+#include "traits.hpp"
 
 namespace sepax::hull::detail {
 
@@ -81,9 +82,10 @@ class Builder {
   ConvexPolyhedron<T> choose_result(RepairLog<T>& log);
 
  private:
+  using Traits = HullTraits<T>;
+  friend Traits;
   using Tri = Triangle<T>;
   using Group = FaceGroup<T>;
-  static constexpr bool exact = number_traits<T>::is_exact;
 
   // ---- repair.hpp ----
   void try_simplex(RepairLog<T>& log);
@@ -97,14 +99,10 @@ class Builder {
   double shadow_out(const ConvexPolyhedron<T>& h, const Vec3<double>& nrm) const;
   std::optional<ConvexPolyhedron<T>> projected_slab(const Vec3<double>& nrm, double lo, double hi);
   // ---- welded_points.hpp ----
-  Vec3<T> local(const Vec3<T>& p) const;
-  void make_shadow();
   void add_point(int input_index, const Vec3<T>& loc);
   // ---- quickhull.hpp ----
   const Plane<T>& plane(int f);
-  int side(int f, int p, double& approx);
-  bool zero_area(int f);
-  static T length(const Vec3<T>& v);
+  static T length(const Vec3<T>& v) { return Traits::length(v); }
   std::optional<ConvexPolyhedron<T>> build(const std::vector<int>& active, std::vector<int>& reject);
   int new_tri(int p0, int p1, int p2);
   void assign(int p, int first);
@@ -121,9 +119,6 @@ class Builder {
   static bool split_apart(const Group& a, const Group& b);
   T tri_area2(const Tri& t) const;
   int find(int x);
-  void refit(Group& g);
-  bool certainly_apart(int x, int y) const;
-  bool coplanar(const Group& ga, const Group& gb) const;
   void unite(int x, int y);
   std::optional<ConvexPolyhedron<T>> merge_and_build(std::vector<int>& reject);
   bool strands_vertex(int x, int y);

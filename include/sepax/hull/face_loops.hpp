@@ -58,7 +58,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     // Float only: everything merged into fewer than 4 faces, so the set is
     // flat within the merge tolerance although the simplex test did not
     // see it: build the flat polygon instead.
-    if constexpr (exact) throw std::logic_error("convex_hull: exact hull collapsed (a bug)");
+    Traits::rounding_case("exact hull collapsed (a bug)");
     return polygon(active_, base_normal_, reject);
   }
   std::vector<std::vector<int>> loops;
@@ -105,7 +105,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     loop_group.push_back(g);
   }
   if (!reject.empty()) {
-    if constexpr (exact) throw std::logic_error("convex_hull: a merged face is not a disk (a bug)");
+    Traits::rounding_case("a merged face is not a disk (a bug)");
     return std::nullopt;
   }
   // Vertices on only two faces lie in the middle of an edge: drop them.
@@ -113,8 +113,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
   degree.assign(q_.size(), 0);
   for (const auto& l : loops)
     for (int v : l) ++degree[as_index(v)];
-  if constexpr (!exact) {
-    // ... unless a repair round pinned them (they were far from the hull
+  if (any_pinned_) {
+    // ... unless a repair pass pinned them (they were far from the hull
     // without them) and they are more than kHullFoldDistance * eps from the segment
     // between their neighbours: then the two faces met at a fold, merged
     // within eps over a real corner (on a needle or thin slab every face
@@ -148,19 +148,19 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
   }
   // Every corner strictly convex; otherwise reject the middle of the three
   // points (it is within tolerance of the segment of the other two).  The
-  // other two are its witnesses: a point is not rejected in a round where
+  // other two are its witnesses: a point is not rejected in a rebuild where
   // it witnesses another rejection, nor when one of its own witnesses is
   // rejected (two near-duplicate points at a real corner each fail the
   // corner test with the other as the middle; rejecting both would lose
-  // the corner).  Such rejections wait for the next round; the first
-  // failing corner of a round is always rejected, so rounds still progress.
+  // the corner).  Such rejections wait for the next rebuild; the first
+  // failing corner of a rebuild is always rejected, so rebuilds still progress.
   std::vector<char> rejected(q_.size(), 0), witness(q_.size(), 0);
-  std::vector<int> group_size;  // exact T: triangles per group root
-  if constexpr (exact) {
+  std::vector<int> group_size;  // triangles per group root (kTriangleFacesConvex)
+  if constexpr (Traits::kTriangleFacesConvex) {
     group_size.assign(tris_.size(), 0);
     for (int f : live) ++group_size[as_index(find(f))];
   }
-  [[maybe_unused]] int pinned_fallback = -1;
+  int pinned_fallback = -1;
   for (int r : reject) rejected[as_index(r)] = 1;
   for (std::size_t li = 0; li < loops.size(); ++li) {
     const auto& l = loops[li];
@@ -176,22 +176,14 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     }
     // Exact T: a face that is one triangle (with area: the zero-area ones
     // have joined others) turns left at every corner, by |normal|^2.
-    if constexpr (exact) {
+    if constexpr (Traits::kTriangleFacesConvex) {
       if (group_size[as_index(loop_group[li])] == 1) continue;
     }
     for (std::size_t i = 0; i < n; ++i) {
       const int pa = l[(i + n - 1) % n], pb = l[i], pc = l[(i + 1) % n];
       const Vec3<T> e1(local_point(pb) - local_point(pa)), e2(local_point(pc) - local_point(pb));
       const T turn = dot(g.pl.normal, cross(e1, e2));
-      bool ok;
-      if constexpr (exact) {
-        ok = turn > T(0);
-        if (turn < T(0) && !is_zero(cross(e1, e2)))
-          throw std::logic_error("convex_hull: reflex corner in an exact hull (a bug)");
-      } else {
-        ok = turn > eps_ * std::max(length(e1), length(e2));
-      }
-      if (ok) continue;
+      if (Traits::convex_corner(*this, turn, e1, e2)) continue;
       // the point opposite the longest side of triangle (pa, pb, pc)
       const T lab = squared_norm(e1), lbc = squared_norm(e2),
               lca = squared_norm(Vec3<T>(local_point(pa) - local_point(pc)));
@@ -201,13 +193,11 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
       if (lca >= lab && lca >= lbc) mid = pb;
       const int w1 = mid == pa ? pb : pa, w2 = mid == pc ? pb : pc;
       if (witness[as_index(mid)] || rejected[as_index(w1)] || rejected[as_index(w2)] || rejected[as_index(mid)]) continue;
-      if constexpr (!exact) {
-        // a point a repair round pinned (it was far from the hull without
-        // it) is rejected only if nothing else is
-        if (pinned_[as_index(mid)]) {
-          if (pinned_fallback < 0) pinned_fallback = mid;
-          continue;
-        }
+      // a point a repair pass pinned (it was far from the hull without
+      // it) is rejected only if nothing else is
+      if (pinned_[as_index(mid)]) {
+        if (pinned_fallback < 0) pinned_fallback = mid;
+        continue;
       }
       rejected[as_index(mid)] = 1;
       witness[as_index(w1)] = witness[as_index(w2)] = 1;
@@ -220,12 +210,12 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     reject.erase(std::unique(reject.begin(), reject.end()), reject.end());
     return std::nullopt;
   }
-  if constexpr (!exact) {
+  if constexpr (Traits::kPrechecks) {
     for (auto& l : loops) start_at_best_apex(l);
     // Adjacent faces that validation would see as coplanar are merged
     // (and the loops extracted again) rather than losing a vertex: the
     // smaller face's "least significant" vertex can be a real corner.
-    // Every round merges two groups, so this terminates.
+    // Every merge joins two groups, so this terminates.
     //
     // A merged face that fails planarity or convexity as validation sees
     // it (a twisted sliver quad between two near-duplicate pairs, say) is

@@ -60,62 +60,6 @@ inline int Builder<T>::find(int x) {
   return x;
 }
 
-// Float T: the group's plane, its area-weighted normal through the mean of its vertices.
-template <Number T>
-inline void Builder<T>::refit(Group& g) {
-  if constexpr (!exact) {
-    Vec3<T> n = g.area;
-    const T len = length(n);
-    if (len > T(0)) n = Vec3<T>(n[0] / len, n[1] / len, n[2] / len);
-    T off(0);
-    for (int v : g.verts) off = off + dot(n, local_point(v));
-    off = off / static_cast<T>(g.verts.size());
-    g.pl = Plane<T>{n, off};
-  }
-}
-
-// Should groups ga and gb (adjacent, non-degenerate) be one face?
-// Exact T with double points: whether groups x and y (roots) are certainly
-// not coplanar, because a vertex of y's root triangle is certainly off the
-// plane of x's (a group's plane is its root triangle's when that has
-// area; when it has none, the filter never decides).
-template <Number T>
-inline bool Builder<T>::certainly_apart(int x, int y) const {
-  if constexpr (exact) {
-    if (!shadow_) return false;
-    const Tri& tx = tris_[as_index(x)];
-    for (int v : tris_[as_index(y)].v) {
-      const FilteredSign r =
-          orientation_filter(qd_[as_index(tx.v[0])], qd_[as_index(tx.v[1])], qd_[as_index(tx.v[2])], qd_[as_index(v)]);
-      if (r.certain) return true;
-    }
-  } else {
-    (void)x;
-    (void)y;
-  }
-  return false;
-}
-
-// Should groups ga and gb (adjacent, non-degenerate) be one face?
-template <Number T>
-inline bool Builder<T>::coplanar(const Group& ga, const Group& gb) const {
-  if constexpr (exact) {
-    return is_zero(cross(ga.pl.normal, gb.pl.normal)) && dot(ga.pl.normal, gb.pl.normal) > T(0);
-  } else {
-    // Either face sees every vertex of the other (not shared with it) less
-    // than eps below its plane.  (Either: a thin face's own plane is poorly
-    // determined, so the other face's plane may be the one that tells.)
-    auto close = [&](const Group& g, const Group& h) {
-      for (int v : h.verts) {
-        if (std::binary_search(g.verts.begin(), g.verts.end(), v)) continue;
-        if (!(height(g.pl, v) > -eps_)) return false;
-      }
-      return true;
-    };
-    return close(ga, gb) || close(gb, ga);
-  }
-}
-
 // Unites the groups of x and y (the union's vertices, split ids, area and plane).
 template <Number T>
 inline void Builder<T>::unite(int x, int y) {
@@ -134,11 +78,11 @@ inline void Builder<T>::unite(int x, int y) {
                    std::back_inserter(sp));
     gx.splits = std::move(sp);
   }
-  if constexpr (!exact) gx.area = Vec3<T>(gx.area + gy.area);
+  Traits::add_area(gx, gy);
   if (gx.degenerate && !gy.degenerate) gx.pl = gy.pl;
   gx.degenerate = gx.degenerate && gy.degenerate;
   parent_[as_index(y)] = x;
-  refit(gx);
+  Traits::refit(*this, gx);
 }
 
 // Groups the live triangles into faces, then extracts their loops.
@@ -149,13 +93,11 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
     if (tris_[f].alive) live.push_back(static_cast<int>(f));
   parent_.assign(tris_.size(), 0);
   std::iota(parent_.begin(), parent_.end(), 0);
-  if constexpr (!exact) {
-    // (read only by strands_vertex, which needs a pinned point)
-    if (any_pinned_) {
-      star_.assign(q_.size(), {});
-      for (int f : live)
-        for (int v : tris_[as_index(f)].v) star_[as_index(v)].push_back(f);
-    }
+  // (read only by strands_vertex, which needs a pinned point)
+  if (any_pinned_) {
+    star_.assign(q_.size(), {});
+    for (int f : live)
+      for (int v : tris_[as_index(f)].v) star_[as_index(v)].push_back(f);
   }
   groups_.assign(tris_.size(), Group{});
   for (int f : live) {
@@ -166,7 +108,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
     g.pl = plane(f);
     g.degenerate = is_zero(g.pl.normal);
     if (nomerge_[as_index(f)] != 0) g.splits = {nomerge_[as_index(f)]};
-    if constexpr (!exact) g.area = T(2) * number_traits<T>::sqrt(tri_area2(t)) * t.pl.normal;
+    g.area = Traits::triangle_area(*this, t);
   }
   // Plane merges until nothing changes; then zero-area triangles join a
   // neighbouring face, and if any did, plane merges again: a zero-area
@@ -182,7 +124,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
           const int x = find(f), y = find(tris_[as_index(f)].nb[as_index(i)]);
           if (x == y || groups_[as_index(x)].degenerate || groups_[as_index(y)].degenerate) continue;
           if (split_apart(groups_[as_index(x)], groups_[as_index(y)])) continue;
-          if (!certainly_apart(x, y) && coplanar(groups_[as_index(x)], groups_[as_index(y)]) &&
+          if (!Traits::certainly_apart(*this, x, y) && Traits::coplanar(*this, groups_[as_index(x)], groups_[as_index(y)]) &&
               !strands_vertex(x, y)) {
             unite(x, y);
             changed = true;
@@ -233,11 +175,6 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
 // of a needle, a third of its length).
 template <Number T>
 inline bool Builder<T>::strands_vertex(int x, int y) {
-  if constexpr (exact) {
-    (void)x;
-    (void)y;
-    return false;
-  } else {
   if (!any_pinned_) return false;
   const Group& gx = groups_[as_index(x)];
   const Group& gy = groups_[as_index(y)];
@@ -277,7 +214,6 @@ inline bool Builder<T>::strands_vertex(int x, int y) {
     if (segment_distance(v, ends[0], ends[1]) > kHullFoldDistance * to_double(eps_)) return true;
   }
   return false;
-  }
 }
 
 // Float T: which faces to split at folds (vertex -> the groups it is

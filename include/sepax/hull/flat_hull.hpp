@@ -58,20 +58,18 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::polygon(const std::vector<
     const Vec3<T> e1(local_point(p1) - local_point(p0));
     T t = dot(n, cross(e1, Vec3<T>(local_point(p2) - local_point(p1))));
     if (flip) t = -t;
-    if constexpr (exact) {
-      return t > T(0);
-    } else {
-      // distance of p2 from the line p0 p1 (and of p0 from p1 p2) > eps
+    // float T: the distance of p2 from the line p0 p1 (and of p0 from p1 p2) > eps
+    return Traits::left_turn(t, [&] {
       const T len = std::max(length(e1), length(Vec3<T>(local_point(p2) - local_point(p1))));
-      return t > eps_ * nlen * len;
-    }
+      return T(eps_ * nlen * len);
+    });
   };
   std::vector<int> hull = monotone_chain(pts, left);
   if (hull.size() < 3) {
     throw InvalidInput(ErrorCode::Collinear, "convex_hull: all points lie on one line" +
-                                                 std::string(exact ? "" : " (within tolerance)"));
+                                                 std::string(Traits::kLineNote));
   }
-  if constexpr (!exact) {
+  if constexpr (Traits::kPrechecks) {
     // Start at the best-conditioned corner, or if validation would refuse
     // that (a slab up to flat*extent thick is off the plane triple by more
     // than the planarity tolerance from some starts), at the first corner

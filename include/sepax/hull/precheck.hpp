@@ -92,8 +92,8 @@ inline int Builder<T>::least_significant(const std::vector<int>& l) const {
     } else {
       d = T(length(cross(e, av)) / el);
     }
-    // (a point a repair round pinned only if every vertex of the face is)
-    const bool pin = !exact && pinned_[as_index(l[i])];
+    // (a point a repair pass pinned only if every vertex of the face is)
+    const bool pin = pinned_[as_index(l[i])] != 0;
     if (best_d < T(0) || (pin == best_pin ? d < best_d : best_pin)) {
       best_d = d;
       best = l[i];
@@ -220,10 +220,9 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
     if (rot == 0) planes.push_back(pl);
     auto h = [&](int v) { return T(dot(pl.normal, input_point(v)) - pl.offset); };
     bool ok = !is_zero(pl.normal);
-    if constexpr (!exact) {  // (validation: aspect > sliver; here with a factor 2 margin)
-      ok = ok && sepax::detail::triangle_aspect(pts[as_index(t[0])], pts[as_index(t[1])], pts[as_index(t[2])]) >
-                     kHullPrecheckSliverMargin * Tolerances<T>::sliver;
-    }
+    // (validation: aspect > sliver; here with a margin)
+    ok = ok && sepax::detail::triangle_aspect(pts[as_index(t[0])], pts[as_index(t[1])], pts[as_index(t[2])]) >
+                   kHullPrecheckSliverMargin * Tolerances<T>::sliver;
     const bool shape_ok = ok;
     for (int v : rotated) ok = ok && abs_of(h(v)) <= plan_tol;
     if (scan) {

@@ -9,7 +9,7 @@
 //      its boundary is the horizon, coned to the eye; the removed faces' points are assigned to new faces.
 //   4. sweep (float T): points kept on a face within eps are tested against the faces around them again.
 //   5. merge_and_build (face_merge.hpp) groups the triangles into faces.
-// Predicates: plane, side (exact sign, filtered for double coordinates), zero_area.
+// The predicates (outside, sees, zero_area, the eye) are HullTraits<T>'s (traits.hpp).
 #pragma once
 
 #include <algorithm>
@@ -40,45 +40,6 @@ inline const Plane<T>& Builder<T>::plane(int f) {
     t.has_plane = true;
   }
   return t.pl;
-}
-
-// Exact T: the sign of p's height above triangle f's plane (the sign of
-// det[v1 - v0, v2 - v0, p - v0]), and in approx an estimate of the
-// determinant for choosing among points (not for deciding).
-template <Number T>
-inline int Builder<T>::side(int f, int p, double& approx) {
-  const Tri& t = tris_[as_index(f)];
-  if (shadow_) {
-    const FilteredSign r =
-        orientation_filter(qd_[as_index(t.v[0])], qd_[as_index(t.v[1])], qd_[as_index(t.v[2])], qd_[as_index(p)]);
-    approx = r.det;
-    if (r.certain) return r.det > 0 ? 1 : -1;
-  }
-  const T h = height(plane(f), p);
-  if (!shadow_) approx = to_double(h);
-  return sign_of(h);
-}
-
-// Whether triangle f has zero area (exactly for exact T).
-template <Number T>
-inline bool Builder<T>::zero_area(int f) {
-  if constexpr (exact) {
-    const Tri& t = tris_[as_index(f)];
-    if (shadow_ && hull::certainly_nonzero_cross(qd_[as_index(t.v[0])], qd_[as_index(t.v[1])], qd_[as_index(t.v[2])]))
-      return false;
-  }
-  return is_zero(plane(f).normal);
-}
-
-// Length of a vector as T for float types (not used for exact T).
-template <Number T>
-inline T Builder<T>::length(const Vec3<T>& v) {
-  if constexpr (exact) {
-    (void)v;
-    return T(0);
-  } else {
-    return number_traits<T>::sqrt(squared_norm(v));
-  }
 }
 
 // One build on the active points: the initial simplex, then the flat hull or quickhull.
@@ -122,15 +83,11 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::build(const std::vector<in
       c = i;
     }
   }
-  bool collinear = c < 0;
-  if constexpr (!exact) {
-    // distance of c from the line = |ab x ac| / |ab|
-    if (!collinear) collinear = number_traits<T>::sqrt(best_c) <= flat_ * length(ab);
-  }
+  const bool collinear = c < 0 || Traits::collinear(best_c, ab, flat_);
   if (collinear) {
     throw InvalidInput(ErrorCode::Collinear,
                        "convex_hull: all points lie on one line" +
-                           std::string(exact ? "" : " (within the flat tolerance)"));
+                           std::string(Traits::kFlatNote));
   }
   // Point farthest from plane abc.
   const Plane<T> base = plane_through(local_point(a), local_point(b), local_point(c));
@@ -156,23 +113,7 @@ inline int Builder<T>::new_tri(int p0, int p1, int p2) {
   Tri t;
   t.v = {p0, p1, p2};
   t.nb = {-1, -1, -1};
-  if constexpr (exact) {
-    if (!shadow_) t.pl = plane_through(local_point(p0), local_point(p1), local_point(p2));
-    t.has_plane = !shadow_;
-  } else {
-    // apex at the largest angle (opposite the longest edge): the cross
-    // product of the two edges from there loses the least accuracy
-    const T l0 = squared_norm(Vec3<T>(local_point(p1) - local_point(p0)));  // opposite p2
-    const T l1 = squared_norm(Vec3<T>(local_point(p2) - local_point(p1)));  // opposite p0
-    const T l2 = squared_norm(Vec3<T>(local_point(p0) - local_point(p2)));  // opposite p1
-    if (l1 >= l0 && l1 >= l2) {
-      t.pl = plane_through(local_point(p0), local_point(p1), local_point(p2));
-    } else if (l2 >= l0) {
-      t.pl = plane_through(local_point(p1), local_point(p2), local_point(p0));
-    } else {
-      t.pl = plane_through(local_point(p2), local_point(p0), local_point(p1));
-    }
-  }
+  Traits::set_plane(*this, t, p0, p1, p2);
   tris_.push_back(std::move(t));
   return static_cast<int>(tris_.size()) - 1;
 }
@@ -187,45 +128,24 @@ inline int Builder<T>::new_tri(int p0, int p1, int p2) {
 // eps outside.  Dropping such points was what lost them.)
 template <Number T>
 inline void Builder<T>::assign(int p, int first) {
-  [[maybe_unused]] int on_face = -1;
-  [[maybe_unused]] T on_height(0);
+  typename Traits::NearFace near;
   for (std::size_t f = as_index(first); f < tris_.size(); ++f) {
     if (!tris_[f].alive) continue;
-    if constexpr (exact) {
-      double approx = 0;
-      if (side(static_cast<int>(f), p, approx) > 0) {
-        tris_[f].conflict.push_back(p);
-        return;
-      }
-      continue;
-    }
-    const T h = height(tris_[f].pl, p);
-    if (h > threshold(p)) {
+    const auto side = Traits::classify(*this, static_cast<int>(f), p);
+    if (side.outside) {
       tris_[f].conflict.push_back(p);
       return;
     }
-    if constexpr (!exact) {
-      if (h > on_height) {
-        on_height = h;
-        on_face = static_cast<int>(f);
-      }
-    }
+    near.offer(side, static_cast<int>(f));
   }
-  if constexpr (!exact) {
-    if (on_face >= 0) tris_[as_index(on_face)].on.push_back(p);
-  }
+  near.keep(*this, p);
 }
 
 // How far above a face p must be to be outside it: eps, or 0 for a point
 // pinned by a repair round (it becomes a vertex whenever it is outside).
 template <Number T>
 inline T Builder<T>::threshold(int p) const {
-  if constexpr (exact) {
-    (void)p;
-    return T(0);
-  } else {
-    return pinned_[as_index(p)] ? T(0) : eps_;
-  }
+  return pinned_[as_index(p)] ? T(0) : eps_;
 }
 
 // Float T, after the conflict lists are empty: a point kept on a face (at
@@ -234,10 +154,10 @@ inline T Builder<T>::threshold(int p) const {
 // also (within eps) above by a face tilted below it.  Test every such
 // point against every live face; one more than eps above any face goes
 // back to that face's conflict list and the quickhull loop runs again.
-// Each round adds a vertex or drops an eye, so the rounds terminate.
+// Each sweep that moves a point adds a vertex or drops an eye, so the sweeps terminate.
 template <Number T>
 inline bool Builder<T>::sweep() {
-  if constexpr (exact) {
+  if constexpr (!Traits::kRechecksRounding) {
     return false;
   } else {
     std::vector<int> live;
@@ -342,29 +262,7 @@ inline void Builder<T>::expand() {
     }
     // eye: the conflict point farthest above this face
     auto& cf = tris_[fi].conflict;
-    std::size_t best = 0;
-    if constexpr (exact) {
-      // (any conflict point is a correct eye: the farthest by the
-      // determinant's estimate)
-      double bh = 0;
-      for (std::size_t i = 0; i < cf.size(); ++i) {
-        double h = 0;
-        side(static_cast<int>(fi), cf[i], h);
-        if (i == 0 || h > bh) {
-          bh = h;
-          best = i;
-        }
-      }
-    } else {
-      T bh = height(tris_[fi].pl, cf[0]);
-      for (std::size_t i = 1; i < cf.size(); ++i) {
-        const T h = height(tris_[fi].pl, cf[i]);
-        if (h > bh) {
-          bh = h;
-          best = i;
-        }
-      }
-    }
+    const std::size_t best = Traits::farthest(*this, static_cast<int>(fi), cf);
     const int eye = cf[best];
     cf.erase(cf.begin() + static_cast<std::ptrdiff_t>(best));
     // visible region: connected faces the eye is strictly above
@@ -383,14 +281,7 @@ inline void Builder<T>::expand() {
         for (int nbf : tris_[as_index(f)].nb) {
           if (mark[as_index(nbf)] != 0) continue;
           touched.push_back(nbf);
-          bool vis;
-          if constexpr (exact) {
-            double approx = 0;
-            vis = side(nbf, eye, approx) > 0;  // (a zero-area triangle's side is 0)
-          } else {
-            const Tri& nt = tris_[as_index(nbf)];
-            vis = !is_zero(nt.pl.normal) && height(nt.pl, eye) > T(0);
-          }
+          const bool vis = Traits::sees(*this, nbf, eye);
           mark[as_index(nbf)] = vis ? 1 : 2;
           if (vis) stack.push_back(nbf);
         }
@@ -407,8 +298,8 @@ inline void Builder<T>::expand() {
       // removes, are then tested against every live face.
       for (int f : touched) {
         if (mark[as_index(f)] != 2) continue;
-        const bool flat_tri = zero_area(f);
-        if (!flat_tri && (exact || height(tris_[as_index(f)].pl, eye) < -eps_)) continue;
+        const bool flat_tri = Traits::zero_area(*this, f);
+        if (!Traits::may_join(*this, f, eye, flat_tri)) continue;
         int nvis = 0;
         for (int nbf : tris_[as_index(f)].nb) nvis += mark[as_index(nbf)] == 1;
         if (nvis >= 2) {
@@ -450,7 +341,7 @@ inline void Builder<T>::expand() {
       if (horizon.size() != next.size()) simple = false;
     }
     if (!simple) {
-      if constexpr (exact) throw std::logic_error("convex_hull: non-simple horizon (a bug)");
+      Traits::rounding_case("non-simple horizon (a bug)");
       // Float only: rounding made the visible region not a disk.  The eye
       // is then nearly on the hull; drop it and go on with this face's
       // other conflict points (fi is still alive).
@@ -472,7 +363,7 @@ inline void Builder<T>::expand() {
     // re-distribute the visible faces' conflict points, and their vertices
     // that are no longer on the surface (inside in exact arithmetic; float:
     // tested like any other point)
-    if constexpr (!exact) {
+    if constexpr (Traits::kRechecksRounding) {
       std::vector<int>& gone = gone_;
       gone.clear();
       for (int f : visible)

@@ -54,34 +54,7 @@ inline void Builder<T>::check_input() {
     d2 += w * w;
   }
   extent_ = std::sqrt(d2);
-  if constexpr (!exact) {
-    if (!std::isfinite(extent_) || !std::isfinite(extent_ * extent_ * extent_ * 8.0) ||
-        !number_traits<T>::is_finite(static_cast<T>(extent_ * extent_ * 4.0))) {
-      throw InvalidInput(ErrorCode::BadScale,
-                         "convex_hull: the point set's extent " + format_number(extent_) +
-                             " overflows " + std::string(number_traits<T>::name) +
-                             " in plane computations");
-    }
-    // Decisions are made on coordinates relative to the box centre.
-    const T two(2);
-    centre_ = Vec3<T>((lo[0] + hi[0]) / two, (lo[1] + hi[1]) / two, (lo[2] + hi[2]) / two);
-    eps_ = static_cast<T>(Tolerances<T>::coplanar * extent_);
-    flat_ = static_cast<T>(Tolerances<T>::flat * extent_);
-    weld_ = static_cast<T>(Tolerances<T>::weld * extent_);
-  } else {
-    centre_ = Vec3<T>(T(0), T(0), T(0));
-    eps_ = flat_ = weld_ = T(0);
-  }
-}
-
-// A point in local coordinates.
-template <Number T>
-inline Vec3<T> Builder<T>::local(const Vec3<T>& p) const {
-  if constexpr (exact) {
-    return p;
-  } else {
-    return Vec3<T>(p - centre_);
-  }
+  Traits::scale(*this, lo, hi);
 }
 
 // Welds the input into the welded points (q_, pts_).
@@ -89,7 +62,7 @@ template <Number T>
 inline void Builder<T>::weld() {
   std::vector<Vec3<T>> loc;
   loc.reserve(in_.size());
-  for (const auto& p : in_) loc.push_back(local(p));
+  for (const auto& p : in_) loc.push_back(Traits::local(p, centre_));
   std::vector<int> order(in_.size());
   std::iota(order.begin(), order.end(), 0);
   auto lex = [&](int i, int j) {
@@ -101,52 +74,19 @@ inline void Builder<T>::weld() {
     return i < j;
   };
   std::sort(order.begin(), order.end(), lex);
-  if constexpr (exact) {
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      if (k > 0 && loc[as_index(order[k])] == loc[as_index(order[k - 1])]) continue;
-      add_point(order[k], loc[as_index(order[k])]);
-    }
-  } else {
-    // Sweep in x: a point is welded to an earlier representative within weld.
-    const T w2 = weld_ * weld_;
-    std::size_t window = 0;  // first representative with x >= current x - weld
-    for (int i : order) {
-      const Vec3<T>& p = loc[as_index(i)];
-      while (window < q_.size() && q_[window][0] < p[0] - weld_) ++window;
-      bool dup = false;
-      for (std::size_t r = window; r < q_.size() && !dup; ++r) {
-        const Vec3<T> d(q_[r] - p);
-        dup = squared_norm(d) <= w2;
-      }
-      if (!dup) add_point(i, p);
-    }
-  }
-  if constexpr (exact) make_shadow();
+  Traits::weld(*this, loc, order);
+  Traits::prepare(*this);
   if (pts_.size() < 3) {
     throw InvalidInput(ErrorCode::TooFewPoints,
                        "convex_hull: needs at least 3 distinct points, got " +
                            std::to_string(pts_.size()) + " after merging duplicates" +
-                           (exact ? "" : " (points closer than the weld tolerance)"));
+                           Traits::kWeldNote);
   }
   removed_.assign(pts_.size(), 0);
   pinned_.assign(pts_.size(), 0);
 }
 
-// Exact T: the welded points as doubles, used when every coordinate is
-// exactly a double (checked exactly): the quickhull predicates are then
-// decided by orientation_filter, and in T only when it cannot decide.
-template <Number T>
-inline void Builder<T>::make_shadow() {
-  shadow_ = true;
-  qd_.resize(q_.size());
-  for (std::size_t i = 0; i < q_.size() && shadow_; ++i)
-    for (int c = 0; c < 3 && shadow_; ++c) {
-      qd_[i][c] = to_double(q_[i][c]);
-      shadow_ = std::isfinite(qd_[i][c]) && from_double<T>(qd_[i][c]) == q_[i][c];
-    }
-  if (!shadow_) qd_.clear();
-}
-
+// Adds a welded point: its input index and its local coordinates.
 template <Number T>
 inline void Builder<T>::add_point(int input_index, const Vec3<T>& loc) {
   pts_.push_back(input_index);
