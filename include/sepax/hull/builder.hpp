@@ -165,15 +165,15 @@ class Builder {
   std::vector<char> removed_;  // points the clean-up rejected (put back when pinned)
   std::vector<char> pinned_;   // float: points a repair pass put back
   bool any_pinned_ = false;
-  std::vector<char> out_vertex_;        // vertices of the last output
-  std::vector<std::vector<int>> star_;  // float: vertex -> live triangles around it
-  std::vector<int> next_vertex_;        // scratch, per welded point (-1: none)
-  std::vector<int> gone_;               // scratch, per eye
-  std::vector<Vec3<double>> qd_;        // exact T: q_ as doubles, when shadow_
-  bool shadow_ = false;                 // exact T: every welded coordinate is exactly a double
+  std::vector<char> out_vertex_;             // vertices of the last output
+  std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
+  std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)
+  std::vector<int> gone_;                    // scratch, per eye
+  std::vector<Vec3<double>> qd_;             // exact T: q_ as doubles, when shadow_
+  bool shadow_ = false;                      // exact T: every welded coordinate is exactly a double
   std::vector<std::array<int, 3>> horizon_;  // scratch, per eye
   std::vector<int> degree_;                  // scratch, per welded point
-  std::vector<int> nomerge_;  // triangle -> id of the face it was split from (0: none)
+  std::vector<int> nomerge_;                 // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
   bool tent_;  // float: may try tent_hull (not in a tent's own build)
 };

@@ -28,7 +28,7 @@ namespace sepax::hull::detail {
 // The faces' loops of the current groups, cleaned up; the validated hull, or none with reject filled.
 template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<int>& live,
-                                                           std::vector<int>& reject) {
+                                                              std::vector<int>& reject) {
   // boundary edges of each group, grouped by group (stable: in triangle order)
   struct BoundaryEdge {
     int group, from, to;
@@ -118,8 +118,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     // without them) and they are more than kHullFoldDistance * eps from the segment
     // between their neighbours: then the two faces met at a fold, merged
     // within eps over a real corner (on a needle or thin slab every face
-    // is within eps of every vertex: the tip of a needle, a third of its
-    // length, was lost this way).  The less planar of the two faces it is
+    // is within eps of every vertex: such a merge can cut off the tip of a
+    // needle).  The less planar of the two faces it is
     // on (fold_choice) is split back into its triangles (which may not
     // merge again) and the faces merged again.
     // Every split marks more triangles, so this terminates; a face that
@@ -192,7 +192,9 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
       if (lbc >= lab && lbc >= lca) mid = pa;
       if (lca >= lab && lca >= lbc) mid = pb;
       const int w1 = mid == pa ? pb : pa, w2 = mid == pc ? pb : pc;
-      if (witness[as_index(mid)] || rejected[as_index(w1)] || rejected[as_index(w2)] || rejected[as_index(mid)]) continue;
+      if (witness[as_index(mid)] || rejected[as_index(w1)] || rejected[as_index(w2)] ||
+          rejected[as_index(mid)])
+        continue;
       // a point a repair pass pinned (it was far from the hull without
       // it) is rejected only if nothing else is
       if (pinned_[as_index(mid)]) {

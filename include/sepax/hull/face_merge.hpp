@@ -69,8 +69,7 @@ inline void Builder<T>::unite(int x, int y) {
   Group& gx = groups_[as_index(x)];
   Group& gy = groups_[as_index(y)];
   std::vector<int> vs;
-  std::set_union(gx.verts.begin(), gx.verts.end(), gy.verts.begin(), gy.verts.end(),
-                 std::back_inserter(vs));
+  std::set_union(gx.verts.begin(), gx.verts.end(), gy.verts.begin(), gy.verts.end(), std::back_inserter(vs));
   gx.verts = std::move(vs);
   if (!gy.splits.empty()) {
     std::vector<int> sp;
@@ -124,8 +123,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
           const int x = find(f), y = find(tris_[as_index(f)].nb[as_index(i)]);
           if (x == y || groups_[as_index(x)].degenerate || groups_[as_index(y)].degenerate) continue;
           if (split_apart(groups_[as_index(x)], groups_[as_index(y)])) continue;
-          if (!Traits::certainly_apart(*this, x, y) && Traits::coplanar(*this, groups_[as_index(x)], groups_[as_index(y)]) &&
-              !strands_vertex(x, y)) {
+          if (!Traits::certainly_apart(*this, x, y) &&
+              Traits::coplanar(*this, groups_[as_index(x)], groups_[as_index(y)]) && !strands_vertex(x, y)) {
             unite(x, y);
             changed = true;
           }
@@ -141,7 +140,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
         int li = 0;
         T ll(-1);
         for (int i = 0; i < 3; ++i) {
-          const T l = squared_norm(Vec3<T>(local_point(t.v[as_index((i + 1) % 3)]) - local_point(t.v[as_index(i)])));
+          const T l =
+              squared_norm(Vec3<T>(local_point(t.v[as_index((i + 1) % 3)]) - local_point(t.v[as_index(i)])));
           if (l > ll) {
             ll = l;
             li = i;
@@ -171,8 +171,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
 // on only two faces (so that it is dropped as the middle of an edge) while
 // it is more than kHullFoldDistance * eps from the segment between its neighbours
 // along that edge?  On a needle or thin slab every face is within eps of
-// every vertex, and such merges folded faces over a real corner (the tip
-// of a needle, a third of its length).
+// every vertex, and such a merge can fold faces over a real corner (the
+// tip of a needle).
 template <Number T>
 inline bool Builder<T>::strands_vertex(int x, int y) {
   if (!any_pinned_) return false;
@@ -224,9 +224,9 @@ inline bool Builder<T>::strands_vertex(int x, int y) {
 // being a corner of both, means one of them bends over it: on a slab,
 // the exactly planar bottom and a rim face merged from two triangles
 // within eps of each other's plane (they fold over the corner).
-// Splitting the planar face as well made its triangles unable to merge
-// again, and validation then saw them as coplanar neighbours, which cost
-// a corner each (7 of one set's 8 bottom corners).  If the less planar
+// The planar face is not split as well: its triangles could not merge
+// again, and validation would see them as coplanar neighbours, each such
+// pair costing a corner.  If the less planar
 // face folds again after its split, the next pass finds it unsplittable
 // and splits the other, so no fold is left standing.
 template <Number T>
@@ -235,8 +235,7 @@ inline std::vector<int> Builder<T>::fold_choice(const std::vector<int>& live,
   std::vector<int> ids;
   if (folds.empty()) return ids;
   std::unordered_map<int, int> plain;  // group -> plain unsplit triangles
-  for (int f : live)
-    plain[find(f)] += !is_zero(tris_[as_index(f)].pl.normal) && nomerge_[as_index(f)] == 0;
+  for (int f : live) plain[find(f)] += !is_zero(tris_[as_index(f)].pl.normal) && nomerge_[as_index(f)] == 0;
   auto bend = [&](int g) {
     const Group& gr = groups_[as_index(g)];
     double d = 0;
@@ -289,7 +288,8 @@ inline bool Builder<T>::split_groups(const std::vector<int>& live, std::vector<i
 // (double, on the local coordinates; exact conversion for float).
 template <Number T>
 inline double Builder<T>::segment_distance(int v, int a, int b) const {
-  return distance_to_segment(vec_to_double(local_point(v)), vec_to_double(local_point(a)), vec_to_double(local_point(b)));
+  return distance_to_segment(vec_to_double(local_point(v)), vec_to_double(local_point(a)),
+                             vec_to_double(local_point(b)));
 }
 
 }  // namespace sepax::hull::detail

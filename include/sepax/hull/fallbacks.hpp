@@ -47,7 +47,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::simplex_hull() {
   }
 }
 
-// Float T, the slab fallback (run() above).  Whether the welded points
+// Float T, the slab fallback (repair.hpp, try_projected_slab).  Whether the welded points
 // are within kHullSlabHalfThickness * eps of one plane: the plane of h's largest face
 // (one O(n) pass; a well-shaped set stops here), then, if they are within
 // twice that of it, the face or coordinate plane across which they spread
@@ -149,7 +149,7 @@ inline double Builder<T>::shadow_out(const ConvexPolyhedron<T>& h, const Vec3<do
 // polygon.  None if validation refuses every start.
 template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::projected_slab(const Vec3<double>& nrm, double lo,
-                                                                  double hi) {
+                                                                     double hi) {
   const double e = to_double(eps_);
   const std::size_t n = pts_.size();
   const double mid = (lo + hi) / 2;
@@ -176,12 +176,14 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::projected_slab(const Vec3<
     // triple validation will use, and round them once more.
     const auto tri = plane_triple(v);
     const Vec3<double> p0(vec_to_double(v[as_index(tri[0])]) - vec_to_double(centre_));
-    const Vec3<double> tn = cross(Vec3<double>(vec_to_double(v[as_index(tri[1])]) - vec_to_double(centre_) - p0),
-                                  Vec3<double>(vec_to_double(v[as_index(tri[2])]) - vec_to_double(centre_) - p0));
+    const Vec3<double> tn =
+        cross(Vec3<double>(vec_to_double(v[as_index(tri[1])]) - vec_to_double(centre_) - p0),
+              Vec3<double>(vec_to_double(v[as_index(tri[2])]) - vec_to_double(centre_) - p0));
     const double tl2 = squared_norm(tn);
     if (tl2 > 0) {
       for (std::size_t i = 0; i < v.size(); ++i) {
-        if (static_cast<int>(i) == tri[0] || static_cast<int>(i) == tri[1] || static_cast<int>(i) == tri[2]) continue;
+        if (static_cast<int>(i) == tri[0] || static_cast<int>(i) == tri[1] || static_cast<int>(i) == tri[2])
+          continue;
         const Vec3<double> x(vec_to_double(v[i]) - vec_to_double(centre_));
         const Vec3<double> y(x - (dot(tn, Vec3<double>(x - p0)) / tl2) * tn);
         v[i] = Vec3<T>(vec_cast<T>(y) + centre_);
@@ -197,13 +199,13 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::projected_slab(const Vec3<
   return std::nullopt;
 }
 
-// Float T, the tent fallback (run() above): when every round, the
-// simplex and the slab polygon leave a point more than kHullRepairTolerance out,
+// Float T, the tent fallback (repair.hpp, try_tent): when every repair pass,
+// the simplex and the slab polygon leave a point more than kHullRepairTolerance out,
 // the hull of the input points plus, for each such point p, the point
 // p + kHullTentLift * eps * m, m the unit normal of the thinnest direction
 // of the set (the face normal of h across which the points spread
 // least) pointing from p's side towards the middle of that spread; built
-// by a second Builder (which does not try a tent itself), so validated.
+// by a second build (which does not try a tent itself), so validated.
 //
 // Why (docs/hull.md, "Slab corners"): on a slab whose rim faces rise
 // inward with slope t/d (thickness t, a few hundred eps, over a rim
@@ -224,7 +226,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::projected_slab(const Vec3<
 // p).  None if the second build fails.
 template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::tent_hull(const ConvexPolyhedron<T>& h,
-                                                             Vec3<double>& nrm) {
+                                                                Vec3<double>& nrm) {
   std::vector<int> lost;
   double lost_height = 0;
   out_vertex_.assign(pts_.size(), 0);  // (measure every point)

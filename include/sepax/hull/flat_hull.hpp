@@ -25,7 +25,7 @@ namespace sepax::hull::detail {
 // The flat hull of the active points, in the plane with normal n.
 template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::polygon(const std::vector<int>& active,
-                                                           const Vec3<T>& n, std::vector<int>& reject) {
+                                                              const Vec3<T>& n, std::vector<int>& reject) {
   // Sort on the two coordinates other than n's largest component (exact
   // for exact T); decide turns in 3D against n.
   int k = 0;
@@ -33,8 +33,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::polygon(const std::vector<
     if (abs_of(n[i]) > abs_of(n[k])) k = i;
   // Sort along the in-plane axis the points spread most on: the tolerant
   // turn test below only drops points between their neighbours in sort
-  // order, so for a needle sorted across its width (by its tiny
-  // coordinate first) it dropped one end of the needle (half the extent).
+  // order, so a needle sorted across its width (by its tiny coordinate
+  // first) would lose one end (half the extent).
   int u = (k + 1) % 3, w = (k + 2) % 3;
   {
     auto spread = [&](int c) {
@@ -66,8 +66,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::polygon(const std::vector<
   };
   std::vector<int> hull = monotone_chain(pts, left);
   if (hull.size() < 3) {
-    throw InvalidInput(ErrorCode::Collinear, "convex_hull: all points lie on one line" +
-                                                 std::string(Traits::kLineNote));
+    throw InvalidInput(ErrorCode::Collinear,
+                       "convex_hull: all points lie on one line" + std::string(Traits::kLineNote));
   }
   if constexpr (Traits::kPrechecks) {
     // Start at the best-conditioned corner, or if validation would refuse

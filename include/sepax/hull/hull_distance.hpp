@@ -58,7 +58,8 @@ inline PolygonFaces polygon_faces(const ConvexPolyhedron<T>& h, const Vec3<T>& c
   out.faces.reserve(as_index(h.face_count()));
   for (int f = 0; f < h.face_count(); ++f) {
     PolygonFace fc;
-    fc.v = std::span<const Vec3<double>>(out.points.data() + start[as_index(f)], start[as_index(f) + 1] - start[as_index(f)]);
+    fc.v = std::span<const Vec3<double>>(out.points.data() + start[as_index(f)],
+                                         start[as_index(f) + 1] - start[as_index(f)]);
     Vec3<double> n(0, 0, 0), m(0, 0, 0);
     for (std::size_t i = 0; i < fc.v.size(); ++i) {
       const Vec3<double>& a = fc.v[i];
@@ -126,7 +127,8 @@ struct DeepInside {
   bool enabled() const { return on_; }
   int face() const { return at_; }  // where the last climb ended
   std::span<const int> neighbours(int f) const {
-    return std::span<const int>(adj_.data() + start_[as_index(f)], as_index(start_[as_index(f) + 1] - start_[as_index(f)]));
+    return std::span<const int>(adj_.data() + start_[as_index(f)],
+                                as_index(start_[as_index(f) + 1] - start_[as_index(f)]));
   }
   bool operator()(const Vec3<double>& x) {
     const Vec3<double> d(x - c_);

@@ -37,7 +37,8 @@ inline std::array<int, 3> plane_triple(const std::vector<Vec3<T>>& pts) {
     T best_area(-1);
     for (int j = 1; j + 1 < n; ++j)
       for (int k = j + 1; k < n; ++k) {
-        const T a = squared_norm(cross(Vec3<T>(pts[as_index(j)] - pts[0]), Vec3<T>(pts[as_index(k)] - pts[0])));
+        const T a =
+            squared_norm(cross(Vec3<T>(pts[as_index(j)] - pts[0]), Vec3<T>(pts[as_index(k)] - pts[0])));
         if (a > best_area) {
           best_area = a;
           best = {0, j, k};
@@ -60,7 +61,8 @@ inline void Builder<T>::start_at_best_apex(std::vector<int>& l) const {
   std::size_t best = 0;
   T best_s(-1);
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3<T> e1(input_point(l[(i + n - 1) % n]) - input_point(l[i])), e2(input_point(l[(i + 1) % n]) - input_point(l[i]));
+    const Vec3<T> e1(input_point(l[(i + n - 1) % n]) - input_point(l[i])),
+        e2(input_point(l[(i + 1) % n]) - input_point(l[i]));
     const T d = length(e1) * length(e2);
     const T sine = d > T(0) ? T(length(cross(e1, e2)) / d) : T(0);
     if (sine > best_s) {
@@ -120,7 +122,8 @@ class FaceEdges {
     for (std::size_t f = 0; f < loops.size(); ++f) {
       const auto& l = loops[f];
       for (std::size_t i = 0; i < l.size(); ++i)
-        edges_[as_index(fill[as_index(l[i])]++)] = {l[(i + 1) % l.size()], static_cast<int>(f), static_cast<int>(i)};
+        edges_[as_index(fill[as_index(l[i])]++)] = {l[(i + 1) % l.size()], static_cast<int>(f),
+                                                    static_cast<int>(i)};
     }
   }
   const Edge* find(int u, int v) const {
@@ -145,8 +148,8 @@ class FaceEdges {
 // another does not) is started at the first corner that passes instead.
 template <Number T>
 inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::vector<int>& reject, bool flat,
-                                    std::vector<std::pair<int, int>>* merges, const std::vector<int>* loop_group,
-                                    std::vector<int>* split) {
+                                    std::vector<std::pair<int, int>>* merges,
+                                    const std::vector<int>* loop_group, std::vector<int>* split) {
   std::vector<int> used;  // the loops' vertices, ascending
   {
     std::vector<char> on_loop(q_.size(), 0);
@@ -178,8 +181,8 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
   // Convexity: every used vertex against each face plane, or on a large hull
   // the local certificate (as validation): across each edge, the two
   // vertices of the neighbouring face next to that edge.
-  const bool scan = flat || static_cast<double>(loops.size()) * static_cast<double>(used.size()) <=
-                                kConvexityScanPairs;
+  const bool scan =
+      flat || static_cast<double>(loops.size()) * static_cast<double>(used.size()) <= kConvexityScanPairs;
   // face f's witnesses: witness[witness_start[f], witness_start[f + 1])
   std::vector<int> witness, witness_start(loops.size() + 1, 0);
   if (!scan) {
@@ -201,54 +204,56 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
   std::vector<int> rotated;  // (one loop, rotated)
   std::vector<Vec3<T>> pts;  // (its points)
   for (std::size_t f = 0; f < loops.size(); ++f) {
-   for (std::size_t rot = 0; rot < (flat ? 1 : loops[f].size()); ++rot) {
-    rotated.assign(loops[f].begin(), loops[f].end());
-    std::rotate(rotated.begin(), rotated.begin() + static_cast<std::ptrdiff_t>(rot), rotated.end());
-    pts.clear();
-    for (int v : rotated) pts.push_back(input_point(v));
-    auto t = plane_triple(pts);
-    if (flat && f == 1) {  // the back face reuses the front triple, reversed
-      std::vector<Vec3<T>> front;
-      for (int v : loops[0]) front.push_back(input_point(v));
-      const auto t0 = plane_triple(front);
+    for (std::size_t rot = 0; rot < (flat ? 1 : loops[f].size()); ++rot) {
+      rotated.assign(loops[f].begin(), loops[f].end());
+      std::rotate(rotated.begin(), rotated.begin() + static_cast<std::ptrdiff_t>(rot), rotated.end());
+      pts.clear();
+      for (int v : rotated) pts.push_back(input_point(v));
+      auto t = plane_triple(pts);
+      if (flat && f == 1) {  // the back face reuses the front triple, reversed
+        std::vector<Vec3<T>> front;
+        for (int v : loops[0]) front.push_back(input_point(v));
+        const auto t0 = plane_triple(front);
+        const std::size_t n = rotated.size();
+        // loops[1] is loops[0] reversed: position i there is n-1-i here
+        t = {static_cast<int>(n - 1 - as_index(t0[0])), static_cast<int>(n - 1 - as_index(t0[2])),
+             static_cast<int>(n - 1 - as_index(t0[1]))};
+      }
+      const Plane<T> pl = plane_through(pts[as_index(t[0])], pts[as_index(t[1])], pts[as_index(t[2])]);
+      if (rot == 0) planes.push_back(pl);
+      auto h = [&](int v) { return T(dot(pl.normal, input_point(v)) - pl.offset); };
+      bool ok = !is_zero(pl.normal);
+      // (validation: aspect > sliver; here with a margin)
+      ok = ok &&
+           sepax::detail::triangle_aspect(pts[as_index(t[0])], pts[as_index(t[1])], pts[as_index(t[2])]) >
+               kHullPrecheckSliverMargin * Tolerances<T>::sliver;
+      const bool shape_ok = ok;
+      for (int v : rotated) ok = ok && abs_of(h(v)) <= plan_tol;
+      if (scan) {
+        for (int v : used) ok = ok && h(v) <= conv_tol;
+      } else {
+        for (int w = witness_start[f]; w < witness_start[f + 1] && ok; ++w)
+          ok = h(witness[as_index(w)]) <= conv_tol;
+      }
+      // corners as validation sees them: no reflex turn about this normal
       const std::size_t n = rotated.size();
-      // loops[1] is loops[0] reversed: position i there is n-1-i here
-      t = {static_cast<int>(n - 1 - as_index(t0[0])), static_cast<int>(n - 1 - as_index(t0[2])),
-           static_cast<int>(n - 1 - as_index(t0[1]))};
+      for (std::size_t i = 0; i < n && ok; ++i) {
+        const Vec3<T> ab(input_point(rotated[i]) - input_point(rotated[(i + n - 1) % n]));
+        const Vec3<T> bc(input_point(rotated[(i + 1) % n]) - input_point(rotated[i]));
+        const T lab = length(ab);
+        ok = lab > T(0) && !(dot(pl.normal, cross(ab, bc)) < -(conv_tol * lab));
+      }
+      if (ok) {
+        bad[f] = 0;
+        if (rot != 0) loops[f] = rotated;
+        planes[f] = pl;
+        break;
+      }
+      if (rot == 0) {
+        bad[f] = 1;
+        if (shape_ok && split != nullptr) split->push_back(static_cast<int>(f));
+      }
     }
-    const Plane<T> pl = plane_through(pts[as_index(t[0])], pts[as_index(t[1])], pts[as_index(t[2])]);
-    if (rot == 0) planes.push_back(pl);
-    auto h = [&](int v) { return T(dot(pl.normal, input_point(v)) - pl.offset); };
-    bool ok = !is_zero(pl.normal);
-    // (validation: aspect > sliver; here with a margin)
-    ok = ok && sepax::detail::triangle_aspect(pts[as_index(t[0])], pts[as_index(t[1])], pts[as_index(t[2])]) >
-                   kHullPrecheckSliverMargin * Tolerances<T>::sliver;
-    const bool shape_ok = ok;
-    for (int v : rotated) ok = ok && abs_of(h(v)) <= plan_tol;
-    if (scan) {
-      for (int v : used) ok = ok && h(v) <= conv_tol;
-    } else {
-      for (int w = witness_start[f]; w < witness_start[f + 1] && ok; ++w) ok = h(witness[as_index(w)]) <= conv_tol;
-    }
-    // corners as validation sees them: no reflex turn about this normal
-    const std::size_t n = rotated.size();
-    for (std::size_t i = 0; i < n && ok; ++i) {
-      const Vec3<T> ab(input_point(rotated[i]) - input_point(rotated[(i + n - 1) % n]));
-      const Vec3<T> bc(input_point(rotated[(i + 1) % n]) - input_point(rotated[i]));
-      const T lab = length(ab);
-      ok = lab > T(0) && !(dot(pl.normal, cross(ab, bc)) < -(conv_tol * lab));
-    }
-    if (ok) {
-      bad[f] = 0;
-      if (rot != 0) loops[f] = rotated;
-      planes[f] = pl;
-      break;
-    }
-    if (rot == 0) {
-      bad[f] = 1;
-      if (shape_ok && split != nullptr) split->push_back(static_cast<int>(f));
-    }
-   }
   }
   if (split != nullptr) {
     std::erase_if(*split, [&](int f) { return !bad[as_index(f)]; });
@@ -282,9 +287,8 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
   if (any && kHullFarRounding * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::planarity * ext) {
     throw InvalidInput(
         ErrorCode::BadScale,
-        "convex_hull: the points are up to " + std::to_string(max_abs) +
-            " from the origin, too far for " + std::string(number_traits<T>::name) +
-            " to resolve a shape of extent " + std::to_string(ext) +
+        "convex_hull: the points are up to " + std::to_string(max_abs) + " from the origin, too far for " +
+            std::string(number_traits<T>::name) + " to resolve a shape of extent " + std::to_string(ext) +
             " within the validation tolerance; use convex_hull_local (the hull in its own frame), "
             "or double");
   }

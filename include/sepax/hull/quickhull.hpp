@@ -45,10 +45,9 @@ inline const Plane<T>& Builder<T>::plane(int f) {
 // One build on the active points: the initial simplex, then the flat hull or quickhull.
 template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::build(const std::vector<int>& active,
-                                                         std::vector<int>& reject) {
+                                                            std::vector<int>& reject) {
   if (active.size() < 3) {
-    throw InvalidInput(ErrorCode::TooFewPoints,
-                       "convex_hull: fewer than 3 distinct points remain");
+    throw InvalidInput(ErrorCode::TooFewPoints, "convex_hull: fewer than 3 distinct points remain");
   }
   // Farthest pair among the extreme points of each axis.
   std::array<int, 6> ext{};
@@ -86,8 +85,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::build(const std::vector<in
   const bool collinear = c < 0 || Traits::collinear(best_c, ab, flat_);
   if (collinear) {
     throw InvalidInput(ErrorCode::Collinear,
-                       "convex_hull: all points lie on one line" +
-                           std::string(Traits::kFlatNote));
+                       "convex_hull: all points lie on one line" + std::string(Traits::kFlatNote));
   }
   // Point farthest from plane abc.
   const Plane<T> base = plane_through(local_point(a), local_point(b), local_point(c));
@@ -118,14 +116,9 @@ inline int Builder<T>::new_tri(int p0, int p1, int p2) {
   return static_cast<int>(tris_.size()) - 1;
 }
 
-// Assign p to the first of faces [first, end) it is above by more than eps.
-// Float T: otherwise, if p is above any of them (by at most eps), keep it
-// on the one it is highest above; only a point below all of them is
-// dropped.  (A point within eps above a face is on the hull now, but a
-// later eye can replace that face by faces tilted away from it: a new face
-// through a short horizon edge and an eye barely above the old plane,
-// extrapolated across a wide thin face, can leave the point hundreds of
-// eps outside.  Dropping such points was what lost them.)
+// Assign p to the conflict list of the first of faces [first, end) it is
+// outside (Traits::classify); float T: otherwise keep it on the face it is
+// highest above, within eps (Traits::NearFace).
 template <Number T>
 inline void Builder<T>::assign(int p, int first) {
   typename Traits::NearFace near;
@@ -142,7 +135,7 @@ inline void Builder<T>::assign(int p, int first) {
 }
 
 // How far above a face p must be to be outside it: eps, or 0 for a point
-// pinned by a repair round (it becomes a vertex whenever it is outside).
+// pinned by a repair pass (it becomes a vertex whenever it is outside).
 template <Number T>
 inline T Builder<T>::threshold(int p) const {
   return pinned_[as_index(p)] ? T(0) : eps_;
@@ -222,7 +215,7 @@ inline int Builder<T>::edge_index(const Tri& t, int from) {
 // Quickhull from the tetrahedron abcd, then the faces merged and extracted.
 template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<int>& active, int a, int b,
-                                                         int c, int d, std::vector<int>& reject) {
+                                                            int c, int d, std::vector<int>& reject) {
   tris_.clear();
   // Orient the tetrahedron so that its faces point outward.
   if (height(plane_through(local_point(a), local_point(b), local_point(c)), d) > T(0)) std::swap(b, c);
@@ -290,8 +283,7 @@ inline void Builder<T>::expand() {
       // two of its neighbours are visible (so it never becomes an island).
       // Float T: so does a triangle whose plane the eye is (within eps)
       // on: otherwise the two cone triangles over its edges fold over it,
-      // enclosing the vertex between those edges (integer grids: 3000..9000
-      // x eps out).
+      // enclosing the vertex between those edges (Traits::may_join).
       // The eye may be below such a face, so the quickhull lemma (a point
       // above a visible face is inside the new hull or above a new face)
       // does not hold for it: its points, and the vertices the step
@@ -311,16 +303,16 @@ inline void Builder<T>::expand() {
       if (stack.empty()) break;
     }
     // horizon: directed edges from visible to non-visible faces, as a cycle
-    // (the cycle starts at the first vertex of the hash map's order, as the
-    // reference builder's does: the order of the new faces steers later
-    // float decisions)
+    // (starting at the first vertex in the hash map's order: the order of
+    // the new faces steers later float decisions, so it is kept as it is)
     std::unordered_map<int, std::pair<int, int>> next;  // from -> (to, outside face)
     bool simple = true;
     for (int f : visible) {
       const Tri& t = tris_[as_index(f)];
       for (int i = 0; i < 3; ++i) {
         if (mark[as_index(t.nb[as_index(i)])] == 1) continue;
-        if (!next.emplace(t.v[as_index(i)], std::make_pair(t.v[as_index((i + 1) % 3)], t.nb[as_index(i)])).second)
+        if (!next.emplace(t.v[as_index(i)], std::make_pair(t.v[as_index((i + 1) % 3)], t.nb[as_index(i)]))
+                 .second)
           simple = false;
       }
     }

@@ -85,7 +85,8 @@ inline ConvexPolyhedron<T> Builder<T>::choose_result(RepairLog<T>& log) {
   if (log.nearest_out > kHullRepairTolerance) try_simplex(log);
   if (auto slab = try_projected_slab(log)) return std::move(*slab);
   std::optional<ConvexPolyhedron<T>>& chosen =
-      log.nearest_height > kHullHeightSafe && log.nearest_height > log.lowest_height ? log.lowest : log.nearest;
+      log.nearest_height > kHullHeightSafe && log.nearest_height > log.lowest_height ? log.lowest
+                                                                                     : log.nearest;
   if (log.nearest_out > kHullHeightSafe && tent_) {
     if (auto tent = try_tent(*chosen)) return std::move(*tent);
   }
@@ -160,17 +161,20 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::try_tent(const ConvexPolyh
 // largest height alone.
 template <Number T>
 inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside,
-                                        double& height) const {
+                                         double& height) const {
   double max_abs = 0;
   for (std::size_t i = 0; i < pts_.size(); ++i)
-    for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(input_point(static_cast<int>(i))[c])));
+    for (int c = 0; c < 3; ++c)
+      max_abs = std::max(max_abs, std::abs(to_double(input_point(static_cast<int>(i))[c])));
   const double e = to_double(eps_);
   const double slack = kHullPlaneRoundingSlack * number_traits<T>::unit_roundoff * max_abs;
   double worst = 0;
   const PolygonFaces polygons = polygon_faces(h, centre_);
   const std::vector<PolygonFace>& faces = polygons.faces;
-  DeepInside<T> deep(h, faces, kHullDeepInsideSlack * slack + kHullDeepInsidePlanarity * Tolerances<T>::planarity * extent_, pts_.size());
-  std::vector<int> near;  // large solids: the faces measured for a point near the surface
+  DeepInside<T> deep(
+      h, faces, kHullDeepInsideSlack * slack + kHullDeepInsidePlanarity * Tolerances<T>::planarity * extent_,
+      pts_.size());
+  std::vector<int> near;        // large solids: the faces measured for a point near the surface
   std::vector<double> heights;  // (polygon_distance's scratch)
   std::vector<int> seen(faces.size(), -1);
   for (std::size_t i = 0; i < pts_.size(); ++i) {
@@ -204,7 +208,8 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
     }
     hp -= slack;
     height = std::max(height, hp / e);
-    hp = std::max(hp, polygon_distance(faces, h.is_flat(), vec_to_double(local_point(p)), heights, subset) - slack);
+    hp = std::max(
+        hp, polygon_distance(faces, h.is_flat(), vec_to_double(local_point(p)), heights, subset) - slack);
     worst = std::max(worst, hp / e);
     if (hp > kHullRepairTolerance * e) outside.push_back(p);
   }

@@ -39,7 +39,7 @@ template <Number T>
 struct ExactHullTraits {
   /// The exact hull holds every point: no repair passes, no fallbacks.
   static constexpr bool kRepairs = false;
-  /// No decision rounds: nothing kept near a face is tested again.
+  /// Decisions are exact: nothing kept near a face is tested again.
   static constexpr bool kRechecksRounding = false;
   /// Validation is exact too: no pre-check of what it will see.
   static constexpr bool kPrechecks = false;

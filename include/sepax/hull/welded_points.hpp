@@ -37,9 +37,8 @@ inline void Builder<T>::check_input() {
     }
   }
   if (in_.size() < 3) {
-    throw InvalidInput(ErrorCode::TooFewPoints,
-                       "convex_hull: needs at least 3 distinct points, got " +
-                           std::to_string(in_.size()) + " points");
+    throw InvalidInput(ErrorCode::TooFewPoints, "convex_hull: needs at least 3 distinct points, got " +
+                                                    std::to_string(in_.size()) + " points");
   }
   Vec3<T> lo = in_[0], hi = in_[0];
   for (const auto& p : in_) {
@@ -77,10 +76,9 @@ inline void Builder<T>::weld() {
   Traits::weld(*this, loc, order);
   Traits::prepare(*this);
   if (pts_.size() < 3) {
-    throw InvalidInput(ErrorCode::TooFewPoints,
-                       "convex_hull: needs at least 3 distinct points, got " +
-                           std::to_string(pts_.size()) + " after merging duplicates" +
-                           Traits::kWeldNote);
+    throw InvalidInput(ErrorCode::TooFewPoints, "convex_hull: needs at least 3 distinct points, got " +
+                                                    std::to_string(pts_.size()) +
+                                                    " after merging duplicates" + Traits::kWeldNote);
   }
   removed_.assign(pts_.size(), 0);
   pinned_.assign(pts_.size(), 0);
