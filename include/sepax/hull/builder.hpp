@@ -68,6 +68,8 @@ struct RepairLog {
 template <Number T>
 ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent);
 
+/// One hull build: the welded points, the quickhull triangles, the face groups and, for float T, the
+/// repair state, shared by the steps (each defined in its phase's header, listed above).
 template <Number T>
 class Builder {
  public:
