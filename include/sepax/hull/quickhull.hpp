@@ -122,9 +122,10 @@ inline int Builder<T>::new_tri(int p0, int p1, int p2) {
 template <Number T>
 inline void Builder<T>::assign(int p, int first) {
   typename Traits::NearFace near;
+  const auto limit = Traits::outside_limit(*this, p);
   for (std::size_t f = as_index(first); f < tris_.size(); ++f) {
     if (!tris_[f].alive) continue;
-    const auto side = Traits::classify(*this, static_cast<int>(f), p);
+    const auto side = Traits::classify(*this, static_cast<int>(f), p, limit);
     if (side.outside) {
       tris_[f].conflict.push_back(p);
       return;

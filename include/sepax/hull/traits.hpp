@@ -5,6 +5,7 @@
 // as Traits::decision(builder, ...):
 //   scale, local, weld, prepare   tolerances and frame; welding; exact: the double copy of the points
 //   classify, NearFace            "is p outside face f" (float: by more than eps; near points kept)
+//   outside_limit                 how far above a face p must be (float: eps, 0 once pinned)
 //   farthest, sees, zero_area     the eye of a face; "does the eye see face f"; "has f zero area"
 //   set_plane                     a new triangle's plane (exact with double points: only when needed)
 //   coplanar, certainly_apart     "are two face groups one face" (exact: filtered for double points)
@@ -100,12 +101,17 @@ struct ExactHullTraits {
     return sign_of(h);
   }
 
-  /// Whether p is outside face f: strictly above its plane.
+  /// Whether p is outside face f: strictly above its plane (no height limit).
   struct Side {
     bool outside;
   };
+  struct NoLimit {};
   template <class B>
-  static Side classify(B& b, int f, int p) {
+  static NoLimit outside_limit(const B&, int) {
+    return {};
+  }
+  template <class B>
+  static Side classify(B& b, int f, int p, NoLimit) {
     double approx = 0;
     return Side{side(b, f, p, approx) > 0};
   }
@@ -267,16 +273,20 @@ struct FloatHullTraits {
 
   static T length(const Vec3<T>& v) { return number_traits<T>::sqrt(squared_norm(v)); }
 
-  /// p's height above face f, and whether that is outside it: more than eps above (0 for a point a repair
-  /// pass pinned: it becomes a vertex whenever it is outside).
+  /// p's height above face f, and whether that is outside it: more than limit above (eps, or 0 for a point
+  /// a repair pass pinned: it becomes a vertex whenever it is outside; Builder::threshold).
   struct Side {
     bool outside;
     T height;
   };
   template <class B>
-  static Side classify(B& b, int f, int p) {
+  static T outside_limit(const B& b, int p) {
+    return b.threshold(p);
+  }
+  template <class B>
+  static Side classify(B& b, int f, int p, const T& limit) {
     const T h = b.height(b.tris_[as_index(f)].pl, p);
-    return Side{h > b.threshold(p), h};
+    return Side{h > limit, h};
   }
   /// A point within eps above a face is on the hull now, but a later eye can replace that face by faces
   /// tilted away from it (a new face through a short horizon edge and an eye barely above the old plane,
