@@ -117,31 +117,75 @@ struct Tolerances<double> {
 };
 
 // ---- convex hull (float/double; docs/hull.md) --------------------------------
-// Multipliers of eps = Tolerances<T>::coplanar * extent unless a line says
-// otherwise.
+// Every constant of the hull builder (include/sepax/hull/), in units of eps = Tolerances<T>::coplanar x
+// extent unless its line says otherwise.  Exact types use none of them.
+//
+// | name                        | value | reason                                                          |
+// |-----------------------------|-------|-----------------------------------------------------------------|
+// | kHullOutsideBound           | 64    | the guarantee: every input point within it of the hull, measured |
+// | kHullSlabHalfThickness      | 63    | a projected slab polygon is within it of every point (< bound)   |
+// | kHullSlabThickness          | 126   | twice the half-thickness: the thickest slab projected            |
+// | kHullSlabCandidateWidth     | 252   | a set wider across its largest face is not a slab (one pass)     |
+// | kHullSlabAxisPreference     | 2     | a coordinate plane this near the thinnest keeps projections exact|
+// | kHullTentLift               | 8     | above the merge (1) and coplanar-face (1/4) tolerances, room left|
+// | kHullRepairTolerance        | 2     | a repair pass pins points farther out than this                  |
+// | kHullFoldDistance           | 2     | a pinned vertex this far from its neighbours' segment is a fold  |
+// | kHullHeightSafe             | 32    | half the bound: a result's heights it may reach                  |
+// | kHullMeasureReach           | 65    | a point this far below a face no longer climbs past it           |
+// | kHullMaxRepairs             | 8     | repair passes, each rebuilding with the lost points pinned       |
+// | kHullPlaneRoundingSlack     | 8     | x u max|x|: rounding of a plane height on input coordinates      |
+// | kHullDeepInsideSlack        | 4     | x that slack: a deep-inside point clears every height's rounding |
+// | kHullDeepInsidePlanarity    | 2     | x planarity x extent: validated plane against Newell plane       |
+// | kHullFarRounding            | 16    | x u max|x|: beyond planarity x extent float cannot resolve shape |
+// | kHullPrecheckFraction       | 0.5   | the pre-check uses half of validation's planarity and convexity  |
+// | kHullPrecheckCoplanarMargin | 2     | x validation's coplanar/4: faces it would see as coplanar        |
+// | kHullPrecheckSliverMargin   | 2     | x validation's sliver: plane triangles it would refuse           |
+// | kHullDistanceTie            | 1e-9  | relative: face distances this close are ties                     |
+// | kConvexityScanPairs         | 4e6   | faces x vertices scanned pairwise; beyond, the local certificate |
+// | kHullPointScanPairs         | 4e6   | points x faces scanned pairwise; beyond, a climb                 |
 
 /// How far outside its hull an input point may be (height above a face plane
 /// and Euclidean distance), x eps; measured over every stress set, not proven.
 inline constexpr double kHullOutsideBound = 64;
 /// Half-thickness of the thickest slab returned as its projected polygon, x eps.
 inline constexpr double kHullSlabHalfThickness = kHullOutsideBound - 1;
+/// Thickness of the thickest slab returned as its projected polygon, x eps.
+inline constexpr double kHullSlabThickness = 2 * kHullSlabHalfThickness;
+/// A point set wider than this across the plane of its hull's largest face is not a slab, x eps.
+inline constexpr double kHullSlabCandidateWidth = 4 * kHullSlabHalfThickness;
+/// A coordinate plane at most this much wider than the thinnest direction is preferred, x eps.
+inline constexpr double kHullSlabAxisPreference = 2;
 /// How far a tent lifts a lost slab corner into the slab, x eps.
 inline constexpr double kHullTentLift = 8;
-/// A repair round puts back points farther than this from the hull, x eps.
+/// A repair pass puts back points farther than this from the hull, x eps.
 inline constexpr double kHullRepairTolerance = 2;
 /// A pinned vertex farther than this from its neighbours' segment is a fold, x eps.
 inline constexpr double kHullFoldDistance = 2;
 /// A nearer-every-point result is kept only with heights at most this, x eps.
 inline constexpr double kHullHeightSafe = kHullOutsideBound / 2;
-/// Repair rounds (each rebuilds the hull with the lost points pinned), count.
+/// Measuring a point, faces it is farther than this below are not climbed past, x eps.
+inline constexpr double kHullMeasureReach = kHullOutsideBound + 1;
+/// Repair passes (each rebuilds the hull with the lost points pinned), count.
 inline constexpr int kHullMaxRepairs = 8;
 /// Rounding slack of a plane height evaluated on input coordinates, x u max|x|.
 inline constexpr double kHullPlaneRoundingSlack = 8;
+/// A point is deep inside when it clears this many plane-rounding slacks, dimensionless.
+inline constexpr double kHullDeepInsideSlack = 4;
+/// ... plus this many planarity x extent (a validated plane against its Newell plane), dimensionless.
+inline constexpr double kHullDeepInsidePlanarity = 2;
 /// Float T cannot resolve a shape when this x u max|x| exceeds planarity x extent.
 inline constexpr double kHullFarRounding = 16;
 /// The builder's own check of its output uses this fraction of validation's
 /// planarity and convexity tolerances, dimensionless.
 inline constexpr double kHullPrecheckFraction = 0.5;
+/// The pre-check refuses adjacent faces within this many validation coplanar tolerances
+/// (coplanar / 4 x extent) of each other's plane, dimensionless.
+inline constexpr double kHullPrecheckCoplanarMargin = 2;
+/// The pre-check refuses plane triangles of aspect below this many validation sliver tolerances,
+/// dimensionless.
+inline constexpr double kHullPrecheckSliverMargin = 2;
+/// Relative difference below which two distances of a point from face polygons are a tie, dimensionless.
+inline constexpr double kHullDistanceTie = 1e-9;
 /// Faces x vertices up to which convexity is checked vertex against every face
 /// plane (validation and the builder's pre-check); beyond, by the local
 /// certificate (docs/hull.md, "Validation"), pairs.

@@ -1,0 +1,183 @@
+// sepax/hull/builder.hpp
+//
+// The state one hull build shares between its steps, and the steps' names; each step is defined in the
+// header of its phase:
+//   welded_points.hpp  input checks, tolerances, welding
+//   quickhull.hpp      initial simplex, conflict lists, visible region, horizon, cone, re-assignment
+//   flat_hull.hpp      a point set within the flat tolerance of a plane: its 2D hull as a double-sided face
+//   face_merge.hpp     coplanar triangles into faces (union-find), zero-area triangles, fold splits
+//   face_loops.hpp     each face's boundary loop, vertices in the middle of an edge, strictly convex corners
+//   precheck.hpp       float: what ConvexPolyhedron validation will check, with half its tolerances
+//   repair.hpp         float: points left outside are pinned and the hull rebuilt; the fallback policy
+//   fallbacks.hpp      float: simplex_hull, thin_plane, projected_slab, tent_hull
+// The float-versus-exact decisions are those of HullTraits<T> (traits.hpp), a friend of the builder.
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "../convex_polyhedron.hpp"
+#include "../error.hpp"
+#include "../number_traits.hpp"
+#include "../vec3.hpp"
+#include "hull_distance.hpp"
+#include "index.hpp"
+#include "traits.hpp"
+
+namespace sepax::hull::detail {
+
+/// A quickhull triangle: welded point indices counter-clockwise from outside, its neighbours and its points.
+template <Number T>
+struct Triangle {
+  std::array<int, 3> v{};   ///< welded point indices, counter-clockwise from outside
+  std::array<int, 3> nb{};  ///< triangle across edge v[i] -> v[i+1]
+  Plane<T> pl;              ///< (exact T with double points: computed by Builder::plane() when needed)
+  bool has_plane = true;
+  bool alive = true;
+  std::vector<int> conflict;  ///< points outside this face, waiting to be added
+  /// float T: points above this face by at most eps (on it within the tolerance).  They are not outside,
+  /// but they are not inside either: when the face is replaced they are tested against the new faces again.
+  std::vector<int> on;
+};
+
+/// A union-find group of triangles becoming one output face.
+template <Number T>
+struct FaceGroup {
+  std::vector<int> verts;                        ///< sorted welded point indices
+  Vec3<T> area = Vec3<T>(T(0), T(0), T(0));      ///< float: sum of triangle cross products
+  Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};  ///< (initialised: groups_ copies FaceGroup{})
+  bool degenerate = false;                       ///< a single zero-area triangle
+  std::vector<int> splits;                       ///< sorted ids of the split faces its triangles came from
+};
+
+/// Float T: the best results of the repair passes (repair.hpp).
+template <Number T>
+struct RepairLog {
+  std::optional<ConvexPolyhedron<T>> nearest;  ///< nearest every point (height or distance, the larger)
+  std::optional<ConvexPolyhedron<T>> lowest;   ///< lowest heights above the face planes
+  double nearest_out = 0, nearest_height = 0, lowest_height = 0;  ///< x eps
+};
+
+/// The hull algorithm of convex_hull (convex_hull.hpp); allow_tent is false for a tent's own build.
+template <Number T>
+ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent);
+
+/// One hull build: the welded points, the quickhull triangles, the face groups and, for float T, the
+/// repair state, shared by the steps (each defined in its phase's header, listed above).
+template <Number T>
+class Builder {
+ public:
+  Builder(std::span<const Vec3<T>> input, bool allow_tent) : in_(input), tent_(allow_tent) {}
+
+  // The steps build_hull calls, in order.
+  void check_input();
+  void weld();
+  std::optional<ConvexPolyhedron<T>> build_pass(bool may_fail);
+  void measure(ConvexPolyhedron<T> result, std::vector<int>& outside, RepairLog<T>& log);
+  void pin(const std::vector<int>& outside);
+  ConvexPolyhedron<T> choose_result(RepairLog<T>& log);
+
+ private:
+  using Traits = HullTraits<T>;
+  friend Traits;
+  using Tri = Triangle<T>;
+  using Group = FaceGroup<T>;
+
+  // ---- repair.hpp ----
+  void try_simplex(RepairLog<T>& log);
+  std::optional<ConvexPolyhedron<T>> try_projected_slab(const RepairLog<T>& log);
+  std::optional<ConvexPolyhedron<T>> try_tent(const ConvexPolyhedron<T>& chosen);
+  double outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside, double& height) const;
+  // ---- fallbacks.hpp ----
+  std::optional<ConvexPolyhedron<T>> tent_hull(const ConvexPolyhedron<T>& h, Vec3<double>& nrm);
+  std::optional<ConvexPolyhedron<T>> simplex_hull();
+  bool thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& nrm, double& lo, double& hi) const;
+  double shadow_out(const ConvexPolyhedron<T>& h, const Vec3<double>& nrm) const;
+  std::optional<ConvexPolyhedron<T>> projected_slab(const Vec3<double>& nrm, double lo, double hi);
+  // ---- welded_points.hpp ----
+  void add_point(int input_index, const Vec3<T>& loc);
+  // ---- quickhull.hpp ----
+  const Plane<T>& plane(int f);
+  static T length(const Vec3<T>& v) { return Traits::length(v); }
+  std::optional<ConvexPolyhedron<T>> build(const std::vector<int>& active, std::vector<int>& reject);
+  int new_tri(int p0, int p1, int p2);
+  void assign(int p, int first);
+  T threshold(int p) const;
+  bool sweep();
+  static int edge_index(const Tri& t, int from);
+  std::optional<ConvexPolyhedron<T>> solid(const std::vector<int>& active, int a, int b, int c, int d,
+                                           std::vector<int>& reject);
+  void expand();
+  // ---- flat_hull.hpp ----
+  std::optional<ConvexPolyhedron<T>> polygon(const std::vector<int>& active, const Vec3<T>& n,
+                                             std::vector<int>& reject);
+  // ---- face_merge.hpp ----
+  static bool split_apart(const Group& a, const Group& b);
+  T tri_area2(const Tri& t) const;
+  int find(int x);
+  void unite(int x, int y);
+  std::optional<ConvexPolyhedron<T>> merge_and_build(std::vector<int>& reject);
+  bool strands_vertex(int x, int y);
+  std::vector<int> fold_choice(const std::vector<int>& live, const std::map<int, std::vector<int>>& folds);
+  bool split_groups(const std::vector<int>& live, std::vector<int> ids);
+  double segment_distance(int v, int a, int b) const;
+  // ---- face_loops.hpp ----
+  std::optional<ConvexPolyhedron<T>> extract(const std::vector<int>& live, std::vector<int>& reject);
+  // ---- precheck.hpp ----
+  void start_at_best_apex(std::vector<int>& l) const;
+  int least_significant(const std::vector<int>& l) const;
+  void prevalidate(std::vector<std::vector<int>>& loops, std::vector<int>& reject, bool flat = false,
+                   std::vector<std::pair<int, int>>* merges = nullptr,
+                   const std::vector<int>* loop_group = nullptr, std::vector<int>* split = nullptr);
+
+  /// Welded point i in local coordinates.
+  const Vec3<T>& local_point(int i) const { return q_[as_index(i)]; }
+  /// The input point welded point v comes from.
+  const Vec3<T>& input_point(int v) const { return in_[as_index(pts_[as_index(v)])]; }
+  T height(const Plane<T>& pl, int p) const { return T(dot(pl.normal, local_point(p)) - pl.offset); }
+
+  /// The output polyhedron, validated; a validation failure there is a builder bug (std::logic_error).
+  template <class F>
+  static std::optional<ConvexPolyhedron<T>> finish(F&& make) {
+    try {
+      return make();
+    } catch (const InvalidInput& e) {
+      throw std::logic_error(std::string("convex_hull: the hull failed validation (a bug): ") + e.what());
+    }
+  }
+
+  std::span<const Vec3<T>> in_;
+  double extent_ = 0;
+  Vec3<T> centre_;
+  T eps_, flat_, weld_;
+  std::vector<int> pts_;    // welded point -> input index
+  std::vector<Vec3<T>> q_;  // welded point, local coordinates
+  std::vector<Tri> tris_;
+  std::vector<int> parent_;
+  std::vector<int> active_;                     // the points of the current build
+  std::array<int, 4> simplex_{-1, -1, -1, -1};  // the first build's initial simplex
+  Vec3<T> base_normal_;                         // normal of its initial triangle
+  std::vector<Group> groups_;
+  std::vector<char> removed_;  // points the clean-up rejected (put back when pinned)
+  std::vector<char> pinned_;   // float: points a repair pass put back
+  bool any_pinned_ = false;
+  std::vector<char> out_vertex_;             // vertices of the last output
+  std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
+  std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)
+  std::vector<int> gone_;                    // scratch, per eye
+  std::vector<Vec3<double>> qd_;             // exact T: q_ as doubles, when shadow_
+  bool shadow_ = false;                      // exact T: every welded coordinate is exactly a double
+  std::vector<std::array<int, 3>> horizon_;  // scratch, per eye
+  std::vector<int> degree_;                  // scratch, per welded point
+  std::vector<int> nomerge_;                 // triangle -> id of the face it was split from (0: none)
+  int splits_ = 0;
+  bool tent_;  // float: may try tent_hull (not in a tent's own build)
+};
+
+}  // namespace sepax::hull::detail

@@ -1,0 +1,218 @@
+// sepax/hull/hull_distance.hpp
+//
+// How far points are from a built hull, in double on the builder's local coordinates (float T):
+//   1. polygon_faces: the hull's faces as polygons with Newell normals (well conditioned for thin faces).
+//   2. polygon_distance: a point's Euclidean distance from the hull, through its nearest face polygon.
+//   3. DeepInside: on a large solid, whether a point is certainly below every face plane, by a climb over
+//      adjacent faces instead of a pass over every face.
+//   4. distance_to_segment: a point's distance from a segment.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "../convex_polyhedron.hpp"
+#include "../tolerances.hpp"
+#include "../vec3.hpp"
+#include "index.hpp"
+
+namespace sepax::hull::detail {
+
+// Float T: the faces of an output polyhedron as polygons in double, on the
+// local coordinates, with Newell normals (well conditioned for thin faces).
+struct PolygonFace {
+  std::span<const Vec3<double>> v;  // (into PolygonFaces::points)
+  Vec3<double> n;
+  double off = 0;
+  double area = 0;
+};
+
+// Every face of one polyhedron, their corners in one buffer (moved, never
+// copied: the faces point into it).
+struct PolygonFaces {
+  std::vector<Vec3<double>> points;
+  std::vector<PolygonFace> faces;
+  PolygonFaces() = default;
+  PolygonFaces(const PolygonFaces&) = delete;
+  PolygonFaces(PolygonFaces&&) = default;
+};
+
+// The faces of h as polygons on coordinates relative to centre, with Newell normals.
+template <Number T>
+inline PolygonFaces polygon_faces(const ConvexPolyhedron<T>& h, const Vec3<T>& centre) {
+  const Vec3<double> c = vec_to_double(centre);
+  PolygonFaces out;
+  out.points.reserve(h.half_edges().size());
+  std::vector<std::size_t> start;
+  start.reserve(as_index(h.face_count()) + 1);
+  for (int f = 0; f < h.face_count(); ++f) {
+    start.push_back(out.points.size());
+    int e = h.face(f).edge;
+    for (int k = 0; k < h.face(f).count; ++k, e = h.half_edge(e).next)
+      out.points.push_back(Vec3<double>(vec_to_double(h.vertex(h.half_edge(e).origin)) - c));
+  }
+  start.push_back(out.points.size());
+  out.faces.reserve(as_index(h.face_count()));
+  for (int f = 0; f < h.face_count(); ++f) {
+    PolygonFace fc;
+    fc.v = std::span<const Vec3<double>>(out.points.data() + start[as_index(f)],
+                                         start[as_index(f) + 1] - start[as_index(f)]);
+    Vec3<double> n(0, 0, 0), m(0, 0, 0);
+    for (std::size_t i = 0; i < fc.v.size(); ++i) {
+      const Vec3<double>& a = fc.v[i];
+      const Vec3<double>& b = fc.v[(i + 1) % fc.v.size()];
+      n += Vec3<double>((a[1] - b[1]) * (a[2] + b[2]), (a[2] - b[2]) * (a[0] + b[0]),
+                        (a[0] - b[0]) * (a[1] + b[1]));
+      m += a;
+    }
+    const double len = std::sqrt(squared_norm(n));
+    if (len > 0) n = n / len;
+    fc.n = n;
+    fc.area = len / 2;
+    fc.off = dot(n, Vec3<double>(m / static_cast<double>(fc.v.size())));
+    out.faces.push_back(fc);
+  }
+  return out;
+}
+
+// Float T, a large solid: whether a point is certainly below every face
+// plane of the output, found without a pass over every face.  Seen from an
+// interior point c, face f's plane is the dual point n_f / D_f (D_f =
+// off_f - n_f.c, the distance of c below the plane); x is below every plane iff
+// s_f(x) = n_f.(x - c) / D_f < 1 for every f, and s is a linear function of
+// the dual points, whose maximum a climb over adjacent faces finds (the
+// duals of a convex polyhedron's faces are the vertices of a convex one,
+// adjacent faces its edges).  A point is deep when (1 - max s) * min D
+// exceeds margin (the rounding of the heights outside_points computes, and
+// how far the validated plane of a face may be from its Newell plane);
+// every other point is measured against every face as before.  Climbs
+// start where the last one ended (the points are in lexicographic order).
+template <Number T>
+struct DeepInside {
+  DeepInside(const ConvexPolyhedron<T>& h, const std::vector<PolygonFace>& faces, double margin,
+             std::size_t points)
+      : faces_(faces) {
+    const double pairs = static_cast<double>(points) * static_cast<double>(faces.size());
+    if (h.is_flat() || pairs <= kHullPointScanPairs) return;
+    Vec3<double> c(0, 0, 0);
+    std::size_t count = 0;
+    for (const auto& fc : faces)
+      for (const auto& v : fc.v) {
+        c += v;
+        ++count;
+      }
+    c_ = Vec3<double>(c / static_cast<double>(count));
+    dist_.resize(faces.size());
+    double d_min = 1e300;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      if (squared_norm(faces[f].n) == 0) return;
+      dist_[f] = faces[f].off - dot(faces[f].n, c_);
+      d_min = std::min(d_min, dist_[f]);
+    }
+    if (!(d_min > 0)) return;
+    need_ = margin / d_min;
+    start_.assign(faces.size() + 1, 0);
+    for (int f = 0; f < h.face_count(); ++f) start_[as_index(f) + 1] = start_[as_index(f)] + h.face(f).count;
+    adj_.resize(as_index(start_.back()));
+    for (int f = 0; f < h.face_count(); ++f) {
+      int e = h.face(f).edge;
+      for (int k = 0; k < h.face(f).count; ++k, e = h.half_edge(e).next)
+        adj_[as_index(start_[as_index(f)] + k)] = h.half_edge(ConvexPolyhedron<T>::twin(e)).face;
+    }
+    on_ = true;
+  }
+  bool enabled() const { return on_; }
+  int face() const { return at_; }  // where the last climb ended
+  std::span<const int> neighbours(int f) const {
+    return std::span<const int>(adj_.data() + start_[as_index(f)],
+                                as_index(start_[as_index(f) + 1] - start_[as_index(f)]));
+  }
+  bool operator()(const Vec3<double>& x) {
+    const Vec3<double> d(x - c_);
+    auto score = [&](int f) { return dot(faces_[as_index(f)].n, d) / dist_[as_index(f)]; };
+    double s = score(at_);
+    for (int from = -1; from != at_;) {
+      from = at_;
+      for (int k = start_[as_index(from)]; k < start_[as_index(from) + 1]; ++k) {
+        const double t = score(adj_[as_index(k)]);
+        if (t > s) {
+          s = t;
+          at_ = adj_[as_index(k)];
+        }
+      }
+    }
+    return 1 - s > need_;
+  }
+
+ private:
+  const std::vector<PolygonFace>& faces_;
+  Vec3<double> c_{0, 0, 0};
+  std::vector<double> dist_;
+  std::vector<int> start_, adj_;
+  double need_ = 0;
+  int at_ = 0;
+  bool on_ = false;
+};
+
+// Euclidean distance of x from the polyhedron given by faces: the distance
+// to the nearest face polygon (its height if it projects inside the
+// polygon, else the distance to the nearest edge), or 0 if x is below that
+// face (inside).  (Not "below every face plane": the plane of a tiny face
+// is poorly determined far from it, and a point deep inside can be above
+// it.)  A flat polygon is always measured to its polygon.
+// (Only the faces listed in subset, if given.)  A solid's point below
+// every plane is below its nearest face too: 0 without measuring polygons
+// (heights holds the heights, computed once, so both passes see the same).
+inline double polygon_distance(const std::vector<PolygonFace>& faces, bool flat, const Vec3<double>& x,
+                               std::vector<double>& heights, const std::vector<int>* subset = nullptr) {
+  double best = 1e300;
+  bool above = false;  // above a face at the nearest distance (within rounding)
+  const std::size_t count = subset != nullptr ? subset->size() : faces.size();
+  heights.resize(count);
+  bool any_above = false;
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
+    heights[k] = dot(fc.n, x) - fc.off;
+    any_above = any_above || heights[k] > 0;
+  }
+  if (!flat && !any_above) return 0.0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
+    const double h = heights[k];
+    if (std::abs(h) > best * (1 + kHullDistanceTie)) continue;  // (the polygon is no nearer than its plane)
+    bool inside = true;
+    double d = 1e300;
+    const std::size_t n = fc.v.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3<double>& a = fc.v[i];
+      const Vec3<double>& b = fc.v[(i + 1) % n];
+      const Vec3<double> e(b - a), ax(x - a);
+      if (dot(cross(e, fc.n), ax) > 0) inside = false;
+      const double l2 = squared_norm(e);
+      const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
+      d = std::min(d, std::sqrt(squared_norm(Vec3<double>(ax - t * e))));
+    }
+    if (inside) d = std::abs(h);
+    if (d < best * (1 - kHullDistanceTie)) {
+      best = d;
+      above = h > 0;
+    } else if (d <= best * (1 + kHullDistanceTie)) {
+      best = std::min(best, d);
+      above = above || h > 0;
+    }
+  }
+  return flat || above ? best : 0.0;
+}
+
+/// Euclidean distance of x from the segment between a and b.
+inline double distance_to_segment(const Vec3<double>& x, const Vec3<double>& pa, const Vec3<double>& pb) {
+  const Vec3<double> e(pb - pa), ax(x - pa);
+  const double l2 = squared_norm(e);
+  const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
+  return std::sqrt(squared_norm(Vec3<double>(ax - t * e)));
+}
+
+}  // namespace sepax::hull::detail

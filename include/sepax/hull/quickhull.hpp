@@ -1,0 +1,384 @@
+// sepax/hull/quickhull.hpp
+//
+// Quickhull on triangles, the steps of one build (Builder::build):
+//   1. build: the initial simplex from extreme points (the farthest pair, the point farthest from their
+//      line, the point farthest from that plane); a set within the flat tolerance of a plane goes to the
+//      flat hull (flat_hull.hpp), one within it of a line is Collinear.
+//   2. solid: the tetrahedron, every other point assigned to the conflict list of a face it is outside.
+//   3. expand: the farthest conflict point of a face is the eye; the visible region grows from that face;
+//      its boundary is the horizon, coned to the eye; the removed faces' points are assigned to new faces.
+//   4. sweep (float T): points kept on a face within eps are tested against the faces around them again.
+//   5. merge_and_build (face_merge.hpp) groups the triangles into faces.
+// The predicates (outside, sees, zero_area, the eye) are HullTraits<T>'s (traits.hpp).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "../error.hpp"
+#include "../number_traits.hpp"
+#include "../orientation_filter.hpp"
+#include "../tolerances.hpp"
+#include "builder.hpp"
+#include "orientation_filter.hpp"
+
+namespace sepax::hull::detail {
+
+// Triangle f's plane (exact T with double points: computed on first use).
+template <Number T>
+inline const Plane<T>& Builder<T>::plane(int f) {
+  Tri& t = tris_[as_index(f)];
+  if (!t.has_plane) {
+    t.pl = plane_through(local_point(t.v[0]), local_point(t.v[1]), local_point(t.v[2]));
+    t.has_plane = true;
+  }
+  return t.pl;
+}
+
+// One build on the active points: the initial simplex, then the flat hull or quickhull.
+template <Number T>
+inline std::optional<ConvexPolyhedron<T>> Builder<T>::build(const std::vector<int>& active,
+                                                            std::vector<int>& reject) {
+  if (active.size() < 3) {
+    throw InvalidInput(ErrorCode::TooFewPoints, "convex_hull: fewer than 3 distinct points remain");
+  }
+  // Farthest pair among the extreme points of each axis.
+  std::array<int, 6> ext{};
+  for (int c = 0; c < 3; ++c) {
+    int lo = active[0], hi = active[0];
+    for (int i : active) {
+      if (local_point(i)[c] < local_point(lo)[c]) lo = i;
+      if (local_point(i)[c] > local_point(hi)[c]) hi = i;
+    }
+    ext[as_index(2 * c)] = lo;
+    ext[as_index(2 * c + 1)] = hi;
+  }
+  int a = ext[0], b = ext[1];
+  T best = squared_norm(Vec3<T>(local_point(b) - local_point(a)));
+  for (int i = 0; i < 6; ++i)
+    for (int j = i + 1; j < 6; ++j) {
+      const T d = squared_norm(Vec3<T>(local_point(ext[as_index(j)]) - local_point(ext[as_index(i)])));
+      if (d > best) {
+        best = d;
+        a = ext[as_index(i)];
+        b = ext[as_index(j)];
+      }
+    }
+  // Point farthest from line ab.
+  const Vec3<T> ab(local_point(b) - local_point(a));
+  int c = -1;
+  T best_c(0);
+  for (int i : active) {
+    const T d = squared_norm(cross(ab, Vec3<T>(local_point(i) - local_point(a))));
+    if (d > best_c) {
+      best_c = d;
+      c = i;
+    }
+  }
+  const bool collinear = c < 0 || Traits::collinear(best_c, ab, flat_);
+  if (collinear) {
+    throw InvalidInput(ErrorCode::Collinear,
+                       "convex_hull: all points lie on one line" + std::string(Traits::kFlatNote));
+  }
+  // Point farthest from plane abc.
+  const Plane<T> base = plane_through(local_point(a), local_point(b), local_point(c));
+  int d = -1;
+  T best_d(0);
+  for (int i : active) {
+    const T h = abs_of(height(base, i));
+    if (h > best_d) {
+      best_d = h;
+      d = i;
+    }
+  }
+  if (d < 0 || best_d <= flat_) return polygon(active, base.normal, reject);
+  if (simplex_[0] < 0) simplex_ = {a, b, c, d};
+  active_ = active;
+  base_normal_ = base.normal;
+  return solid(active, a, b, c, d, reject);
+}
+
+// A new triangle, its plane computed from the apex opposite its longest edge.
+template <Number T>
+inline int Builder<T>::new_tri(int p0, int p1, int p2) {
+  Tri t;
+  t.v = {p0, p1, p2};
+  t.nb = {-1, -1, -1};
+  Traits::set_plane(*this, t, p0, p1, p2);
+  tris_.push_back(std::move(t));
+  return static_cast<int>(tris_.size()) - 1;
+}
+
+// Assign p to the conflict list of the first of faces [first, end) it is
+// outside (Traits::classify); float T: otherwise keep it on the face it is
+// highest above, within eps (Traits::NearFace).
+template <Number T>
+inline void Builder<T>::assign(int p, int first) {
+  typename Traits::NearFace near;
+  const auto limit = Traits::outside_limit(*this, p);
+  for (std::size_t f = as_index(first); f < tris_.size(); ++f) {
+    if (!tris_[f].alive) continue;
+    const auto side = Traits::classify(*this, static_cast<int>(f), p, limit);
+    if (side.outside) {
+      tris_[f].conflict.push_back(p);
+      return;
+    }
+    near.offer(side, static_cast<int>(f));
+  }
+  near.keep(*this, p);
+}
+
+// How far above a face p must be to be outside it: eps, or 0 for a point
+// pinned by a repair pass (it becomes a vertex whenever it is outside).
+template <Number T>
+inline T Builder<T>::threshold(int p) const {
+  return pinned_[as_index(p)] ? T(0) : eps_;
+}
+
+// Float T, after the conflict lists are empty: a point kept on a face (at
+// most eps above it) was only ever tested against the faces created with
+// that face, but later cones may have replaced a neighbouring face it was
+// also (within eps) above by a face tilted below it.  Test every such
+// point against every live face; one more than eps above any face goes
+// back to that face's conflict list and the quickhull loop runs again.
+// Each sweep that moves a point adds a vertex or drops an eye, so the sweeps terminate.
+template <Number T>
+inline bool Builder<T>::sweep() {
+  if constexpr (!Traits::kRechecksRounding) {
+    return false;
+  } else {
+    std::vector<int> live;
+    for (std::size_t f = 0; f < tris_.size(); ++f)
+      if (tris_[f].alive && !is_zero(tris_[f].pl.normal)) live.push_back(static_cast<int>(f));
+    bool moved = false;
+    double on_count = 0;
+    for (int f : live) on_count += static_cast<double>(tris_[as_index(f)].on.size());
+    // Large hulls: instead of every live face, the faces connected to the
+    // point's own face through faces it is less than kHullOutsideBound x eps
+    // below (a face it is above is among them on a convex surface); the
+    // first in creation order, as the scan would find.
+    const bool scan = on_count * static_cast<double>(live.size()) <= kHullPointScanPairs;
+    const T reach = -(static_cast<T>(kHullOutsideBound) * eps_);
+    std::vector<int> seen(scan ? 0 : tris_.size(), -1), queue;
+    for (int f : live) {
+      std::vector<int>& on = tris_[as_index(f)].on;
+      std::size_t keep = 0;
+      for (std::size_t i = 0; i < on.size(); ++i) {
+        const int p = on[i];
+        int out = -1;
+        if (scan) {
+          for (std::size_t k = 0; k < live.size() && out < 0; ++k)
+            if (height(tris_[as_index(live[k])].pl, p) > threshold(p)) out = live[k];
+        } else {
+          queue.assign(1, f);
+          seen[as_index(f)] = p;
+          for (std::size_t k = 0; k < queue.size(); ++k) {
+            const Tri& t = tris_[as_index(queue[k])];
+            const bool plain = !is_zero(t.pl.normal);
+            const T hq = plain ? height(t.pl, p) : T(0);
+            if (plain && hq > threshold(p) && (out < 0 || queue[k] < out)) out = queue[k];
+            if (plain && hq < reach) continue;
+            for (int g : t.nb)
+              if (seen[as_index(g)] != p) {
+                seen[as_index(g)] = p;
+                queue.push_back(g);
+              }
+          }
+        }
+        if (out >= 0) {
+          tris_[as_index(out)].conflict.push_back(p);
+          moved = true;
+        } else {
+          on[keep++] = p;
+        }
+      }
+      on.resize(keep);
+    }
+    return moved;
+  }
+}
+
+// The position of vertex from in t (the edge from -> next).
+template <Number T>
+inline int Builder<T>::edge_index(const Tri& t, int from) {
+  for (int i = 0; i < 3; ++i)
+    if (t.v[as_index(i)] == from) return i;
+  return -1;
+}
+
+// Quickhull from the tetrahedron abcd, then the faces merged and extracted.
+template <Number T>
+inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<int>& active, int a, int b,
+                                                            int c, int d, std::vector<int>& reject) {
+  tris_.clear();
+  // Orient the tetrahedron so that its faces point outward.
+  if (height(plane_through(local_point(a), local_point(b), local_point(c)), d) > T(0)) std::swap(b, c);
+  const int t0 = new_tri(a, b, c);  // d below
+  const int t1 = new_tri(a, d, b);
+  const int t2 = new_tri(b, d, c);
+  const int t3 = new_tri(c, d, a);
+  tris_[as_index(t0)].nb = {t1, t2, t3};
+  tris_[as_index(t1)].nb = {t3, t2, t0};
+  tris_[as_index(t2)].nb = {t1, t3, t0};
+  tris_[as_index(t3)].nb = {t2, t1, t0};
+  for (int p : active)
+    if (p != a && p != b && p != c && p != d) assign(p, 0);
+
+  do {
+    // (a step whose visible region was widened can leave points on
+    // conflict lists of faces the pass is already past)
+    for (bool pending = true; pending;) {
+      expand();
+      pending = false;
+      for (const Tri& t : tris_) pending = pending || (t.alive && !t.conflict.empty());
+    }
+  } while (sweep());
+  nomerge_.assign(tris_.size(), 0);
+  splits_ = 0;
+  return merge_and_build(reject);
+}
+
+// Quickhull until every conflict list is empty.
+template <Number T>
+inline void Builder<T>::expand() {
+  std::vector<int> visible, stack, mark, touched;
+  for (std::size_t fi = 0; fi < tris_.size();) {
+    if (!tris_[fi].alive || tris_[fi].conflict.empty()) {
+      ++fi;
+      continue;
+    }
+    // eye: the conflict point farthest above this face
+    auto& cf = tris_[fi].conflict;
+    const std::size_t best = Traits::farthest(*this, static_cast<int>(fi), cf);
+    const int eye = cf[best];
+    cf.erase(cf.begin() + static_cast<std::ptrdiff_t>(best));
+    // visible region: connected faces the eye is strictly above
+    for (int t : touched) mark[as_index(t)] = 0;  // 0 unknown, 1 visible, 2 not visible
+    mark.resize(tris_.size(), 0);
+    touched.assign(1, static_cast<int>(fi));
+    visible.clear();
+    bool forced = false;
+    stack.assign(1, static_cast<int>(fi));
+    mark[fi] = 1;
+    for (;;) {
+      while (!stack.empty()) {
+        const int f = stack.back();
+        stack.pop_back();
+        visible.push_back(f);
+        for (int nbf : tris_[as_index(f)].nb) {
+          if (mark[as_index(nbf)] != 0) continue;
+          touched.push_back(nbf);
+          const bool vis = Traits::sees(*this, nbf, eye);
+          mark[as_index(nbf)] = vis ? 1 : 2;
+          if (vis) stack.push_back(nbf);
+        }
+      }
+      // A zero-area triangle has no plane: it joins the visible region when
+      // two of its neighbours are visible (so it never becomes an island).
+      // Float T: so does a triangle whose plane the eye is (within eps)
+      // on: otherwise the two cone triangles over its edges fold over it,
+      // enclosing the vertex between those edges (Traits::may_join).
+      // The eye may be below such a face, so the quickhull lemma (a point
+      // above a visible face is inside the new hull or above a new face)
+      // does not hold for it: its points, and the vertices the step
+      // removes, are then tested against every live face.
+      for (int f : touched) {
+        if (mark[as_index(f)] != 2) continue;
+        const bool flat_tri = Traits::zero_area(*this, f);
+        if (!Traits::may_join(*this, f, eye, flat_tri)) continue;
+        int nvis = 0;
+        for (int nbf : tris_[as_index(f)].nb) nvis += mark[as_index(nbf)] == 1;
+        if (nvis >= 2) {
+          mark[as_index(f)] = 1;
+          stack.push_back(f);
+          if (!flat_tri && !(height(tris_[as_index(f)].pl, eye) > T(0))) forced = true;
+        }
+      }
+      if (stack.empty()) break;
+    }
+    // horizon: directed edges from visible to non-visible faces, as a cycle
+    // (starting at the first vertex in the hash map's order: the order of
+    // the new faces steers later float decisions, so it is kept as it is)
+    std::unordered_map<int, std::pair<int, int>> next;  // from -> (to, outside face)
+    bool simple = true;
+    for (int f : visible) {
+      const Tri& t = tris_[as_index(f)];
+      for (int i = 0; i < 3; ++i) {
+        if (mark[as_index(t.nb[as_index(i)])] == 1) continue;
+        if (!next.emplace(t.v[as_index(i)], std::make_pair(t.v[as_index((i + 1) % 3)], t.nb[as_index(i)]))
+                 .second)
+          simple = false;
+      }
+    }
+    std::vector<std::array<int, 3>>& horizon = horizon_;  // (from, to, outside)
+    horizon.clear();
+    if (simple && !next.empty()) {
+      const int start = next.begin()->first;
+      int cur = start;
+      do {
+        const auto it = next.find(cur);
+        if (it == next.end()) {
+          simple = false;
+          break;
+        }
+        horizon.push_back({cur, it->second.first, it->second.second});
+        cur = it->second.first;
+      } while (cur != start && horizon.size() <= next.size());
+      if (horizon.size() != next.size()) simple = false;
+    }
+    if (!simple) {
+      Traits::rounding_case("non-simple horizon (a bug)");
+      // Float only: rounding made the visible region not a disk.  The eye
+      // is then nearly on the hull; drop it and go on with this face's
+      // other conflict points (fi is still alive).
+      continue;
+    }
+    // cone the horizon to the eye
+    const int first_new = static_cast<int>(tris_.size());
+    const int nh = static_cast<int>(horizon.size());
+    for (int j = 0; j < nh; ++j) new_tri(horizon[as_index(j)][0], horizon[as_index(j)][1], eye);
+    for (int j = 0; j < nh; ++j) {
+      Tri& t = tris_[as_index(first_new + j)];
+      const int out = horizon[as_index(j)][2];
+      t.nb[0] = out;
+      t.nb[1] = first_new + (j + 1) % nh;
+      t.nb[2] = first_new + (j + nh - 1) % nh;
+      Tri& o = tris_[as_index(out)];
+      o.nb[as_index(edge_index(o, horizon[as_index(j)][1]))] = first_new + j;
+    }
+    // re-distribute the visible faces' conflict points, and their vertices
+    // that are no longer on the surface (inside in exact arithmetic; float:
+    // tested like any other point)
+    if constexpr (Traits::kRechecksRounding) {
+      std::vector<int>& gone = gone_;
+      gone.clear();
+      for (int f : visible)
+        for (int v : tris_[as_index(f)].v) gone.push_back(v);
+      std::sort(gone.begin(), gone.end());
+      gone.erase(std::unique(gone.begin(), gone.end()), gone.end());
+      for (int v : gone) {
+        bool kept = v == eye;
+        for (const auto& hz : horizon) kept = kept || hz[0] == v;
+        if (!kept) assign(v, forced ? 0 : first_new);
+      }
+    }
+    for (int f : visible) {
+      Tri& t = tris_[as_index(f)];
+      t.alive = false;
+      std::vector<int> pts = std::move(t.conflict);
+      t.conflict.clear();
+      pts.insert(pts.end(), t.on.begin(), t.on.end());
+      t.on.clear();
+      for (int p : pts) assign(p, forced ? 0 : first_new);
+    }
+  }
+}
+
+}  // namespace sepax::hull::detail

@@ -1,0 +1,219 @@
+// sepax/hull/repair.hpp
+//
+// The whole build (Builder::run):
+//   1. welding (welded_points.hpp);
+//   2. build passes: build, and rebuild without the points the clean-up rejects, until a hull validates;
+//   3. float T: every point that is not a vertex is measured against the result (outside_points); points
+//      more than kHullRepairTolerance x eps out are pinned and put back, and the hull rebuilt, for at most
+//      kHullMaxRepairs repair passes, keeping the best result;
+//   4. float T: the fallback policy (fallbacks.hpp) when no pass keeps every point within that tolerance.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "../convex_polyhedron.hpp"
+#include "../error.hpp"
+#include "../number_traits.hpp"
+#include "../tolerances.hpp"
+#include "builder.hpp"
+#include "fallbacks.hpp"
+#include "hull_distance.hpp"
+
+namespace sepax::hull::detail {
+
+/// Build, and rebuild without the points the clean-up rejects, until a hull validates.  A pass after the
+/// first (may_fail) may reject points until the rest is Collinear or too few: it then returns none, and the
+/// best earlier pass is kept.
+template <Number T>
+inline std::optional<ConvexPolyhedron<T>> Builder<T>::build_pass(bool may_fail) {
+  try {
+    for (;;) {
+      std::vector<int> active;
+      for (std::size_t i = 0; i < pts_.size(); ++i)
+        if (!removed_[i]) active.push_back(static_cast<int>(i));
+      std::vector<int> reject;
+      std::optional<ConvexPolyhedron<T>> result = build(active, reject);
+      if (result) return result;
+      if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
+      for (int r : reject) removed_[as_index(r)] = 1;
+    }
+  } catch (const InvalidInput&) {
+    if (!may_fail) throw;
+    return std::nullopt;
+  }
+}
+
+/// Float T: measures every point against a pass's result (outside_points) and keeps the result in log if it
+/// is nearer every point, or lower, than the results before; outside receives the points farther than
+/// kHullRepairTolerance x eps.
+template <Number T>
+inline void Builder<T>::measure(ConvexPolyhedron<T> result, std::vector<int>& outside, RepairLog<T>& log) {
+  double height = 0;
+  const double out = outside_points(result, outside, height);
+  if (!log.lowest || height < log.lowest_height) {
+    log.lowest = result;
+    log.lowest_height = height;
+  }
+  if (!log.nearest || out < log.nearest_out) {
+    log.nearest = std::move(result);
+    log.nearest_out = out;
+    log.nearest_height = height;
+  }
+}
+
+/// Float T: the points a repair pass puts back, pinned: each becomes a vertex whenever it is above the hull
+/// at all, and is rejected by the clean-up only when nothing else can be.
+template <Number T>
+inline void Builder<T>::pin(const std::vector<int>& outside) {
+  any_pinned_ = true;
+  for (int p : outside) {
+    removed_[as_index(p)] = 0;
+    pinned_[as_index(p)] = 1;
+  }
+}
+
+/// Float T, the fallback policy once the repair passes are done: the nearest result, unless the initial
+/// simplex (a needle), the projected slab or a tent is nearer every point.
+template <Number T>
+inline ConvexPolyhedron<T> Builder<T>::choose_result(RepairLog<T>& log) {
+  if (log.nearest_out > kHullRepairTolerance) try_simplex(log);
+  if (auto slab = try_projected_slab(log)) return std::move(*slab);
+  std::optional<ConvexPolyhedron<T>>& chosen =
+      log.nearest_height > kHullHeightSafe && log.nearest_height > log.lowest_height ? log.lowest
+                                                                                     : log.nearest;
+  if (log.nearest_out > kHullHeightSafe && tent_) {
+    if (auto tent = try_tent(*chosen)) return std::move(*tent);
+  }
+  return std::move(*chosen);
+}
+
+/// The passes could not keep every point near the hull (a needle a few eps thick, whose faces all fold within
+/// eps): the initial simplex contains the segment between the farthest pair, so it may be nearer every
+/// point than the best pass; it replaces the nearest result if so.
+template <Number T>
+inline void Builder<T>::try_simplex(RepairLog<T>& log) {
+  std::vector<int> none;
+  if (auto t = simplex_hull()) {
+    double t_height = 0;
+    const double t_out = outside_points(*t, none, t_height);
+    if (t_out < log.nearest_out) {
+      log.nearest = std::move(t);
+      log.nearest_out = t_out;
+      log.nearest_height = t_height;
+    }
+  }
+}
+
+/// A slab thinner than the bound whose rim corners every pass folded away (or whose rim faces are so nearly
+/// parallel that a point beyond the rim is below both their planes, so the measure saw it inside: measured
+/// here by the slab's shadow, the points projected onto its plane against the projected hull): the flat
+/// polygon of the projections onto the slab's mid-plane is within the half-thickness of every point, in
+/// height and in distance.  Returned when nearer every point than the nearest result.
+template <Number T>
+inline std::optional<ConvexPolyhedron<T>> Builder<T>::try_projected_slab(const RepairLog<T>& log) {
+  Vec3<double> nrm(0, 0, 0);
+  double lo = 0, hi = 0;
+  if (thin_plane(*log.nearest, nrm, lo, hi)) {
+    const double gap = std::max(log.nearest_out, shadow_out(*log.nearest, nrm));
+    if (gap > kHullHeightSafe) {
+      std::vector<int> none;
+      if (auto s = projected_slab(nrm, lo, hi)) {
+        double s_height = 0;
+        if (outside_points(*s, none, s_height) < gap) return s;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+/// A slab corner that every pass lost (fallbacks.hpp, tent_hull): if the chosen result would leave a point
+/// more than kHullHeightSafe out, the hull of the points plus a copy of each point it loses, lifted
+/// kHullTentLift x eps into the slab, when nearer every point and its shadow on the slab's plane holds every
+/// point's shadow (the distance check can miss a lost needle tip: the tent is for slabs).
+template <Number T>
+inline std::optional<ConvexPolyhedron<T>> Builder<T>::try_tent(const ConvexPolyhedron<T>& chosen) {
+  std::vector<int> none;
+  double c_height = 0;
+  out_vertex_.assign(pts_.size(), 0);  // (measure every point)
+  const double c_out = outside_points(chosen, none, c_height);
+  Vec3<double> t_nrm(0, 0, 0);
+  if (c_out > kHullHeightSafe) {
+    if (auto t = tent_hull(chosen, t_nrm)) {
+      double t_height = 0;
+      const double t_out = std::max(outside_points(*t, none, t_height), shadow_out(*t, t_nrm));
+      if (t_out <= kHullRepairTolerance && (t_height <= kHullHeightSafe || t_height <= c_height)) return t;
+    }
+  }
+  return std::nullopt;
+}
+
+// Float T: the welded points more than kHullRepairTolerance * eps above a face plane
+// of h (evaluated as a user would, on the input coordinates; plus their
+// rounding) or that far from its face polygons (polygon_distance: a point
+// within eps of two planes of a thin wedge can be far beyond its edge);
+// returns the largest of either in units of eps, and in height the
+// largest height alone.
+template <Number T>
+inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside,
+                                         double& height) const {
+  double max_abs = 0;
+  for (std::size_t i = 0; i < pts_.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      max_abs = std::max(max_abs, std::abs(to_double(input_point(static_cast<int>(i))[c])));
+  const double e = to_double(eps_);
+  const double slack = kHullPlaneRoundingSlack * number_traits<T>::unit_roundoff * max_abs;
+  double worst = 0;
+  const PolygonFaces polygons = polygon_faces(h, centre_);
+  const std::vector<PolygonFace>& faces = polygons.faces;
+  DeepInside<T> deep(
+      h, faces, kHullDeepInsideSlack * slack + kHullDeepInsidePlanarity * Tolerances<T>::planarity * extent_,
+      pts_.size());
+  std::vector<int> near;        // large solids: the faces measured for a point near the surface
+  std::vector<double> heights;  // (polygon_distance's scratch)
+  std::vector<int> seen(faces.size(), -1);
+  for (std::size_t i = 0; i < pts_.size(); ++i) {
+    if (out_vertex_[i]) continue;  // (the pre-check held it within conv_tol = 2 eps)
+    const int p = static_cast<int>(i);
+    auto plane_height = [&](int f) {
+      return to_double(T(dot(h.plane(f).normal, input_point(p)) - h.plane(f).offset));
+    };
+    double hp = -1e300;
+    const std::vector<int>* subset = nullptr;
+    if (deep.enabled()) {
+      if (deep(vec_to_double(local_point(p)))) continue;
+      // the faces connected to the climb's face through faces the point is
+      // less than the bound below (every face it can be above or near)
+      near.assign(1, deep.face());
+      seen[as_index(deep.face())] = p;
+      const double reach = -kHullMeasureReach * e - slack;
+      for (std::size_t k = 0; k < near.size(); ++k) {
+        const double hf = plane_height(near[k]);
+        hp = std::max(hp, hf);
+        if (hf < reach && k > 0) continue;
+        for (int g : deep.neighbours(near[k]))
+          if (seen[as_index(g)] != p) {
+            seen[as_index(g)] = p;
+            near.push_back(g);
+          }
+      }
+      subset = &near;
+    } else {
+      for (int f = 0; f < h.face_count(); ++f) hp = std::max(hp, plane_height(f));
+    }
+    hp -= slack;
+    height = std::max(height, hp / e);
+    hp = std::max(
+        hp, polygon_distance(faces, h.is_flat(), vec_to_double(local_point(p)), heights, subset) - slack);
+    worst = std::max(worst, hp / e);
+    if (hp > kHullRepairTolerance * e) outside.push_back(p);
+  }
+  return worst;
+}
+
+}  // namespace sepax::hull::detail

@@ -1,0 +1,94 @@
+// sepax/hull/welded_points.hpp
+//
+// The builder's first steps, before any hull:
+//   1. check_input: NaN/Inf (NonFinite, naming the point), fewer than 3 points (TooFewPoints), an extent
+//      that overflows plane computations (BadScale); the tolerances eps, flat and weld of the extent.
+//   2. local: float T decides on coordinates relative to the bounding-box centre (exact T: as given).
+//   3. weld: one representative of the points closer than weld * extent (exact T: of exact duplicates);
+//      fewer than 3 left is TooFewPoints.
+//   4. make_shadow: exact T whose coordinates are all exactly doubles gets a double copy, so that the
+//      quickhull predicates are filtered (orientation_filter.hpp) before they are decided in T.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../error.hpp"
+#include "../number_traits.hpp"
+#include "../tolerances.hpp"
+#include "builder.hpp"
+
+namespace sepax::hull::detail {
+
+template <Number T>
+inline void Builder<T>::check_input() {
+  for (std::size_t i = 0; i < in_.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      if (!number_traits<T>::is_finite(in_[i][c])) {
+        std::ostringstream s;
+        s << "convex_hull: point " << i << " has a non-finite coordinate (NaN or infinity)";
+        throw InvalidInput(ErrorCode::NonFinite, s.str());
+      }
+    }
+  }
+  if (in_.size() < 3) {
+    throw InvalidInput(ErrorCode::TooFewPoints, "convex_hull: needs at least 3 distinct points, got " +
+                                                    std::to_string(in_.size()) + " points");
+  }
+  Vec3<T> lo = in_[0], hi = in_[0];
+  for (const auto& p : in_) {
+    for (int c = 0; c < 3; ++c) {
+      if (p[c] < lo[c]) lo[c] = p[c];
+      if (p[c] > hi[c]) hi[c] = p[c];
+    }
+  }
+  double d2 = 0;
+  for (int c = 0; c < 3; ++c) {
+    const double w = to_double(T(hi[c] - lo[c]));
+    d2 += w * w;
+  }
+  extent_ = std::sqrt(d2);
+  Traits::scale(*this, lo, hi);
+}
+
+// Welds the input into the welded points (q_, pts_).
+template <Number T>
+inline void Builder<T>::weld() {
+  std::vector<Vec3<T>> loc;
+  loc.reserve(in_.size());
+  for (const auto& p : in_) loc.push_back(Traits::local(p, centre_));
+  std::vector<int> order(in_.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto lex = [&](int i, int j) {
+    const auto& a = loc[as_index(i)];
+    const auto& b = loc[as_index(j)];
+    if (a[0] != b[0]) return a[0] < b[0];
+    if (a[1] != b[1]) return a[1] < b[1];
+    if (a[2] != b[2]) return a[2] < b[2];
+    return i < j;
+  };
+  std::sort(order.begin(), order.end(), lex);
+  Traits::weld(*this, loc, order);
+  Traits::prepare(*this);
+  if (pts_.size() < 3) {
+    throw InvalidInput(ErrorCode::TooFewPoints, "convex_hull: needs at least 3 distinct points, got " +
+                                                    std::to_string(pts_.size()) +
+                                                    " after merging duplicates" + Traits::kWeldNote);
+  }
+  removed_.assign(pts_.size(), 0);
+  pinned_.assign(pts_.size(), 0);
+}
+
+// Adds a welded point: its input index and its local coordinates.
+template <Number T>
+inline void Builder<T>::add_point(int input_index, const Vec3<T>& loc) {
+  pts_.push_back(input_index);
+  q_.push_back(loc);
+}
+
+}  // namespace sepax::hull::detail
