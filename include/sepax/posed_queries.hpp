@@ -24,6 +24,10 @@
 // another pair or stale shapes only costs one re-evaluation.
 #pragma once
 
+#include <array>
+#include <optional>
+#include <span>
+
 #include "prepared_shape.hpp"
 #include "sat.hpp"
 #include "contact_manifold.hpp"
@@ -33,16 +37,78 @@ namespace sepax::sat {
 
 namespace detail {
 
+/// The faces and edges of B' that re-evaluating feature f reads (reevaluate,
+/// sat_cache.hpp); false when f's indices are out of range for (A, B) or a
+/// side feature's shapes are not both flat (reevaluate answers nullopt then:
+/// the query runs the SAT).
+template <Number T>
+bool feature_parts(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, const Feature& f,
+                   std::array<int, 2>& faces, int& nfaces, int& edge) {
+  nfaces = 0;
+  edge = -1;
+  switch (f.type) {
+    case FeatureType::FaceA: return f.a >= 0 && f.a < a.face_count();  // B's vertices only
+    case FeatureType::FaceB:
+      if (!(f.b >= 0 && f.b < b.face_count())) return false;
+      faces[0] = f.b;
+      nfaces = 1;
+      return true;
+    case FeatureType::EdgePair:
+      if (!(f.a >= 0 && f.a < a.edge_count() && f.b >= 0 && f.b < b.edge_count())) return false;
+      faces = {b.edge_face(f.b, 0), b.edge_face(f.b, 1)};
+      nfaces = 2;
+      edge = f.b;
+      return true;
+    case FeatureType::SideA: return f.a >= 0 && f.a < a.edge_count() && a.is_flat() && b.is_flat();
+    case FeatureType::SideB:
+      if (!(f.b >= 0 && f.b < b.edge_count() && a.is_flat() && b.is_flat())) return false;
+      faces = {b.edge_face(f.b, 0), b.edge_face(f.b, 1)};
+      nfaces = 2;
+      edge = f.b;
+      return true;
+  }
+  return false;
+}
+
+/// The warm early-out check of a posed query (the cache's hit, sat_cache.hpp):
+/// the cached feature re-evaluated on the partial image of B' that holds
+/// B's posed vertices and only the planes and edge that feature reads
+/// (posing.hpp, "Staged posing"), with the kernel built on it.  The same
+/// decision and the same values as cache_hit on the full B' (exact_fallbacks
+/// may count fewer: the bound of a few planes is tighter); nullopt if the
+/// feature does not separate beyond the margin (the query then derives the
+/// rest of B' and runs the SAT).
+template <class Policy, Number T>
+std::optional<SatResult<T>> warm_hit(const PreparedShape<T>& a, const PreparedShape<T>& b, const RigidTransform<T>& x,
+                                     SatCache<T>& cache, const SatOptions& opt) {
+  std::array<int, 2> faces{};
+  int nfaces = 0, edge = -1;
+  if (!feature_parts(a.polyhedron(), b.polyhedron(), cache.feature, faces, nfaces, edge)) return std::nullopt;
+  const ConvexPolyhedron<T>& bp =
+      b.posed_part_scratch(x, std::span<const int>(faces.data(), static_cast<std::size_t>(nfaces)),
+                           std::span<const int>(&edge, edge >= 0 ? 1u : 0u));
+  kernel_t<Policy, T> k(a.polyhedron(), bp);
+  return cache_hit(k, cache, opt);
+}
+
 /// The posed query: B moved into A's frame, the kernel built on (A, B'),
-/// run(k) the SAT, the axis mapped to world.
+/// run(k) the SAT, the axis mapped to world.  With early_out and a valid
+/// cache, the cached feature is checked first on a partial B' (warm_hit).
 template <class Policy, Number T, class Run>
 SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
                          const RigidTransform<T>& pose_b, const SatOptions& opt, SatCache<T>* cache, Run&& run) {
   check_options(opt);
   if (a.polyhedron().empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape A is empty (moved from)");
-  const ConvexPolyhedron<T>& bp = b.posed_scratch(relative_pose(pose_a, pose_b));
+  const RigidTransform<T> x = relative_pose(pose_a, pose_b);
+  if (cache && opt.early_out && cache->valid) {
+    if (auto hit = warm_hit<Policy>(a, b, x, *cache, opt)) {
+      hit->axis = pose_a.rotate(hit->axis);
+      return *hit;
+    }
+  }
+  const ConvexPolyhedron<T>& bp = b.posed_scratch(x);
   kernel_t<Policy, T> k(a.polyhedron(), bp);
-  SatResult<T> r = cache ? cached_with(k, *cache, opt, run) : run(k, opt, nullptr);
+  SatResult<T> r = cache ? cached_run(k, *cache, opt, run) : run(k, opt, nullptr);
   r.axis = pose_a.rotate(r.axis);
   return r;
 }

@@ -31,6 +31,7 @@
 #include <atomic>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <type_traits>
 #include <utility>
 
@@ -47,9 +48,10 @@ namespace detail {
 /// The per-thread scratch a posed query moves B into (see the header).
 template <Number T>
 struct PoseScratch {
+  enum Stage { kNone, kVertices, kFull };
   ConvexPolyhedron<T> poly;
   std::uint64_t serial = 0;  // PreparedShape::serial() of the shape poly holds (0: none)
-  bool posed = false;        // poly is that shape at pose x
+  Stage stage = kNone;       // poly is that shape at pose x: its vertices (a partial image), or all of it
   RigidTransform<T> x;
 };
 
@@ -128,20 +130,57 @@ class PreparedShape {
   /// has held a shape at least this large.  Throws InvalidInput for an
   /// empty (moved-from) shape or a non-rigid x (posing.hpp).
   const ConvexPolyhedron<T>& posed_scratch(const RigidTransform<T>& x) const {
-    if (poly_.empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape: the shape is empty (moved from)");
     auto& s = detail::pose_scratch<T>();
-    if (s.posed && s.serial == serial_ && detail::same_pose(s.x, x)) return s.poly;
-    const bool same_topology = s.serial == serial_;
-    s.posed = false;
-    s.serial = 0;  // until the posing below has finished (it may throw)
-    detail::pose_into(s.poly, poly_, same_topology, x);
-    s.serial = serial_;
-    s.x = x;
-    s.posed = true;
+    if (s.serial == serial_ && s.stage != S::kNone && detail::same_pose(s.x, x)) {
+      if (s.stage == S::kFull) return s.poly;
+      // the vertices are there (a check of a posed query's): finish them
+      s.stage = S::kNone;
+      s.poly.finish_rigid_image();
+      s.stage = S::kFull;
+      return s.poly;
+    }
+    pose_vertices(s, x);
+    s.poly.finish_rigid_image();
+    s.stage = S::kFull;
+    return s.poly;
+  }
+
+  /// For the posed queries' early-out checks (posed_queries.hpp): this
+  /// shape's vertices moved by x in this thread's scratch, with only the
+  /// planes of `faces` and the per-edge entries of `edges` derived (a partial
+  /// image: ConvexPolyhedron::derive_rigid_part; posing.hpp, "Staged
+  /// posing"), or the full posed_scratch(x) if the scratch already holds it.
+  /// Valid until the thread's next posed query or scratch call, and only for
+  /// kernel queries that read those planes and edges; a later
+  /// posed_scratch(x) at the same x derives the rest.  Throws as
+  /// posed_scratch.
+  const ConvexPolyhedron<T>& posed_part_scratch(const RigidTransform<T>& x, std::span<const int> faces,
+                                                std::span<const int> edges) const {
+    auto& s = detail::pose_scratch<T>();
+    if (s.serial == serial_ && s.stage != S::kNone && detail::same_pose(s.x, x)) {
+      if (s.stage == S::kFull) return s.poly;  // every plane is there (derive_rigid_part would narrow its bound)
+    } else {
+      pose_vertices(s, x);
+    }
+    if (!faces.empty() || !edges.empty()) s.poly.derive_rigid_part(faces, edges);
     return s.poly;
   }
 
  private:
+  using S = detail::PoseScratch<T>;
+
+  // s.poly = the partial image of this shape at x (stage kVertices).
+  void pose_vertices(S& s, const RigidTransform<T>& x) const {
+    if (poly_.empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape: the shape is empty (moved from)");
+    const bool same_topology = s.serial == serial_;
+    s.stage = S::kNone;
+    s.serial = 0;  // until the posing below has finished (it may throw)
+    detail::pose_vertices_into(s.poly, poly_, same_topology, x);
+    s.serial = serial_;
+    s.x = x;
+    s.stage = S::kVertices;
+  }
+
   ConvexPolyhedron<T> poly_;
   GaussMapWalk walk_;
   std::uint64_t serial_ = 0;
