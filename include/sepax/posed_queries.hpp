@@ -27,6 +27,7 @@
 #include <array>
 #include <optional>
 #include <span>
+#include <type_traits>
 
 #include "prepared_shape.hpp"
 #include "sat.hpp"
@@ -91,6 +92,75 @@ std::optional<SatResult<T>> warm_hit(const PreparedShape<T>& a, const PreparedSh
   return cache_hit(k, cache, opt);
 }
 
+/// The margin pre-check of a posed query with early_out (float/double; see
+/// the header comment).  With d = c(B') - c(A) (centroids, in A's frame):
+/// the face of A whose normal is best aligned with d, then the face of B
+/// whose normal is best aligned with -d (found among B's local normals with
+/// R^T(-d), R = x.rotation), each evaluated by the kernel exactly as every
+/// SAT evaluates a face (face_query_a / face_query_b) and returned when it
+/// separates beyond the margin (stops_early).  Estimates skip the work that
+/// cannot succeed (a choice, never a decision: a skipped pair runs the SAT):
+/// a face's separation is at most its plane's height of the other shape's
+/// centroid minus that shape's inner radius (PreparedShape::inner_radius),
+/// and no axis separates by more than |d| - r_A - r_B.  part(faces) gives B'
+/// with at least the planes of `faces` derived: the partial image of the
+/// posed query, or the full pre-posed B' (the tests' reference).
+template <class Policy, Number T, class Part>
+std::optional<SatResult<T>> margin_precheck_with(const PreparedShape<T>& pa, const PreparedShape<T>& pb,
+                                                 const RigidTransform<T>& x, const SatOptions& opt, Part&& part) {
+  const ConvexPolyhedron<T>& a = pa.polyhedron();
+  const ConvexPolyhedron<T>& bv = part(std::span<const int>());
+  const Vec3<T>& ca = a.centroid();
+  const Vec3<T>& cb = bv.centroid();
+  const Vec3<T> d(T(cb[0] - ca[0]), T(cb[1] - ca[1]), T(cb[2] - ca[2]));
+  const double ra = pa.inner_radius(), rb = pb.inner_radius();
+  const double dd = static_cast<double>(d[0]) * static_cast<double>(d[0]) +
+                    static_cast<double>(d[1]) * static_cast<double>(d[1]) +
+                    static_cast<double>(d[2]) * static_cast<double>(d[2]);
+  const double reach = ra + rb + opt.margin;
+  if (!(dd > reach * reach)) return std::nullopt;
+  std::int64_t fallbacks = 0;
+  const int fa = pa.most_aligned_face(d);
+  const Plane<T>& pla = a.plane(fa);
+  if (static_cast<double>(dot(pla.normal, cb)) - static_cast<double>(pla.offset) - rb > opt.margin) {
+    kernel_t<Policy, T> k(a, bv);
+    const auto q = k.face_query_a(fa);
+    const Feature f = Feature::face_a(fa, q.support_vertex);
+    if (stops_early(k, q.separation, f, opt)) return early_out_result(k, f, q.separation);
+    fallbacks = k.exact_fallbacks();
+  }
+  // in B's local frame: e = R^T(-d), and A's centroid u = R^T(c(A) - t)
+  const auto& r = x.rotation;
+  const Vec3<T> ct(T(ca[0] - x.translation[0]), T(ca[1] - x.translation[1]), T(ca[2] - x.translation[2]));
+  Vec3<T> e, u;
+  for (int j = 0; j < 3; ++j) {
+    e[j] = T(-(r(0, j) * d[0] + r(1, j) * d[1] + r(2, j) * d[2]));
+    u[j] = T(r(0, j) * ct[0] + r(1, j) * ct[1] + r(2, j) * ct[2]);
+  }
+  const int gb = pb.most_aligned_face(e);
+  const Plane<T>& plb = pb.polyhedron().plane(gb);
+  if (!(static_cast<double>(dot(plb.normal, u)) - static_cast<double>(plb.offset) - ra > opt.margin))
+    return std::nullopt;
+  const ConvexPolyhedron<T>& bp = part(std::span<const int>(&gb, 1));
+  kernel_t<Policy, T> k(a, bp);
+  const auto q = k.face_query_b(gb);
+  const Feature f = Feature::face_b(q.support_vertex, gb);
+  if (!stops_early(k, q.separation, f, opt)) return std::nullopt;
+  SatResult<T> res = early_out_result(k, f, q.separation);
+  res.stats.face_axes = 2;
+  res.stats.exact_fallbacks += fallbacks;
+  return res;
+}
+
+/// margin_precheck_with on the posed query's partial image of B'.
+template <class Policy, Number T>
+std::optional<SatResult<T>> margin_precheck(const PreparedShape<T>& a, const PreparedShape<T>& b,
+                                            const RigidTransform<T>& x, const SatOptions& opt) {
+  return margin_precheck_with<Policy>(a, b, x, opt, [&](std::span<const int> faces) -> const ConvexPolyhedron<T>& {
+    return b.posed_part_scratch(x, faces, std::span<const int>());
+  });
+}
+
 /// The posed query: B moved into A's frame, the kernel built on (A, B'),
 /// run(k) the SAT, the axis mapped to world.  With early_out and a valid
 /// cache, the cached feature is checked first on a partial B' (warm_hit).
@@ -104,6 +174,19 @@ SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pos
     if (auto hit = warm_hit<Policy>(a, b, x, *cache, opt)) {
       hit->axis = pose_a.rotate(hit->axis);
       return *hit;
+    }
+  }
+  if constexpr (std::is_floating_point_v<T>) {
+    if (opt.early_out) {
+      if (auto pre = margin_precheck<Policy>(a, b, x, opt)) {
+        if (cache) {
+          cache->valid = true;
+          cache->feature = pre->feature;
+          cache->separation = pre->separation;
+        }
+        pre->axis = pose_a.rotate(pre->axis);
+        return *pre;
+      }
     }
   }
   const ConvexPolyhedron<T>& bp = b.posed_scratch(x);

@@ -96,6 +96,26 @@ std::optional<std::pair<Feature, Separation<typename K::FT>>> reevaluate(K& k, c
   return std::nullopt;
 }
 
+/// The result of a query that stops at one feature f, evaluated by k with
+/// separation s proven beyond the margin (stops_early): separated, early_out,
+/// axis k.axis(f), stats counting f and k's exact fallbacks.
+template <SatKernel K>
+SatResult<typename K::FT> early_out_result(const K& k, const Feature& f, const Separation<typename K::FT>& s) {
+  SatResult<typename K::FT> r;
+  r.overlap = false;
+  r.feature = f;
+  r.separation = s;
+  r.axis = k.axis(f);
+  r.early_out = true;
+  const FeatureType ty = f.type;
+  r.stats.face_axes = ty == FeatureType::FaceA || ty == FeatureType::FaceB ? 1 : 0;
+  r.stats.edge_pairs = ty == FeatureType::EdgePair ? 1 : 0;
+  r.stats.side_axes = ty == FeatureType::SideA || ty == FeatureType::SideB ? 1 : 0;
+  r.stats.minkowski_faces = r.stats.edge_pairs;
+  r.stats.exact_fallbacks = k.exact_fallbacks();
+  return r;
+}
+
 /// The early-out half of a cached query (see the header comment): with
 /// opt.early_out and a valid cache, the cached feature re-evaluated with k; if
 /// it separates beyond the margin, the hit's result (and the cache updated,
@@ -108,18 +128,7 @@ std::optional<SatResult<typename K::FT>> cache_hit(K& k, SatCache<typename K::FT
   if (!opt.early_out || !cache.valid) return std::nullopt;
   const auto ev = reevaluate(k, cache.feature);
   if (!ev || !stops_early(k, ev->second, ev->first, opt)) return std::nullopt;
-  SatResult<T> r;
-  r.overlap = false;
-  r.feature = ev->first;
-  r.separation = ev->second;
-  r.axis = k.axis(ev->first);
-  r.early_out = true;
-  const FeatureType ty = ev->first.type;
-  r.stats.face_axes = ty == FeatureType::FaceA || ty == FeatureType::FaceB ? 1 : 0;
-  r.stats.edge_pairs = ty == FeatureType::EdgePair ? 1 : 0;
-  r.stats.side_axes = ty == FeatureType::SideA || ty == FeatureType::SideB ? 1 : 0;
-  r.stats.minkowski_faces = r.stats.edge_pairs;
-  r.stats.exact_fallbacks = k.exact_fallbacks();
+  SatResult<T> r = early_out_result(k, ev->first, ev->second);
   cache.feature = r.feature;
   cache.separation = r.separation;
   ++cache.hits;

@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <optional>
+#include <span>
+#include <type_traits>
 #include <random>
 #include <vector>
 
@@ -79,8 +82,26 @@ void require_same_result(const SatResult<T>& posed, const SatResult<T>& ref, con
   REQUIRE(posed.stats.exact_fallbacks == ref.stats.exact_fallbacks);
 }
 
+/// The margin pre-check of a posed query with early_out (posed_queries.hpp,
+/// float/double) on the pre-posed pair (A, bp): what the posed query answers
+/// before running a SAT; nullopt when it does not answer (or no early_out,
+/// or exact T).
+template <class Policy, Number T>
+std::optional<SatResult<T>> precheck_reference(const PreparedShape<T>& a, const PreparedShape<T>& b,
+                                               const RigidTransform<T>& x, const ConvexPolyhedron<T>& bp,
+                                               const SatOptions& opt) {
+  if constexpr (std::is_floating_point_v<T>) {
+    if (opt.early_out) {
+      return sat::detail::margin_precheck_with<Policy>(
+          a, b, x, opt, [&](std::span<const int>) -> const ConvexPolyhedron<T>& { return bp; });
+    }
+  }
+  return std::nullopt;
+}
+
 /// Every posed SAT against its pre-posed reference at `poses` random pose
-/// pairs per pair of shapes, with and without early_out/margin.
+/// pairs per pair of shapes, with and without early_out/margin (the
+/// reference of an early-out query: precheck_reference, else the SAT).
 template <class Policy, Number T, class PoseGen>
 int check_posed_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes, std::mt19937_64& rng, int poses,
                                   PoseGen&& pose) {
@@ -91,13 +112,16 @@ int check_posed_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes
     for (std::size_t j = 0; j < shapes.size(); ++j) {
       for (int p = 0; p < poses; ++p) {
         const RigidTransform<T> pa = pose(rng), pb = pose(rng);
-        const ConvexPolyhedron<T> bp = posed(shapes[j], relative_pose(pa, pb));
+        const RigidTransform<T> x = relative_pose(pa, pb);
+        const ConvexPolyhedron<T> bp = posed(shapes[j], x);
         for (const SatOptions opt : {SatOptions{}, SatOptions{true, 0.0}, SatOptions{true, 0.25}}) {
           for (SatAlgorithm alg : kSatAlgorithms) {
             INFO("shapes " << i << ", " << j << " pose " << p << " " << to_string(alg) << " early_out "
                            << opt.early_out << " margin " << opt.margin);
             const SatResult<T> r = sat::run<Policy>(alg, prepared[i], pa, prepared[j], pb, opt);
-            const SatResult<T> ref = sat::run<Policy>(alg, shapes[i], bp, opt);
+            // with early_out: the margin pre-check on the pre-posed pair, else the SAT
+            const auto pre = precheck_reference<Policy>(prepared[i], prepared[j], x, bp, opt);
+            const SatResult<T> ref = pre ? *pre : sat::run<Policy>(alg, shapes[i], bp, opt);
             require_same_result(r, ref, pa);
             ++checked;
           }
@@ -146,24 +170,33 @@ void require_same_derived(const ConvexPolyhedron<T>& p, const ConvexPolyhedron<T
   REQUIRE(p.normal_conditioning() == q.normal_conditioning());
 }
 
-/// The reference of a cached posed query: sat::cached_with on the kernel of
-/// the full pre-posed pair (A, bp), bp = posed(B, relative_pose(pose_a,
-/// pose_b)), warm-started like the posed SATs.
+/// The reference of a cached posed query on the full pre-posed pair (A, bp),
+/// bp = posed(B, x), x = relative_pose(pose_a, pose_b): sat::cache_hit, else
+/// the margin pre-check (precheck_reference; the cache takes its feature),
+/// else sat::cached_run warm-started like the posed SATs.
 template <class Policy, Number T>
 SatResult<T> cached_reference(SatAlgorithm alg, const PreparedShape<T>& a, const PreparedShape<T>& b,
-                              const ConvexPolyhedron<T>& bp, const SatOptions& opt, SatCache<T>& cache) {
+                              const RigidTransform<T>& x, const ConvexPolyhedron<T>& bp, const SatOptions& opt,
+                              SatCache<T>& cache) {
   kernel_t<Policy, T> k(a.polyhedron(), bp);
+  if (auto hit = sat::cache_hit(k, cache, opt)) return *hit;
+  if (auto pre = precheck_reference<Policy>(a, b, x, bp, opt)) {
+    cache.valid = true;
+    cache.feature = pre->feature;
+    cache.separation = pre->separation;
+    return *pre;
+  }
   switch (alg) {
     case SatAlgorithm::brute_force:
-      return sat::cached_with(k, cache, opt,
+      return sat::cached_run(k, cache, opt,
                               [](auto& kk, const SatOptions& o, const Feature* s) { return sat::brute_force_with(kk, o, s); });
     case SatAlgorithm::traversal:
-      return sat::cached_with(k, cache, opt, [&](auto& kk, const SatOptions& o, const Feature* s) {
+      return sat::cached_run(k, cache, opt, [&](auto& kk, const SatOptions& o, const Feature* s) {
         return sat::traversal_with(kk, a.walk(), b.walk(), o, nullptr, s);
       });
     case SatAlgorithm::gauss_map: break;
   }
-  return sat::cached_with(k, cache, opt,
+  return sat::cached_run(k, cache, opt,
                           [](auto& kk, const SatOptions& o, const Feature* s) { return sat::gauss_map_with(kk, o, s); });
 }
 
@@ -171,7 +204,8 @@ SatResult<T> cached_reference(SatAlgorithm alg, const PreparedShape<T>& a, const
 /// (FeatureType order), misses with early_out, queries compared.
 struct WarmCounts {
   int hits[5] = {0, 0, 0, 0, 0};
-  int early_misses = 0;
+  int prechecked = 0;    // early-out answers of the margin pre-check (no cache hit)
+  int early_misses = 0;  // early_out queries that ran to the full result
   int compared = 0;
 };
 
@@ -183,12 +217,14 @@ struct WarmCounts {
 /// without early_out at several margins.  Hit or miss, cache content,
 /// overlap, early_out, feature, separation and axis are bit for bit the
 /// reference's (exact_fallbacks: at most the reference's, which also counts
-/// the re-evaluation the query no longer repeats); after a hit, finishing
-/// the posing in the scratch gives the full B' bit for bit.  on_hit(i, j,
-/// bp, opt, result) lets the caller check a hit further.
-template <class Policy, Number T, class OnHit>
+/// the re-evaluation the query no longer repeats); after an early-out
+/// answer (a hit or the margin pre-check, both on a partial image),
+/// finishing the posing in the scratch gives the full B' bit for bit.
+/// on_early(i, j, bp, opt, result) lets the caller check every early-out
+/// answer further.
+template <class Policy, Number T, class OnEarly>
 WarmCounts check_warm_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes, std::mt19937_64& rng,
-                                        int poses, OnHit&& on_hit) {
+                                        int poses, OnEarly&& on_early) {
   std::vector<PreparedShape<T>> prepared;
   for (const auto& s : shapes) prepared.emplace_back(s);
   WarmCounts n;
@@ -224,7 +260,7 @@ WarmCounts check_warm_against_reference(const std::vector<ConvexPolyhedron<T>>& 
               SatCache<T> ref_cache = cache;
               INFO("shapes " << i << ", " << j << " pose " << p << " " << to_string(alg) << " early_out "
                              << opt.early_out << " margin " << opt.margin << " cached " << to_string(cache.feature));
-              const SatResult<T> ref = cached_reference<Policy>(alg, prepared[i], prepared[j], bp, opt, ref_cache);
+              const SatResult<T> ref = cached_reference<Policy>(alg, prepared[i], prepared[j], x, bp, opt, ref_cache);
               const SatResult<T> r = sat::run<Policy>(alg, prepared[i], pa, prepared[j], pb, opt, &cache);
               REQUIRE(cache.hits == ref_cache.hits);
               REQUIRE(cache.misses == ref_cache.misses);
@@ -239,13 +275,15 @@ WarmCounts check_warm_against_reference(const std::vector<ConvexPolyhedron<T>>& 
               REQUIRE(r.stats.face_axes == ref.stats.face_axes);
               REQUIRE(r.stats.edge_pairs == ref.stats.edge_pairs);
               REQUIRE(r.stats.exact_fallbacks <= ref.stats.exact_fallbacks);
+              if (r.early_out) on_early(i, j, bp, opt, r);
               if (cache.hits > 0) {
                 ++n.hits[static_cast<int>(r.feature.type)];
-                on_hit(i, j, bp, opt, r);
-                require_same_derived(prepared[j].posed_scratch(x), bp);
+              } else if (r.early_out) {
+                ++n.prechecked;
               } else if (opt.early_out) {
                 ++n.early_misses;
               }
+              if (r.early_out) require_same_derived(prepared[j].posed_scratch(x), bp);
               ++n.compared;
             }
           }
