@@ -11,6 +11,23 @@
 // verdict, separation, stats - except that the axis is mapped to world
 // coordinates: pose_a.rotate(axis) (separation is frame-invariant).
 //
+// With opt.early_out two checks come first, each decided by the kernel on
+// B's posed vertices and only the plane or edge of B' it reads (posing.hpp,
+// "Staged posing"); only when both fail is the rest of B' derived and the
+// SAT run:
+//   1. the cache's feature (cache valid): SatCache's early-out hit;
+//   2. the margin pre-check (float/double): the face of A best aligned with
+//      c(B') - c(A) and the face of B best aligned with c(A) - c(B')
+//      (centroids), evaluated as every SAT evaluates a face
+//      (face_query_a / face_query_b); the first that separates beyond the
+//      margin (stops_early) is the answer (with a cache, the cache takes
+//      it).  Inner-radius estimates skip it where it cannot succeed.
+// Either answer is an early-out answer as SatOptions defines it: a feature
+// whose separation is greater than the margin (exactly so under
+// policy::Robust and for exact T), early_out set, not necessarily the
+// feature the SAT would meet first; the verdict is the SAT's.  Without
+// early_out nothing changes: the SAT's full result, bit for bit.
+//
 // Allocation: none per query for float/double (B' lives in per-thread
 // scratch, prepared_shape.hpp; the traversal's walk data is the prepared
 // shapes'; its per-face scratch is on the stack up to kTraversalInlineFaces
