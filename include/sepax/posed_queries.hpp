@@ -21,7 +21,8 @@
 //      (centroids), evaluated as every SAT evaluates a face
 //      (face_query_a / face_query_b); the first that separates beyond the
 //      margin (stops_early) is the answer (with a cache, the cache takes
-//      it).  Inner-radius estimates skip it where it cannot succeed.
+//      it).  Inner-radius estimates skip it where it cannot succeed, and
+//      so does a cache whose last answer was not beyond the margin.
 // Either answer is an early-out answer as SatOptions defines it: a feature
 // whose separation is greater than the margin (exactly so under
 // policy::Robust and for exact T), early_out set, not necessarily the
@@ -169,6 +170,14 @@ std::optional<SatResult<T>> margin_precheck_with(const PreparedShape<T>& pa, con
   return res;
 }
 
+/// A valid cache whose last answer was not beyond the margin (a pair in
+/// contact or close; a coherent pair stays so): the query skips the margin
+/// pre-check (a choice, never a decision: the SAT runs).
+template <Number T>
+bool cache_says_near(const SatCache<T>* cache, const SatOptions& opt) {
+  return cache != nullptr && cache->valid && !(sepax::to_double(cache->separation) > opt.margin);
+}
+
 /// margin_precheck_with on the posed query's partial image of B'.
 template <class Policy, Number T>
 std::optional<SatResult<T>> margin_precheck(const PreparedShape<T>& a, const PreparedShape<T>& b,
@@ -194,7 +203,7 @@ SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pos
     }
   }
   if constexpr (std::is_floating_point_v<T>) {
-    if (opt.early_out) {
+    if (opt.early_out && !cache_says_near(cache, opt)) {
       if (auto pre = margin_precheck<Policy>(a, b, x, opt)) {
         if (cache) {
           cache->valid = true;

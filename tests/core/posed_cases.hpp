@@ -172,15 +172,18 @@ void require_same_derived(const ConvexPolyhedron<T>& p, const ConvexPolyhedron<T
 
 /// The reference of a cached posed query on the full pre-posed pair (A, bp),
 /// bp = posed(B, x), x = relative_pose(pose_a, pose_b): sat::cache_hit, else
-/// the margin pre-check (precheck_reference; the cache takes its feature),
-/// else sat::cached_run warm-started like the posed SATs.
+/// the margin pre-check (precheck_reference, unless the cache's last answer
+/// was not beyond the margin; the cache takes its feature), else
+/// sat::cached_run warm-started like the posed SATs.
 template <class Policy, Number T>
 SatResult<T> cached_reference(SatAlgorithm alg, const PreparedShape<T>& a, const PreparedShape<T>& b,
                               const RigidTransform<T>& x, const ConvexPolyhedron<T>& bp, const SatOptions& opt,
                               SatCache<T>& cache) {
   kernel_t<Policy, T> k(a.polyhedron(), bp);
   if (auto hit = sat::cache_hit(k, cache, opt)) return *hit;
-  if (auto pre = precheck_reference<Policy>(a, b, x, bp, opt)) {
+  if (sat::detail::cache_says_near(&cache, opt)) {
+    // no pre-check: the SAT runs
+  } else if (auto pre = precheck_reference<Policy>(a, b, x, bp, opt)) {
     cache.valid = true;
     cache.feature = pre->feature;
     cache.separation = pre->separation;
