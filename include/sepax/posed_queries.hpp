@@ -205,11 +205,7 @@ SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pos
   if constexpr (std::is_floating_point_v<T>) {
     if (opt.early_out && !cache_says_near(cache, opt)) {
       if (auto pre = margin_precheck<Policy>(a, b, x, opt)) {
-        if (cache) {
-          cache->valid = true;
-          cache->feature = pre->feature;
-          cache->separation = pre->separation;
-        }
+        if (cache) cache->remember(pre->feature, pre->separation);
         pre->axis = pose_a.rotate(pre->axis);
         return *pre;
       }

@@ -33,6 +33,9 @@
 //     separates, the SAT runs with early_out and its result is returned
 //     unchanged (so for overlapping shapes the result is exactly the fresh
 //     one, feature and separation included).
+//   * The posed queries (posed_queries.hpp) run the early-out check on a
+//     partial image of B' and, after a miss, a margin pre-check whose
+//     answer the cache then keeps (remember), before the SAT.
 //   * The cache's content never changes a verdict: a stale, foreign or
 //     out-of-range feature only costs one re-evaluation (out-of-range indices
 //     are ignored).
@@ -56,6 +59,12 @@ struct SatCache {
   std::int64_t misses = 0;  // queries that ran the SAT
 
   void reset() { *this = SatCache{}; }
+  /// Keep an answer's feature and separation (the next query re-checks it).
+  void remember(const Feature& f, const Separation<T>& s) {
+    valid = true;
+    feature = f;
+    separation = s;
+  }
 };
 
 namespace sat {
@@ -129,8 +138,7 @@ std::optional<SatResult<typename K::FT>> cache_hit(K& k, SatCache<typename K::FT
   const auto ev = reevaluate(k, cache.feature);
   if (!ev || !stops_early(k, ev->second, ev->first, opt)) return std::nullopt;
   SatResult<T> r = early_out_result(k, ev->first, ev->second);
-  cache.feature = r.feature;
-  cache.separation = r.separation;
+  cache.remember(r.feature, r.separation);
   ++cache.hits;
   return r;
 }
@@ -147,9 +155,7 @@ SatResult<typename K::FT> cached_run(K& k, SatCache<typename K::FT>& cache, cons
   } else {
     r = run(k, opt);
   }
-  cache.valid = true;
-  cache.feature = r.feature;
-  cache.separation = r.separation;
+  cache.remember(r.feature, r.separation);
   ++cache.misses;
   return r;
 }

@@ -184,9 +184,7 @@ SatResult<T> cached_reference(SatAlgorithm alg, const PreparedShape<T>& a, const
   if (sat::detail::cache_says_near(&cache, opt)) {
     // no pre-check: the SAT runs
   } else if (auto pre = precheck_reference<Policy>(a, b, x, bp, opt)) {
-    cache.valid = true;
-    cache.feature = pre->feature;
-    cache.separation = pre->separation;
+    cache.remember(pre->feature, pre->separation);
     return *pre;
   }
   switch (alg) {
