@@ -206,10 +206,10 @@ int main(int argc, char** argv) {
                "sepax_bench"};
   app.set_version_flag("--version", std::string("sepax_bench ") + SEPAX_BENCH_VERSION);
   std::vector<std::string> workload_names, pose_names{"overlapping", "separated", "moving", "resting", "sliding",
-                                                       "rolling"};
+                                                       "rolling", "hovering"};
   for (const auto& w : workloads(false)) workload_names.push_back(w.name);
   app.add_flag("--quick", o.quick, "sphere hulls up to N = 64 only");
-  app.add_option("--pairs", o.pairs, "pairs per pose set (moving: pairs/16 trajectories of 32 steps; resting, sliding, rolling: pairs/32 of 120 steps)")
+  app.add_option("--pairs", o.pairs, "pairs per pose set (moving: pairs/16 trajectories of 32 steps; resting, sliding, rolling, hovering: pairs/32 of 120 steps)")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
   app.add_option("--min-time", o.min_time, "seconds per row for the repeated timing passes (at least 2)")

@@ -48,7 +48,7 @@ std::vector<Target> target_list() {
   for (int n : all_n)
     add("bullet gjk+epa over traversal+manifold, no margin", sphere(n), "separated", "bullet gjk+epa posed (float)",
         "traversal+manifold float posed", true, 1);
-  for (const char* motion : {"resting", "sliding", "rolling"})
+  for (const char* motion : {"resting", "sliding", "rolling", "hovering"})
     for (int n : {16, 32, 64, 128, 256})
       add("fresh over warm (cached) posed traversal", sphere(n), motion, "traversal float posed margin",
           "traversal float posed margin cached", true, 3, true);

@@ -29,7 +29,7 @@ std::vector<std::string> pose_sets(const WorkloadSpec& w) {
   if (w.name.rfind("moving", 0) == 0) return {"moving"};
   std::vector<std::string> out{"overlapping", "separated"};
   if (w.kind == "box" || (w.kind == "sphere" && w.n >= 16)) {
-    for (const char* s : {"resting", "sliding", "rolling"}) out.emplace_back(s);
+    for (const char* s : {"resting", "sliding", "rolling", "hovering"}) out.emplace_back(s);
   }
   return out;
 }
@@ -170,7 +170,8 @@ Pose in_contact(const Pool& pool, int a, int b, const Eigen::Matrix3d& r, const 
   return Pose{r, V3d(0.5 * (lo + hi) * d + tangent)};
 }
 
-// resting / sliding / rolling: `count` trajectories of `frames` steps each.
+// resting / sliding / rolling / hovering: `count` trajectories of `frames`
+// steps each.
 void build_coherent(Cell& c, Rng& rng, int count, int frames) {
   Rng world(rng.next());
   const Pool& pool = *c.pool;
@@ -196,8 +197,10 @@ void build_coherent(Cell& c, Rng& rng, int count, int frames) {
         p.rel = Pose{jitter * rest.r, V3d(rest.t + rng.in_ball(2e-4))};
       } else if (c.poses == "sliding") {
         p.rel = in_contact(pool, a, b, r0, d, V3d(0.004 * f * u), depth);
-      } else {  // rolling
+      } else if (c.poses == "rolling") {
         p.rel = in_contact(pool, a, b, rotation_about(w, 0.01 * f) * r0, d, V3d(0.01 * f * u), depth);
+      } else {  // hovering: separated by a gap of 10% of the extent, turning and drifting
+        p.rel = in_contact(pool, a, b, rotation_about(w, 0.01 * f) * r0, d, V3d(0.004 * f * u), -0.1 * extent);
       }
       add_pair(c, std::move(p), world);
     }
@@ -249,8 +252,8 @@ void setup_cell(Cell& c, const WorkloadSpec& spec, const std::string& poses, Poo
   if (poses == "moving") {
     Rng prng(3003u);
     build_moving(c, prng, std::max(2, pairs / 16), 32);
-  } else if (poses == "resting" || poses == "sliding" || poses == "rolling") {
-    Rng prng(poses == "resting" ? 4004u : poses == "sliding" ? 5005u : 6006u);
+  } else if (poses == "resting" || poses == "sliding" || poses == "rolling" || poses == "hovering") {
+    Rng prng(poses == "resting" ? 4004u : poses == "sliding" ? 5005u : poses == "rolling" ? 6006u : 7007u);
     build_coherent(c, prng, std::max(2, pairs / 32), 120);
   } else {
     Rng prng(poses == "overlapping" ? 1001u : 2002u);

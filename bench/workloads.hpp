@@ -10,9 +10,13 @@
 //   sliding      B sliding over A's surface, 0.004 units a step
 //   rolling      B rolling over A, 0.01 rad a step about an axis in the
 //                contact plane, its centre following 0.01 units a step
-// The coherent sets (resting, sliding, rolling) are 120-step trajectories
-// whose depth along the contact direction is re-solved at every step, so the
-// pair stays in contact.
+//   hovering     B separated from A by a SAT gap of 10% of the extent (beyond
+//                the 2% margin), turning 0.01 rad a step about an axis in the
+//                plane facing A and drifting 0.004 units a step: pairs a
+//                broadphase hands over that stay apart
+// The coherent sets (resting, sliding, rolling, hovering) are 120-step
+// trajectories whose offset along the contact direction is re-solved at
+// every step, so the pair stays in contact (at its gap, hovering).
 //
 // Every pair has B's pose relative to A (`rel`, double) and world poses of
 // both shapes (A at a random world pose, B at world_a * rel).  Pre-posed rows

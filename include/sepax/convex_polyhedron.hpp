@@ -247,6 +247,20 @@ class ConvexPolyhedron {
   /// Throws as with_vertices does (NonFinite, BadScale).
   template <class Point>
   void assign_rigid_image(const ConvexPolyhedron& src, bool same_topology, Point&& point) {
+    assign_rigid_vertices(src, same_topology, point);
+    finish_rigid_image();
+  }
+
+  /// assign_rigid_image in two steps, for the posed queries' checks that
+  /// need only a few of B's planes (posing.hpp, "Staged posing").  Step 1:
+  /// the topology (unless same_topology), the vertices point(v), the bounds,
+  /// centroid, extent and max |coordinate| (the values assign_rigid_image
+  /// gives), and the range checks on them (NonFinite, BadScale).  The result
+  /// is a *partial* image: planes, per-edge arrays and lanes are not set
+  /// (lanes_bounded() is false, normal_conditioning() +infinity) until
+  /// derive_rigid_part (some of them) or finish_rigid_image (all of them).
+  template <class Point>
+  void assign_rigid_vertices(const ConvexPolyhedron& src, bool same_topology, Point&& point) {
     if (!same_topology) {
       half_edges_ = src.half_edges_;
       faces_ = src.faces_;
@@ -256,7 +270,60 @@ class ConvexPolyhedron {
     vertices_.resize(src.vertices_.size());
     for (std::size_t i = 0; i < vertices_.size(); ++i) vertices_[i] = point(src.vertices_[i]);
     check_coordinates();
-    compute_derived(true);
+    planes_.resize(faces_.size());
+    const auto ne = static_cast<std::size_t>(edge_count());
+    edge_dirs_.resize(ne);
+    edge_n0_.resize(ne);
+    edge_n1_.resize(ne);
+    lanes_bounded_ = false;
+    normal_conditioning_.store(std::numeric_limits<double>::infinity());
+    compute_bounds();
+    if constexpr (!number_traits<T>::is_exact) {
+      if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
+      check_range(false);
+    }
+  }
+
+  /// Step 2 of a partial image (after assign_rigid_vertices): the planes of
+  /// `faces` (both faces of a flat shape) and the per-edge entries of
+  /// `edges` (each edge's two faces must be among `faces`), computed as
+  /// finish_rigid_image computes them, and normal_conditioning() the scan
+  /// over those faces only (for float/double; the robust kernel's δ_B is
+  /// then a bound for exactly those planes).  Still a partial image: valid
+  /// only for the kernel queries that read these planes and edges (the
+  /// other planes, edges and the lanes are stale).
+  void derive_rigid_part(std::span<const int> faces, std::span<const int> edges) {
+    [[maybe_unused]] NormalConditioningScan scan;
+    auto derive = [&](int f) {
+      const auto& t = faces_[static_cast<std::size_t>(f)].plane_vertices;
+      const Vec3<T>& v0 = vertex(t[0]);
+      const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
+      const Vec3<T> c(cross(e1, e2));
+      planes_[static_cast<std::size_t>(f)] = plane_through_cross(v0, e1, e2, c);
+      if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) scan.add(e1, e2, c);
+    };
+    if (is_flat()) {
+      derive(0);  // the back face: the front one negated (compute_derived)
+      planes_[1] = Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)};
+    } else {
+      for (const int f : faces) derive(f);
+    }
+    for (const int e : edges) {
+      const auto k = static_cast<std::size_t>(e);
+      const HalfEdge& h0 = half_edges_[2 * k];
+      const HalfEdge& h1 = half_edges_[2 * k + 1];
+      edge_dirs_[k] = Vec3<T>(vertex(h1.origin) - vertex(h0.origin));
+      edge_n0_[k] = planes_[static_cast<std::size_t>(h0.face)].normal;
+      edge_n1_[k] = planes_[static_cast<std::size_t>(h1.face)].normal;
+    }
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) normal_conditioning_.store(scan.result());
+  }
+
+  /// Step 2 of assign_rigid_image after assign_rigid_vertices: every plane,
+  /// per-edge array, lane and normal_conditioning(), and the plane checks;
+  /// *this is then bit for bit what assign_rigid_image gives.
+  void finish_rigid_image() {
+    compute_derived(true, false);
     check_new_range();
   }
 
@@ -619,7 +686,7 @@ class ConvexPolyhedron {
   // the same pass from the plane triples' differences and cross products
   // (the value compute_normal_conditioning() gives, bit for bit: the same
   // expressions and the same scan, NormalConditioningScan).
-  void compute_derived(bool eager_conditioning = false) {
+  void compute_derived(bool eager_conditioning = false, bool with_bounds = true) {
     const auto nf = faces_.size();
     planes_.resize(nf);
     [[maybe_unused]] NormalConditioningScan scan;
@@ -647,12 +714,13 @@ class ConvexPolyhedron {
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
       if (cond) normal_conditioning_.store(scan.result());
     }
-    compute_edge_data_and_bounds();
+    compute_edge_data();
+    if (with_bounds) compute_bounds();
   }
 
-  // Everything after the planes: per-edge arrays, lanes, bounds, centroid,
-  // extent, max |coordinate|.  Reuses the arrays' capacity.
-  void compute_edge_data_and_bounds() {
+  // Everything after the planes: per-edge arrays and lanes.  Reuses the
+  // arrays' capacity.
+  void compute_edge_data() {
     // per-edge arrays (after the planes: the normals are copies of theirs)
     const auto ne = static_cast<std::size_t>(edge_count());
     edge_dirs_.resize(ne);
@@ -666,6 +734,10 @@ class ConvexPolyhedron {
       edge_n1_[e] = planes_[static_cast<std::size_t>(h1.face)].normal;
     }
     compute_lanes();
+  }
+
+  // From the vertices alone: bounds, centroid, extent, max |coordinate|.
+  void compute_bounds() {
     Vec3<T> sum(T(0), T(0), T(0));
     bmin_ = bmax_ = vertices_.empty() ? sum : vertices_[0];
     for (const auto& v : vertices_) {
@@ -876,7 +948,7 @@ class ConvexPolyhedron {
   //                               rounding is no longer small against them).
   // Out of range is refused here with BadScale, naming the quantity that does
   // not fit, before any geometric check can misreport it.
-  void check_range() {
+  void check_range(bool planes = true) {
     const std::string tname(number_traits<T>::name);
     const double limit = static_cast<double>(std::numeric_limits<T>::max()) / 16;
     if (!(max_abs_ <= limit)) {
@@ -891,6 +963,7 @@ class ConvexPolyhedron {
                                     ": the validation tolerances (relative to the extent) fall "
                                     "into its subnormal range");
     }
+    if (!planes) return;
     // (cannot fail within the range above)  One pass without a branch per
     // value; the face is looked for only when some plane is not finite.
     bool all_finite = true;

@@ -25,6 +25,20 @@
 // inverse, compose and apply are exact, so B' is exactly B moved rigidly and
 // the posed query is the exact answer for the poses given.
 //
+// Staged posing.  The vertices of B' come first (pose_vertices_into: the
+// formula above, with B's bounds, centroid and range checks); planes, edge
+// arrays, lanes and normal conditioning follow (ConvexPolyhedron::
+// finish_rigid_image), bit for bit as in one pass.  A posed query with
+// early_out that can prove a separation beyond the margin from one feature
+// (the cached feature of a SatCache, posed_queries.hpp) derives only the
+// plane or edge of B' that feature reads (ConvexPolyhedron::
+// derive_rigid_part: the same formulas; the robust kernel's normal bound
+// for B is then the conditioning of those planes alone, a bound for every
+// plane it reads) and decides on the same vertices of B' with the same
+// kernel predicates: the same decision as on the full B', so the input it is
+// exact for is the one defined above.  Only when the check fails is the rest
+// of B' derived.
+//
 // Poses must be rigid: for float/double the query throws InvalidInput
 // (BadScale) when |M^T M - I| > 1e-3 or det M <= 0 (a reflection or a scale,
 // which would turn B inside out or break every bound); exact T requires
@@ -96,15 +110,27 @@ void check_rigid(const RigidTransform<T>& x) {
   }
 }
 
-/// out = posed(src, x) (the header's formula), reusing out's arrays; the
-/// topology is copied unless same_topology.  One out-of-line body, so that
-/// every caller (the posed queries and posed()) computes B' with the same
-/// instructions, contracted or not.
+/// Step 1 of posed(src, x) (the header's formula, "Staged posing"): out =
+/// the partial image with src's topology (copied unless same_topology) and
+/// the vertices x.apply(v), bounds and range checks
+/// (ConvexPolyhedron::assign_rigid_vertices), reusing out's arrays.  One
+/// out-of-line body, so that every caller (the posed queries, their checks
+/// and posed()) computes the vertices of B' with the same instructions,
+/// contracted or not.
 template <Number T>
-[[gnu::noinline]] void pose_into(ConvexPolyhedron<T>& out, const ConvexPolyhedron<T>& src, bool same_topology,
-                                 const RigidTransform<T>& x) {
+[[gnu::noinline]] void pose_vertices_into(ConvexPolyhedron<T>& out, const ConvexPolyhedron<T>& src,
+                                          bool same_topology, const RigidTransform<T>& x) {
   check_rigid(x);
-  out.assign_rigid_image(src, same_topology, [&](const Vec3<T>& v) { return x.apply(v); });
+  out.assign_rigid_vertices(src, same_topology, [&](const Vec3<T>& v) { return x.apply(v); });
+}
+
+/// out = posed(src, x): pose_vertices_into, then every plane, edge array and
+/// lane (ConvexPolyhedron::finish_rigid_image).
+template <Number T>
+void pose_into(ConvexPolyhedron<T>& out, const ConvexPolyhedron<T>& src, bool same_topology,
+               const RigidTransform<T>& x) {
+  pose_vertices_into(out, src, same_topology, x);
+  out.finish_rigid_image();
 }
 
 }  // namespace detail

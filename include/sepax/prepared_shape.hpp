@@ -31,13 +31,17 @@
 #include <atomic>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <span>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "convex_polyhedron.hpp"
 #include "error.hpp"
 #include "gauss_map_walk.hpp"
 #include "posing.hpp"
+#include "simd_lanes.hpp"
 #include "transform.hpp"
 
 namespace sepax {
@@ -47,9 +51,10 @@ namespace detail {
 /// The per-thread scratch a posed query moves B into (see the header).
 template <Number T>
 struct PoseScratch {
+  enum Stage { kNone, kVertices, kFull };
   ConvexPolyhedron<T> poly;
   std::uint64_t serial = 0;  // PreparedShape::serial() of the shape poly holds (0: none)
-  bool posed = false;        // poly is that shape at pose x
+  Stage stage = kNone;       // poly is that shape at pose x: its vertices (a partial image), or all of it
   RigidTransform<T> x;
 };
 
@@ -91,6 +96,7 @@ class PreparedShape {
   explicit PreparedShape(ConvexPolyhedron<T> local)
       : poly_(std::move(local)), walk_(poly_), serial_(detail::next_shape_serial()) {
     if (poly_.empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape: the polyhedron is empty");
+    prepare_faces();
   }
 
   // Copies share the serial (same content: the scratch may keep the topology);
@@ -100,6 +106,9 @@ class PreparedShape {
   PreparedShape(PreparedShape&& o) noexcept
       : poly_(std::move(o.poly_)),
         walk_(std::move(o.walk_)),
+        face_lanes_(std::move(o.face_lanes_)),
+        face_stride_(o.face_stride_),
+        inner_radius_(o.inner_radius_),
         serial_(o.serial_) {
     o.poly_ = ConvexPolyhedron<T>();
     o.serial_ = detail::next_shape_serial();
@@ -108,6 +117,9 @@ class PreparedShape {
     if (this != &o) {
       poly_ = std::move(o.poly_);
       walk_ = std::move(o.walk_);
+      face_lanes_ = std::move(o.face_lanes_);
+      face_stride_ = o.face_stride_;
+      inner_radius_ = o.inner_radius_;
       serial_ = o.serial_;
       o.poly_ = ConvexPolyhedron<T>();
       o.serial_ = detail::next_shape_serial();
@@ -122,28 +134,146 @@ class PreparedShape {
   /// Identifies the content (equal for copies).
   std::uint64_t serial() const { return serial_; }
 
+  /// Radius of a ball around the centroid inside the shape (in its local
+  /// frame): min over the faces of the centroid's distance to the face's
+  /// plane, in double (0 for a flat shape and for exact T).  An estimate for
+  /// the posed queries' margin pre-check, which only uses it to skip work.
+  double inner_radius() const { return inner_radius_; }
+
+  /// The face whose (local) normal has the largest dot product with dir,
+  /// the lowest index among equal ones (float/double: over a copy of the
+  /// normals by coordinate, a few faces at a time, simd_lanes.hpp; exact T:
+  /// a scan).  For the posed queries' margin pre-check: a choice, not a
+  /// decision.
+  int most_aligned_face(const Vec3<T>& dir) const {
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      using L = simd::Lanes<T>;
+      using V = typename L::V;
+      constexpr int W = L::width;
+      const T* x = face_lanes_.data();
+      const T* y = x + face_stride_;
+      const T* z = y + face_stride_;
+      const V dx = L::set1(dir[0]), dy = L::set1(dir[1]), dz = L::set1(dir[2]);
+      V best = L::set1(-std::numeric_limits<T>::infinity());
+      V idx = L::set1(T(0));
+      V cur = L::iota(T(0));
+      const V step = L::set1(T(W));
+      for (int i = 0; i < face_stride_; i += W) {
+        const V h = simd::dot3<L>(L::load(x + i), L::load(y + i), L::load(z + i), dx, dy, dz);
+        idx = L::select(L::gt(h, best), cur, idx);  // strictly larger: the lane keeps its first maximum
+        best = L::max_gt(h, best);
+        cur = L::add(cur, step);
+      }
+      // the largest value over the lanes, then the lowest index holding it
+      // (padding repeats face 0: never below a real index with that value)
+      const V minus = L::set1(T(-1));
+      const V top = L::mul(L::hmin(L::mul(best, minus)), minus);
+      const V cand = L::select(L::eq(best, top), idx, L::set1(std::numeric_limits<T>::infinity()));
+      const T first = L::first(L::hmin(cand));
+      const int f = first < T(poly_.face_count()) ? static_cast<int>(first) : 0;  // NaN direction: 0
+      return f;
+    } else {
+      int best = 0;
+      T best_d = dot(poly_.plane(0).normal, dir);
+      for (int f = 1; f < poly_.face_count(); ++f) {
+        const T d = dot(poly_.plane(f).normal, dir);
+        if (d > best_d) {
+          best = f;
+          best_d = d;
+        }
+      }
+      return best;
+    }
+  }
+
   /// This shape moved by x (posing.hpp's posed(polyhedron(), x), bit for
   /// bit) in this thread's scratch; valid until the thread's next posed
   /// query or posed_scratch call.  No allocation once the thread's scratch
   /// has held a shape at least this large.  Throws InvalidInput for an
   /// empty (moved-from) shape or a non-rigid x (posing.hpp).
   const ConvexPolyhedron<T>& posed_scratch(const RigidTransform<T>& x) const {
-    if (poly_.empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape: the shape is empty (moved from)");
     auto& s = detail::pose_scratch<T>();
-    if (s.posed && s.serial == serial_ && detail::same_pose(s.x, x)) return s.poly;
-    const bool same_topology = s.serial == serial_;
-    s.posed = false;
-    s.serial = 0;  // until the posing below has finished (it may throw)
-    detail::pose_into(s.poly, poly_, same_topology, x);
-    s.serial = serial_;
-    s.x = x;
-    s.posed = true;
+    if (s.serial == serial_ && s.stage != S::kNone && detail::same_pose(s.x, x)) {
+      if (s.stage == S::kFull) return s.poly;
+      // the vertices are there (a check of a posed query's): finish them
+      s.stage = S::kNone;
+      s.poly.finish_rigid_image();
+      s.stage = S::kFull;
+      return s.poly;
+    }
+    pose_vertices(s, x);
+    s.poly.finish_rigid_image();
+    s.stage = S::kFull;
+    return s.poly;
+  }
+
+  /// For the posed queries' early-out checks (posed_queries.hpp): this
+  /// shape's vertices moved by x in this thread's scratch, with only the
+  /// planes of `faces` and the per-edge entries of `edges` derived (a partial
+  /// image: ConvexPolyhedron::derive_rigid_part; posing.hpp, "Staged
+  /// posing"), or the full posed_scratch(x) if the scratch already holds it.
+  /// Valid until the thread's next posed query or scratch call, and only for
+  /// kernel queries that read those planes and edges; a later
+  /// posed_scratch(x) at the same x derives the rest.  Throws as
+  /// posed_scratch.
+  const ConvexPolyhedron<T>& posed_part_scratch(const RigidTransform<T>& x, std::span<const int> faces,
+                                                std::span<const int> edges) const {
+    auto& s = detail::pose_scratch<T>();
+    if (s.serial == serial_ && s.stage != S::kNone && detail::same_pose(s.x, x)) {
+      if (s.stage == S::kFull) return s.poly;  // every plane is there (derive_rigid_part would narrow its bound)
+    } else {
+      pose_vertices(s, x);
+    }
+    if (!faces.empty() || !edges.empty()) s.poly.derive_rigid_part(faces, edges);
     return s.poly;
   }
 
  private:
+  using S = detail::PoseScratch<T>;
+
+  // s.poly = the partial image of this shape at x (stage kVertices).
+  void pose_vertices(S& s, const RigidTransform<T>& x) const {
+    if (poly_.empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape: the shape is empty (moved from)");
+    const bool same_topology = s.serial == serial_;
+    s.stage = S::kNone;
+    s.serial = 0;  // until the posing below has finished (it may throw)
+    detail::pose_vertices_into(s.poly, poly_, same_topology, x);
+    s.serial = serial_;
+    s.x = x;
+    s.stage = S::kVertices;
+  }
+
+  // face_lanes_: the face normals by coordinate (x, y, z arrays of
+  // face_stride_ entries, padded with face 0's normal); inner_radius_.
+  void prepare_faces() {
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      const int nf = poly_.face_count();
+      constexpr int kPad = ConvexPolyhedron<T>::kLanePad;
+      face_stride_ = (nf + kPad - 1) / kPad * kPad;
+      face_lanes_.assign(3 * static_cast<std::size_t>(face_stride_), T(0));
+      for (int f = 0; f < face_stride_; ++f) {
+        const Vec3<T>& n = poly_.plane(f < nf ? f : 0).normal;
+        for (int c = 0; c < 3; ++c) face_lanes_[static_cast<std::size_t>(c * face_stride_ + f)] = n[c];
+      }
+      double r = std::numeric_limits<double>::infinity();
+      const Vec3<T>& c = poly_.centroid();
+      for (int f = 0; f < nf; ++f) {
+        const Plane<T>& pl = poly_.plane(f);
+        const double h = static_cast<double>(pl.offset) -
+                         (static_cast<double>(pl.normal[0]) * static_cast<double>(c[0]) +
+                          static_cast<double>(pl.normal[1]) * static_cast<double>(c[1]) +
+                          static_cast<double>(pl.normal[2]) * static_cast<double>(c[2]));
+        r = h < r ? h : r;
+      }
+      inner_radius_ = poly_.is_flat() || !(r > 0) ? 0.0 : r;
+    }
+  }
+
   ConvexPolyhedron<T> poly_;
   GaussMapWalk walk_;
+  std::vector<T> face_lanes_;
+  int face_stride_ = 0;
+  double inner_radius_ = 0;
   std::uint64_t serial_ = 0;
 };
 

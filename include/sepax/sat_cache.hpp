@@ -33,12 +33,16 @@
 //     separates, the SAT runs with early_out and its result is returned
 //     unchanged (so for overlapping shapes the result is exactly the fresh
 //     one, feature and separation included).
+//   * The posed queries (posed_queries.hpp) run the early-out check on a
+//     partial image of B' and, after a miss, a margin pre-check whose
+//     answer the cache then keeps (remember), before the SAT.
 //   * The cache's content never changes a verdict: a stale, foreign or
 //     out-of-range feature only costs one re-evaluation (out-of-range indices
 //     are ignored).
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 #include <utility>
 
@@ -55,6 +59,12 @@ struct SatCache {
   std::int64_t misses = 0;  // queries that ran the SAT
 
   void reset() { *this = SatCache{}; }
+  /// Keep an answer's feature and separation (the next query re-checks it).
+  void remember(const Feature& f, const Separation<T>& s) {
+    valid = true;
+    feature = f;
+    separation = s;
+  }
 };
 
 namespace sat {
@@ -95,46 +105,71 @@ std::optional<std::pair<Feature, Separation<typename K::FT>>> reevaluate(K& k, c
   return std::nullopt;
 }
 
-/// Cached query with a kernel built for (A, B).  run(k, opt) runs the SAT,
-/// e.g. [](auto& k, const SatOptions& o) { return sat::gauss_map_with(k, o); }.
-/// When run also takes a seed, run(k, opt, const Feature* seed), the SAT is
-/// warm-started: the cached feature is passed as its first candidate (see the
-/// header comment).
-template <SatKernel K, class Run>
-SatResult<typename K::FT> cached_with(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt, Run&& run) {
+/// The result of a query that stops at one feature f, evaluated by k with
+/// separation s proven beyond the margin (stops_early): separated, early_out,
+/// axis k.axis(f), stats counting f and k's exact fallbacks.
+template <SatKernel K>
+SatResult<typename K::FT> early_out_result(const K& k, const Feature& f, const Separation<typename K::FT>& s) {
+  SatResult<typename K::FT> r;
+  r.overlap = false;
+  r.feature = f;
+  r.separation = s;
+  r.axis = k.axis(f);
+  r.early_out = true;
+  const FeatureType ty = f.type;
+  r.stats.face_axes = ty == FeatureType::FaceA || ty == FeatureType::FaceB ? 1 : 0;
+  r.stats.edge_pairs = ty == FeatureType::EdgePair ? 1 : 0;
+  r.stats.side_axes = ty == FeatureType::SideA || ty == FeatureType::SideB ? 1 : 0;
+  r.stats.minkowski_faces = r.stats.edge_pairs;
+  r.stats.exact_fallbacks = k.exact_fallbacks();
+  return r;
+}
+
+/// The early-out half of a cached query (see the header comment): with
+/// opt.early_out and a valid cache, the cached feature re-evaluated with k; if
+/// it separates beyond the margin, the hit's result (and the cache updated,
+/// hits counted), else nullopt (the cache untouched).  The kernel need only
+/// answer for that feature: the posed queries build it on a partial image
+/// of B (posing.hpp, "Staged posing").
+template <SatKernel K>
+std::optional<SatResult<typename K::FT>> cache_hit(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt) {
   using T = typename K::FT;
-  if (opt.early_out && cache.valid) {
-    if (const auto ev = reevaluate(k, cache.feature); ev && stops_early(k, ev->second, ev->first, opt)) {
-      SatResult<T> r;
-      r.overlap = false;
-      r.feature = ev->first;
-      r.separation = ev->second;
-      r.axis = k.axis(ev->first);
-      r.early_out = true;
-      const FeatureType ty = ev->first.type;
-      r.stats.face_axes = ty == FeatureType::FaceA || ty == FeatureType::FaceB ? 1 : 0;
-      r.stats.edge_pairs = ty == FeatureType::EdgePair ? 1 : 0;
-      r.stats.side_axes = ty == FeatureType::SideA || ty == FeatureType::SideB ? 1 : 0;
-      r.stats.minkowski_faces = r.stats.edge_pairs;
-      r.stats.exact_fallbacks = k.exact_fallbacks();
-      cache.feature = r.feature;
-      cache.separation = r.separation;
-      ++cache.hits;
-      return r;
-    }
-  }
-  SatResult<T> r;
+  if (!opt.early_out || !cache.valid) return std::nullopt;
+  const auto ev = reevaluate(k, cache.feature);
+  if (!ev || !stops_early(k, ev->second, ev->first, opt)) return std::nullopt;
+  SatResult<T> r = early_out_result(k, ev->first, ev->second);
+  cache.remember(r.feature, r.separation);
+  ++cache.hits;
+  return r;
+}
+
+/// The SAT half of a cached query: run (warm-started with the cached feature
+/// when run takes a seed, see cached_with), the cache set to its result,
+/// misses counted.
+template <SatKernel K, class Run>
+SatResult<typename K::FT> cached_run(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt, Run&& run) {
+  SatResult<typename K::FT> r;
   if constexpr (std::is_invocable_v<Run&, K&, const SatOptions&, const Feature*>) {
     // warm start: the cached feature is the SAT's first candidate
     r = run(k, opt, cache.valid ? &cache.feature : nullptr);
   } else {
     r = run(k, opt);
   }
-  cache.valid = true;
-  cache.feature = r.feature;
-  cache.separation = r.separation;
+  cache.remember(r.feature, r.separation);
   ++cache.misses;
   return r;
+}
+
+/// Cached query with a kernel built for (A, B): cache_hit, else cached_run.
+/// run(k, opt) runs the SAT, e.g.
+/// [](auto& k, const SatOptions& o) { return sat::gauss_map_with(k, o); }.
+/// When run also takes a seed, run(k, opt, const Feature* seed), the SAT is
+/// warm-started: the cached feature is passed as its first candidate (see the
+/// header comment).
+template <SatKernel K, class Run>
+SatResult<typename K::FT> cached_with(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt, Run&& run) {
+  if (auto hit = cache_hit(k, cache, opt)) return *hit;
+  return cached_run(k, cache, opt, std::forward<Run>(run));
 }
 
 /// Cached query of A and B under a policy; run as for cached_with.

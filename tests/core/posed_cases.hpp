@@ -5,12 +5,17 @@
 #pragma once
 
 #include <cmath>
+#include <cstring>
+#include <optional>
+#include <span>
+#include <type_traits>
 #include <random>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
 #include <sepax/prepared_shape.hpp>
+#include <sepax/sat.hpp>
 #include <sepax/shapes.hpp>
 
 #include "traversal_shapes.hpp"
@@ -77,8 +82,26 @@ void require_same_result(const SatResult<T>& posed, const SatResult<T>& ref, con
   REQUIRE(posed.stats.exact_fallbacks == ref.stats.exact_fallbacks);
 }
 
+/// The margin pre-check of a posed query with early_out (posed_queries.hpp,
+/// float/double) on the pre-posed pair (A, bp): what the posed query answers
+/// before running a SAT; nullopt when it does not answer (or no early_out,
+/// or exact T).
+template <class Policy, Number T>
+std::optional<SatResult<T>> precheck_reference(const PreparedShape<T>& a, const PreparedShape<T>& b,
+                                               const RigidTransform<T>& x, const ConvexPolyhedron<T>& bp,
+                                               const SatOptions& opt) {
+  if constexpr (std::is_floating_point_v<T>) {
+    if (opt.early_out) {
+      return sat::detail::margin_precheck_with<Policy>(
+          a, b, x, opt, [&](std::span<const int>) -> const ConvexPolyhedron<T>& { return bp; });
+    }
+  }
+  return std::nullopt;
+}
+
 /// Every posed SAT against its pre-posed reference at `poses` random pose
-/// pairs per pair of shapes, with and without early_out/margin.
+/// pairs per pair of shapes, with and without early_out/margin (the
+/// reference of an early-out query: precheck_reference, else the SAT).
 template <class Policy, Number T, class PoseGen>
 int check_posed_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes, std::mt19937_64& rng, int poses,
                                   PoseGen&& pose) {
@@ -89,13 +112,16 @@ int check_posed_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes
     for (std::size_t j = 0; j < shapes.size(); ++j) {
       for (int p = 0; p < poses; ++p) {
         const RigidTransform<T> pa = pose(rng), pb = pose(rng);
-        const ConvexPolyhedron<T> bp = posed(shapes[j], relative_pose(pa, pb));
+        const RigidTransform<T> x = relative_pose(pa, pb);
+        const ConvexPolyhedron<T> bp = posed(shapes[j], x);
         for (const SatOptions opt : {SatOptions{}, SatOptions{true, 0.0}, SatOptions{true, 0.25}}) {
           for (SatAlgorithm alg : kSatAlgorithms) {
             INFO("shapes " << i << ", " << j << " pose " << p << " " << to_string(alg) << " early_out "
                            << opt.early_out << " margin " << opt.margin);
             const SatResult<T> r = sat::run<Policy>(alg, prepared[i], pa, prepared[j], pb, opt);
-            const SatResult<T> ref = sat::run<Policy>(alg, shapes[i], bp, opt);
+            // with early_out: the margin pre-check on the pre-posed pair, else the SAT
+            const auto pre = precheck_reference<Policy>(prepared[i], prepared[j], x, bp, opt);
+            const SatResult<T> ref = pre ? *pre : sat::run<Policy>(alg, shapes[i], bp, opt);
             require_same_result(r, ref, pa);
             ++checked;
           }
@@ -104,6 +130,169 @@ int check_posed_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes
     }
   }
   return checked;
+}
+
+/// Every derived array of p bit for bit q's (vertices, planes, per-edge
+/// arrays, lanes and their padding, bounds, normal_conditioning()).
+template <class T>
+void require_same_derived(const ConvexPolyhedron<T>& p, const ConvexPolyhedron<T>& q) {
+  auto same = [](const auto& x, const auto& y) {
+    if constexpr (number_traits<T>::is_exact) return x == y;
+    else return std::memcmp(&x, &y, sizeof(x)) == 0;  // bits (signed zeros, NaN payloads)
+  };
+  REQUIRE(p.vertex_count() == q.vertex_count());
+  REQUIRE(p.face_count() == q.face_count());
+  REQUIRE(p.edge_count() == q.edge_count());
+  for (int v = 0; v < p.vertex_count(); ++v) REQUIRE(same(p.vertex(v), q.vertex(v)));
+  for (int f = 0; f < p.face_count(); ++f) {
+    REQUIRE(same(p.plane(f).normal, q.plane(f).normal));
+    REQUIRE(same(p.plane(f).offset, q.plane(f).offset));
+  }
+  for (int e = 0; e < p.edge_count(); ++e) {
+    REQUIRE(same(p.edge_dir(e), q.edge_dir(e)));
+    REQUIRE(same(p.edge_normal(e, 0), q.edge_normal(e, 0)));
+    REQUIRE(same(p.edge_normal(e, 1), q.edge_normal(e, 1)));
+  }
+  REQUIRE(p.lanes_bounded() == q.lanes_bounded());
+  REQUIRE(p.lane_edge_stride() == q.lane_edge_stride());
+  REQUIRE(p.lane_vertex_stride() == q.lane_vertex_stride());
+  for (int k = 0; k < 9; ++k) {
+    REQUIRE(std::memcmp(p.lane_edge(k), q.lane_edge(k), sizeof(T) * std::size_t(p.lane_edge_stride())) == 0);
+  }
+  for (int c = 0; c < 3; ++c) {
+    REQUIRE(std::memcmp(p.lane_vertex(c), q.lane_vertex(c), sizeof(T) * std::size_t(p.lane_vertex_stride())) == 0);
+  }
+  REQUIRE(same(p.centroid(), q.centroid()));
+  REQUIRE(same(p.bounds_min(), q.bounds_min()));
+  REQUIRE(same(p.bounds_max(), q.bounds_max()));
+  REQUIRE(p.extent() == q.extent());
+  REQUIRE(p.max_abs_coordinate() == q.max_abs_coordinate());
+  REQUIRE(p.normal_conditioning() == q.normal_conditioning());
+}
+
+/// The reference of a cached posed query on the full pre-posed pair (A, bp),
+/// bp = posed(B, x), x = relative_pose(pose_a, pose_b): sat::cache_hit, else
+/// the margin pre-check (precheck_reference, unless the cache's last answer
+/// was not beyond the margin; the cache takes its feature), else
+/// sat::cached_run warm-started like the posed SATs.
+template <class Policy, Number T>
+SatResult<T> cached_reference(SatAlgorithm alg, const PreparedShape<T>& a, const PreparedShape<T>& b,
+                              const RigidTransform<T>& x, const ConvexPolyhedron<T>& bp, const SatOptions& opt,
+                              SatCache<T>& cache) {
+  kernel_t<Policy, T> k(a.polyhedron(), bp);
+  if (auto hit = sat::cache_hit(k, cache, opt)) return *hit;
+  if (sat::detail::cache_says_near(&cache, opt)) {
+    // no pre-check: the SAT runs
+  } else if (auto pre = precheck_reference<Policy>(a, b, x, bp, opt)) {
+    cache.remember(pre->feature, pre->separation);
+    return *pre;
+  }
+  switch (alg) {
+    case SatAlgorithm::brute_force:
+      return sat::cached_run(k, cache, opt,
+                              [](auto& kk, const SatOptions& o, const Feature* s) { return sat::brute_force_with(kk, o, s); });
+    case SatAlgorithm::traversal:
+      return sat::cached_run(k, cache, opt, [&](auto& kk, const SatOptions& o, const Feature* s) {
+        return sat::traversal_with(kk, a.walk(), b.walk(), o, nullptr, s);
+      });
+    case SatAlgorithm::gauss_map: break;
+  }
+  return sat::cached_run(k, cache, opt,
+                          [](auto& kk, const SatOptions& o, const Feature* s) { return sat::gauss_map_with(kk, o, s); });
+}
+
+/// What check_warm_against_reference saw: cache hits per feature type
+/// (FeatureType order), misses with early_out, queries compared.
+struct WarmCounts {
+  int hits[5] = {0, 0, 0, 0, 0};
+  int prechecked = 0;    // early-out answers of the margin pre-check (no cache hit)
+  int early_misses = 0;  // early_out queries that ran to the full result
+  int compared = 0;
+};
+
+/// The warm early-out path (a cache hit decided on a partial image of B',
+/// posing.hpp "Staged posing") against the cached query on the full B'
+/// (cached_reference): for every pair of shapes and `poses` random pose
+/// pairs, a cache from the query at a nearby earlier pose and a random
+/// (often non-separating, sometimes out-of-range) feature, with and
+/// without early_out at several margins.  Hit or miss, cache content,
+/// overlap, early_out, feature, separation and axis are bit for bit the
+/// reference's (exact_fallbacks: at most the reference's, which also counts
+/// the re-evaluation the query no longer repeats); after an early-out
+/// answer (a hit or the margin pre-check, both on a partial image),
+/// finishing the posing in the scratch gives the full B' bit for bit.
+/// on_early(i, j, bp, opt, result) lets the caller check every early-out
+/// answer further.
+template <class Policy, Number T, class OnEarly>
+WarmCounts check_warm_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes, std::mt19937_64& rng,
+                                        int poses, OnEarly&& on_early) {
+  std::vector<PreparedShape<T>> prepared;
+  for (const auto& s : shapes) prepared.emplace_back(s);
+  WarmCounts n;
+  std::normal_distribution<double> g;
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    for (std::size_t j = 0; j < shapes.size(); ++j) {
+      for (int p = 0; p < poses; ++p) {
+        const RigidTransform<T> pa = random_pose<T>(rng, 1.0), pb = random_pose<T>(rng, 3.5);
+        // the earlier pose: pb moved a little (a coherent step)
+        const RigidTransform<T> step = RigidTransform<T>::from_quaternion(
+            1.0, 0.01 * g(rng), 0.01 * g(rng), 0.01 * g(rng),
+            Vec3<T>(from_double<T>(0.02 * g(rng)), from_double<T>(0.02 * g(rng)), from_double<T>(0.02 * g(rng))));
+        const RigidTransform<T> pb0 = pb * step;
+        const RigidTransform<T> x = relative_pose(pa, pb);
+        const ConvexPolyhedron<T> bp = posed(shapes[j], x);
+        for (SatAlgorithm alg : kSatAlgorithms) {
+          for (const SatOptions opt : {SatOptions{}, SatOptions{true, 0.0}, SatOptions{true, 0.02}, SatOptions{true, 0.3}}) {
+            for (int source = 0; source < 2; ++source) {
+              SatCache<T> cache;
+              if (source == 0) {
+                (void)sat::run<Policy>(alg, prepared[i], pa, prepared[j], pb0, SatOptions{}, &cache);
+              } else {
+                cache.valid = true;
+                const int fa = shapes[i].face_count(), fb = shapes[j].face_count();
+                const int ea = shapes[i].edge_count(), eb = shapes[j].edge_count();
+                switch (rng() % 3) {
+                  case 0: cache.feature = Feature::face_a(static_cast<int>(rng() % (fa + 1)), 0); break;
+                  case 1: cache.feature = Feature::face_b(0, static_cast<int>(rng() % (fb + 1))); break;
+                  default:
+                    cache.feature = Feature::edges(static_cast<int>(rng() % (ea + 1)), static_cast<int>(rng() % (eb + 1)));
+                }
+              }
+              SatCache<T> ref_cache = cache;
+              INFO("shapes " << i << ", " << j << " pose " << p << " " << to_string(alg) << " early_out "
+                             << opt.early_out << " margin " << opt.margin << " cached " << to_string(cache.feature));
+              const SatResult<T> ref = cached_reference<Policy>(alg, prepared[i], prepared[j], x, bp, opt, ref_cache);
+              const SatResult<T> r = sat::run<Policy>(alg, prepared[i], pa, prepared[j], pb, opt, &cache);
+              REQUIRE(cache.hits == ref_cache.hits);
+              REQUIRE(cache.misses == ref_cache.misses);
+              REQUIRE(cache.feature == ref_cache.feature);
+              require_same_separation(cache.separation, ref_cache.separation);
+              REQUIRE(r.overlap == ref.overlap);
+              REQUIRE(r.early_out == ref.early_out);
+              REQUIRE(r.feature == ref.feature);
+              require_same_separation(r.separation, ref.separation);
+              const Vec3<T> axis = pa.rotate(ref.axis);
+              for (int c = 0; c < 3; ++c) REQUIRE(r.axis[c] == axis[c]);
+              REQUIRE(r.stats.face_axes == ref.stats.face_axes);
+              REQUIRE(r.stats.edge_pairs == ref.stats.edge_pairs);
+              REQUIRE(r.stats.exact_fallbacks <= ref.stats.exact_fallbacks);
+              if (r.early_out) on_early(i, j, bp, opt, r);
+              if (cache.hits > 0) {
+                ++n.hits[static_cast<int>(r.feature.type)];
+              } else if (r.early_out) {
+                ++n.prechecked;
+              } else if (opt.early_out) {
+                ++n.early_misses;
+              }
+              if (r.early_out) require_same_derived(prepared[j].posed_scratch(x), bp);
+              ++n.compared;
+            }
+          }
+        }
+      }
+    }
+  }
+  return n;
 }
 
 /// A coherent pose sequence of B relative to a fixed A (identity): kind 0

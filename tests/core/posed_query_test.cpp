@@ -57,40 +57,8 @@ TEST_CASE("a posed result is in world coordinates", "[posed]") {
 // and computes normal_conditioning() with the planes; every derived array must
 // still be bit for bit what with_vertices computes from the same vertices
 // (transformed(B, X)), lane padding and the lazily computed conditioning
-// included, also when the per-thread scratch last held another shape.
-template <class T>
-void require_same_derived(const ConvexPolyhedron<T>& p, const ConvexPolyhedron<T>& q) {
-  auto same = [](const auto& x, const auto& y) { return std::memcmp(&x, &y, sizeof(x)) == 0; };
-  REQUIRE(p.vertex_count() == q.vertex_count());
-  REQUIRE(p.face_count() == q.face_count());
-  REQUIRE(p.edge_count() == q.edge_count());
-  for (int v = 0; v < p.vertex_count(); ++v) REQUIRE(same(p.vertex(v), q.vertex(v)));
-  for (int f = 0; f < p.face_count(); ++f) {
-    REQUIRE(same(p.plane(f).normal, q.plane(f).normal));
-    REQUIRE(same(p.plane(f).offset, q.plane(f).offset));
-  }
-  for (int e = 0; e < p.edge_count(); ++e) {
-    REQUIRE(same(p.edge_dir(e), q.edge_dir(e)));
-    REQUIRE(same(p.edge_normal(e, 0), q.edge_normal(e, 0)));
-    REQUIRE(same(p.edge_normal(e, 1), q.edge_normal(e, 1)));
-  }
-  REQUIRE(p.lanes_bounded() == q.lanes_bounded());
-  REQUIRE(p.lane_edge_stride() == q.lane_edge_stride());
-  REQUIRE(p.lane_vertex_stride() == q.lane_vertex_stride());
-  for (int k = 0; k < 9; ++k) {
-    REQUIRE(std::memcmp(p.lane_edge(k), q.lane_edge(k), sizeof(T) * std::size_t(p.lane_edge_stride())) == 0);
-  }
-  for (int c = 0; c < 3; ++c) {
-    REQUIRE(std::memcmp(p.lane_vertex(c), q.lane_vertex(c), sizeof(T) * std::size_t(p.lane_vertex_stride())) == 0);
-  }
-  REQUIRE(same(p.centroid(), q.centroid()));
-  REQUIRE(same(p.bounds_min(), q.bounds_min()));
-  REQUIRE(same(p.bounds_max(), q.bounds_max()));
-  REQUIRE(p.extent() == q.extent());
-  REQUIRE(p.max_abs_coordinate() == q.max_abs_coordinate());
-  REQUIRE(p.normal_conditioning() == q.normal_conditioning());
-}
-
+// included, also when the per-thread scratch last held another shape
+// (require_same_derived, posed_cases.hpp).
 TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[posed]", float, double) {
   using T = TestType;
   std::mt19937_64 rng(1802);

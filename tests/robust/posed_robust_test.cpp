@@ -229,3 +229,159 @@ TEMPLATE_TEST_CASE("warm exact posed queries equal fresh ones along coherent seq
                                           shapes::regular_polygon<T>(5, 0.7)};
   CHECK(check_warm_sequences<policy::Plain>(shapes, 10) == 4 * 4 * 3 * 3 * 10);
 }
+
+TEMPLATE_TEST_CASE("warm robust early-out answers decided on a partial posed B equal those on the full B, and "
+                   "separate exactly beyond the margin",
+                   "[posed][cache][robust]", float, double) {
+  using T = TestType;
+  std::mt19937_64 rng(1826);
+  const auto shapes = local_shapes<T>(rng);
+  int exact_checked = 0;
+  const WarmCounts n = check_warm_against_reference<policy::Robust>(
+      shapes, rng, 3,
+      [&](std::size_t i, std::size_t, const ConvexPolyhedron<T>& bp, const SatOptions& opt, const SatResult<T>& r) {
+        // the early-out answer's feature (a cache hit or the margin
+        // pre-check), re-evaluated by the mpq kernel on the exact images of
+        // (A, B'), separates by more than the margin
+        const auto ea = ConvexPolyhedron<mpq_class>::convert_from(shapes[i]);
+        const auto eb = ConvexPolyhedron<mpq_class>::convert_from(bp);
+        PlainKernel<mpq_class> k(ea, eb);
+        const auto ev = sat::reevaluate(k, r.feature);
+        REQUIRE(ev.has_value());
+        REQUIRE(ev->first == r.feature);
+        REQUIRE(compare(ev->second, Separation<mpq_class>{mpq_class(opt.margin), mpq_class(1)}) > 0);
+        ++exact_checked;
+      });
+  CHECK(n.compared == 7 * 7 * 3 * 3 * 4 * 2);
+  CHECK(n.hits[0] > 20);
+  CHECK(n.hits[1] > 20);
+  CHECK(n.hits[2] > 5);
+  CHECK(n.prechecked > 20);
+  CHECK(n.early_misses > 100);
+  CHECK(exact_checked == n.hits[0] + n.hits[1] + n.hits[2] + n.hits[3] + n.hits[4] + n.prechecked);
+}
+
+TEMPLATE_TEST_CASE("warm exact early-out hits on a partial posed B equal the hits on the full B",
+                   "[posed][cache][exact]", mpq_class, CGAL::Epeck::FT) {
+  using T = TestType;
+  std::mt19937_64 rng(1827);
+  std::vector<ConvexPolyhedron<T>> shapes{ConvexPolyhedron<T>::convert_from(large_sphere_hull(rng, 8)),
+                                          shapes::box<T>(0.5, 0.25, 1.0), shapes::prism<T>(6, 0.8, 0.5),
+                                          shapes::regular_polygon<T>(5, 0.7)};
+  const WarmCounts n = check_warm_against_reference<policy::Plain>(shapes, rng, 2, [](auto&&...) {});
+  CHECK(n.compared == 4 * 4 * 2 * 3 * 4 * 2);
+  CHECK(n.hits[0] + n.hits[1] + n.hits[2] > 10);
+}
+
+namespace {
+
+/// Warm early-out checks at exact ties: box B above box A's top face at
+/// exact gap g (B turned about z by a rational rotation, A translated), the
+/// cache holding A's top face or B's bottom face.  A margin at or above g is
+/// no hit (the SAT runs: the full result, the miss counted); below g the
+/// cached face answers with separation exactly g.  At gap 0 (touching)
+/// margin 0 is no hit; and a cache from the separated pose is no hit once B
+/// has moved into A (a stale feature: the SAT's own result).
+template <class Policy, Number T>
+void check_warm_margin_ties() {
+  const auto box = shapes::box<T>(0.5, 0.5, 0.5);
+  const PreparedShape<T> a(box), b(box);
+  const double g = 0.125;
+  const double tiny = 0x1p-20;
+  // A's top face (+z) and B's bottom face (-z; B turns about z only)
+  int top = -1, bottom = -1;
+  for (int f = 0; f < box.face_count(); ++f) {
+    if (box.plane(f).normal[2] > T(0) && box.plane(f).normal[0] == T(0) && box.plane(f).normal[1] == T(0)) top = f;
+    if (box.plane(f).normal[2] < T(0) && box.plane(f).normal[0] == T(0) && box.plane(f).normal[1] == T(0)) bottom = f;
+  }
+  REQUIRE(top >= 0);
+  REQUIRE(bottom >= 0);
+  const auto pa = RigidTransform<T>::translation_by(Vec3<T>(T(64), T(-32), T(16)));
+  for (long z : {0L, 1L, 2L}) {
+    auto pose_b = [&](double gap) {
+      return from_integer_quaternion<T>(2, 0, 0, z, Vec3<T>(T(64), T(-32), from_double<T>(17 + gap)));
+    };
+    for (const Feature cached : {Feature::face_a(top, 0), Feature::face_b(0, bottom)}) {
+      for (SatAlgorithm alg : kSatAlgorithms) {
+        INFO(to_string(alg) << " z " << z << " cached " << to_string(cached));
+        const auto pb = pose_b(g);
+        const auto full = sat::run<Policy>(alg, a, pa, b, pb);
+        REQUIRE_FALSE(full.overlap);
+        SatOptions opt;
+        opt.early_out = true;
+        for (double m : {g, g + tiny, 2 * g}) {  // not above the margin: no hit, the full result
+          INFO("margin " << m);
+          opt.margin = m;
+          SatCache<T> cache;
+          cache.valid = true;
+          cache.feature = cached;
+          const auto r = sat::run<Policy>(alg, a, pa, b, pb, opt, &cache);
+          REQUIRE(cache.hits == 0);
+          REQUIRE(cache.misses == 1);
+          REQUIRE_FALSE(r.early_out);
+          REQUIRE(r.feature == full.feature);
+          REQUIRE(compare(r.separation, full.separation) == 0);
+        }
+        for (double m : {0.0, g - tiny, g / 2}) {  // above the margin: the cached face answers
+          INFO("margin " << m);
+          opt.margin = m;
+          SatCache<T> cache;
+          cache.valid = true;
+          cache.feature = cached;
+          const auto r = sat::run<Policy>(alg, a, pa, b, pb, opt, &cache);
+          REQUIRE(cache.hits == 1);
+          REQUIRE(cache.misses == 0);
+          REQUIRE(r.early_out);
+          REQUIRE_FALSE(r.overlap);
+          REQUIRE(r.feature.type == cached.type);
+          REQUIRE((cached.type == FeatureType::FaceA ? r.feature.a == top : r.feature.b == bottom));
+          REQUIRE(compare(r.separation, Separation<T>{from_double<T>(g), T(1)}) == 0);
+        }
+        // touching: separation exactly 0 is not beyond margin 0
+        {
+          const auto pt = pose_b(0.0);
+          opt.margin = 0.0;
+          const auto fresh = sat::run<Policy>(alg, a, pa, b, pt, opt);
+          SatCache<T> cache;
+          cache.valid = true;
+          cache.feature = cached;
+          const auto r = sat::run<Policy>(alg, a, pa, b, pt, opt, &cache);
+          REQUIRE(cache.hits == 0);
+          REQUIRE_FALSE(r.early_out);
+          REQUIRE(r.overlap == fresh.overlap);
+          REQUIRE(r.feature == fresh.feature);
+          REQUIRE(compare(r.separation, fresh.separation) == 0);
+        }
+        // stale: the cache of the separated pose, B then sunk g into A
+        {
+          opt.margin = 0.02;
+          SatCache<T> cache;
+          (void)sat::run<Policy>(alg, a, pa, b, pb, opt, &cache);
+          REQUIRE(cache.valid);
+          const auto ps = pose_b(-g);
+          const auto fresh = sat::run<Policy>(alg, a, pa, b, ps, opt);
+          const std::int64_t hits = cache.hits;
+          const auto r = sat::run<Policy>(alg, a, pa, b, ps, opt, &cache);
+          REQUIRE(cache.hits == hits);
+          REQUIRE(r.overlap);
+          REQUIRE(r.overlap == fresh.overlap);
+          REQUIRE(r.feature == fresh.feature);
+          REQUIRE(compare(r.separation, fresh.separation) == 0);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("warm early-out checks at exact margin ties, touching and stale (robust, plain float)",
+                   "[posed][cache][margin]", float, double) {
+  check_warm_margin_ties<policy::Robust, TestType>();
+  check_warm_margin_ties<policy::Plain, TestType>();
+}
+
+TEMPLATE_TEST_CASE("warm early-out checks at exact margin ties, touching and stale (exact types)",
+                   "[posed][cache][margin][exact]", mpq_class, CGAL::Epeck::FT) {
+  check_warm_margin_ties<policy::Plain, TestType>();
+}
