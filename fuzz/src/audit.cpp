@@ -408,7 +408,9 @@ int run_audit(const FuzzCase& c, const AuditOptions& opt, std::ostream& out) {
   Json j;
   if (opt.use_double) audit_as<double>(c, text, j);
   else audit_as<float>(c, text, j);
-  const CaseReport r = check_case_guarded(c);
+  CheckOptions check;
+  check.inject_fault = opt.inject_fault;
+  const CaseReport r = check_case_guarded(c, check);
   Json findings = Json::array();
   for (const auto& f : r.unexplained)
     findings.push_back(Json{{"comparison", f.comparison}, {"config", f.config}, {"sat", f.sat}, {"detail", f.detail}});

@@ -260,7 +260,9 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
         status = 3;
         continue;
       }
-      const CaseReport r = check_case_guarded(c);
+      CheckOptions check;
+      check.inject_fault = opt.inject_fault;
+      const CaseReport r = check_case_guarded(c, check);
       rep.add(c.family, r);
       if (!quiet) {
         std::cerr << p << ": " << (r.valid ? (r.unexplained_count ? "UNEXPLAINED" : "ok") : "rejected: " + r.reject_reason)

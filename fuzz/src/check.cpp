@@ -750,7 +750,9 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     const Separation<Q>& se = R.separation;
     const bool crosses = E.cross_sat(sat);
     auto cls = [crosses](Klass k) { return (crosses && k == Klass::unexplained) ? Klass::nonconvex : k; };
-    const SatResult<F> r = run_sat<Policy>(sat, A, B);
+    SatResult<F> r = run_sat<Policy>(sat, A, B);
+    if (opt.inject_fault && exact_decisions && sat == Sat::gauss_map && std::is_same_v<F, float>)
+      r.overlap = !r.overlap;  // CheckOptions::inject_fault
     if (sat == Sat::gauss_map) gauss_out = r;
     rec.rep.configs_run.push_back(cfg + "/" + sat_name(sat));
     const Feature& ff = r.feature;

@@ -108,6 +108,10 @@ int run_audit(const std::vector<std::string>& args, std::istream& in, std::ostre
   cl.add_pose("move B: rotate by the quaternion (normalised; default identity), then translate");
   app.add_flag("--hull", hull, "use the convex hull of every shape's vertices");
   app.add_flag("--json", json, "print the audit as one JSON object");
+  bool inject_fault = false;
+  app.add_flag("--inject-fault", inject_fault,
+               "check the checker: float_robust's Gauss map reports the opposite overlap verdict, which the "
+               "differential check must report as unexplained (exit status 1)");
   if (const auto status = cl.parse(args, out, err)) return *status;
   try {
     const std::optional<Pose> pose = cl.pose();
@@ -118,6 +122,7 @@ int run_audit(const std::vector<std::string>& args, std::istream& in, std::ostre
       fuzz::AuditOptions opt;
       opt.use_double = cfg.number == NumberKind::Double;
       opt.json = json;
+      opt.inject_fault = inject_fault;
       return fuzz::run_audit(audit_case(p, pose ? &*pose : nullptr, err), opt, out);
     } catch (const InvalidInput& e) {
       return input_error(out, err, json, "audit", e.what());

@@ -62,13 +62,17 @@ int run_fuzz(const std::vector<std::string>& args, std::ostream& out, std::ostre
   app.add_flag("--bytes", o.bytes, "with --replay: the files are libFuzzer inputs (with --out DIR each is also "
                                    "written there as a readable DIR/NAME.case)");
   app.add_flag("--shrink", o.shrink_replays, "with --replay: shrink unexplained cases too");
+  app.add_flag("--inject-fault", o.inject_fault,
+               "with --replay: check the checker: float_robust's Gauss map reports the opposite overlap "
+               "verdict, which every valid case must report as unexplained (exit status 1)")
+      ->excludes("--shrink");
   if (const auto status = cl.parse(args, out, err)) return *status;
   o.replay = !o.replay_files.empty();
   o.out_given = app.count("--out") > 0;
   o.shrink.max_steps = shrink_steps;
   o.shrink.max_seconds = shrink_seconds;
   if (!o.replay) {
-    for (const char* only : {"--bytes", "--shrink"})
+    for (const char* only : {"--bytes", "--shrink", "--inject-fault"})
       if (app.count(only)) return cl.usage_error(err, std::string(only) + " applies to --replay only");
   } else {
     for (const char* no : {"--seconds", "--cases", "--seed", "--families"})

@@ -87,12 +87,17 @@ TEST_CASE("exit status: render gives 0, 2 and 3", "[exit]") {
 }
 
 #ifdef SEPAX_HAVE_FUZZ
-TEST_CASE("exit status: fuzz gives 0, 2 and 3", "[exit][fuzz]") {
+TEST_CASE("exit status: fuzz gives 0, 1, 2 and 3", "[exit][fuzz]") {
   const std::string out_dir = (test::temp_dir().path / "reproducers").string();
   for (const Expectation& e : std::vector<Expectation>{
            {{"fuzz", "--cases", "2", "--quiet", "--out", out_dir}, 0, "unexplained disagreements: 0", ""},
            {{"fuzz", "--quiet", "--replay", std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/00-triangle-on-box-face.case"},
             0, "unexplained disagreements: 0", ""},
+           // the checker catches a wrong verdict: exit 1, the finding named
+           {{"fuzz", "--replay", std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/00-triangle-on-box-face.case",
+             "--inject-fault"},
+            1, "", "[overlap float_robust gauss_map]"},
+           {{"fuzz", "--cases", "2", "--inject-fault"}, 2, "", "--inject-fault applies to --replay only"},
            {{"fuzz", "--seed", "1.5"}, 2, "", "sepax fuzz: --seed: '1.5' is not a non-negative integer"},
            {{"fuzz", "--frobnicate"}, 2, "", "unknown option '--frobnicate'"},
            {{"fuzz", "--replay", "/nonexistent/x.case", "--quiet"}, 3, "", "/nonexistent/x.case"},
@@ -100,9 +105,11 @@ TEST_CASE("exit status: fuzz gives 0, 2 and 3", "[exit][fuzz]") {
     check_program(e);
 }
 
-TEST_CASE("exit status: audit gives 0, 2 and 3", "[exit][audit]") {
+TEST_CASE("exit status: audit gives 0, 1, 2 and 3", "[exit][audit]") {
   for (const Expectation& e : std::vector<Expectation>{
            {{"audit", "cube", "triangle", "--pose", "0", "0", "1"}, 0, "no unexplained disagreement", ""},
+           {{"audit", "cube", "triangle", "--pose", "0", "0", "1", "--inject-fault"}, 1, "[overlap float_robust gauss_map]",
+            ""},
            {{"audit", "cube"}, 2, "", "sepax audit: expected two shapes A and B, got 1"},
            {{"audit", "cube", "cube", "--number", "exact"}, 2, "", "the audit compares float or double against exact"},
            {{"audit", "cube", "/nonexistent/shape.obj"}, 3, "", "sepax audit: error: /nonexistent/shape.obj: cannot open"},

@@ -32,6 +32,28 @@ TEST_CASE("seed corpus replays without unexplained disagreements", "[fuzz][corpu
   }
 }
 
+// The checker is not vacuous: with CheckOptions::inject_fault (float_robust's
+// Gauss map reports the opposite overlap verdict) every valid corpus case
+// shows that fault as unexplained.
+TEST_CASE("seed corpus: an injected wrong verdict is unexplained in every case", "[fuzz][corpus][inject]") {
+  const std::filesystem::path dir = std::filesystem::path(SEPAX_SOURCE_DIR) / "fuzz" / "corpus";
+  CheckOptions faulty;
+  faulty.inject_fault = true;
+  int checked = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    if (e.path().extension() != ".case" || e.path().filename().string().rfind("invalid-", 0) == 0) continue;
+    INFO(e.path().string());
+    const CaseReport r = check_case_guarded(read_case_file(e.path().string()), faulty);
+    REQUIRE(r.valid);
+    const bool caught = std::any_of(r.unexplained.begin(), r.unexplained.end(), [](const Finding& f) {
+      return f.comparison == "overlap" && f.config == "float_robust" && f.sat == "gauss_map";
+    });
+    CHECK(caught);
+    ++checked;
+  }
+  CHECK(checked >= 8);
+}
+
 TEST_CASE("inputs convex only within tolerance: cross-SAT exact differences are nonconvex, same-SAT checks stay strict",
           "[fuzz][corpus][nonconvex]") {
   const std::filesystem::path dir = std::filesystem::path(SEPAX_SOURCE_DIR) / "fuzz" / "corpus";

@@ -408,6 +408,18 @@ TEMPLATE_TEST_CASE("robust batched arc test = exact arc test, pair by pair", "[r
 // robust::parallel; either way it must be the exact parallelism, whatever the
 // state of the kernel's axis cache (asked before and after edge_separation of
 // the same pair, and after other pairs).
+// Calls f(exact kernel, robust kernel, ea, eb) for every edge pair of a and b
+// (the exact kernel on their exact images).
+template <class T, class F>
+void for_each_edge_pair(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, F&& f) {
+  const auto ae = ConvexPolyhedron<mpq_class>::convert_from(a);
+  const auto be = ConvexPolyhedron<mpq_class>::convert_from(b);
+  const PlainKernel<mpq_class> ke(ae, be);
+  const RobustKernel<T> k(a, b);
+  for (int ea = 0; ea < a.edge_count(); ++ea)
+    for (int eb = 0; eb < b.edge_count(); ++eb) f(ke, k, ea, eb);
+}
+
 TEMPLATE_TEST_CASE("robust edges_parallel = exact parallelism, pair by pair", "[robust][kernel][parallel]", float,
                    double) {
   using T = TestType;
@@ -457,29 +469,23 @@ TEMPLATE_TEST_CASE("robust edges_parallel = exact parallelism, pair by pair", "[
   int mismatches = 0;
   long parallel = 0, pairs = 0;
   for (const auto& [a, b] : cases) {
-    const auto ae = ConvexPolyhedron<mpq_class>::convert_from(a);
-    const auto be = ConvexPolyhedron<mpq_class>::convert_from(b);
-    const PlainKernel<mpq_class> ke(ae, be);
-    const RobustKernel<T> k(a, b);
-    for (int ea = 0; ea < a.edge_count(); ++ea) {
-      for (int eb = 0; eb < b.edge_count(); ++eb) {
-        const bool exact = ke.edges_parallel(ea, eb);
-        const bool first = k.edges_parallel(ea, eb);  // cache: the previous pair (or none)
-        const bool again = k.edges_parallel(ea, eb);  // cache: this pair
-        bool after = again;
-        if (!exact) {
-          (void)k.edge_separation(ea, eb);
-          after = k.edges_parallel(ea, eb);
-        }
-        if (first != exact || again != exact || after != exact) {
-          ++mismatches;
-          INFO("ea " << ea << " eb " << eb << " exact " << exact << " robust " << first << again << after);
-          CHECK(first == exact);
-        }
-        parallel += exact;
-        ++pairs;
+    for_each_edge_pair(a, b, [&](const PlainKernel<mpq_class>& ke, const RobustKernel<T>& k, int ea, int eb) {
+      const bool exact = ke.edges_parallel(ea, eb);
+      const bool first = k.edges_parallel(ea, eb);  // cache: the previous pair (or none)
+      const bool again = k.edges_parallel(ea, eb);  // cache: this pair
+      bool after = again;
+      if (!exact) {
+        (void)k.edge_separation(ea, eb);
+        after = k.edges_parallel(ea, eb);
       }
-    }
+      if (first != exact || again != exact || after != exact) {
+        ++mismatches;
+        INFO("ea " << ea << " eb " << eb << " exact " << exact << " robust " << first << again << after);
+        CHECK(first == exact);
+      }
+      parallel += exact;
+      ++pairs;
+    });
   }
   CHECK(mismatches == 0);
   CHECK(parallel > 100);
@@ -619,24 +625,18 @@ TEMPLATE_TEST_CASE("robust edge-pair axis: near the exact direction, exactly ori
   }
   int checked = 0;
   for (const auto& [a, b] : cases) {
-    const auto ae = ConvexPolyhedron<mpq_class>::convert_from(a);
-    const auto be = ConvexPolyhedron<mpq_class>::convert_from(b);
-    const PlainKernel<mpq_class> ke(ae, be);
-    const RobustKernel<T> k(a, b);
-    for (int ea = 0; ea < a.edge_count(); ++ea) {
-      for (int eb = 0; eb < b.edge_count(); ++eb) {
-        if (ke.edges_parallel(ea, eb)) continue;
-        const Feature f = Feature::edges(ea, eb);
-        const Vec3<mpq_class> m = ke.axis(f);  // exact, oriented, not normalised
-        const Vec3<double> md(m[0].get_d(), m[1].get_d(), m[2].get_d());
-        const Vec3<double> exact_unit = md / md.norm();  // relative error ~1e-16
-        const Vec3<T> n = k.axis(f);
-        const double err = (n.template cast<double>() - exact_unit).norm();
-        INFO("edges (" << ea << ", " << eb << "): |axis - exact| = " << err);
-        CHECK(err <= RobustKernel<T>::kReportedAxisError + 8 * std::numeric_limits<T>::epsilon());
-        ++checked;
-      }
-    }
+    for_each_edge_pair(a, b, [&](const PlainKernel<mpq_class>& ke, const RobustKernel<T>& k, int ea, int eb) {
+      if (ke.edges_parallel(ea, eb)) return;
+      const Feature f = Feature::edges(ea, eb);
+      const Vec3<mpq_class> m = ke.axis(f);  // exact, oriented, not normalised
+      const Vec3<double> md(m[0].get_d(), m[1].get_d(), m[2].get_d());
+      const Vec3<double> exact_unit = md / md.norm();  // relative error ~1e-16
+      const Vec3<T> n = k.axis(f);
+      const double err = (n.template cast<double>() - exact_unit).norm();
+      INFO("edges (" << ea << ", " << eb << "): |axis - exact| = " << err);
+      CHECK(err <= RobustKernel<T>::kReportedAxisError + 8 * std::numeric_limits<T>::epsilon());
+      ++checked;
+    });
   }
   CHECK(checked > 100);
 }

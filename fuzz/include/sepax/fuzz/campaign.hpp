@@ -63,6 +63,7 @@ struct CampaignOptions {
   std::vector<std::string> replay_files;  ///< .case files or directories of them
   bool bytes = false;            ///< replay files are libFuzzer inputs
   bool shrink_replays = false;   ///< shrink unexplained replayed cases too
+  bool inject_fault = false;     ///< replay with CheckOptions::inject_fault (checks the checker)
   int jobs = 0;                  ///< parallel workers; 0: all cores
 };
 

@@ -132,6 +132,12 @@ struct CheckOptions {
   /// The exact references of posed queries (mpq SATs on the posed input, and
   /// exact rational poses) only when E_A*E_B is at most this.
   std::int64_t posed_exact_pair_budget = 2'500;
+  /// Checks the checker: float_robust's Gauss map reports the opposite
+  /// overlap verdict, a fault the robust policy's claim of exact decisions
+  /// makes unexplained in every valid case (`--inject-fault` of `sepax fuzz
+  /// --replay` and `sepax audit`: their exit status 1 and the reproducer path,
+  /// end to end).  Never set in a real campaign.
+  bool inject_fault = false;
 };
 
 /// The four arc-test signs of every edge pair (index ea * E_B + eb), exactly,

@@ -30,6 +30,7 @@ namespace sepax::fuzz {
 struct AuditOptions {
   bool use_double = false;  ///< audit double instead of float
   bool json = false;        ///< one JSON object instead of the text report
+  bool inject_fault = false;  ///< CheckOptions::inject_fault (checks the checker)
 };
 
 /// Prints the audit of c to out.  Returns 0 when the differential check finds
