@@ -210,6 +210,18 @@ struct WarmCounts {
   int compared = 0;
 };
 
+/// On the 7 local shapes with 3 pose pairs: every query compared, and every
+/// path taken (hits on a face of A, a face of B, an edge pair, margin
+/// pre-check answers, misses).
+inline void check_every_warm_path_taken(const WarmCounts& n) {
+  CHECK(n.compared == 7 * 7 * 3 * 3 * 4 * 2);
+  CHECK(n.hits[0] > 20);
+  CHECK(n.hits[1] > 20);
+  CHECK(n.hits[2] > 5);
+  CHECK(n.prechecked > 20);
+  CHECK(n.early_misses > 100);
+}
+
 /// The warm early-out path (a cache hit decided on a partial image of B',
 /// posing.hpp "Staged posing") against the cached query on the full B'
 /// (cached_reference): for every pair of shapes and `poses` random pose
