@@ -4,6 +4,13 @@
 // by the fuzzer to classify a float/exact disagreement as "explained": the
 // exact value lies within the bound of the float computation.
 //
+// This derivation is independent of the robust kernel's (it is the check of
+// the plain kernel; robust/include/sepax/robust/error_bounds.hpp derives the
+// robust filters' bounds) and uses the same notation: u, gamma_k (there
+// robust::gamma<T>(k)), delta for the error of a unit normal or axis (there
+// δ_P, δ_e), B_face and B_arc for the face value and arc sign (there
+// QueryBounds::face_a/b, arc_a/b).
+//
 // Notation.  F is float or double, u = number_traits<F>::unit_roundoff (2^-24,
 // 2^-53), gamma_k = k u / (1 - k u).  All inputs (vertex coordinates) are exact
 // F values; the exact quantity is what PlainKernel<mpq> computes from the same
