@@ -62,12 +62,12 @@ class PlainKernel {
   int support_sign_a(int, int, int, T d) const
     requires std::is_floating_point_v<T>
   {
-    return (d > T(0)) - (d < T(0));
+    return sign_of(d);
   }
   int support_sign_b(int, int, int, T d) const
     requires std::is_floating_point_v<T>
   {
-    return (d > T(0)) - (d < T(0));
+    return sign_of(d);
   }
 
   // The arc test reads the per-edge arrays of ConvexPolyhedron (edge_dir,

@@ -162,14 +162,17 @@ concept HasFaceEstimate = requires(const K k, int i, double e) {
 ///   double error_bound(const Feature& f)
 ///   int compare_bounded(const Separation<FT>& x, const Feature& fx, double ex,
 ///                       const Separation<FT>& y, const Feature& fy, double ey)
+///   double compare_width(double ex, double ey)
 /// error_bound(f) bounds |value - exact value| of the separation the kernel
 /// returns for feature f; compare_bounded is compare() given both bounds, so
 /// a caller that keeps its best's bound compares a candidate with one filter
-/// (BestAxis, the traversal's best).
+/// (BestAxis, the traversal's best); compare_width is that filter's width
+/// (see HasFaceEstimate), from which the traversal derives its thresholds.
 template <class K>
 concept HasBoundedCompare = requires(const K& k, const Feature& f, const Separation<typename K::FT>& s, double e) {
   { k.error_bound(f) } -> std::same_as<double>;
   { k.compare_bounded(s, f, e, s, f, e) } -> std::same_as<int>;
+  { k.compare_width(e, e) } -> std::same_as<double>;
 };
 
 /// Optional kernel members (not part of SatKernel; PlainKernel<float/double>

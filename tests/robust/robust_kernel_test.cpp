@@ -26,6 +26,15 @@ using sepax::testing::random_rotation;
 using sepax::testing::random_sphere_hull;
 using sepax::testing::translated;
 
+// The kernels' capabilities (sat_kernel.hpp), as the SATs see them.
+static_assert(HasBoundedCompare<RobustKernel<float>> && HasBoundedCompare<RobustKernel<double>>);
+static_assert(!HasBoundedCompare<PlainKernel<float>> && !HasBoundedCompare<PlainKernel<mpq_class>>);
+static_assert(HasSupportFilter<PlainKernel<float>> && HasSupportFilter<PlainKernel<double>> &&
+              HasSupportFilter<RobustKernel<float>> && HasSupportFilter<RobustKernel<double>>);
+static_assert(!HasSupportFilter<PlainKernel<mpq_class>>);
+static_assert(exact_decisions_v<RobustKernel<float>> && exact_decisions_v<PlainKernel<mpq_class>> &&
+              !exact_decisions_v<PlainKernel<float>> && !exact_decisions_v<PlainKernel<double>>);
+
 namespace {
 
 struct Tally {

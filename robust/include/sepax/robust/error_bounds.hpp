@@ -198,7 +198,7 @@ struct ErrorConstants {
   static double centroid_error(const ConvexPolyhedron<T>& p) {
     const double k = static_cast<double>(p.vertex_count()) + 1.0;
     if (!(k * kU < 0.25)) return std::numeric_limits<double>::infinity();
-    return std::numbers::sqrt3 * (k * kU / (1.0 - k * kU)) * p.max_abs_coordinate() * kMargin2 + 4 * kEta;
+    return std::numbers::sqrt3 * gamma<T>(static_cast<int>(k)) * p.max_abs_coordinate() * kMargin2 + 4 * kEta;
   }
 };
 
