@@ -97,6 +97,10 @@ void print_query_text(std::ostream& out, const RunOutcome& r, const RunConfig& c
       << (r.stats.side_axes > 0 ? std::to_string(r.stats.side_axes) + " side axes, " : std::string())
       << r.stats.exact_fallbacks << " exact fallbacks\n";
   const ManifoldOut& m = r.manifold;
+  if (m.kind == "none") {
+    out << "manifold:   none (no contact points)\n";
+    return;
+  }
   out << "manifold:   " << m.kind << " contact, " << m.points.size() << " point" << (m.points.size() == 1 ? "" : "s");
   if (m.kind == "face") {
     out << " (reference face " << m.reference_face << " of " << (m.reference_shape == 0 ? "A" : "B")
