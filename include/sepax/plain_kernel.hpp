@@ -200,8 +200,8 @@ class PlainKernel {
       // most (gamma_3 + 3u)|v|_1 <= 7u*sqrt(3)*max|v_i| (first order), so two
       // projections of vertices of p differ from the exact difference by at
       // most 2*7*sqrt(3)u*max|v_i| < 25u*max|v_i|.  Without it, a small shape
-      // far from the origin (rounding > support*extent) loses its supporting
-      // edges: found by the fuzzer (scales family, extent 0.01 at distance 4).
+      // far from the origin (rounding > support*extent, e.g. extent 0.01 at
+      // distance 4) loses its supporting edges.
       const double u = number_traits<T>::unit_roundoff;
       return static_cast<T>(Tolerances<T>::support * p.extent() + 25.0 * u * p.max_abs_coordinate());
     }

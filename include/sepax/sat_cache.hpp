@@ -2,43 +2,20 @@
 //
 // SatCache<T>: temporal coherence for repeated SAT queries of one pair of
 // shapes at nearby poses.  The cache holds the feature and separation of the
-// last result; a cached query re-checks that feature first.
+// last result; a cached query re-checks that feature first.  The cache's
+// content never changes a verdict: a stale, foreign or out-of-range feature
+// only costs one re-evaluation.
 //
-// Guarantee (every SAT, every policy, every T):
-//   * opt.early_out == false: a cached query returns exactly what the SAT
-//     returns on its own (it runs the SAT; the cache only records the
-//     result).  Warm start: when the SAT takes a seed (the posed queries of
-//     prepared_shape.hpp; sat::gauss_map_with, brute_force_with and
-//     traversal_with have the parameter), the cached feature, re-evaluated
-//     at this pose (reevaluate, below), is its first candidate: a candidate
-//     the SAT evaluates anyway, with the same value, so the result (feature,
-//     separation, verdict) is the fresh one, while every pruning test starts
-//     from a strong best.  Not for plain float/double traversal, whose climb
-//     in rounding arithmetic need not reproduce a seed's full-scan value.
-//   * opt.early_out == true: the cached feature is re-evaluated at the current
-//     pose with the same kernel predicates every SAT uses for that feature:
-//       FaceA(f, _)   k.face_query_a(f)  (support vertex re-found, lowest
-//                                         index among the exactly deepest)
-//       FaceB(_, g)   k.face_query_b(g)
-//       EdgePair      still a Minkowski face (k.arc_signs strict) and not
-//                     parallel (k.edges_parallel), then k.edge_separation
-//       SideA/SideB   k.side_query_a / k.side_query_b (both shapes flat)
-//     If it still separates (k.sign > 0) the query returns at once (a hit):
-//       overlap = false, early_out = true, feature = the re-evaluated feature,
-//       separation = exactly the separation the SATs compute for that
-//       feature at this pose, axis = k.axis(feature).
-//     This is the early_out contract of SatOptions: a separating axis, not
-//     necessarily the one of maximum separation.  The verdict (overlap) is
-//     always the one a fresh query gives.  If the feature no longer
-//     separates, the SAT runs with early_out and its result is returned
-//     unchanged (so for overlapping shapes the result is exactly the fresh
-//     one, feature and separation included).
-//   * The posed queries (posed_queries.hpp) run the early-out check on a
-//     partial image of B' and, after a miss, a margin pre-check whose
-//     answer the cache then keeps (remember), before the SAT.
-//   * The cache's content never changes a verdict: a stale, foreign or
-//     out-of-range feature only costs one re-evaluation (out-of-range indices
-//     are ignored).
+//   SatCache          the last answer's feature and separation, hit/miss counters
+//   reevaluate        a cached feature at the current pose, by the kernel's predicates
+//   early_out_result  the result of a query that stops at one proven feature
+//   cache_hit         the early-out half: the cached feature, if it still separates
+//   cached_run        the SAT half: warm-started with the cached feature
+//   cached_with       cache_hit, else cached_run (any kernel); cached (a policy and T)
+//
+// The posed queries (posed_queries.hpp) run the early-out check on a partial
+// image of B' and, after a miss, a margin pre-check whose answer the cache
+// then keeps, before the SAT.
 #pragma once
 
 #include <cstdint>
@@ -50,14 +27,16 @@
 
 namespace sepax {
 
+/// One pair's cache: the last answer's feature and separation.
 template <class T>
 struct SatCache {
-  bool valid = false;
-  Feature feature;
-  Separation<T> separation;
-  std::int64_t hits = 0;    // early-out queries answered by the cached feature
-  std::int64_t misses = 0;  // queries that ran the SAT
+  bool valid = false;        ///< feature and separation hold an answer
+  Feature feature;           ///< the last answer's feature
+  Separation<T> separation;  ///< the last answer's separation
+  std::int64_t hits = 0;     ///< early-out queries answered by the cached feature
+  std::int64_t misses = 0;   ///< queries that ran the SAT
 
+  /// Forget the answer and the counters.
   void reset() { *this = SatCache{}; }
   /// Keep an answer's feature and separation (the next query re-checks it).
   void remember(const Feature& f, const Separation<T>& s) {
@@ -69,8 +48,15 @@ struct SatCache {
 
 namespace sat {
 
-/// The cached feature re-evaluated at the current pose (see the header
-/// comment); nullopt if its indices are out of range or an edge pair is no
+/// The cached feature re-evaluated at the current pose with the same kernel
+/// predicates every SAT uses for that feature:
+///   FaceA(f, _)   k.face_query_a(f)  (support vertex re-found, lowest index
+///                                     among the exactly deepest)
+///   FaceB(_, g)   k.face_query_b(g)
+///   EdgePair      still a Minkowski face (k.arc_signs strict) and not
+///                 parallel (k.edges_parallel), then k.edge_separation
+///   SideA/SideB   k.side_query_a / k.side_query_b (both shapes flat)
+/// nullopt if its indices are out of range (ignored) or an edge pair is no
 /// longer a non-parallel Minkowski face.
 template <SatKernel K>
 std::optional<std::pair<Feature, Separation<typename K::FT>>> reevaluate(K& k, const Feature& f) {
@@ -125,12 +111,16 @@ SatResult<typename K::FT> early_out_result(const K& k, const Feature& f, const S
   return r;
 }
 
-/// The early-out half of a cached query (see the header comment): with
-/// opt.early_out and a valid cache, the cached feature re-evaluated with k; if
-/// it separates beyond the margin, the hit's result (and the cache updated,
-/// hits counted), else nullopt (the cache untouched).  The kernel need only
-/// answer for that feature: the posed queries build it on a partial image
-/// of B (posing.hpp, "Staged posing").
+/// The early-out half of a cached query: with opt.early_out and a valid
+/// cache, the cached feature re-evaluated with k; if it separates beyond the
+/// margin (k.sign > 0), the hit's result (and the cache updated, hits
+/// counted), else nullopt (the cache untouched).  A hit is overlap = false,
+/// early_out = true, the re-evaluated feature, exactly the separation the SATs
+/// compute for that feature at this pose, axis = k.axis(feature): the
+/// early_out contract of SatOptions (a separating axis, not necessarily the
+/// one of maximum separation; the verdict is always the fresh one).  The
+/// kernel need only answer for that feature: the posed queries build it on a
+/// partial image of B (posing.hpp, "Staged posing").
 template <SatKernel K>
 std::optional<SatResult<typename K::FT>> cache_hit(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt) {
   using T = typename K::FT;
@@ -143,9 +133,17 @@ std::optional<SatResult<typename K::FT>> cache_hit(K& k, SatCache<typename K::FT
   return r;
 }
 
-/// The SAT half of a cached query: run (warm-started with the cached feature
-/// when run takes a seed, see cached_with), the cache set to its result,
-/// misses counted.
+/// The SAT half of a cached query: run, the cache set to its result, misses
+/// counted.  Without early_out the result is exactly what the SAT returns on
+/// its own.  Warm start: when run takes a seed (the posed queries;
+/// sat::gauss_map_with, brute_force_with and traversal_with have the
+/// parameter), the cached feature is its first candidate: a candidate the SAT
+/// evaluates anyway, with the same value, so the result (feature, separation,
+/// verdict) is the fresh one, while every pruning test starts from a strong
+/// best.  Not for the plain float/double traversal, whose climb in rounding
+/// arithmetic need not reproduce a seed's full-scan value.  With early_out,
+/// after a miss the SAT's result is returned unchanged (for overlapping
+/// shapes exactly the fresh one, feature and separation included).
 template <SatKernel K, class Run>
 SatResult<typename K::FT> cached_run(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt, Run&& run) {
   SatResult<typename K::FT> r;
@@ -164,8 +162,8 @@ SatResult<typename K::FT> cached_run(K& k, SatCache<typename K::FT>& cache, cons
 /// run(k, opt) runs the SAT, e.g.
 /// [](auto& k, const SatOptions& o) { return sat::gauss_map_with(k, o); }.
 /// When run also takes a seed, run(k, opt, const Feature* seed), the SAT is
-/// warm-started: the cached feature is passed as its first candidate (see the
-/// header comment).
+/// warm-started: the cached feature is passed as its first candidate (see
+/// cached_run).
 template <SatKernel K, class Run>
 SatResult<typename K::FT> cached_with(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt, Run&& run) {
   if (auto hit = cache_hit(k, cache, opt)) return *hit;

@@ -4,87 +4,87 @@
 // are multiplied by the extent of the shapes involved (the length of the
 // diagonal of the axis-aligned bounding box of the point set or polyhedron), so
 // that a configuration scaled by 1e-4 or 1e4 is treated exactly like the
-// original.  There are no absolute tolerances anywhere in sepax.
+// original.  There are no absolute tolerances anywhere in sepax.  For exact
+// number types every tolerance is zero: decisions are exact.
 //
-// For exact number types every tolerance is zero: decisions are exact.
-//
-// | name        | used by                         | meaning                                                     |
-// |-------------|---------------------------------|-------------------------------------------------------------|
-// | weld        | hull builder                    | points closer than weld*extent are one point                |
-// | coplanar    | hull builder                    | a point within coplanar*extent above a face plane is on it  |
-// |             | (and validation: adjacent faces | (dropped); two adjacent faces are merged into one when      |
-// |             | within coplanar/4 are refused)  | either sees every vertex of the other less than             |
-// |             |                                 | coplanar*extent below its plane; a face corner closer than  |
-// |             |                                 | coplanar*extent to the line through its neighbours is       |
-// |             |                                 | removed (every output face strictly convex)                 |
-// | flat        | hull builder                    | a point set within flat*extent of a plane is a flat polygon;|
-// |             |                                 | within flat*extent of a line it is Collinear.  flat =       |
-// |             |                                 | 2*coplanar so that a solid is never thinner than twice the  |
-// |             |                                 | merge tolerance (its sides cannot merge into its top)       |
-// | planarity   | ConvexPolyhedron validation     | face vertices within planarity*extent of the face's plane   |
-// | convexity   | ConvexPolyhedron validation     | no vertex more than convexity*extent above any face plane   |
-// | sliver      | ConvexPolyhedron validation     | relative to the face, not the extent: a face whose plane    |
-// |             |                                 | triangle is at most sliver*L high over its longest side L   |
-// |             |                                 | has zero area up to rounding (DegenerateFace).  Rounding    |
-// |             |                                 | alone gives collinear points a height up to ~14u*L, and a   |
-// |             |                                 | face normal's angular error is ~4u/(height/L).  Below       |
-// |             |                                 | coplanar/4: every hull face (no corner within               |
-// |             |                                 | coplanar*extent of its neighbours' line) passes             |
-// | support     | brute-force SAT, float only     | an edge endpoint within support*extent of the extreme       |
-// |             |                                 | projection (on the unit axis) counts as supporting; plus    |
-// |             |                                 | the projections' own rounding, 25u*max|coordinate| (derived |
-// |             |                                 | in PlainKernel::support_tolerance), which dominates for a   |
-// |             |                                 | small shape far from the origin                             |
-// | parallel    | plain float SATs                | edges with |eA x eB| <= parallel*|eA||eB| (the sine of their |
-// |             |                                 | angle) are parallel and skipped: their float cross product  |
-// |             |                                 | is too inaccurate to be an axis.  The robust policy skips   |
-// |             |                                 | only exactly parallel edges; exact types likewise.          |
-// | contact_weld| contact manifold, float only    | clip points closer than contact_weld*extent are one point   |
-// |             |                                 | (extent = the smaller of the two shapes' extents); in the   |
-// |             |                                 | 4-point reduction, depths within it are equally deep        |
-// | contact_area| contact manifold reduction      | a point is kept by the 4-point reduction only if it adds    |
-// |             |                                 | more than contact_area*extent^2 of (doubled) area; squared  |
-// |             |                                 | distances / areas within it of the largest are ties         |
-//
-// The validation tolerances are looser than the hull builder's so that every
-// hull the builder produces validates (planarity, convexity = 4*coplanar; the
-// builder also checks its output against half of them before returning it).
-// The hull builder computes its decisions on coordinates relative to the
-// centre of the bounding box; float cannot resolve a shape whose coordinates
-// exceed planarity*extent/(16u) (about 40 extents from the origin for float,
-// 2e5 for double), and the builder reports BadScale for such inputs when
-// validation would be at risk.
-//
-// Scale range (float, double).  Since every tolerance is relative, the
-// absolute scale does not matter within the range where the arithmetic is
-// sound: ConvexPolyhedron (planes, normals, extent, centroid) and the plain
-// SAT kernel (edge axes, parallel test) rescale by powers of two where |N|^2
-// would overflow or underflow, and validation accepts
-//   |coordinate| <= max(T)/16          (sums and differences stay finite)
-//   coplanar/4 * extent >= min(T)      (the smallest tolerance is a normal
-//                                       number: extent >= ~9e-298 for double,
-//                                       ~5e-33 for float)
-// refusing anything else with BadScale.  (The hull builder still refuses an
-// extent whose cube overflows double or whose square overflows T: about
-// 2.8e102 for double, 9e18 for float.)
+//   Tolerances<T>      the relative tolerances of the hull builder, validation,
+//                      the plain float SATs and the contact manifold (float, double)
+//   scale range        what float and double accept (BadScale beyond), on Tolerances
+//   kHull*, kConvexityScanPairs   the hull builder's bounds and slack multipliers (docs/hull.md)
 #pragma once
 
 #include "number_traits.hpp"
 
 namespace sepax {
 
+/// The relative tolerances of one number type, each x extent unless its line
+/// says otherwise.  Exact types (and any type not specialised below): all zero.
+///
+/// The validation tolerances are looser than the hull builder's so that every
+/// hull the builder produces validates (planarity, convexity = 4 x coplanar; the
+/// builder also checks its output against half of them before returning it).
+/// The hull builder computes its decisions on coordinates relative to the
+/// centre of the bounding box; float cannot resolve a shape whose coordinates
+/// exceed planarity x extent / (16u) (about 40 extents from the origin for
+/// float, 2e5 for double), and the builder reports BadScale for such inputs
+/// when validation would be at risk.
+///
+/// Scale range (float, double).  Since every tolerance is relative, the
+/// absolute scale does not matter within the range where the arithmetic is
+/// sound: ConvexPolyhedron (planes, normals, extent, centroid) and the plain
+/// SAT kernel (edge axes, parallel test) rescale by powers of two where |N|^2
+/// would overflow or underflow, and validation accepts
+///   |coordinate| <= max(T)/16          (sums and differences stay finite)
+///   coplanar/4 x extent >= min(T)      (the smallest tolerance is a normal
+///                                       number: extent >= ~9e-298 for double,
+///                                       ~5e-33 for float)
+/// refusing anything else with BadScale.  (The hull builder also refuses an
+/// extent whose cube overflows double or whose square overflows T: about
+/// 2.8e102 for double, 9e18 for float.)
 template <class T>
 struct Tolerances {
-  // Exact types (and any type not specialised below): all zero.
+  /// Hull builder: points closer than this are one point, x extent.
   static constexpr double weld = 0;
+  /// Hull builder: a point this close above a face plane is on it (dropped); two
+  /// adjacent faces are merged when either sees every vertex of the other less
+  /// than this below its plane; a face corner this close to the line through its
+  /// neighbours is removed (every output face strictly convex).  Validation
+  /// refuses adjacent faces within coplanar / 4.  x extent.
   static constexpr double coplanar = 0;
+  /// Hull builder: a point set this close to a plane is a flat polygon, this
+  /// close to a line it is Collinear.  2 x coplanar, so that a solid is never
+  /// thinner than twice the merge tolerance (its sides cannot merge into its
+  /// top).  x extent.
   static constexpr double flat = 0;
+  /// Validation: face vertices within this of the face's plane, x extent.
   static constexpr double planarity = 0;
+  /// Validation: no vertex more than this above any face plane, x extent.
   static constexpr double convexity = 0;
+  /// Validation: a face whose plane triangle is at most sliver x L high over its
+  /// longest side L has zero area up to rounding (DegenerateFace).  Rounding
+  /// alone gives collinear points a height up to ~14u L, and a face normal's
+  /// angular error is ~4u / (height / L).  Below coplanar / 4, so every hull face
+  /// (no corner within coplanar x extent of its neighbours' line) passes.
+  /// x the face's longest side, not the extent.
   static constexpr double sliver = 0;
+  /// Brute-force SAT, float only: an edge endpoint within this of the extreme
+  /// projection (on the unit axis) counts as supporting, plus the projections'
+  /// own rounding, 25u max|coordinate| (derived in
+  /// PlainKernel::support_tolerance), which dominates for a small shape far
+  /// from the origin.  x extent.
   static constexpr double support = 0;
+  /// Plain float SATs: edges with |eA x eB| <= parallel |eA| |eB| are parallel
+  /// and skipped (their float cross product is too inaccurate to be an axis).
+  /// The robust policy skips only exactly parallel edges; exact types likewise.
+  /// The sine of the edges' angle, dimensionless.
   static constexpr double parallel = 0;
+  /// Contact manifold, float only: clip points closer than this are one point;
+  /// in the 4-point reduction, depths within it are equally deep.  x the smaller
+  /// of the two shapes' extents.
   static constexpr double contact_weld = 0;
+  /// Contact manifold reduction: a point is kept only if it adds more than this
+  /// (doubled) area; squared distances and areas within it of the largest are
+  /// ties.  x extent^2.
   static constexpr double contact_area = 0;
 };
 
@@ -193,10 +193,5 @@ inline constexpr double kConvexityScanPairs = 4e6;
 /// Points x faces up to which the builder measures every point against every
 /// face; beyond, each point against the faces near the one it climbs to, pairs.
 inline constexpr double kHullPointScanPairs = 4e6;
-
-/// Former names of the hull bounds (docs/hull.md).
-inline constexpr double hull_outside_bound = kHullOutsideBound;
-inline constexpr double hull_slab_half_thickness = kHullSlabHalfThickness;
-inline constexpr double hull_tent_lift = kHullTentLift;
 
 }  // namespace sepax

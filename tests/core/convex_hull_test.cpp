@@ -287,7 +287,7 @@ TEST_CASE("double hull far from the origin", "[hull]") {
 namespace {
 
 // Every set of one stream of random_point_set (hull_point_sets.hpp): a validated hull whose
-// points are all within hull_outside_bound (64) x coplanar*extent of every face
+// points are all within kHullOutsideBound (64) x coplanar*extent of every face
 // plane and within that Euclidean distance of the hull (no outliers allowed),
 // or a legitimate error.  Returns the worst point outside a plane, in coplanar*extent.
 template <class T>
@@ -302,22 +302,22 @@ double stress_stream(unsigned seed, int count) {
     try {
       const auto h = convex_hull(pts);
       check_valid(h);
-      // A slab thinner than 2 x hull_slab_half_thickness x coplanar*extent
+      // A slab thinner than 2 x kHullSlabHalfThickness x coplanar*extent
       // whose repair rounds failed is returned as the flat polygon of its
       // points projected onto its mid-plane; a set whose rounds lost a slab
       // corner as the tent: the hull of its points and of the lost points
-      // lifted hull_tent_lift x coplanar*extent into the slab (docs/hull.md).
+      // lifted kHullTentLift x coplanar*extent into the slab (docs/hull.md).
       // Every other hull's vertices are input points.
       if (!vertices_are_inputs(h, pts)) {
         if (h.is_flat()) {
           ++projected;
-          CHECK(min_face_width(h, pts) <= 2 * hull_slab_half_thickness);
+          CHECK(min_face_width(h, pts) <= 2 * kHullSlabHalfThickness);
         } else {
           ++tents;
           // (a lifted vertex is that far from its point, up to the rounding
           // of its coordinates, u max|x| each, and the difference of the
           // builder's and the hull's extents)
-          CHECK(vertex_offset(h, pts) <= 1.01 * hull_tent_lift + lift_rounding(h, pts));
+          CHECK(vertex_offset(h, pts) <= 1.01 * kHullTentLift + lift_rounding(h, pts));
         }
       }
       const double out = max_outside(h, pts);
@@ -332,14 +332,14 @@ double stress_stream(unsigned seed, int count) {
       const double rounding = 64 * number_traits<T>::unit_roundoff * max_abs /
                               (Tolerances<T>::coplanar * h.extent());
       worst = std::max(worst, out - rounding);
-      CHECK(out <= hull_outside_bound + rounding);
+      CHECK(out <= kHullOutsideBound + rounding);
       // Euclidean: a point within eps of two planes of a thin wedge can be
       // far beyond its edge (a needle 4.4 eps thick lost a third of its
       // length; a slab corner 1.3e-3 x extent: docs/hull.md).  Every kind,
       // every slab, held to the bound.
       const double dist = max_distance(h, pts);
       worst_dist = std::max(worst_dist, dist - rounding);
-      CHECK(dist <= hull_outside_bound + rounding);
+      CHECK(dist <= kHullOutsideBound + rounding);
       (h.is_flat() ? flats : solids)++;
     } catch (const InvalidInput& e) {
       // Only degenerate kinds may legitimately be rejected; and float cannot
@@ -403,8 +403,8 @@ TEST_CASE("the needle of docs/hull.md keeps its length", "[hull][stress]") {
   check_valid(h);
   const double dist = max_distance(h, pts);
   INFO("vertices " << h.vertex_count() << ", farthest point " << dist << " x coplanar*extent");
-  CHECK(dist <= hull_outside_bound);
-  CHECK(max_outside(h, pts) <= hull_outside_bound);
+  CHECK(dist <= kHullOutsideBound);
+  CHECK(max_outside(h, pts) <= kHullOutsideBound);
 }
 
 // Slab corners (docs/hull.md): kind-3 slabs (a plane of points and every
@@ -414,7 +414,7 @@ TEST_CASE("the needle of docs/hull.md keeps its length", "[hull][stress]") {
 // Each set by its stream seed and iteration (tools/hull_stress.cpp), with its
 // thickness and the old distance: every point is now within the bound, and
 // a hull whose vertices are not all inputs is a tent (lifted copies
-// hull_tent_lift away from their points).
+// kHullTentLift away from their points).
 TEMPLATE_TEST_CASE("slab corners that the repair rounds lost are kept", "[hull][stress]", float, double) {
   using T = TestType;
   struct Case {
@@ -442,10 +442,10 @@ TEMPLATE_TEST_CASE("slab corners that the repair rounds lost are kept", "[hull][
     INFO("vertices " << h.vertex_count() << ", farthest point " << dist << ", thickness "
                      << min_face_width(h, pts) << " x coplanar*extent");
     CHECK(!h.is_flat());
-    CHECK(dist <= hull_outside_bound + rounding);
-    CHECK(max_outside(h, pts) <= hull_outside_bound + rounding);
+    CHECK(dist <= kHullOutsideBound + rounding);
+    CHECK(max_outside(h, pts) <= kHullOutsideBound + rounding);
     if (!vertices_are_inputs(h, pts))
-      CHECK(vertex_offset(h, pts) <= 1.01 * hull_tent_lift + lift_rounding(h, pts));
+      CHECK(vertex_offset(h, pts) <= 1.01 * kHullTentLift + lift_rounding(h, pts));
   }
 }
 
