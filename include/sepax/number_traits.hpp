@@ -15,20 +15,10 @@
 //     decision ("exact types never go through double");
 //   * optionally number_traits<T>::sqrt(x) when has_sqrt is true.
 //
-// number_traits<T> is specialised here for float and double.  Specialisations
-// for GMP and CGAL number types live in robust/ (sepax/robust/number_types.hpp)
-// so that the float core needs nothing but Eigen.
-//
-// Traits members:
-//   is_exact         every field operation is exact (no rounding).
-//   has_sqrt         sqrt(x) is available (and exact when is_exact).
-//   normalizes       the SATs normalise axes to unit length with sqrt.  True for
-//                    float/double and for exact types with an exact sqrt
-//                    (CORE::Expr); false for rationals, which keep unnormalised
-//                    axes and compare separations in squared form.
-//   unit_roundoff    u = 2^-p for floating types (the bound on the relative error
-//                    of one correctly rounded operation); 0 for exact types.
-//   name             a short human-readable name ("float", "double", "mpq", ...).
+// number_traits<T> (its members are described on floating_traits) is
+// specialised here for float and double; GMP and CGAL number types are in
+// robust/ (sepax/robust/number_types.hpp), so the float core needs only Eigen.
+// The concepts Number, ExactNumber, FloatingNumber and SqrtNumber state it.
 #pragma once
 
 #include <cmath>
@@ -44,15 +34,28 @@ template <class T>
 struct number_traits;
 
 namespace detail {
+/// The traits of a rounding floating-point type; every number_traits<T> has
+/// these members (and `name`, a short human-readable name: "float", "mpq", ...).
 template <class F>
 struct floating_traits {
+  /// Every field operation is exact (no rounding).
   static constexpr bool is_exact = false;
+  /// sqrt(x) is available (and exact when is_exact).
   static constexpr bool has_sqrt = true;
+  /// The SATs normalise axes to unit length with sqrt.  True for float/double
+  /// and for exact types with an exact sqrt (CORE::Expr); false for rationals,
+  /// which keep unnormalised axes and compare separations in squared form.
   static constexpr bool normalizes = true;
+  /// u = 2^-p, the bound on the relative error of one correctly rounded
+  /// operation; 0 for exact types.
   static constexpr double unit_roundoff = std::numeric_limits<F>::epsilon() / 2;
+  /// The value of d as an F (exact for exact types: every double is a rational).
   static F from_double(double d) { return static_cast<F>(d); }
+  /// A double near x, for reporting only.
   static double to_double(F x) { return static_cast<double>(x); }
+  /// The square root (rounded for float/double).
   static F sqrt(F x) { return std::sqrt(x); }
+  /// Neither NaN nor infinite.
   static bool is_finite(F x) { return std::isfinite(x); }
 };
 }  // namespace detail

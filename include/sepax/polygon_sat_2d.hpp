@@ -19,20 +19,6 @@
 //   sat2::overlap(A, B)       early-out verdict only.
 //   sat2::coplanar_sat(A, B)  two flat ConvexPolyhedra in one plane, decided
 //                   in the plane (the case the 3D SATs report as touching).
-//
-// The candidate axes of two convex polygons are the edge normals of A and of B
-// (the edge normals of A - B), so this test is complete in 2D.  Results reuse
-// the 3D vocabulary: Feature::face_a(edge of A, support vertex of B),
-// Feature::face_b(support vertex of A, edge of B), Separation<T> (exact
-// comparison in squared form for rationals) and the tie-break of feature.hpp
-// (equal separations: A's edges before B's, lower index first).
-//
-// Validation (Polygon2::from_vertices) throws InvalidInput for: fewer than 3
-// vertices (TooFewPoints), NaN/infinity (NonFinite), a repeated vertex
-// (DegenerateFace), clockwise order (InwardFaces), a reflex or (in exact
-// arithmetic) collinear corner, or a loop that winds more than once
-// (NonConvexFace).  For float/double the convexity check uses the relative
-// tolerance Tolerances<T>::convexity of tolerances.hpp.
 #pragma once
 
 #include <algorithm>
@@ -70,7 +56,12 @@ class Polygon2 {
 
   Polygon2() = default;
 
-  /// Validate and build; vertices counter-clockwise.
+  /// Validate and build; vertices counter-clockwise.  Throws InvalidInput for:
+  /// fewer than 3 vertices (TooFewPoints), NaN/infinity (NonFinite), a repeated
+  /// vertex (DegenerateFace), clockwise order (InwardFaces), a reflex or (in
+  /// exact arithmetic) collinear corner, or a loop that winds more than once
+  /// (NonConvexFace).  For float/double the convexity check uses the relative
+  /// tolerance Tolerances<T>::convexity of tolerances.hpp.
   static Polygon2 from_vertices(std::vector<Vec2<T>> vertices) {
     Polygon2 p;
     p.v_ = std::move(vertices);
@@ -241,6 +232,12 @@ struct Sat2Result {
 };
 
 /// The 2D SAT.  early_out: stop at the first separating edge normal.
+/// The candidate axes of two convex polygons are the edge normals of A and of
+/// B (the edge normals of A - B), so this test is complete in 2D.  Results
+/// reuse the 3D vocabulary: Feature::face_a(edge of A, support vertex of B),
+/// Feature::face_b(support vertex of A, edge of B), Separation<T> (exact
+/// comparison in squared form for rationals) and the tie-break of feature.hpp
+/// (equal separations: A's edges before B's, lower index first).
 template <Number T>
 Sat2Result<T> polygon_sat(const Polygon2<T>& a, const Polygon2<T>& b, bool early_out = false) {
   Sat2Result<T> r;
