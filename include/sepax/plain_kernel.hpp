@@ -152,11 +152,15 @@ class PlainKernel {
     const T ta = support_tolerance(a_), tb = support_tolerance(b_);
     const T pa0 = dot(n, a_.vertex(a_.edge_tail(ea))), pa1 = dot(n, a_.vertex(a_.edge_head(ea)));
     const T pb0 = dot(n, b_.vertex(b_.edge_tail(eb))), pb1 = dot(n, b_.vertex(b_.edge_head(eb)));
-    // Most pairs support neither orientation: the scans stop at the first
-    // vertex that rules out both (project_supporting); the decision below
-    // is then the one the complete extremes give.
+    // Most pairs support neither orientation: the neighbours of the edges'
+    // endpoints, then the scans, stop at the first vertex that rules out both
+    // (rule_out_by_neighbours, project_supporting); the decision below is then
+    // the one the complete extremes give.
     T min_a, max_a, min_b, max_b;
     bool may_plus = true, may_minus = true;
+    rule_out_by_neighbours(a_, n, ea, pa0, pa1, ta, may_plus, may_minus);
+    if (may_plus || may_minus) rule_out_by_neighbours(b_, n, eb, pb0, pb1, tb, may_minus, may_plus);
+    if (!may_plus && !may_minus) return std::nullopt;
     if (!project_supporting(a_, n, pa0, pa1, ta, min_a, max_a, may_plus, may_minus)) return std::nullopt;
     if (!project_supporting(b_, n, pb0, pb1, tb, min_b, max_b, may_minus, may_plus)) return std::nullopt;
     // +n from A to B: A's edge at A's max, B's edge at B's min.
@@ -334,17 +338,40 @@ class PlainKernel {
       const T h = dot(n, p.vertex(i));
       if (h < lo) lo = h;
       if (h > hi) hi = h;
-      if constexpr (number_traits<T>::is_exact) {  // t = 0
-        at_max = at_max && !(e0 < h || e1 < h);
-        at_min = at_min && !(e0 > h || e1 > h);
-      } else {
-        const T below = T(h - t), above = T(h + t);
-        at_max = at_max && !(e0 < below || e1 < below);
-        at_min = at_min && !(e0 > above || e1 > above);
-      }
+      rule_out(h, e0, e1, t, at_max, at_min);
       if (!at_max && !at_min) return false;
     }
     return true;
+  }
+
+  // One projection h of p's vertices against p's edge's endpoint projections
+  // e0, e1 (project_supporting): rules out the maximum when e0 or e1 <
+  // fl(h - t), the minimum when e0 or e1 > fl(h + t).
+  static void rule_out(const T& h, const T& e0, const T& e1, const T& t, bool& at_max, bool& at_min) {
+    if constexpr (number_traits<T>::is_exact) {  // t = 0
+      at_max = at_max && !(e0 < h || e1 < h);
+      at_min = at_min && !(e0 > h || e1 > h);
+    } else {
+      const T below = T(h - t), above = T(h + t);
+      at_max = at_max && !(e0 < below || e1 < below);
+      at_min = at_min && !(e0 > above || e1 > above);
+    }
+  }
+
+  // project_supporting's test on the vertices adjacent to the endpoints of
+  // p's edge e only.  On a convex shape a vertex that is not extreme along n
+  // has a neighbour farther along n, so an edge off the extremes is almost
+  // always ruled out here, after a few projections instead of a scan.  The
+  // tests are those of the scan, on a subset of its vertices, so a pair this
+  // rules out is one the scan would rule out.
+  static void rule_out_by_neighbours(const ConvexPolyhedron<T>& p, const Vec3<T>& n, int e, const T& e0,
+                                     const T& e1, const T& t, bool& at_max, bool& at_min) {
+    for (const int v : {p.edge_tail(e), p.edge_head(e)}) {
+      for (const int h : p.vertex_half_edges(v)) {
+        rule_out(dot(n, p.vertex(p.half_edge(ConvexPolyhedron<T>::twin(h)).origin)), e0, e1, t, at_max, at_min);
+        if (!at_max && !at_min) return;
+      }
+    }
   }
 
   const ConvexPolyhedron<T>& a_;
