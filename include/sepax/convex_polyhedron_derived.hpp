@@ -1,0 +1,283 @@
+// sepax/convex_polyhedron_derived.hpp
+//
+// ConvexPolyhedron<T>'s derived data (convex_polyhedron.hpp declares the
+// class), recomputed from the vertices and the topology whenever they change:
+//   * compute_derived(): the planes from the plane triples, then the rest;
+//   * compute_edge_data(): per-edge directions and face normals (arrays);
+//   * compute_lanes(): the same values one array per coordinate (SIMD scans);
+//   * compute_bounds(): bounds, centroid, extent, max |coordinate|;
+//   * compute_normal_conditioning(), NormalConditioningScan: the shape's term
+//     of the robust kernel's normal error bound;
+//   * height(), height_tolerance(): a point above a face plane, and the
+//     tolerance in those units.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#include "convex_polyhedron.hpp"
+
+namespace sepax {
+
+// The planes from the plane triples, then everything after them.  With
+// eager_conditioning (float/double), normal_conditioning() is computed in
+// the same pass from the plane triples' differences and cross products
+// (the value compute_normal_conditioning() gives, bit for bit: the same
+// expressions and the same scan, NormalConditioningScan).
+template <Number T>
+inline void ConvexPolyhedron<T>::compute_derived(bool eager_conditioning, bool with_bounds) {
+  const auto nf = faces_.size();
+  planes_.resize(nf);
+  [[maybe_unused]] NormalConditioningScan scan;
+  [[maybe_unused]] const bool cond =
+      eager_conditioning && (std::is_same_v<T, float> || std::is_same_v<T, double>);
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (f == 1 && nf == 2) {
+      // Flat shape: the back face's plane is exactly the front one negated.
+      // That is what plane_through on the reversed triple gives in exact
+      // arithmetic and in plain IEEE arithmetic (a*b - c*d is antisymmetric);
+      // under FMA contraction (-march=native -ffp-contract=fast) it is not,
+      // and the "exactly opposite normals" invariant broke (tests/fma).
+      planes_[1] = Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)};
+      continue;
+    }
+    const auto& t = faces_[f].plane_vertices;
+    const Vec3<T>& v0 = vertex(t[0]);
+    const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
+    const Vec3<T> c(cross(e1, e2));
+    planes_[f] = plane_through_cross(v0, e1, e2, c);
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      if (cond) scan.add(e1, e2, c);
+    }
+  }
+  normal_conditioning_.reset();  // new coordinates: computed again on first use
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    if (cond) normal_conditioning_.store(scan.result());
+  }
+  compute_edge_data();
+  if (with_bounds) compute_bounds();
+}
+
+// Everything after the planes: per-edge arrays and lanes.  Reuses the
+// arrays' capacity.
+template <Number T>
+inline void ConvexPolyhedron<T>::compute_edge_data() {
+  // per-edge arrays (after the planes: the normals are copies of theirs)
+  const auto ne = static_cast<std::size_t>(edge_count());
+  edge_dirs_.resize(ne);
+  edge_n0_.resize(ne);
+  edge_n1_.resize(ne);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const HalfEdge& h0 = half_edges_[2 * e];
+    const HalfEdge& h1 = half_edges_[2 * e + 1];
+    edge_dirs_[e] = Vec3<T>(vertex(h1.origin) - vertex(h0.origin));  // edge_direction(e)
+    edge_n0_[e] = planes_[static_cast<std::size_t>(h0.face)].normal;
+    edge_n1_[e] = planes_[static_cast<std::size_t>(h1.face)].normal;
+  }
+  compute_lanes();
+}
+
+// From the vertices alone: bounds, centroid, extent, max |coordinate|.
+template <Number T>
+inline void ConvexPolyhedron<T>::compute_bounds() {
+  Vec3<T> sum(T(0), T(0), T(0));
+  bmin_ = bmax_ = vertices_.empty() ? sum : vertices_[0];
+  for (const auto& v : vertices_) {
+    sum = Vec3<T>(sum + v);
+    for (int c = 0; c < 3; ++c) {
+      if (v[c] < bmin_[c]) bmin_[c] = v[c];
+      if (v[c] > bmax_[c]) bmax_[c] = v[c];
+    }
+  }
+  const T n = from_double<T>(static_cast<double>(vertices_.size()));  // exact for any count < 2^53
+  if (!vertices_.empty()) centroid_ = Vec3<T>(sum[0] / n, sum[1] / n, sum[2] / n);
+  double d2 = 0;
+  max_abs_ = 0;
+  std::array<double, 3> w{};
+  for (int c = 0; c < 3; ++c) {
+    w[static_cast<std::size_t>(c)] = to_double(T(bmax_[c] - bmin_[c]));
+    d2 += w[static_cast<std::size_t>(c)] * w[static_cast<std::size_t>(c)];
+    max_abs_ = std::max({max_abs_, std::abs(to_double(bmin_[c])), std::abs(to_double(bmax_[c]))});
+  }
+  extent_ = std::sqrt(d2);
+  if (!detail::safe_squared_norm(d2)) {
+    // Widths beyond about 1e+-154 (double T): the same diagonal through
+    // widths scaled by a power of two (bit for bit the unscaled value where
+    // that does not overflow or underflow).  Stays infinite if a width is.
+    const double m = std::max({w[0], w[1], w[2]});
+    if (m > 0 && m <= std::numeric_limits<double>::max()) {
+      const int e = std::ilogb(m);
+      double s2 = 0;
+      for (const double wc : w) s2 += std::ldexp(wc, -e) * std::ldexp(wc, -e);
+      extent_ = std::ldexp(std::sqrt(s2), e);
+    }
+  }
+  if constexpr (std::is_floating_point_v<T>) {
+    // The vertex sum overflows long before the coordinates do (n vertices
+    // near max/n): then the centroid is the sum of the vertices scaled by a
+    // power of two, divided by n and scaled back -- bit for bit the plain
+    // formula's value wherever that one does not overflow.
+    if (!vertices_.empty() && !(sum.cwiseAbs().maxCoeff() <= std::numeric_limits<T>::max())) {
+      const int e = detail::pow2_exponent(static_cast<T>(max_abs_));
+      Vec3<T> s(T(0), T(0), T(0));
+      for (const auto& v : vertices_) s = Vec3<T>(s + detail::scale_pow2(v, e));
+      centroid_ = detail::scale_pow2(Vec3<T>(s[0] / n, s[1] / n, s[2] / n), -e);
+    }
+  }
+}
+
+// ρ_P of normal_conditioning(), for the robust kernel's δ_P (derivation in
+// robust/error_bounds.hpp, unit_error_from_ratio: δ_f = γ_4 + 2q/(|Ñ| - q) with
+// q/|Ñ| = γ_4 √2 ρ_f/(1-u)^2 per face, so the worst face is the one with the
+// largest ρ_f = |ẽ1||ẽ2|/|Ñ|).  ẽ1 = fl(v_j - v_i), ẽ2 = fl(v_k - v_i),
+// Ñ = fl(ẽ1 x ẽ2) in T, as plane_through computes them (see there for the
+// range where it rescales).  The bound only uses |Ñ| to bound the exact |N|
+// from below (|N| >= |Ñ| - q), so any evaluation of the cross product with
+// |Ñ - N| <= q will do, contracted or not.  "Tiny": |Ñ|^2 <=
+// kNormalTinySquared = 2^40 min(T) (normalisation underflow; the kernel's
+// margin covers what remains above it, see robust_kernel.hpp).  The back
+// face of a flat shape is skipped: its normal is exactly the front one
+// negated (compute_derived) and its exact N is -N_front, so its δ is the
+// front face's.  This is the loop RobustKernel ran over every face of both
+// shapes on every query (normal_error) until it moved here.
+template <Number T>
+inline double ConvexPolyhedron<T>::compute_normal_conditioning() const {
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    NormalConditioningScan scan;
+    const int nf = is_flat() ? 1 : face_count();
+    for (int f = 0; f < nf; ++f) {
+      const auto& t = face(f).plane_vertices;
+      const Vec3<T>& v0 = vertex(t[0]);
+      const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
+      scan.add(e1, e2, Vec3<T>(cross(e1, e2)));
+    }
+    return scan.result();
+  } else {
+    return std::numeric_limits<double>::infinity();
+  }
+}
+
+// The scan of compute_normal_conditioning() over the plane triples (v0, v1,
+// v2), one face at a time, given ẽ1 = fl(v1 - v0), ẽ2 = fl(v2 - v0) and
+// Ñ = fl(ẽ1 x ẽ2) in T (cross()); their squares in double.
+template <Number T>
+struct ConvexPolyhedron<T>::NormalConditioningScan {
+  // float: the maximum of r2 = |ẽ1|^2 |ẽ2|^2 / |Ñ|^2 without a division or
+  // a finiteness test per face: the maximum fraction num/den is tracked by
+  // cross multiplication.  Every factor is a double square of a float
+  // (<= 3 * 2^256), so num * den < 2^1024 cannot overflow; an infinite or
+  // NaN difference or cross product, or a tiny |Ñ|, sets `bad`.  The one
+  // division and sqrt at the end round once each (relative 2^-53, inside
+  // the kernel's margin).
+  // double: the squares can overflow, so one ratio per face, infinite when
+  // not finite (never NaN, which a maximum would skip).
+  double wnum = 0, wden = 1, worst = 0;
+  bool bad = false;
+
+  void add(const Vec3<T>& e1, const Vec3<T>& e2, const Vec3<T>& n) {
+    auto sq = [](const Vec3<T>& v) {
+      const double x = v[0], y = v[1], z = v[2];
+      return x * x + y * y + z * z;
+    };
+    const double nc2 = sq(n);
+    if constexpr (std::is_same_v<T, float>) {
+      const double num = sq(e1) * sq(e2);
+      bad |= !(nc2 > kNormalTinySquared && nc2 <= std::numeric_limits<double>::max() &&
+               num <= std::numeric_limits<double>::max());
+      const bool larger = num * wden > wnum * nc2;
+      wnum = larger ? num : wnum;
+      wden = larger ? nc2 : wden;
+    } else {
+      double r2 = std::numeric_limits<double>::infinity();
+      if (nc2 > kNormalTinySquared && std::isfinite(nc2)) {
+        r2 = sq(e1) / nc2 * sq(e2);
+        if (!std::isfinite(r2)) r2 = std::numeric_limits<double>::infinity();
+      }
+      if (r2 > worst) worst = r2;
+    }
+  }
+  double result() const {
+    if constexpr (std::is_same_v<T, float>) {
+      if (bad) return std::numeric_limits<double>::infinity();
+      return std::sqrt(wnum / wden);
+    } else {
+      return std::sqrt(worst);
+    }
+  }
+};
+
+// The lane arrays from the per-edge arrays and the vertices, each value
+// written once (only the padding is zeroed).  lanes_bounded_: every lane
+// value and every plane normal has |x| <= 2^60 (false for NaN).  The edge
+// normal lanes are copies (or negations) of plane normals and the padding
+// is zero, so that is: every plane normal, edge direction and vertex
+// coordinate; tested without a branch per value.
+template <Number T>
+inline void ConvexPolyhedron<T>::compute_lanes() {
+  lane_edge_stride_ = lane_vertex_stride_ = 0;
+  lanes_bounded_ = false;
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    auto padded = [](int n) { return (n + kLanePad - 1) / kLanePad * kLanePad; };
+    lane_edge_stride_ = padded(edge_count());
+    lane_vertex_stride_ = padded(vertex_count());
+    const auto es = static_cast<std::size_t>(lane_edge_stride_);
+    const auto vs = static_cast<std::size_t>(lane_vertex_stride_);
+    const auto ne = static_cast<std::size_t>(edge_count());
+    const auto nv = static_cast<std::size_t>(vertex_count());
+    lanes_.resize(9 * es + 3 * vs);
+    T* const l = lanes_.data();
+    const T big = T(0x1p60);
+    bool ok = true;
+    for (std::size_t e = 0; e < ne; ++e) {
+      const Vec3<T>& n0 = edge_n0_[e];
+      const Vec3<T>& n1 = edge_n1_[e];
+      const Vec3<T>& d = edge_dirs_[e];
+      for (std::size_t c = 0; c < 3; ++c) {
+        l[c * es + e] = n0[static_cast<int>(c)];
+        l[(3 + c) * es + e] = T(-n1[static_cast<int>(c)]);
+        l[(6 + c) * es + e] = d[static_cast<int>(c)];
+        ok &= std::abs(d[static_cast<int>(c)]) <= big;
+      }
+    }
+    for (std::size_t k = 0; k < 9; ++k) std::fill(l + k * es + ne, l + (k + 1) * es, T(0));
+    T* const lv = l + 9 * es;
+    for (std::size_t v = 0; v < nv; ++v) {
+      for (std::size_t c = 0; c < 3; ++c) {
+        const T x = vertices_[v][static_cast<int>(c)];
+        lv[c * vs + v] = x;
+        ok &= std::abs(x) <= big;
+      }
+    }
+    for (std::size_t c = 0; c < 3; ++c) std::fill(lv + c * vs + nv, lv + (c + 1) * vs, T(0));
+    for (const auto& pl : planes_) {
+      for (int c = 0; c < 3; ++c) ok &= std::abs(pl.normal[c]) <= big;
+    }
+    lanes_bounded_ = ok;
+  } else {
+    lanes_.clear();
+  }
+}
+
+// Signed distance-like value of p above plane f: exact N.(p - v_i) for exact
+// T; the Euclidean signed distance for normalising T.
+template <Number T>
+inline T ConvexPolyhedron<T>::height(int f, const Vec3<T>& p) const {
+  const auto& pl = plane(f);
+  return T(dot(pl.normal, p) - pl.offset);
+}
+
+// Tolerance in height() units for a relative tolerance rel.
+template <Number T>
+inline T ConvexPolyhedron<T>::height_tolerance(double rel) const {
+  if constexpr (number_traits<T>::is_exact) {
+    (void)rel;
+    return T(0);
+  } else {
+    return static_cast<T>(rel * extent_);
+  }
+}
+
+}  // namespace sepax
