@@ -237,13 +237,19 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
     projection_rule_ = true;
     const EdgeAxis ax = edge_axis(ea, eb);
     const Vec3<T>& n = ax.n;
-    Extremes ea_x = extremes(a_, n, a_.edge_tail(ea), a_.edge_head(ea));
     const double wa = e_.proj_abs_a + ax.delta * e_.extent_a * kMargin;
-    const bool a_max = all_on_side(a_, ea_x, n, wa, +1, ea, eb);
-    const bool a_min = all_on_side(a_, ea_x, n, wa, -1, ea, eb);
+    const double wb = e_.proj_abs_b + ax.delta * e_.extent_b * kMargin;
+    // Most pairs support neither orientation, and the neighbours of the
+    // edges' endpoints show it (rule_out_by_neighbours) before any scan.
+    bool may_plus = true, may_minus = true;
+    rule_out_by_neighbours(a_, n, ea, wa, may_plus, may_minus);
+    if (may_plus || may_minus) rule_out_by_neighbours(b_, n, eb, wb, may_minus, may_plus);
+    if (!may_plus && !may_minus) return std::nullopt;
+    Extremes ea_x = extremes(a_, n, a_.edge_tail(ea), a_.edge_head(ea));
+    const bool a_max = may_plus && all_on_side(a_, ea_x, n, wa, +1, ea, eb);
+    const bool a_min = may_minus && all_on_side(a_, ea_x, n, wa, -1, ea, eb);
     if (!a_max && !a_min) return std::nullopt;
     Extremes eb_x = extremes(b_, n, b_.edge_tail(eb), b_.edge_head(eb));
-    const double wb = e_.proj_abs_b + ax.delta * e_.extent_b * kMargin;
     const bool b_min = a_max && all_on_side(b_, eb_x, n, wb, -1, ea, eb);
     const bool b_max = a_min && all_on_side(b_, eb_x, n, wb, +1, ea, eb);
     const bool plus = a_max && b_min;   // +n from A to B
@@ -353,6 +359,31 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
     x.lo = lo_edge < x.lo_other ? lo_edge : x.lo_other;
     x.hi = hi_edge > x.hi_other ? hi_edge : x.hi_other;
     return x;
+  }
+
+  // The test of all_on_side on the vertices adjacent to the endpoints of p's
+  // edge e only (the endpoints themselves excluded): a neighbour whose
+  // projection exceeds the tail's by more than w (the bound on the error of
+  // that difference, the one all_on_side uses) is exactly beyond the edge
+  // along n*, which rules out the edge at p's maximum (at_max := false; at
+  // p's minimum for a difference below -w).  all_on_side decides the same
+  // (its extreme is at least as far, and the subtraction rounds
+  // monotonically), and either way the decision is the exact one.  On a
+  // convex shape a vertex that is not extreme along n has a neighbour farther
+  // along n, so most edges off the extremes are ruled out here.
+  void rule_out_by_neighbours(const P& p, const Vec3<T>& n, int e, double w, bool& at_max, bool& at_min) const {
+    const int tail = p.edge_tail(e), head = p.edge_head(e);
+    const double ref = static_cast<double>(dot(n, p.vertex(tail)));
+    for (const int v : {tail, head}) {
+      for (const int h : p.vertex_half_edges(v)) {
+        const int u = p.half_edge(P::twin(h)).origin;
+        if (u == tail || u == head) continue;
+        const double d = static_cast<double>(dot(n, p.vertex(u))) - ref;
+        if (d > w) at_max = false;
+        if (-d > w) at_min = false;
+        if (!at_max && !at_min) return;
+      }
+    }
   }
 
   // dir = +1: every vertex v of p satisfies n*.(v - ref) <= 0 (the edge is at
