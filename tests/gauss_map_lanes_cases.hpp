@@ -77,7 +77,7 @@ void check_lane_arrays(const ConvexPolyhedron<T>& p) {
       const auto i = static_cast<std::size_t>(e);
       wrong += !same_bits(p.lane_edge(c)[i], pad ? T(0) : p.edge_normal(e, 0)[c]);
       wrong += !same_bits(p.lane_edge(3 + c)[i], pad ? T(0) : T(-p.edge_normal(e, 1)[c]));
-      wrong += !same_bits(p.lane_edge(6 + c)[i], pad ? T(0) : p.edge_dir(e)[c]);
+      wrong += !same_bits(p.lane_edge(6 + c)[i], pad ? T(0) : p.edge_direction(e)[c]);
     }
   }
   for (int v = 0; v < p.vertex_count(); ++v) {

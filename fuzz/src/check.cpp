@@ -537,7 +537,7 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
       } else if (exact_candidate) {
         const Separation<Q> x = exact_value(E, sat, f);
         if (!beats(x, *own, bf + S.bound(sat, f))) continue;  // does not beat it
-        if (skipped && parallel_band<F>(A.edge_dir(ea), B.edge_dir(eb)) == ParallelBand::inside) continue;  // (6)
+        if (skipped && parallel_band<F>(A.edge_direction(ea), B.edge_direction(eb)) == ParallelBand::inside) continue;  // (6)
         if (!skipped && !brute) continue;  // its arc test: classified per pair (2)
         if (!skipped) {  // the exact brute force measures only exactly supported pairs
           const EdgeGaps g = exact_edge_gaps(E, ea, eb);

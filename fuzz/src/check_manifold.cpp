@@ -564,7 +564,7 @@ struct FloatCheck {
     const int inc = mf.incident_face;
     // -- replay both clips --
     const double ext = std::min(A.extent(), B.extent());
-    const F weld2 = contact_detail::extent_tolerance(A, B, Tolerances<F>::contact_weld, 2);
+    const F weld2 = detail::extent_tolerance(A, B, Tolerances<F>::contact_weld, 2);
     const double weld = std::sqrt(double(weld2));
     const Replay<F> rpf = replay_clip(R, I, rf, inc, dn, weld2);
     const Replay<Q> rpe = replay_clip(Re, Ie, rf, inc, 0.0, Q(0));

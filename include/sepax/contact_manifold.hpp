@@ -158,7 +158,7 @@ struct ContactManifold {
   }
 };
 
-namespace contact_detail {
+namespace detail {
 
 template <Number T>
 T norm2_of(const Vec3<T>& n) {
@@ -520,7 +520,7 @@ void side_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   m.candidate_points = static_cast<int>(m.points.size());
 }
 
-}  // namespace contact_detail
+}  // namespace detail
 
 /// The contact manifold of A and B from a SAT result `sat` for the same pair
 /// (both shapes in one frame).  Throws InvalidInput when the options are bad
@@ -543,41 +543,41 @@ ContactManifold<T> contact_manifold(const ConvexPolyhedron<T>& a, const ConvexPo
   m.separation = sat.separation;
   if (a.empty() || b.empty()) return m;
   const T margin = from_double<T>(opt.margin);
-  if (!contact_detail::within_margin(sat.separation, margin)) return m;
-  using contact_detail::check_index;
+  if (!detail::within_margin(sat.separation, margin)) return m;
+  using detail::check_index;
   switch (sat.feature.type) {
     case FeatureType::FaceA: {
       check_index(sat.feature.a, a.face_count(), "face of A");
       int v = sat.feature.b;
-      if (v < 0) v = contact_detail::support_vertex(b, a.plane(sat.feature.a).normal);
+      if (v < 0) v = detail::support_vertex(b, a.plane(sat.feature.a).normal);
       check_index(v, b.vertex_count(), "support vertex of B");
-      contact_detail::face_contact(a, b, true, sat.feature.a, v, margin, opt, m);
+      detail::face_contact(a, b, true, sat.feature.a, v, margin, opt, m);
       break;
     }
     case FeatureType::FaceB: {
       check_index(sat.feature.b, b.face_count(), "face of B");
       int v = sat.feature.a;
-      if (v < 0) v = contact_detail::support_vertex(a, b.plane(sat.feature.b).normal);
+      if (v < 0) v = detail::support_vertex(a, b.plane(sat.feature.b).normal);
       check_index(v, a.vertex_count(), "support vertex of A");
-      contact_detail::face_contact(a, b, false, sat.feature.b, v, margin, opt, m);
+      detail::face_contact(a, b, false, sat.feature.b, v, margin, opt, m);
       break;
     }
     case FeatureType::EdgePair: {
       check_index(sat.feature.a, a.edge_count(), "edge of A");
       check_index(sat.feature.b, b.edge_count(), "edge of B");
-      contact_detail::edge_contact(a, b, sat.feature.a, sat.feature.b, m);
+      detail::edge_contact(a, b, sat.feature.a, sat.feature.b, m);
       break;
     }
     case FeatureType::SideA: {
       check_index(sat.feature.a, a.edge_count(), "edge of A");
       check_index(sat.feature.b, b.vertex_count(), "support vertex of B");
-      contact_detail::side_contact(a, b, true, sat.feature.a, sat.feature.b, margin, m);
+      detail::side_contact(a, b, true, sat.feature.a, sat.feature.b, margin, m);
       break;
     }
     case FeatureType::SideB: {
       check_index(sat.feature.b, b.edge_count(), "edge of B");
       check_index(sat.feature.a, a.vertex_count(), "support vertex of A");
-      contact_detail::side_contact(a, b, false, sat.feature.b, sat.feature.a, margin, m);
+      detail::side_contact(a, b, false, sat.feature.b, sat.feature.a, margin, m);
       break;
     }
   }

@@ -367,25 +367,25 @@ class ConvexPolyhedron {
   int edge_head(int e) const { return half_edge(2 * e + 1).origin; }
   /// side 0: the face of half-edge 2e; side 1: the face of half-edge 2e+1.
   int edge_face(int e, int side) const { return half_edge(2 * e + side).face; }
-  /// head - tail; parallel to normal(edge_face(e,0)) x normal(edge_face(e,1)).
-  Vec3<T> edge_direction(int e) const { return Vec3<T>(vertex(edge_head(e)) - vertex(edge_tail(e))); }
 
   // ---- per-edge data for the Minkowski-face test (structure of arrays) ----
   // Recomputed with the planes (from_faces, convert_from, with_vertices), one
   // entry per undirected edge e, in edge order:
-  //   edge_directions()[e]   head - tail, the same value edge_direction(e)
-  //                          computes (one subtraction per coordinate in T);
+  //   edge_directions()[e]   head - tail (one subtraction per coordinate in
+  //                          T), parallel to normal(edge_face(e, 0)) x
+  //                          normal(edge_face(e, 1));
   //   edge_normals(s)[e]     plane(edge_face(e, s)).normal, copied.
   // Contiguous arrays, so the Gauss map's edge-pair loop streams through B's
   // edges without the half-edge and face indirections.  Vec3<T> for every T,
-  // exact types included: the values are exactly those of the accessors above.
+  // exact types included.
   std::span<const Vec3<T>> edge_directions() const { return edge_dirs_; }
   /// Normals of the faces on side 0 (face of half-edge 2e) or side 1 (2e+1).
   std::span<const Vec3<T>> edge_normals(int side) const {
     return side == 0 ? std::span<const Vec3<T>>(edge_n0_) : std::span<const Vec3<T>>(edge_n1_);
   }
-  /// edge_directions()[e].
-  const Vec3<T>& edge_dir(int e) const { return edge_dirs_[static_cast<std::size_t>(e)]; }
+  /// edge_directions()[e] == vertex(edge_head(e)) - vertex(edge_tail(e)),
+  /// parallel to normal(edge_face(e, 0)) x normal(edge_face(e, 1)).
+  const Vec3<T>& edge_direction(int e) const { return edge_dirs_[static_cast<std::size_t>(e)]; }
   /// edge_normals(side)[e] == plane(edge_face(e, side)).normal.
   const Vec3<T>& edge_normal(int e, int side) const {
     return (side == 0 ? edge_n0_ : edge_n1_)[static_cast<std::size_t>(e)];
@@ -396,7 +396,7 @@ class ConvexPolyhedron {
   //   lane_edge(k)[e], k = 0..2: edge_normal(e, 0) x, y, z;
   //                    3..5: -edge_normal(e, 1) (negated: exact, and the arc
   //                          test then wants all four products of one sign);
-  //                    6..8: edge_dir(e)                (the Gauss map's arc test)
+  //                    6..8: edge_direction(e)          (the Gauss map's arc test)
   //   lane_vertex(c)[v], c = 0..2: vertex(v)[c]          (support scans)
   // Copies (or exact negations), not recomputations.  Each array is padded to
   // a multiple of kLanePad entries (the padding holds zeros and is masked out

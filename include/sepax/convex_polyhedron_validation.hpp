@@ -67,7 +67,7 @@ inline void ConvexPolyhedron<T>::check_range(bool planes) {
                                   ": sepax needs |coordinate| <= " + num_str(limit) +
                                   " (max/16) so that edges, plane offsets and projections stay finite");
   }
-  const double smallest_tol = Tolerances<T>::coplanar / 4 * extent_;
+  const double smallest_tol = Tolerances<T>::coplanar * kAdjacentCoplanarFraction * extent_;
   if (!(smallest_tol >= static_cast<double>(std::numeric_limits<T>::min()))) {
     fail(ErrorCode::BadScale, "extent " + num_str(extent_) + " is too small for " + tname +
                                   ": the validation tolerances (relative to the extent) fall "
@@ -308,7 +308,7 @@ inline void ConvexPolyhedron<T>::validate_geometry() {
     if constexpr (number_traits<T>::is_exact) {
       coplanar = is_zero(cross(plane(f).normal, plane(g).normal));
     } else {
-      const T tol = height_tolerance(Tolerances<T>::coplanar / 4);
+      const T tol = height_tolerance(Tolerances<T>::coplanar * kAdjacentCoplanarFraction);
       coplanar = true;
       int h = face(g).edge;
       for (int i = 0; i < face(g).count && coplanar; ++i, h = half_edge(h).next)

@@ -28,7 +28,7 @@ struct ManifoldDifference {
   bool identical() const { return same_kind && same_feature && same_faces && same_ids; }
 };
 
-namespace compare_detail {
+namespace detail {
 template <Number T>
 int deepest_index(const ContactManifold<T>& m) {
   int best = -1;
@@ -39,7 +39,7 @@ int deepest_index(const ContactManifold<T>& m) {
   }
   return best;
 }
-}  // namespace compare_detail
+}  // namespace detail
 
 /// Compare manifold `x` (e.g. float) with `y` (e.g. exact) of the same pair.
 template <Number X, Number Y>
@@ -59,7 +59,7 @@ ManifoldDifference compare_manifolds(const ContactManifold<X>& x, const ContactM
     d.max_position_error =
         std::max(d.max_position_error, (vec_to_double(p.position) - vec_to_double(q.position)).norm());
   }
-  const int ix = compare_detail::deepest_index(x), iy = compare_detail::deepest_index(y);
+  const int ix = detail::deepest_index(x), iy = detail::deepest_index(y);
   if (ix >= 0 && iy >= 0) {
     d.same_deepest = x.points[static_cast<std::size_t>(ix)].id == y.points[static_cast<std::size_t>(iy)].id;
     d.deepest_depth_error =

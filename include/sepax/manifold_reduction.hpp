@@ -62,7 +62,7 @@
 
 namespace sepax {
 
-namespace reduction_detail {
+namespace detail {
 
 template <Number T>
 T orient(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& n) {
@@ -81,7 +81,7 @@ inline bool lex_less(std::array<int, 3> x, std::array<int, 3> y) {
   return x < y;
 }
 
-}  // namespace reduction_detail
+}  // namespace detail
 
 /// The reduction's area objective H of the points `idx` (2 to 4 indices into
 /// `points`): the doubled area of their convex hull seen along `normal`, times
@@ -90,7 +90,7 @@ inline bool lex_less(std::array<int, 3> x, std::array<int, 3> y) {
 template <Number T>
 T contact_hull_area2(const std::vector<Vec3<T>>& points, const std::vector<int>& idx, const Vec3<T>& normal) {
   auto P = [&](std::size_t i) -> const Vec3<T>& { return points[static_cast<std::size_t>(idx[i])]; };
-  using reduction_detail::orient;
+  using detail::orient;
   if (idx.size() == 3) return abs_of(orient(P(0), P(1), P(2), normal));
   if (idx.size() == 4) {
     const T s = T(abs_of(orient(P(0), P(1), P(2), normal)) + abs_of(orient(P(0), P(1), P(3), normal)) +
@@ -113,7 +113,7 @@ bool weakly_convex_sequence(const Points& points, const Seq& q, const Vec3<T>& n
   const std::size_t n = q.size();
   auto P = [&](std::size_t i) -> const Vec3<T>& { return points[static_cast<std::size_t>(q[i % n])]; };
   auto sgn_tol = [&](const T& x) { return x > tol ? 1 : (x < T(-tol) ? -1 : 0); };
-  using reduction_detail::orient;
+  using detail::orient;
   sigma = 0;
   // q[0] must not coincide with its neighbours (its two rays below).
   if (!(squared_norm(Vec3<T>(P(1) - P(0))) > T(0)) || !(squared_norm(Vec3<T>(P(n - 1) - P(0))) > T(0))) return false;
@@ -179,8 +179,8 @@ void reduce_contact_points_into(const Points& points, const Keys& keys, const Ve
     for (int i = 0; i < n; ++i) out.push_back(i);
     return;
   }
-  using reduction_detail::lex_less;
-  using reduction_detail::orient;
+  using detail::lex_less;
+  using detail::orient;
   auto P = [&](int i) -> const Vec3<T>& { return points[static_cast<std::size_t>(i)]; };
   // 1. the deepest point: the lowest index within key_tol of the smallest key.
   T kmin = keys[0];

@@ -70,12 +70,12 @@ class PlainKernel {
     return sign_of(d);
   }
 
-  // The arc test reads the per-edge arrays of ConvexPolyhedron (edge_dir,
+  // The arc test reads the per-edge arrays of ConvexPolyhedron (edge_direction,
   // edge_normal): the same T values as head - tail and the face planes'
   // normals, without the half-edge and face indirections.
   ArcSigns arc_signs(int ea, int eb) const {
-    const Vec3<T>& da = a_.edge_dir(ea);
-    const Vec3<T>& db = b_.edge_dir(eb);
+    const Vec3<T>& da = a_.edge_direction(ea);
+    const Vec3<T>& db = b_.edge_direction(eb);
     ArcSigns s;
     s.cba = sign_of(dot(b_.edge_normal(eb, 0), da));
     s.dba = sign_of(dot(b_.edge_normal(eb, 1), da));
@@ -88,7 +88,7 @@ class PlainKernel {
   /// (bit-identical for float), stopping after cba, dba when they are not
   /// strictly opposite (most pairs).
   bool minkowski_face(int ea, int eb) const {
-    const Vec3<T>& da = a_.edge_dir(ea);
+    const Vec3<T>& da = a_.edge_direction(ea);
     const T c = dot(b_.edge_normal(eb, 0), da);
     const T d = dot(b_.edge_normal(eb, 1), da);
     if constexpr (number_traits<T>::is_exact) {
@@ -102,7 +102,7 @@ class PlainKernel {
       if (!(lo < T(0) && T(0) < hi)) return false;
     }
     const int cba = sign_of(c);
-    const Vec3<T>& db = b_.edge_dir(eb);
+    const Vec3<T>& db = b_.edge_direction(eb);
     const int adc = -sign_of(dot(a_.edge_normal(ea, 0), db));
     const int bdc = -sign_of(dot(a_.edge_normal(ea, 1), db));
     return adc * bdc < 0 && cba * bdc > 0;
@@ -118,7 +118,7 @@ class PlainKernel {
     requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
   {
     if (lanes_) {
-      return simd::arc_candidates<false>(b_, lo, hi, a_.edge_dir(ea), a_.edge_normal(ea, 0),
+      return simd::arc_candidates<false>(b_, lo, hi, a_.edge_direction(ea), a_.edge_normal(ea, 0),
                                          a_.edge_normal(ea, 1), T(0), out);
     }
     int n = 0;
@@ -129,8 +129,8 @@ class PlainKernel {
   }
 
   bool edges_parallel(int ea, int eb) const {
-    const Vec3<T>& da = a_.edge_dir(ea);
-    const Vec3<T>& db = b_.edge_dir(eb);
+    const Vec3<T>& da = a_.edge_direction(ea);
+    const Vec3<T>& db = b_.edge_direction(eb);
     const Vec3<T> n = cross(da, db);
     if constexpr (number_traits<T>::is_exact) {
       return is_zero(n);
@@ -203,11 +203,12 @@ class PlainKernel {
       // fl(n.v) with |n| = 1 (itself rounded: |fl(n) - n| <= 3u) is off by at
       // most (gamma_3 + 3u)|v|_1 <= 7u*sqrt(3)*max|v_i| (first order), so two
       // projections of vertices of p differ from the exact difference by at
-      // most 2*7*sqrt(3)u*max|v_i| < 25u*max|v_i|.  Without it, a small shape
-      // far from the origin (rounding > support*extent, e.g. extent 0.01 at
-      // distance 4) loses its supporting edges.
+      // most 2*7*sqrt(3)u*max|v_i| < 25u*max|v_i| (kSupportRoundingSlack,
+      // tolerances.hpp).  Without it, a small shape far from the origin
+      // (rounding > support*extent) loses its supporting edges.
       const double u = number_traits<T>::unit_roundoff;
-      return static_cast<T>(Tolerances<T>::support * p.extent() + 25.0 * u * p.max_abs_coordinate());
+      return static_cast<T>(Tolerances<T>::support * p.extent() +
+                            kSupportRoundingSlack * u * p.max_abs_coordinate());
     }
   }
 
@@ -261,7 +262,7 @@ class PlainKernel {
   }
 
   static Vec3<T> side_normal(const ConvexPolyhedron<T>& p, int e) {
-    return normalized(scaled_cross(p.edge_dir(e), p.edge_normal(e, 0)));  // scale-safe: vec3.hpp
+    return normalized(scaled_cross(p.edge_direction(e), p.edge_normal(e, 0)));  // scale-safe: vec3.hpp
   }
 
   static FaceQuery<T> side_query(const ConvexPolyhedron<T>& p, int e, const ConvexPolyhedron<T>& q) {
@@ -299,7 +300,7 @@ class PlainKernel {
 
   // eA x eB, normalised when T normalises (not oriented).
   Vec3<T> unoriented_axis(int ea, int eb) const {
-    return normalized(scaled_cross(a_.edge_dir(ea), b_.edge_dir(eb)));
+    return normalized(scaled_cross(a_.edge_direction(ea), b_.edge_direction(eb)));
   }
 
   // eA x eB oriented from A to B (Gregorius' rule: for a Minkowski edge pair

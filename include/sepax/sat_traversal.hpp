@@ -73,8 +73,8 @@ class Traversal : public TraversalArcWalk<K> {
 
   SatResult<T> run() {
     const int fa = wa_.face_count(), fb = wb_.face_count();
-    FaceScratch st(fa + fb);
-    // st(f) for faces of A at [0, fa), for faces of B at [fa, fa + fb):
+    FaceScratch states(fa + fb);
+    // states(f) for faces of A at [0, fa), for faces of B at [fa, fa + fb):
     // (vertex << 2) | kCertified | kTie, see climb().
     if constexpr (kFast) {
       gather(probes_a_, wa_, k_.a());
@@ -86,8 +86,8 @@ class Traversal : public TraversalArcWalk<K> {
       if (seed_ && warm_start()) return best_.result(k_, stats_, true);
     }
     if (start()) return best_.result(k_, stats_, true);
-    if (faces<true>(st, 0)) return best_.result(k_, stats_, true);
-    if (faces<false>(st, fa)) return best_.result(k_, stats_, true);
+    if (faces<true>(states, 0)) return best_.result(k_, stats_, true);
+    if (faces<false>(states, fa)) return best_.result(k_, stats_, true);
     const int ne = wa_.edge_count();
     if constexpr (kRoundingDecisions) {
       // Plain float/double with a flat shape (a polygon lying on or near the
@@ -106,7 +106,7 @@ class Traversal : public TraversalArcWalk<K> {
         return best_.result(k_, stats_, false);
       }
     }
-    const int* sa = &st[0];  // faces of A (arc() updates them through st)
+    const int* a_states = &states[0];  // faces of A (arc() updates them through states)
     std::int64_t pruned = 0;
     bool stop = false;
     // Arcs in chunks of 64.  First, without a data-dependent branch (its
@@ -126,7 +126,7 @@ class Traversal : public TraversalArcWalk<K> {
     // without a branch on the outcome (cut_end_bounds()).  The arcs left go
     // through the full test, on their current states.  All passes are
     // kernel decisions, so the exact walk marks and prunes the same arcs.
-    const int* ef = wa_.edge_faces();
+    const int* edge_faces = wa_.edge_faces();
     for (int base = 0; base < ne && !stop; base += 64) {
       const int end = ne - base < 64 ? ne : base + 64;
       // bit `kind` (a state's low two bits) is set for the kinds that equal
@@ -134,18 +134,18 @@ class Traversal : public TraversalArcWalk<K> {
       const unsigned kinds = (1u << kCertified) | (prune_arcs_ && best_nonpositive() ? 1u : 0u);
       std::uint64_t settled = 0;
       for (int ea = base; ea < end; ++ea) {
-        const int s0 = sa[ef[2 * ea]], s1 = sa[ef[2 * ea + 1]];
+        const int s0 = a_states[edge_faces[2 * ea]], s1 = a_states[edge_faces[2 * ea + 1]];
         const unsigned skip = static_cast<unsigned>(s0 == s1) & (kinds >> (s0 & 3));
         settled |= static_cast<std::uint64_t>(skip) << (ea - base);
         pruned += skip & ~static_cast<unsigned>(s0 >> 1);  // kind 0 (kind kCertified has bit 1 set)
       }
       const std::uint64_t all = end - base == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << (end - base)) - 1;
       std::uint64_t todo = ~settled & all;
-      if (kinds & 1u) todo &= ~cut_end_bounds(base, todo, sa, ef, pruned);
+      if (kinds & 1u) todo &= ~cut_end_bounds(base, todo, a_states, edge_faces, pruned);
       for (; todo != 0; todo &= todo - 1) {
         const int ea = base + std::countr_zero(todo);
         const int f0 = wa_.edge_face(ea, 0), f1 = wa_.edge_face(ea, 1);
-        const int s0 = sa[f0], s1 = sa[f1];
+        const int s0 = a_states[f0], s1 = a_states[f1];
         if (s0 == s1) {
           if ((s0 & 3) == kCertified) continue;
           if ((s0 & 3) == 0 && prune_arcs_ && best_nonpositive()) {
@@ -157,7 +157,7 @@ class Traversal : public TraversalArcWalk<K> {
           ++pruned;
           continue;
         }
-        if (arc(st, ea, f0, f1)) {
+        if (arc(states, ea, f0, f1)) {
           stop = true;
           break;
         }
@@ -293,7 +293,7 @@ class Traversal : public TraversalArcWalk<K> {
   // the faces not certainly below go on one by one, with the same decisions
   // as the one-face loop of small shapes.
   template <bool OfA>
-  bool faces(FaceScratch& st, int base) {
+  bool faces(FaceScratch& states, int base) {
     const GaussMapWalk& w = OfA ? wa_ : wb_;
     const int* order = w.face_order().data();
     const int* parent = w.face_parent().data();
@@ -303,7 +303,7 @@ class Traversal : public TraversalArcWalk<K> {
       const Vec3<T>* vs = (OfA ? k_.b() : k_.a()).vertices().data();
       std::int64_t pruned = 0;
       bool stop = false;
-      int* sb = &st[base];  // this shape's per-face states
+      int* shape_states = &states[base];  // this shape's per-face states
       const std::vector<int>& chunks = w.face_chunks();
       const int nc = static_cast<int>(chunks.size()) - 1;
       int i = 0;  // the last face processed when stopped
@@ -312,15 +312,15 @@ class Traversal : public TraversalArcWalk<K> {
         for (; i < nf; ++i) {
           const int f = order[i];
           // the BFS root (i = 0, parent -1) is seeded by step 0
-          const int seed = i > 0 ? sb[parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
+          const int seed = i > 0 ? shape_states[parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
           // most faces stop at their seed: decided here, without a call
           const T h = fast_height(planes[f], vs[seed]);
-          sb[f] = seed << 2;
+          shape_states[f] = seed << 2;
           if (h < (OfA ? lo_a_ : lo_b_)) {
             ++pruned;
             continue;
           }
-          if (beyond_seed<OfA>(sb, f, seed, h, pruned)) {
+          if (beyond_seed<OfA>(shape_states, f, seed, h, pruned)) {
             stop = true;
             break;
           }
@@ -337,9 +337,9 @@ class Traversal : public TraversalArcWalk<K> {
           std::uint64_t fail = 0;
           for (int j = b; j < e; ++j) {
             const int f = order[j];
-            const int seed = j > 0 ? sb[parent[j]] >> 2 : OfA ? seed_a_ : seed_b_;
+            const int seed = j > 0 ? shape_states[parent[j]] >> 2 : OfA ? seed_a_ : seed_b_;
             const T h = fast_height(planes[f], vs[seed]);
-            sb[f] = seed << 2;
+            shape_states[f] = seed << 2;
             fail |= static_cast<std::uint64_t>(!(h < lo)) << (j - b);
           }
           // Then the others, in order, with the current best.
@@ -347,8 +347,8 @@ class Traversal : public TraversalArcWalk<K> {
           for (std::uint64_t todo = fail; todo != 0; todo &= todo - 1) {
             const int j = b + std::countr_zero(todo);
             const int f = order[j];
-            const int seed = sb[f] >> 2;
-            if (beyond_seed<OfA>(sb, f, seed, fast_height(planes[f], vs[seed]), pruned)) {
+            const int seed = shape_states[f] >> 2;
+            if (beyond_seed<OfA>(shape_states, f, seed, fast_height(planes[f], vs[seed]), pruned)) {
               stop = true;
               i = last = j;
               break;
@@ -368,23 +368,23 @@ class Traversal : public TraversalArcWalk<K> {
     } else {
       for (int i = 0; i < nf; ++i) {
         const int f = order[i];
-        const int seed = parent[i] >= 0 ? st[base + parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
+        const int seed = parent[i] >= 0 ? states[base + parent[i]] >> 2 : OfA ? seed_a_ : seed_b_;
         ++stats_.face_axes;
         // the same decisions in the same order as the fast path: the seed,
         // the probes, then the climb
         if (below_best(this->template height<OfA>(f, seed), this->template face_feature<OfA>(f, seed))) {
-          st[base + f] = seed << 2;
+          states[base + f] = seed << 2;
           ++ts_.pruned_faces;
           continue;
         }
         if (const int p = this->template probe_below_best<OfA>(f, seed); p >= 0) {
-          st[base + f] = p << 2;
+          states[base + f] = p << 2;
           ++ts_.pruned_faces;
           ++ts_.probe_pruned;
           continue;
         }
         const int s = this->template climb<OfA>(f, seed, true, false);
-        st[base + f] = s;
+        states[base + f] = s;
         if (!(s & kCertified)) {
           ++ts_.pruned_faces;
           continue;
@@ -397,22 +397,22 @@ class Traversal : public TraversalArcWalk<K> {
 
   // Fast kernels, face f whose seed's height h is not certainly below the
   // best (h >= lo, or NaN): the full decision at the seed (the filter, exact
-  // between the thresholds), then the probes, then the climb.  Sets sb[f]
+  // between the thresholds), then the probes, then the climb.  Sets shape_states[f]
   // (already seed << 2) and counts pruned faces; true on early out.
   template <bool OfA>
-  bool beyond_seed(int* sb, int f, int seed, T h, std::int64_t& pruned) {
+  bool beyond_seed(int* shape_states, int f, int seed, T h, std::int64_t& pruned) {
     if (this->template face_below_best<OfA>(f, seed, h)) {
       ++pruned;
       return false;
     }
     if (const int p = this->template probe_below_best<OfA>(f, seed); p >= 0) {
-      sb[f] = p << 2;
+      shape_states[f] = p << 2;
       ++pruned;
       ++ts_.probe_pruned;
       return false;
     }
     const int s = this->template climb<OfA>(f, seed, true, false);
-    sb[f] = s;
+    shape_states[f] = s;
     if (!(s & kCertified)) {
       ++pruned;
       return false;

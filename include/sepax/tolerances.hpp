@@ -10,6 +10,7 @@
 //   Tolerances<T>      the relative tolerances of the hull builder, validation,
 //                      the plain float SATs and the contact manifold (float, double)
 //   scale range        what float and double accept (BadScale beyond), on Tolerances
+//   kSupportRoundingSlack, kAdjacentCoplanarFraction   slacks of the brute force and validation
 //   kHull*, kConvexityScanPairs   the hull builder's bounds and slack multipliers (docs/hull.md)
 #pragma once
 
@@ -69,7 +70,7 @@ struct Tolerances {
   static constexpr double sliver = 0;
   /// Brute-force SAT, float only: an edge endpoint within this of the extreme
   /// projection (on the unit axis) counts as supporting, plus the projections'
-  /// own rounding, 25u max|coordinate| (derived in
+  /// own rounding, kSupportRoundingSlack (25) x u max|coordinate| (derived in
   /// PlainKernel::support_tolerance), which dominates for a small shape far
   /// from the origin.  x extent.
   static constexpr double support = 0;
@@ -115,6 +116,19 @@ struct Tolerances<double> {
   static constexpr double contact_weld = 1e-10;
   static constexpr double contact_area = 1e-14;
 };
+
+/// The brute force's support tolerance (PlainKernel::support_tolerance) adds
+/// this many u x max|coordinate| of the shape for the rounding of two
+/// projections fl(n.v): at most 2 x 7 sqrt(3) u max|v_i| (first order, derived
+/// there), so an edge endpoint rounding hides is still supporting; x u max|x|.
+inline constexpr double kSupportRoundingSlack = 25;
+
+/// Validation refuses two adjacent faces when every vertex of one is within this
+/// fraction of the coplanar tolerance (x extent) of the other's plane (they must
+/// be merged), and the range check needs that smallest tolerance to be a normal
+/// number.  A quarter: below the hull builder's merge tolerance (coplanar), so
+/// every hull it builds passes; x coplanar x extent.
+inline constexpr double kAdjacentCoplanarFraction = 0.25;
 
 // ---- convex hull (float/double; docs/hull.md) --------------------------------
 // Every constant of the hull builder (include/sepax/hull/), in units of eps = Tolerances<T>::coplanar x

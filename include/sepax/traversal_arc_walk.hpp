@@ -129,12 +129,12 @@ class TraversalArcWalk : public TraversalClimb<K> {
   // in the same order by every kernel.  At N = 256 (overlapping sphere
   // hulls) the walked arcs drop from ~12 to ~4 per query and the crossing
   // tests from 50 to 18.
-  bool arc(FaceScratch& st, int ea, int f0, int f1) {
-    const bool cut0 = !(st[f0] & kCertified), cut1 = !(st[f1] & kCertified);
+  bool arc(FaceScratch& states, int ea, int f0, int f1) {
+    const bool cut0 = !(states[f0] & kCertified), cut1 = !(states[f1] & kCertified);
     const bool bound = prune_arcs_ && best_nonpositive();
-    int s0 = certify(st, f0);
+    int s0 = certify(states, f0);
     if (bound && support_bounds_arc(f0, cut0, s0, f1)) return false;
-    int s1 = certify(st, f1);
+    int s1 = certify(states, f1);
     if (bound && support_bounds_arc(f1, cut1, s1, f0)) return false;
     bool forward;
     int v;

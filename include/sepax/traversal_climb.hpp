@@ -332,12 +332,12 @@ class TraversalClimb : public TraversalPruning<K> {
 
   // The support state of face f of A, climbed to the support vertex if the
   // cutoff stopped it.
-  int certify(FaceScratch& st, int f) {
-    int s = st[f];
+  int certify(FaceScratch& states, int f) {
+    int s = states[f];
     if (!(s & kCertified)) {
       ++ts_.late_certified;
       s = climb<true>(f, s >> 2, false);
-      st[f] = s;
+      states[f] = s;
     }
     return s;
   }

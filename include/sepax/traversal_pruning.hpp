@@ -45,7 +45,7 @@ class TraversalPruning : public TraversalState<K> {
   using Base::prune_arcs_;
   using Base::ts_;
   using typename Base::T;
-  using typename Base::Thr;
+  using typename Base::Threshold;
 
   // The exact comparison of a candidate with the current best (which exists).
   int vs_best(const Separation<T>& s, const Feature& f) {
@@ -91,8 +91,8 @@ class TraversalPruning : public TraversalState<K> {
   //    value, so best - cut never rounds up past the largest T.
   //  * plain float/double: compare() of two normalised values is the
   //    comparison of the T numbers: lo = hi = best (equal, NaN: compare()).
-  static Thr below(double t) { return static_cast<Thr>(t - (std::abs(t) * 0x1p-20 + 0x1p-140)); }
-  static Thr above(double t) { return static_cast<Thr>(t + (std::abs(t) * 0x1p-20 + 0x1p-140)); }
+  static Threshold below(double t) { return static_cast<Threshold>(t - (std::abs(t) * 0x1p-20 + 0x1p-140)); }
+  static Threshold above(double t) { return static_cast<Threshold>(t + (std::abs(t) * 0x1p-20 + 0x1p-140)); }
   void set_thresholds() {
     if constexpr (kFast) {
       if constexpr (kBounded) {
@@ -157,14 +157,14 @@ class TraversalPruning : public TraversalState<K> {
   // robust walk still takes the exact walk's steps.  The fast kernels
   // compute every height and decide "h < lo" without a data-dependent
   // branch; only a height between the thresholds asks the kernel.
-  std::uint64_t cut_end_bounds(int base, std::uint64_t todo, const int* sa, const int* ef,
+  std::uint64_t cut_end_bounds(int base, std::uint64_t todo, const int* a_states, const int* edge_faces,
                                std::int64_t& pruned) {
     std::uint64_t out = 0;
     std::int64_t evals = 0;  // heights of cut-off ends' vertices (as face_below_best counts them)
     for (; todo != 0; todo &= todo - 1) {
       const int i = std::countr_zero(todo);
-      const int f0 = ef[2 * (base + i)], f1 = ef[2 * (base + i) + 1];
-      const int s0 = sa[f0], s1 = sa[f1];
+      const int f0 = edge_faces[2 * (base + i)], f1 = edge_faces[2 * (base + i) + 1];
+      const int s0 = a_states[f0], s1 = a_states[f1];
       const bool c0 = !(s0 & kCertified);
       const bool cut = c0 || !(s1 & kCertified);
       const int f = c0 ? f1 : f0;

@@ -66,7 +66,8 @@ struct TraversalStats {
 
 namespace detail {
 
-// Per-face int scratch: on the stack up to kTraversalInlineFaces, else heap.
+// Per-face int scratch (the support states): on the stack up to
+// kTraversalInlineFaces, else heap.
 class FaceScratch {
  public:
   explicit FaceScratch(int n) {
@@ -103,8 +104,8 @@ class TraversalState {
         plain_flat_(wa.is_flat() || wb.is_flat()) {}
 
   // face_below_best's threshold type (T for float/double; unused otherwise).
-  using Thr = std::conditional_t<std::is_floating_point_v<T>, T, float>;
-  static constexpr Thr kNegInf = -std::numeric_limits<Thr>::infinity();
+  using Threshold = std::conditional_t<std::is_floating_point_v<T>, T, float>;
+  static constexpr Threshold kNegInf = -std::numeric_limits<Threshold>::infinity();
 
   // Per-face state bits (below the vertex index).
   static constexpr int kTie = 1;        // the deepest set has more than one vertex
@@ -180,7 +181,7 @@ class TraversalState {
   double best_err_ = 0;           // k.error_bound of the best's feature (kBounded)
   double cut_a_ = 0, cut_b_ = 0;  // compare_width of a face of A / B against the best
   // face_below_best's thresholds (kFast; see set_thresholds())
-  Thr lo_a_ = kNegInf, hi_a_ = kNegInf, lo_b_ = kNegInf, hi_b_ = kNegInf;
+  Threshold lo_a_ = kNegInf, hi_a_ = kNegInf, lo_b_ = kNegInf, hi_b_ = kNegInf;
   int best_sign_ = 2;  // k.sign of the best, 2 = not known yet
   SatStats stats_;
 };

@@ -71,7 +71,7 @@ std::optional<AlgorithmKind> parse_algorithm_kind(std::string_view s) {
 
 bool traversal_available() { return SEPAX_CLI_HAVE_TRAVERSAL != 0; }
 bool robust_available() { return SEPAX_CLI_HAVE_ROBUST != 0; }
-bool hull_builder_available() { return hull_available; }
+bool hull_builder_available() { return kHullAvailable; }
 
 std::string unsupported_reason(const RunConfig& cfg) {
   if (cfg.algorithm == AlgorithmKind::Traversal && !traversal_available()) {

@@ -52,7 +52,7 @@
 
 namespace sepax::cli {
 
-inline constexpr bool hull_available = SEPAX_CLI_HAVE_HULL != 0;
+inline constexpr bool kHullAvailable = SEPAX_CLI_HAVE_HULL != 0;
 
 namespace detail {
 

@@ -605,7 +605,7 @@ TEMPLATE_TEST_CASE("scale invariance on random overlapping pairs", "[contact][sc
 TEMPLATE_TEST_CASE("closest_segment_points: scale-free, and a zero-length segment is its tail", "[contact][segments]",
                    float, double) {
   using T = TestType;
-  using contact_detail::closest_segment_points;
+  using detail::closest_segment_points;
   // two crossing segments: x axis from (-1,0,0), and a segment along y at x = 0.25, z = 1
   T s, t;
   const double big = std::is_same_v<T, float> ? 0x1p60 : 0x1p500;

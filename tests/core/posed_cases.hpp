@@ -149,7 +149,7 @@ void require_same_derived(const ConvexPolyhedron<T>& p, const ConvexPolyhedron<T
     REQUIRE(same(p.plane(f).offset, q.plane(f).offset));
   }
   for (int e = 0; e < p.edge_count(); ++e) {
-    REQUIRE(same(p.edge_dir(e), q.edge_dir(e)));
+    REQUIRE(same(p.edge_direction(e), q.edge_direction(e)));
     REQUIRE(same(p.edge_normal(e, 0), q.edge_normal(e, 0)));
     REQUIRE(same(p.edge_normal(e, 1), q.edge_normal(e, 1)));
   }

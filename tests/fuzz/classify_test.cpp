@@ -302,7 +302,7 @@ void check_parallel_band(double tol) {
     const PlainKernel<F> k(A, B);
     for (int ea = 0; ea < A.edge_count(); ++ea)
       for (int eb = 0; eb < B.edge_count(); ++eb) {
-        const ParallelBand band = parallel_band<F>(A.edge_dir(ea), B.edge_dir(eb));
+        const ParallelBand band = parallel_band<F>(A.edge_direction(ea), B.edge_direction(eb));
         REQUIRE(band != ParallelBand::unknown);
         if (k.edges_parallel(ea, eb)) {
           ++skipped;
@@ -311,7 +311,7 @@ void check_parallel_band(double tol) {
           ++measured;
         }
         // exact sine clearly above the tolerance: certainly measured
-        const Vec3<Q> a = vec_cast<Q>(A.edge_dir(ea)), b = vec_cast<Q>(B.edge_dir(eb));
+        const Vec3<Q> a = vec_cast<Q>(A.edge_direction(ea)), b = vec_cast<Q>(B.edge_direction(eb));
         const Q k2 = Q(1.01 * tol) * Q(1.01 * tol);
         if (squared_norm(cross(a, b)) > k2 * squared_norm(a) * squared_norm(b)) REQUIRE(band == ParallelBand::outside);
       }

@@ -265,7 +265,7 @@ inline double side_bound(const Vec3<F>& uvec, const Vec3<F>& t, const Vec3<F>& v
 /// (the side query's minimum), delta_n the bound (1) of edge_face(e, 0)'s normal.
 template <class F>
 inline double side_axis_bound(const ConvexPolyhedron<F>& p, int e, const ConvexPolyhedron<F>& q, double delta_n) {
-  const Vec3<F>& dir = p.edge_dir(e);
+  const Vec3<F>& dir = p.edge_direction(e);
   const Vec3<F>& n = p.edge_normal(e, 0);
   const double du = delta_side<F>(dir, n, delta_n);
   Vec3<F> uv = cross(dir, n);

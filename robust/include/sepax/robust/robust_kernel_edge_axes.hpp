@@ -66,8 +66,8 @@ class RobustEdgeAxes : public RobustKernelState<T> {
   }
 
   EdgeAxis compute_edge_axis(int ea, int eb) const {
-    const Vec3<T>& da = a_.edge_dir(ea);
-    const Vec3<T>& db = b_.edge_dir(eb);
+    const Vec3<T>& da = a_.edge_direction(ea);
+    const Vec3<T>& db = b_.edge_direction(eb);
     const Vec3<T> c = cross(da, db);
     const double r2 = cross_ratio_squared(da, db, c);
     EdgeAxis ax;
@@ -224,7 +224,7 @@ class RobustEdgeAxes : public RobustKernelState<T> {
 
   // The same direction in T, unit (reporting and float values only).
   static Vec3<T> side_normal(const P& p, int e) {
-    const Vec3<T>& d = p.edge_dir(e);
+    const Vec3<T>& d = p.edge_direction(e);
     const Vec3<T>& n = p.edge_normal(e, 0);
     const Vec3<double> dd(d[0], d[1], d[2]), nd(n[0], n[1], n[2]);
     Vec3<double> u = scaled_cross(dd, nd);  // scale-safe: vec3.hpp

@@ -56,8 +56,8 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
   ArcSigns arc_signs(int ea, int eb) const {
     // The per-edge arrays of ConvexPolyhedron: the same T values PlainKernel
     // computes (head - tail, the faces' normals), without indirections.
-    const Vec3<T>& da = a_.edge_dir(ea);
-    const Vec3<T>& db = b_.edge_dir(eb);
+    const Vec3<T>& da = a_.edge_direction(ea);
+    const Vec3<T>& db = b_.edge_direction(eb);
     // Branch-free like PlainKernel (the signs are unpredictable); one
     // well-predicted branch for "some sign is within its error bound".
     const T c = dot(b_.edge_normal(eb, 0), da);
@@ -83,7 +83,7 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
   /// than arc_signs would.  Inline when every needed sign is certain from the
   /// filter; any uncertain sign goes to minkowski_face_resolve.
   SEPAX_ROBUST_INLINE bool minkowski_face(int ea, int eb) const {
-    const Vec3<T>& da = a_.edge_dir(ea);
+    const Vec3<T>& da = a_.edge_direction(ea);
     const T c = dot(b_.edge_normal(eb, 0), da);
     const T d = dot(b_.edge_normal(eb, 1), da);
     const T eb_ = e_.arc_b_t;
@@ -103,7 +103,7 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
     if (!(((c > eb_) & (d < -eb_)) | ((c < -eb_) & (d > eb_)))) [[unlikely]]
       return minkowski_face_resolve(ea, eb);
     // cba = -dba, both certain
-    const Vec3<T>& db = b_.edge_dir(eb);
+    const Vec3<T>& db = b_.edge_direction(eb);
     const T a = dot(a_.edge_normal(ea, 0), db);
     const T b = dot(a_.edge_normal(ea, 1), db);
     const T ea_ = e_.arc_a_t;
@@ -138,7 +138,7 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
   SEPAX_ROBUST_INLINE int minkowski_faces(int ea, int lo, int hi, int* out) const {
     if (lanes_) {
       bool uncertain;
-      const int m = simd::arc_candidates<true>(b_, lo, hi, a_.edge_dir(ea), a_.edge_normal(ea, 0),
+      const int m = simd::arc_candidates<true>(b_, lo, hi, a_.edge_direction(ea), a_.edge_normal(ea, 0),
                                                a_.edge_normal(ea, 1), e_.arc_lane, out, &uncertain);
       if (!uncertain) [[likely]]
         return m;
@@ -165,8 +165,8 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
   /// exactly parallel edges, which robust::parallel decides cheaply).
   bool edges_parallel(int ea, int eb) const {
     if (ea != axis_cache_.ea || eb != axis_cache_.eb) {
-      const Vec3<T> c = cross(a_.edge_dir(ea), b_.edge_dir(eb));
-      const double r2 = cross_ratio_squared(a_.edge_dir(ea), b_.edge_dir(eb), c);
+      const Vec3<T> c = cross(a_.edge_direction(ea), b_.edge_direction(eb));
+      const double r2 = cross_ratio_squared(a_.edge_direction(ea), b_.edge_direction(eb), c);
       if (std::isfinite(r2)) {
         axis_cache_.ea = ea;
         axis_cache_.eb = eb;
@@ -193,8 +193,8 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
     // (the overlapping case); otherwise no decision.  NaN compares false.
     const double m = best_err - static_cast<double>(best);
     if (!(m > 0) || !lanes_) return false;
-    const Vec3<T>& da = a_.edge_dir(ea);
-    const Vec3<T>& db = b_.edge_dir(eb);
+    const Vec3<T>& da = a_.edge_direction(ea);
+    const Vec3<T>& db = b_.edge_direction(eb);
     const Vec3<T>& pa = a_.vertex(a_.edge_tail(ea));
     const Vec3<T>& pb = b_.vertex(b_.edge_tail(eb));
     const Vec3<T>& ca = a_.centroid();
@@ -288,7 +288,7 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
   // (cba, dba, then adc, bdc only if cba, dba are strictly opposite), each
   // sign filtered and decided exactly when uncertain.
   SEPAX_ROBUST_COLD bool minkowski_face_resolve(int ea, int eb) const {
-    const Vec3<T>& da = a_.edge_dir(ea);
+    const Vec3<T>& da = a_.edge_direction(ea);
     const T c = dot(b_.edge_normal(eb, 0), da);
     const T d = dot(b_.edge_normal(eb, 1), da);
     const T eb_ = e_.arc_b_t;
@@ -296,7 +296,7 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
     int dba = (d > eb_) - (d < -eb_);
     if (cba * dba == 0) resolve_arc_signs_ba(cba, dba, ea, eb, c, d);
     if (!(cba * dba < 0)) return false;
-    const Vec3<T>& db = b_.edge_dir(eb);
+    const Vec3<T>& db = b_.edge_direction(eb);
     const T a = dot(a_.edge_normal(ea, 0), db);
     const T b = dot(a_.edge_normal(ea, 1), db);
     const T ea_ = e_.arc_a_t;
