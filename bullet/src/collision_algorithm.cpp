@@ -354,7 +354,6 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       return;
     }
     const RigidTransform<float> x = relative_pose(pa, pb);
-    SatResult<float> contact;
     bool keep = false;
     if (s.kept) {
       const double delta = motion_bound(s.x0, x, s.b->reach);
@@ -364,7 +363,7 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       keep = delta <= budget && s.sat_separation + delta + slack <= margin;
     }
     if (keep) {
-      contact = kept_contact(s.a->shape, pa, s.b->shape, x, s.contact);
+      kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.manifold);
       live.kept.fetch_add(1, std::memory_order_relaxed);
     } else {
       SatOptions opt;
@@ -378,7 +377,7 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
         if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
         return;
       }
-      contact = chosen_contact(s.a->shape, pa, s.b->shape, x, r);
+      const SatResult<float> contact = chosen_contact(s.a->shape, pa, s.b->shape, x, r);
       const FeatureType t = contact.feature.type;
       if (t == FeatureType::FaceA || t == FeatureType::FaceB) {
         s.kept = true;
@@ -386,8 +385,8 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
         s.sat_separation = to_double(r.separation);
         s.x0 = x;
       }
+      posed_manifold(s.a->shape, pa, s.b->shape, pb, contact, margin, s.manifold);
     }
-    posed_manifold(s.a->shape, pa, s.b->shape, pb, contact, margin, s.manifold);
     live.manifolds.fetch_add(1, std::memory_order_relaxed);
     live.points.fetch_add(s.manifold.size(), std::memory_order_relaxed);
     live.id_matches.fetch_add(write_points(*manifold_, body0, body1, s.manifold), std::memory_order_relaxed);
