@@ -18,6 +18,11 @@
 //   it), the kept face is re-evaluated instead of querying the SAT again:
 //   the contact is the one chosen at x0, its depth exact for x1, and no
 //   other axis can have overtaken it by more than 2 delta.
+// * Kept apart.  After a query that proved the pair beyond the margin with
+//   separation s0 along an axis (fixed in A's frame) at relative pose x0,
+//   the separation along that axis at x1 is at least s0 - delta: while
+//   s0 - delta - slack exceeds the margin the pair is still beyond it (the
+//   SAT, whose maximum is at least that, would stop too), and no query runs.
 #pragma once
 
 #include <algorithm>

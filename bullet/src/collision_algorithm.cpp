@@ -149,7 +149,7 @@ std::int64_t ShapeCache::preparations() const {
 // ---- counters ------------------------------------------------------------------
 
 struct CreateFunc::Live {
-  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept{0}, manifolds{0}, points{0}, id_matches{0}, errors{0},
+  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, manifolds{0}, points{0}, id_matches{0}, errors{0},
       fallback_pairs{0};
   std::mutex error_mutex;
   std::string last_error;
@@ -167,6 +167,7 @@ Counters CreateFunc::counters() const {
   c.early_outs = live_->early_outs.load();
   c.culled = live_->culled.load();
   c.kept = live_->kept.load();
+  c.kept_apart = live_->kept_apart.load();
   c.manifolds = live_->manifolds.load();
   c.points = live_->points.load();
   c.id_matches = live_->id_matches.load();
@@ -182,6 +183,7 @@ void CreateFunc::reset_counters() {
   live_->early_outs = 0;
   live_->culled = 0;
   live_->kept = 0;
+  live_->kept_apart = 0;
   live_->manifolds = 0;
   live_->points = 0;
   live_->id_matches = 0;
@@ -206,6 +208,11 @@ struct CollisionAlgorithm::State {
   SatResult<float> contact;
   double sat_separation = 0;
   RigidTransform<float> x0;
+  // the last query's answer beyond the margin (coherence.hpp): valid, its
+  // separation and the relative pose it was proven at
+  bool apart = false;
+  double apart_separation = 0;
+  RigidTransform<float> x_apart;
 };
 
 namespace {
@@ -350,10 +357,18 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     if (spheres_beyond(pa, s.a->center, s.a->bound, pb, s.b->center, s.b->bound, margin)) {
       live.culled.fetch_add(1, std::memory_order_relaxed);
       s.kept = false;
+      s.apart = false;
       if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
       return;
     }
     const RigidTransform<float> x = relative_pose(pa, pb);
+    if (s.apart && s.apart_separation - motion_bound(s.x_apart, x, s.b->reach) - motion_slack(s.x_apart, x, s.b->reach) >
+                       margin) {
+      live.kept_apart.fetch_add(1, std::memory_order_relaxed);
+      if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
+      return;
+    }
+    s.apart = false;
     bool keep = false;
     if (s.kept) {
       const double delta = motion_bound(s.x0, x, s.b->reach);
@@ -374,6 +389,9 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       s.kept = false;
       if (r.early_out) {
         live.early_outs.fetch_add(1, std::memory_order_relaxed);
+        s.apart = true;
+        s.apart_separation = to_double(r.separation);
+        s.x_apart = x;
         if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
         return;
       }
@@ -395,6 +413,7 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     // the origin for float to resolve): no contact from sepax; counted.
     live.error(std::string(to_string(e.code())) + ": " + e.what());
     s.kept = false;
+    s.apart = false;
     if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
   }
 }
