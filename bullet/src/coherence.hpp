@@ -65,16 +65,19 @@ inline double motion_slack(const RigidTransform<float>& x0, const RigidTransform
 }
 
 /// True when the bounding spheres (centres c in local frames, radii r) at
-/// poses pa, pb are farther apart than margin (with the slack).
-inline bool spheres_beyond(const RigidTransform<float>& pa, const std::array<double, 3>& ca, double ra,
-                           const RigidTransform<float>& pb, const std::array<double, 3>& cb, double rb,
-                           double margin) {
+/// poses (rot_a, ta) and (rot_b, tb) - rotation rows and translations as
+/// Bullet stores them, read before any conversion - are farther apart than
+/// margin (with the slack).
+template <class Basis, class Origin>
+bool spheres_beyond(const Basis& rot_a, const Origin& ta, const std::array<double, 3>& ca, double ra,
+                    const Basis& rot_b, const Origin& tb, const std::array<double, 3>& cb, double rb,
+                    double margin) {
   double d2 = 0, scale = ra + rb;
   for (int i = 0; i < 3; ++i) {
-    double wa = static_cast<double>(pa.translation[i]), wb = static_cast<double>(pb.translation[i]);
+    double wa = static_cast<double>(ta[i]), wb = static_cast<double>(tb[i]);
     for (int j = 0; j < 3; ++j) {
-      wa += static_cast<double>(pa.rotation(i, j)) * ca[static_cast<std::size_t>(j)];
-      wb += static_cast<double>(pb.rotation(i, j)) * cb[static_cast<std::size_t>(j)];
+      wa += static_cast<double>(rot_a[i][j]) * ca[static_cast<std::size_t>(j)];
+      wb += static_cast<double>(rot_b[i][j]) * cb[static_cast<std::size_t>(j)];
     }
     d2 += (wb - wa) * (wb - wa);
     scale += std::abs(wa) + std::abs(wb);

@@ -246,6 +246,16 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0, 
   const btScalar threshold = man.getContactBreakingThreshold();
   const btVector3 n = bt(m.normal);  // from w0's shape to w1's
 
+  // the pair's material, as addContactPoint computes it (once per pair here)
+  const btScalar friction = gCalculateCombinedFrictionCallback(o0, o1);
+  const btScalar restitution = gCalculateCombinedRestitutionCallback(o0, o1);
+  const btScalar rolling = gCalculateCombinedRollingFrictionCallback(o0, o1);
+  const btScalar spinning = gCalculateCombinedSpinningFrictionCallback(o0, o1);
+  const int flags = o0->getCollisionFlags() | o1->getCollisionFlags();
+  const bool stiffness = flags & btCollisionObject::CF_HAS_CONTACT_STIFFNESS_DAMPING;
+  const btScalar damping = stiffness ? gCalculateCombinedContactDampingCallback(o0, o1) : btScalar(0);
+  const btScalar stiff = stiffness ? gCalculateCombinedContactStiffnessCallback(o0, o1) : btScalar(0);
+
   btManifoldPoint fresh[MANIFOLD_CACHE_SIZE];
   int count = 0;
   for (const auto& c : m.points) {
@@ -261,16 +271,16 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0, 
                       normal_on_b, depth);
     p.m_positionWorldOnA = point_a;
     p.m_positionWorldOnB = point_b;
-    p.m_combinedFriction = gCalculateCombinedFrictionCallback(o0, o1);
-    p.m_combinedRestitution = gCalculateCombinedRestitutionCallback(o0, o1);
-    p.m_combinedRollingFriction = gCalculateCombinedRollingFrictionCallback(o0, o1);
-    p.m_combinedSpinningFriction = gCalculateCombinedSpinningFrictionCallback(o0, o1);
-    if ((o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_HAS_CONTACT_STIFFNESS_DAMPING) {
-      p.m_combinedContactDamping1 = gCalculateCombinedContactDampingCallback(o0, o1);
-      p.m_combinedContactStiffness1 = gCalculateCombinedContactStiffnessCallback(o0, o1);
+    p.m_combinedFriction = friction;
+    p.m_combinedRestitution = restitution;
+    p.m_combinedRollingFriction = rolling;
+    p.m_combinedSpinningFriction = spinning;
+    if (stiffness) {
+      p.m_combinedContactDamping1 = damping;
+      p.m_combinedContactStiffness1 = stiff;
       p.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
     }
-    if ((o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_HAS_FRICTION_ANCHOR) {
+    if (flags & btCollisionObject::CF_HAS_FRICTION_ANCHOR) {
       p.m_contactPointFlags |= BT_CONTACT_FLAG_FRICTION_ANCHOR;
     }
     btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
@@ -351,16 +361,19 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       s.key_b = kb;
       s.cache = SatCache<float>{};
     }
-    const RigidTransform<float> pa = pose_of(body0->getWorldTransform());
-    const RigidTransform<float> pb = pose_of(body1->getWorldTransform());
+    const btTransform& wa = body0->getWorldTransform();
+    const btTransform& wb = body1->getWorldTransform();
     const double margin = static_cast<double>(manifold_->getContactBreakingThreshold());
-    if (spheres_beyond(pa, s.a->center, s.a->bound, pb, s.b->center, s.b->bound, margin)) {
+    if (spheres_beyond(wa.getBasis(), wa.getOrigin(), s.a->center, s.a->bound, wb.getBasis(), wb.getOrigin(),
+                       s.b->center, s.b->bound, margin)) {
       live.culled.fetch_add(1, std::memory_order_relaxed);
       s.kept = false;
       s.apart = false;
       if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
       return;
     }
+    const RigidTransform<float> pa = pose_of(wa);
+    const RigidTransform<float> pb = pose_of(wb);
     const RigidTransform<float> x = relative_pose(pa, pb);
     if (s.apart && s.apart_separation - motion_bound(s.x_apart, x, s.b->reach) - motion_slack(s.x_apart, x, s.b->reach) >
                        margin) {
