@@ -91,10 +91,7 @@ class SmallVector {
   }
   void push_back(const T& v) {
     if (size_ == cap_) {
-      const T copy = v;  // v may live in this container
-      reserve(cap_ * 2);
-      put(size_, copy);
-      ++size_;
+      grow_and_push(v);
       return;
     }
     put(size_, v);
@@ -150,6 +147,13 @@ class SmallVector {
     } else {
       (void)from, (void)to;
     }
+  }
+  // push_back when full (out of line: the common path stays small enough to inline)
+  [[gnu::noinline]] void grow_and_push(const T& v) {
+    const T copy = v;  // v may live in this container
+    reserve(cap_ * 2);
+    put(size_, copy);
+    ++size_;
   }
   // *this is empty (size_ 0, inline unless o's heap is taken)
   void copy_from(const SmallVector& o) {
