@@ -270,3 +270,21 @@ TEST_CASE("bullet: pairs whose bounding spheres are beyond the margin are culled
   CHECK(c.culled == 1);
   CHECK(c.queries == 0);
 }
+
+TEST_CASE("bullet: a pair proven beyond the margin stays so without a query while it moves less than its gap") {
+  btBoxShape box(btVector3(0.5f, 0.5f, 0.5f));
+  const btScalar thr = gContactBreakingThreshold;  // AABBs grown by it: the pair stays in the broadphase
+  Pair p(&box, &box, at(0, 0, 0), at(0, 1.0f + 1.5f * thr, 0), true);
+  CHECK(p.manifold() == nullptr);
+  CHECK(p.cf->counters().queries == 1);
+  CHECK(p.cf->counters().early_outs == 1);
+  // 1 mm closer: still 1.5 thr - 1 mm apart, more than the threshold (at most 0.02 m x 0.87)
+  p.b.setWorldTransform(at(0, 1.0f + 1.5f * thr - 0.001f, 0));
+  CHECK(p.manifold() == nullptr);
+  CHECK(p.cf->counters().kept_apart == 1);
+  CHECK(p.cf->counters().queries == 1);
+  // within the threshold: the query runs and finds the speculative contact
+  p.b.setWorldTransform(at(0, 1.0f + 0.5f * thr, 0));
+  REQUIRE(p.manifold());
+  CHECK(p.cf->counters().queries == 2);
+}
