@@ -1,7 +1,10 @@
 // sepax::bullet: the btCollisionAlgorithm (see collision_algorithm.hpp).
 #include "sepax/bullet/collision_algorithm.hpp"
 
+#include <algorithm>
+#include <array>
 #include <atomic>
+#include <cmath>
 #include <vector>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
@@ -18,12 +21,30 @@
 #include <sepax/prepared_shape.hpp>
 #include <sepax/robust/robust_kernel.hpp>
 
+#include "coherence.hpp"
 #include "posed_manifold.hpp"
 
 namespace sepax::bullet {
 
 struct Prepared {
+  explicit Prepared(ConvexPolyhedron<float> local) : shape(std::move(local)) {
+    const ConvexPolyhedron<float>& p = shape.polyhedron();
+    for (int c = 0; c < 3; ++c) center[c] = static_cast<double>(p.centroid()[c]);
+    for (int v = 0; v < p.vertex_count(); ++v) {
+      double r2 = 0, d2 = 0;
+      for (int c = 0; c < 3; ++c) {
+        const double x = static_cast<double>(p.vertex(v)[c]);
+        r2 += x * x;
+        d2 += (x - center[c]) * (x - center[c]);
+      }
+      reach = std::max(reach, std::sqrt(r2));
+      bound = std::max(bound, std::sqrt(d2));
+    }
+  }
   PreparedShape<float> shape;
+  std::array<double, 3> center{};  // the bounding sphere: centroid and radius (local frame)
+  double bound = 0;
+  double reach = 0;  // max |v| over the vertices (local frame): the motion bound's lever arm
 };
 
 namespace {
@@ -103,7 +124,7 @@ std::shared_ptr<const Prepared> ShapeCache::get(const btCollisionShape& shape, c
   }
   // Prepared outside the lock (a large hull takes a while); a racing thread
   // may prepare the same shape too, and the last one stored wins.
-  auto p = std::make_shared<const Prepared>(Prepared{PreparedShape<float>(local_hull(shape))});
+  auto p = std::make_shared<const Prepared>(local_hull(shape));
   std::lock_guard<std::mutex> lock(mutex_);
   entries_[&shape] = Entry{key, p};
   ++preparations_;
@@ -128,7 +149,7 @@ std::int64_t ShapeCache::preparations() const {
 // ---- counters ------------------------------------------------------------------
 
 struct CreateFunc::Live {
-  std::atomic<std::int64_t> queries{0}, early_outs{0}, manifolds{0}, points{0}, id_matches{0}, errors{0},
+  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, manifolds{0}, points{0}, id_matches{0}, errors{0},
       fallback_pairs{0};
   std::mutex error_mutex;
   std::string last_error;
@@ -144,6 +165,9 @@ Counters CreateFunc::counters() const {
   Counters c;
   c.queries = live_->queries.load();
   c.early_outs = live_->early_outs.load();
+  c.culled = live_->culled.load();
+  c.kept = live_->kept.load();
+  c.kept_apart = live_->kept_apart.load();
   c.manifolds = live_->manifolds.load();
   c.points = live_->points.load();
   c.id_matches = live_->id_matches.load();
@@ -157,6 +181,9 @@ Counters CreateFunc::counters() const {
 void CreateFunc::reset_counters() {
   live_->queries = 0;
   live_->early_outs = 0;
+  live_->culled = 0;
+  live_->kept = 0;
+  live_->kept_apart = 0;
   live_->manifolds = 0;
   live_->points = 0;
   live_->id_matches = 0;
@@ -175,6 +202,17 @@ struct CollisionAlgorithm::State {
   std::shared_ptr<const Prepared> a, b;
   SatCache<float> cache;
   ContactManifold<float> manifold;  // reused between steps
+  // the kept face (coherence.hpp): valid, the contact, the SAT's separation
+  // and the relative pose of the query it came from
+  bool kept = false;
+  SatResult<float> contact;
+  double sat_separation = 0;
+  RigidTransform<float> x0;
+  // the last query's answer beyond the margin (coherence.hpp): valid, its
+  // separation and the relative pose it was proven at
+  bool apart = false;
+  double apart_separation = 0;
+  RigidTransform<float> x_apart;
 };
 
 namespace {
@@ -208,6 +246,16 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0, 
   const btScalar threshold = man.getContactBreakingThreshold();
   const btVector3 n = bt(m.normal);  // from w0's shape to w1's
 
+  // the pair's material, as addContactPoint computes it (once per pair here)
+  const btScalar friction = gCalculateCombinedFrictionCallback(o0, o1);
+  const btScalar restitution = gCalculateCombinedRestitutionCallback(o0, o1);
+  const btScalar rolling = gCalculateCombinedRollingFrictionCallback(o0, o1);
+  const btScalar spinning = gCalculateCombinedSpinningFrictionCallback(o0, o1);
+  const int flags = o0->getCollisionFlags() | o1->getCollisionFlags();
+  const bool stiffness = flags & btCollisionObject::CF_HAS_CONTACT_STIFFNESS_DAMPING;
+  const btScalar damping = stiffness ? gCalculateCombinedContactDampingCallback(o0, o1) : btScalar(0);
+  const btScalar stiff = stiffness ? gCalculateCombinedContactStiffnessCallback(o0, o1) : btScalar(0);
+
   btManifoldPoint fresh[MANIFOLD_CACHE_SIZE];
   int count = 0;
   for (const auto& c : m.points) {
@@ -223,16 +271,16 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0, 
                       normal_on_b, depth);
     p.m_positionWorldOnA = point_a;
     p.m_positionWorldOnB = point_b;
-    p.m_combinedFriction = gCalculateCombinedFrictionCallback(o0, o1);
-    p.m_combinedRestitution = gCalculateCombinedRestitutionCallback(o0, o1);
-    p.m_combinedRollingFriction = gCalculateCombinedRollingFrictionCallback(o0, o1);
-    p.m_combinedSpinningFriction = gCalculateCombinedSpinningFrictionCallback(o0, o1);
-    if ((o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_HAS_CONTACT_STIFFNESS_DAMPING) {
-      p.m_combinedContactDamping1 = gCalculateCombinedContactDampingCallback(o0, o1);
-      p.m_combinedContactStiffness1 = gCalculateCombinedContactStiffnessCallback(o0, o1);
+    p.m_combinedFriction = friction;
+    p.m_combinedRestitution = restitution;
+    p.m_combinedRollingFriction = rolling;
+    p.m_combinedSpinningFriction = spinning;
+    if (stiffness) {
+      p.m_combinedContactDamping1 = damping;
+      p.m_combinedContactStiffness1 = stiff;
       p.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
     }
-    if ((o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_HAS_FRICTION_ANCHOR) {
+    if (flags & btCollisionObject::CF_HAS_FRICTION_ANCHOR) {
       p.m_contactPointFlags |= BT_CONTACT_FLAG_FRICTION_ANCHOR;
     }
     btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
@@ -313,19 +361,63 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       s.key_b = kb;
       s.cache = SatCache<float>{};
     }
-    const RigidTransform<float> pa = pose_of(body0->getWorldTransform());
-    const RigidTransform<float> pb = pose_of(body1->getWorldTransform());
-    SatOptions opt;
-    opt.early_out = true;
-    opt.margin = static_cast<double>(manifold_->getContactBreakingThreshold());
-    const SatResult<float> r = sat::traversal<policy::Robust>(s.a->shape, pa, s.b->shape, pb, opt, &s.cache);
-    live.queries.fetch_add(1, std::memory_order_relaxed);
-    if (r.early_out) {
-      live.early_outs.fetch_add(1, std::memory_order_relaxed);
+    const btTransform& wa = body0->getWorldTransform();
+    const btTransform& wb = body1->getWorldTransform();
+    const double margin = static_cast<double>(manifold_->getContactBreakingThreshold());
+    if (spheres_beyond(wa.getBasis(), wa.getOrigin(), s.a->center, s.a->bound, wb.getBasis(), wb.getOrigin(),
+                       s.b->center, s.b->bound, margin)) {
+      live.culled.fetch_add(1, std::memory_order_relaxed);
+      s.kept = false;
+      s.apart = false;
       if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
       return;
     }
-    posed_manifold(s.a->shape, pa, s.b->shape, pb, r, opt.margin, s.manifold);
+    const RigidTransform<float> pa = pose_of(wa);
+    const RigidTransform<float> pb = pose_of(wb);
+    const RigidTransform<float> x = relative_pose(pa, pb);
+    if (s.apart && s.apart_separation - motion_bound(s.x_apart, x, s.b->reach) - motion_slack(s.x_apart, x, s.b->reach) >
+                       margin) {
+      live.kept_apart.fetch_add(1, std::memory_order_relaxed);
+      if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
+      return;
+    }
+    s.apart = false;
+    bool keep = false;
+    if (s.kept) {
+      const double delta = motion_bound(s.x0, x, s.b->reach);
+      const double slack = motion_slack(s.x0, x, s.b->reach);
+      const double budget =
+          kKeepMotion * kAbsTolerance * std::min(s.a->shape.polyhedron().extent(), s.b->shape.polyhedron().extent());
+      keep = delta <= budget && s.sat_separation + delta + slack <= margin;
+    }
+    if (keep) {
+      kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.manifold);
+      live.kept.fetch_add(1, std::memory_order_relaxed);
+    } else {
+      SatOptions opt;
+      opt.early_out = true;
+      opt.margin = margin;
+      const SatResult<float> r = sat::traversal<policy::Robust>(s.a->shape, pa, s.b->shape, pb, opt, &s.cache);
+      live.queries.fetch_add(1, std::memory_order_relaxed);
+      s.kept = false;
+      if (r.early_out) {
+        live.early_outs.fetch_add(1, std::memory_order_relaxed);
+        s.apart = true;
+        s.apart_separation = to_double(r.separation);
+        s.x_apart = x;
+        if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
+        return;
+      }
+      const SatResult<float> contact = chosen_contact(s.a->shape, pa, s.b->shape, x, r);
+      const FeatureType t = contact.feature.type;
+      if (t == FeatureType::FaceA || t == FeatureType::FaceB) {
+        s.kept = true;
+        s.contact = contact;
+        s.sat_separation = to_double(r.separation);
+        s.x0 = x;
+      }
+      posed_manifold(s.a->shape, pa, s.b->shape, pb, contact, margin, s.manifold);
+    }
     live.manifolds.fetch_add(1, std::memory_order_relaxed);
     live.points.fetch_add(s.manifold.size(), std::memory_order_relaxed);
     live.id_matches.fetch_add(write_points(*manifold_, body0, body1, s.manifold), std::memory_order_relaxed);
@@ -333,6 +425,8 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     // sepax refused the pair at this pose (for example a pose too far from
     // the origin for float to resolve): no contact from sepax; counted.
     live.error(std::string(to_string(e.code())) + ": " + e.what());
+    s.kept = false;
+    s.apart = false;
     if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
   }
 }

@@ -73,6 +73,24 @@ inline void face_separation(const ConvexPolyhedron<float>& p, const ConvexPolyhe
   }
 }
 
+/// r with its feature replaced by the face q of B (use_b) or of A: q's
+/// separation (unit normals) and support vertex, the axis in world.
+inline SatResult<float> face_result(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float>& bp,
+                                    const RigidTransform<float>& pose_a, const SatResult<float>& r, bool use_b,
+                                    const FaceQuery& q) {
+  SatResult<float> out = r;
+  out.separation = Separation<float>{static_cast<float>(q.separation), 1.0f};
+  if (use_b) {
+    out.feature = Feature::face_b(q.support, q.face);
+    const Vec3<float>& n = bp.plane(q.face).normal;
+    out.axis = pose_a.rotate(Vec3<float>(-n[0], -n[1], -n[2]));
+  } else {
+    out.feature = Feature::face_a(q.face, q.support);
+    out.axis = pose_a.rotate(a.plane(q.face).normal);
+  }
+  return out;
+}
+
 }  // namespace detail
 
 /// r (a posed SAT result of A and B, axis in world) with its feature replaced
@@ -108,17 +126,24 @@ inline SatResult<float> choose_contact(const ConvexPolyhedron<float>& a, const C
   const detail::FaceQuery& qf = use_b ? qb : qa;
   if (t == FeatureType::EdgePair && to_double(r.separation) > kRelEdge * qf.separation + tol) return r;
   if ((t == FeatureType::FaceA && !use_b) || (t == FeatureType::FaceB && use_b)) return r;
-  SatResult<float> out = r;
-  out.separation = Separation<float>{static_cast<float>(qf.separation), 1.0f};
+  return detail::face_result(a, bp, pose_a, r, use_b, qf);
+}
+
+/// The contact of a pair at a new pose from a face feature f (FaceA or
+/// FaceB) the adapter keeps: f's face with its separation and the other
+/// shape's deepest vertex re-evaluated on (a, bp), as choose_contact
+/// evaluates a face; overlap and stats as in `last`.
+inline SatResult<float> kept_contact(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float>& bp,
+                                     const RigidTransform<float>& pose_a, const SatResult<float>& last) {
+  const bool use_b = last.feature.type == FeatureType::FaceB;
+  detail::FaceQuery q;
+  q.face = use_b ? last.feature.b : last.feature.a;
   if (use_b) {
-    out.feature = Feature::face_b(qf.support, qf.face);
-    const Vec3<float>& n = bp.plane(qf.face).normal;
-    out.axis = pose_a.rotate(Vec3<float>(-n[0], -n[1], -n[2]));
+    detail::face_separation(bp, a, q);
   } else {
-    out.feature = Feature::face_a(qf.face, qf.support);
-    out.axis = pose_a.rotate(a.plane(qf.face).normal);
+    detail::face_separation(a, bp, q);
   }
-  return out;
+  return detail::face_result(a, bp, pose_a, last, use_b, q);
 }
 
 }  // namespace sepax::bullet

@@ -1,25 +1,62 @@
-// The contact manifold of a posed pair in world coordinates, from the posed
-// SAT result r of the same pair: sepax's posed contact_manifold
-// (posed_queries.hpp, no allocation) on the contact type contact_choice.hpp
-// prefers.  B' (B in A's frame) is the one the posed SAT query has just left
-// in this thread's scratch (PreparedShape::posed_scratch returns it without
-// posing again at the same relative pose).
+// The adapter's contact of a posed pair and its manifold in world
+// coordinates: the contact type contact_choice.hpp prefers, from the posed
+// SAT result or from the face the adapter keeps between steps, and sepax's
+// posed contact_manifold (posed_queries.hpp, no allocation) on it.  B' (B in
+// A's frame) is the one the posed SAT query has just left in this thread's
+// scratch (PreparedShape::posed_scratch returns it without posing again at
+// the same relative pose x).
 #pragma once
 
 #include <sepax/contact_manifold.hpp>
 #include <sepax/prepared_shape.hpp>
+#include <sepax/small_vector.hpp>
 
 #include "contact_choice.hpp"
 
 namespace sepax::bullet {
 
+/// choose_contact on the posed SAT result r of (a at pose_a, b at x relative to a).
+inline SatResult<float> chosen_contact(const PreparedShape<float>& a, const RigidTransform<float>& pose_a,
+                                       const PreparedShape<float>& b, const RigidTransform<float>& x,
+                                       const SatResult<float>& r) {
+  return choose_contact(a.polyhedron(), b.posed_scratch(x), pose_a, r);
+}
+
+/// The kept face `last` re-evaluated with b at x relative to a
+/// (kept_contact), and its manifold, on a partial image of B': B's posed
+/// vertices with only the planes the face and the manifold read (the face
+/// of B; or, for a face of A, B's faces around the support vertex, among
+/// which the manifold picks the incident face), PreparedShape::
+/// posed_part_scratch: the same contact and manifold as on the full B'.
+inline SatResult<float> kept_manifold(const PreparedShape<float>& a, const RigidTransform<float>& pose_a,
+                                      const PreparedShape<float>& b, const RigidTransform<float>& x,
+                                      const SatResult<float>& last, double margin, ContactManifold<float>& out) {
+  const ConvexPolyhedron<float>* bp = nullptr;
+  if (last.feature.type == FeatureType::FaceB) {
+    const int g = last.feature.b;
+    bp = &b.posed_part_scratch(x, std::span<const int>(&g, 1), std::span<const int>());
+  } else {
+    bp = &b.posed_part_scratch(x, std::span<const int>(), std::span<const int>());
+  }
+  const SatResult<float> r = kept_contact(a.polyhedron(), *bp, pose_a, last);
+  if (r.feature.type == FeatureType::FaceA) {
+    SmallVector<int, 16> faces;
+    for (const int h : bp->vertex_half_edges(r.feature.b)) faces.push_back(bp->half_edge(h).face);
+    bp = &b.posed_part_scratch(x, std::span<const int>(faces.data(), faces.size()), std::span<const int>());
+  }
+  SatOptions opt;
+  opt.margin = margin;
+  out = sepax::detail::posed_manifold_on(a.polyhedron(), pose_a, *bp, r, opt);
+  return r;
+}
+
+/// The manifold of contact r (world axis), points within the margin.
 inline void posed_manifold(const PreparedShape<float>& a, const RigidTransform<float>& pose_a,
                            const PreparedShape<float>& b, const RigidTransform<float>& pose_b,
                            const SatResult<float>& r, double margin, ContactManifold<float>& out) {
-  const ConvexPolyhedron<float>& bp = b.posed_scratch(relative_pose(pose_a, pose_b));
   SatOptions opt;
   opt.margin = margin;
-  out = contact_manifold(a, pose_a, b, pose_b, choose_contact(a.polyhedron(), bp, pose_a, r), opt);
+  out = contact_manifold(a, pose_a, b, pose_b, r, opt);
 }
 
 }  // namespace sepax::bullet

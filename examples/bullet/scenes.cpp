@@ -401,9 +401,11 @@ int main(int argc, char** argv) {
                   m.ke_per_mass, m.points_per_pair, m.np_us, m.standing ? "yes" : "NO");
       if (use_sepax) {
         const auto& c = m.counters;
-        std::printf("         sepax: %lld queries, %lld beyond the margin, %lld manifolds, %lld points, %lld id matches, "
-                    "%lld refused, %lld fallback pairs%s%s\n",
+        std::printf("         sepax: %lld queries, %lld beyond the margin, %lld culled by spheres, %lld kept apart, %lld kept faces, "
+                    "%lld manifolds, %lld points, %lld id matches, %lld refused, %lld fallback pairs%s%s\n",
                     static_cast<long long>(c.queries), static_cast<long long>(c.early_outs),
+                    static_cast<long long>(c.culled), static_cast<long long>(c.kept_apart),
+                    static_cast<long long>(c.kept),
                     static_cast<long long>(c.manifolds), static_cast<long long>(c.points),
                     static_cast<long long>(c.id_matches), static_cast<long long>(c.errors),
                     static_cast<long long>(c.fallback_pairs), c.last_error.empty() ? "" : "; last: ",

@@ -24,6 +24,8 @@
 // tolerance the caller scales by the shapes' extent.
 #pragma once
 
+#include "small_vector.hpp"
+
 #include <cstddef>
 #include <vector>
 
@@ -64,16 +66,16 @@ inline int shared_corner(int t1, int h1, int t2, int h2) {
   return -1;
 }
 
-/// Clip `in` against `plane` into `out` (cleared first).  `incident_face` is
-/// the incident face index (the incident feature of reference corners).
-/// Poly: std::vector<ClipVertex<T>> or a SmallVector of them.
-template <Number T, class Poly>
-void clip_polygon(const Poly& in, const ClipPlane<T>& plane, int incident_face, Poly& out) {
+namespace clip_detail {
+
+/// clip_polygon's body, with height(i) the signed height of in[i] over the
+/// plane (computed once per vertex).
+template <Number T, class Poly, class Height>
+void clip_with(const Poly& in, const ClipPlane<T>& plane, int incident_face, Poly& out, Height&& height) {
   out.clear();
   const std::size_t n = in.size();
   if (n == 0) return;
   const T zero(0);
-  auto height = [&](const Vec3<T>& p) { return T(dot(plane.normal, p) - plane.offset); };
   auto cut = [&](const ClipVertex<T>& a, const T& da, const ClipVertex<T>& b, const T& db) {
     // da and db have strictly opposite signs (one may be <= 0, the other > 0).
     const T t = da / T(da - db);
@@ -97,12 +99,12 @@ void clip_polygon(const Poly& in, const ClipPlane<T>& plane, int incident_face, 
     v.side_tail = plane.tail;
     v.side_head = plane.head;
   };
-  T dcur = height(in[0].point);
+  T dcur = height(std::size_t{0});
   const T d0 = dcur;
   for (std::size_t i = 0; i < n; ++i) {
     const ClipVertex<T>& cur = in[i];
     const ClipVertex<T>& nxt = in[(i + 1) % n];
-    const T dnxt = (i + 1 == n) ? d0 : height(nxt.point);
+    const T dnxt = (i + 1 == n) ? d0 : height(i + 1);
     const bool cur_in = !(dcur > zero);
     const bool nxt_in = !(dnxt > zero);
     if (cur_in) {
@@ -125,6 +127,41 @@ void clip_polygon(const Poly& in, const ClipPlane<T>& plane, int incident_face, 
     }
     dcur = dnxt;
   }
+}
+
+template <Number T>
+T height_over(const ClipPlane<T>& plane, const Vec3<T>& p) {
+  return T(dot(plane.normal, p) - plane.offset);
+}
+
+}  // namespace clip_detail
+
+/// Clip `in` against `plane` into `out` (cleared first).  `incident_face` is
+/// the incident face index (the incident feature of reference corners).
+/// Poly: std::vector<ClipVertex<T>> or a SmallVector of them.
+template <Number T, class Poly>
+void clip_polygon(const Poly& in, const ClipPlane<T>& plane, int incident_face, Poly& out) {
+  clip_detail::clip_with(in, plane, incident_face, out,
+                         [&](std::size_t i) { return clip_detail::height_over(plane, in[i].point); });
+}
+
+/// clip_polygon, unless `plane` keeps every vertex of `in` (no height > 0):
+/// then false and `out` untouched, for clip_polygon's output would be `in`
+/// itself, labels included.  The test and the clip read the same heights,
+/// each computed once (the same decision with FMA contraction on or off).
+/// Heights are kept inline up to 64 vertices (no allocation below).
+template <Number T, class Poly>
+bool clip_polygon_if_cut(const Poly& in, const ClipPlane<T>& plane, int incident_face, Poly& out) {
+  SmallVector<T, 64> heights;
+  heights.reserve(in.size());
+  bool all_in = true;
+  for (const auto& v : in) {
+    heights.push_back(clip_detail::height_over(plane, v.point));
+    all_in = all_in && !(heights.back() > T(0));
+  }
+  if (all_in) return false;
+  clip_detail::clip_with(in, plane, incident_face, out, [&](std::size_t i) { return heights[i]; });
+  return true;
 }
 
 /// Remove consecutive vertices (cyclically) closer than sqrt(tol2) to the

@@ -283,9 +283,16 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
       poly.push_back(v);
     }
   }
-  // Clip against the side planes of the reference face, in loop order.
+  // Clip against the side planes of the reference face, in loop order.  A
+  // plane that keeps every vertex leaves the polygon as it is
+  // (clip_polygon_if_cut), and welding an already welded polygon changes
+  // nothing (every consecutive pair, the last and the first included, is
+  // farther apart than the weld tolerance), so once the polygon has been
+  // welded such a step is skipped: the same points and ids (a large
+  // reference face, such as a ramp under a box, has many such planes).
   const T weld2 = extent_tolerance(a, b, Tolerances<T>::contact_weld, 2);
   {
+    bool welded = number_traits<T>::is_exact;  // exact T: no welding at all
     int h = R.face(ref_face).edge;
     for (int i = 0; i < R.face(ref_face).count && !pp->empty(); ++i, h = R.half_edge(h).next) {
       Poly& poly = *pp;
@@ -298,8 +305,17 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
       cp.edge = h / 2;
       cp.tail = tail;
       cp.head = head;
-      clip_polygon(poly, cp, inc, tmp);
-      if constexpr (!number_traits<T>::is_exact) weld_polygon(tmp, weld2);
+      if (welded && !clip_polygon_if_cut(poly, cp, inc, tmp)) {
+        if (opt.record_steps) {
+          m.clip_steps.push_back(ClipStep{cp.edge, static_cast<int>(poly.size()), static_cast<int>(poly.size())});
+        }
+        continue;
+      }
+      if (!welded) clip_polygon(poly, cp, inc, tmp);
+      if constexpr (!number_traits<T>::is_exact) {
+        weld_polygon(tmp, weld2);
+        welded = true;
+      }
       if (opt.record_steps) {
         m.clip_steps.push_back(ClipStep{cp.edge, static_cast<int>(poly.size()), static_cast<int>(tmp.size())});
       }

@@ -262,6 +262,32 @@ SatResult<T> run(SatAlgorithm algorithm, const PreparedShape<T>& a, const RigidT
 
 namespace sepax {
 
+namespace detail {
+
+/// The posed contact_manifold below on a given image bp of B in A's frame:
+/// built in A's frame as contact_manifold(a, bp, r_local), the points mapped
+/// to world by pose_a and normal = r.axis.  bp is posed(B, X) or a partial
+/// image of it (PreparedShape::posed_part_scratch) holding every plane the
+/// manifold reads: for a face of A, the faces of B' around the support
+/// vertex (the incident face's candidates); for a face of B, that face.
+/// The same manifold, bit for bit, on either.
+template <Number T>
+ContactManifold<T> posed_manifold_on(const ConvexPolyhedron<T>& a, const RigidTransform<T>& pose_a,
+                                     const ConvexPolyhedron<T>& bp, const SatResult<T>& r, const SatOptions& opt) {
+  ManifoldOptions mo;
+  mo.margin = opt.margin;
+  ContactManifold<T> m = contact_manifold(a, bp, r, mo);
+  for (auto& p : m.points) {
+    p.position = pose_a.apply(p.position);
+    p.point_a = pose_a.apply(p.point_a);
+    p.point_b = pose_a.apply(p.point_b);
+  }
+  m.normal = r.axis;
+  return m;
+}
+
+}  // namespace detail
+
 /// The contact manifold of a posed pair from a posed SAT result `r` of the
 /// same pair and poses (sat::traversal / gauss_map / brute_force on prepared
 /// shapes): built in A's frame on (A, B') exactly as contact_manifold(A, B',
@@ -276,17 +302,7 @@ ContactManifold<T> contact_manifold(const PreparedShape<T>& a, const RigidTransf
                                     const SatResult<T>& r, const SatOptions& opt = {}) {
   check_options(opt);
   if (a.polyhedron().empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape A is empty (moved from)");
-  const ConvexPolyhedron<T>& bp = b.posed_scratch(relative_pose(pose_a, pose_b));
-  ManifoldOptions mo;
-  mo.margin = opt.margin;
-  ContactManifold<T> m = contact_manifold(a.polyhedron(), bp, r, mo);
-  for (auto& p : m.points) {
-    p.position = pose_a.apply(p.position);
-    p.point_a = pose_a.apply(p.point_a);
-    p.point_b = pose_a.apply(p.point_b);
-  }
-  m.normal = r.axis;
-  return m;
+  return detail::posed_manifold_on(a.polyhedron(), pose_a, b.posed_scratch(relative_pose(pose_a, pose_b)), r, opt);
 }
 
 }  // namespace sepax

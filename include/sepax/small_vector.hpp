@@ -7,7 +7,9 @@
 // manifold code uses: size, empty, capacity, reserve, resize, assign,
 // push_back, pop_back, clear, swap, insert at the end, iteration, indexing.
 // Elements must be default-constructible and copyable (sepax's Vec3, ints,
-// T values, contact records: all are).
+// T values, contact records: all are).  The inline room is raw storage:
+// only the elements held are constructed (a manifold's working sets are
+// declared per query with room for 64 elements and mostly hold 4 to 8).
 #pragma once
 
 #include <algorithm>
@@ -15,6 +17,8 @@
 #include <cstddef>
 #include <initializer_list>
 #include <memory>
+#include <new>
+#include <type_traits>
 #include <utility>
 
 namespace sepax {
@@ -36,18 +40,19 @@ class SmallVector {
   }
   SmallVector(const SmallVector& o) { copy_from(o); }
   SmallVector(SmallVector&& o) noexcept { move_from(std::move(o)); }
+  ~SmallVector() { clear(); }
   SmallVector& operator=(const SmallVector& o) {
     if (this != &o) {
-      size_ = 0;
+      clear();
       copy_from(o);
     }
     return *this;
   }
   SmallVector& operator=(SmallVector&& o) noexcept {
     if (this != &o) {
+      clear();
       heap_.reset();
       cap_ = N;
-      size_ = 0;
       move_from(std::move(o));
     }
     return *this;
@@ -59,8 +64,8 @@ class SmallVector {
   /// True when the elements live on the heap (more than N were ever held).
   bool spilled() const { return heap_ != nullptr; }
 
-  T* data() { return heap_ ? heap_.get() : inline_.data(); }
-  const T* data() const { return heap_ ? heap_.get() : inline_.data(); }
+  T* data() { return heap_ ? heap_.get() : inline_data(); }
+  const T* data() const { return heap_ ? heap_.get() : inline_data(); }
   T& operator[](std::size_t i) { return data()[i]; }
   const T& operator[](std::size_t i) const { return data()[i]; }
   T& front() { return data()[0]; }
@@ -76,28 +81,36 @@ class SmallVector {
     if (n <= cap_) return;
     std::unique_ptr<T[]> h(new T[n]);
     std::copy(begin(), end(), h.get());
+    if (!heap_) destroy_inline(0, size_);
     heap_ = std::move(h);
     cap_ = n;
   }
-  void clear() { size_ = 0; }
+  void clear() {
+    if (!heap_) destroy_inline(0, size_);
+    size_ = 0;
+  }
   void push_back(const T& v) {
     if (size_ == cap_) {
-      const T copy = v;  // v may live in this container
-      reserve(cap_ * 2);
-      data()[size_++] = copy;
+      grow_and_push(v);
       return;
     }
-    data()[size_++] = v;
+    put(size_, v);
+    ++size_;
   }
-  void pop_back() { --size_; }
+  void pop_back() {
+    if (!heap_) destroy_inline(size_ - 1, size_);
+    --size_;
+  }
   void resize(std::size_t n, const T& v = T()) {
     reserve(n);
-    for (std::size_t i = size_; i < n; ++i) data()[i] = v;
+    for (std::size_t i = size_; i < n; ++i) put(i, v);
+    if (n < size_ && !heap_) destroy_inline(n, size_);
     size_ = n;
   }
   void assign(std::size_t n, const T& v) {
-    size_ = 0;
-    resize(n, v);
+    const T copy = v;  // v may live in this container
+    clear();
+    resize(n, copy);
   }
   /// Append [first, last) (insert at end() only).
   template <class It>
@@ -115,9 +128,37 @@ class SmallVector {
   }
 
  private:
+  // The inline elements [0, size_) are constructed (placement new) and the
+  // rest of the inline storage is raw, so that an empty SmallVector costs no
+  // construction of N elements; heap elements are all constructed (new T[]).
+  T* inline_data() { return std::launder(reinterpret_cast<T*>(inline_)); }
+  const T* inline_data() const { return std::launder(reinterpret_cast<const T*>(inline_)); }
+  // element i (i < cap_, i == size_ or an element being appended) set to v
+  void put(std::size_t i, const T& v) {
+    if (heap_) {
+      heap_[i] = v;
+    } else {
+      ::new (static_cast<void*>(inline_data() + i)) T(v);
+    }
+  }
+  void destroy_inline(std::size_t from, std::size_t to) {
+    if constexpr (!std::is_trivially_destructible_v<T>) {
+      for (std::size_t i = from; i < to; ++i) inline_data()[i].~T();
+    } else {
+      (void)from, (void)to;
+    }
+  }
+  // push_back when full (out of line: the common path stays small enough to inline)
+  [[gnu::noinline]] void grow_and_push(const T& v) {
+    const T copy = v;  // v may live in this container
+    reserve(cap_ * 2);
+    put(size_, copy);
+    ++size_;
+  }
+  // *this is empty (size_ 0, inline unless o's heap is taken)
   void copy_from(const SmallVector& o) {
     reserve(o.size_);
-    std::copy(o.begin(), o.end(), data());
+    for (std::size_t i = 0; i < o.size_; ++i) put(i, o.data()[i]);
     size_ = o.size_;
   }
   void move_from(SmallVector&& o) {
@@ -126,15 +167,18 @@ class SmallVector {
       cap_ = o.cap_;
       size_ = o.size_;
     } else {
-      std::copy(o.begin(), o.end(), inline_.data());
+      for (std::size_t i = 0; i < o.size_; ++i) {
+        ::new (static_cast<void*>(inline_data() + i)) T(std::move(o.inline_data()[i]));
+      }
       size_ = o.size_;
+      o.destroy_inline(0, o.size_);
     }
     o.heap_.reset();
     o.cap_ = N;
     o.size_ = 0;
   }
 
-  std::array<T, N> inline_{};
+  alignas(T) unsigned char inline_[N * sizeof(T)];
   std::unique_ptr<T[]> heap_;
   std::size_t cap_ = N;
   std::size_t size_ = 0;

@@ -1,6 +1,7 @@
 // sepax::bullet's collision algorithm inside Bullet's dispatcher.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -186,4 +187,104 @@ TEST_CASE("bullet: equal boxes stacked with a small tilt get a face contact, not
     if (m->getNumContacts() == 4) ++face_manifolds;
   }
   CHECK(face_manifolds == n);
+}
+
+namespace {
+
+/// The manifold's points as (position on B, depth, ids), for comparisons.
+struct PointKey {
+  btVector3 on_b;
+  btScalar depth;
+  int ids[4];
+};
+
+std::vector<PointKey> points_of(const btPersistentManifold* m) {
+  std::vector<PointKey> out;
+  if (!m) return out;
+  for (int i = 0; i < m->getNumContacts(); ++i) {
+    const auto& p = m->getContactPoint(i);
+    out.push_back(PointKey{p.getPositionWorldOnB(), p.getDistance(), {p.m_partId0, p.m_index0, p.m_partId1, p.m_index1}});
+  }
+  std::sort(out.begin(), out.end(), [](const PointKey& x, const PointKey& y) {
+    return std::lexicographical_compare(x.ids, x.ids + 4, y.ids, y.ids + 4);
+  });
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("bullet: a resting pair keeps its face, with the manifold a fresh algorithm builds at every step") {
+  btBoxShape box(btVector3(0.5f, 0.5f, 0.5f));
+  const btQuaternion tilt(btVector3(0.3f, 0.2f, 0.9f).normalized(), 2e-3f);
+  Pair kept(&box, &box, at(0, 0, 0), at(0.02f, 0.998f, 0.01f, tilt), true);
+  REQUIRE(kept.manifold());
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1, 1);
+  for (int step = 0; step < 40; ++step) {
+    // small jitter: well inside the kept face's motion budget (0.5e-3 x extent)
+    const btTransform tb = at(0.02f + 1e-5f * u(rng), 0.998f + 1e-5f * u(rng), 0.01f + 1e-5f * u(rng), tilt);
+    kept.b.setWorldTransform(tb);
+    const auto got = points_of(kept.manifold());
+    Pair fresh(&box, &box, at(0, 0, 0), tb, true);
+    const auto want = points_of(fresh.manifold());
+    REQUIRE(got.size() == 4);
+    REQUIRE(got.size() == want.size());
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      CHECK(std::equal(got[i].ids, got[i].ids + 4, want[i].ids));
+      CHECK(got[i].depth == want[i].depth);
+      CHECK(got[i].on_b == want[i].on_b);
+    }
+  }
+  const auto c = kept.cf->counters();
+  CHECK(c.kept == 40);
+  CHECK(c.queries == 1);
+}
+
+TEST_CASE("bullet: a kept face is dropped when the pair moves beyond its budget or its margin") {
+  btBoxShape box(btVector3(0.5f, 0.5f, 0.5f));
+  Pair p(&box, &box, at(0, 0, 0), at(0, 0.999f, 0), true);
+  REQUIRE(p.manifold());
+  CHECK(p.cf->counters().queries == 1);
+  p.b.setWorldTransform(at(0, 0.999f, 0.01f));  // 10 mm sideways: beyond 0.5e-3 x 1.73 m
+  REQUIRE(p.manifold());
+  CHECK(p.cf->counters().queries == 2);
+  CHECK(p.cf->counters().kept == 0);
+  p.b.setWorldTransform(at(0, 0.9992f, 0.01f));  // 0.2 mm: kept
+  REQUIRE(p.manifold());
+  CHECK(p.cf->counters().kept == 1);
+  const btScalar thr = gContactBreakingThreshold;
+  p.b.setWorldTransform(at(0, 1.0f + 2.0f * thr, 0.01f));  // beyond the margin: the SAT decides
+  CHECK(p.manifold() == nullptr);
+  CHECK(p.cf->counters().queries == 3);
+  CHECK(p.cf->counters().early_outs == 1);
+}
+
+TEST_CASE("bullet: pairs whose bounding spheres are beyond the margin are culled without a query") {
+  btBoxShape box(btVector3(0.5f, 0.5f, 0.5f));
+  // the broadphase pairs AABBs grown by the breaking threshold; along a
+  // diagonal the AABBs overlap while the spheres (radius 0.866, 1.78 apart)
+  // are farther apart than the threshold (0.017)
+  Pair p(&box, &box, at(0, 0, 0), at(1.03f, 1.03f, 1.03f), true);
+  CHECK(p.manifold() == nullptr);
+  const auto c = p.cf->counters();
+  CHECK(c.culled == 1);
+  CHECK(c.queries == 0);
+}
+
+TEST_CASE("bullet: a pair proven beyond the margin stays so without a query while it moves less than its gap") {
+  btBoxShape box(btVector3(0.5f, 0.5f, 0.5f));
+  const btScalar thr = gContactBreakingThreshold;  // AABBs grown by it: the pair stays in the broadphase
+  Pair p(&box, &box, at(0, 0, 0), at(0, 1.0f + 1.5f * thr, 0), true);
+  CHECK(p.manifold() == nullptr);
+  CHECK(p.cf->counters().queries == 1);
+  CHECK(p.cf->counters().early_outs == 1);
+  // 1 mm closer: still 1.5 thr - 1 mm apart, more than the threshold (at most 0.02 m x 0.87)
+  p.b.setWorldTransform(at(0, 1.0f + 1.5f * thr - 0.001f, 0));
+  CHECK(p.manifold() == nullptr);
+  CHECK(p.cf->counters().kept_apart == 1);
+  CHECK(p.cf->counters().queries == 1);
+  // within the threshold: the query runs and finds the speculative contact
+  p.b.setWorldTransform(at(0, 1.0f + 0.5f * thr, 0));
+  REQUIRE(p.manifold());
+  CHECK(p.cf->counters().queries == 2);
 }

@@ -1,0 +1,89 @@
+// What the adapter skips from one step to the next, and the bounds that
+// allow it (docs/bullet.md, "Coherence"):
+//
+// * Bounding spheres.  A pair whose spheres (centroid, max distance of a
+//   vertex from it) are farther apart than the margin plus a rounding slack
+//   is farther apart than the margin: no point, and no query.
+// * The kept face.  After a SAT query whose contact (contact_choice.hpp) is
+//   a face, the adapter keeps that face and the relative pose x0 the query
+//   ran at.  At a later step with relative pose x1 every vertex of B (in
+//   A's frame) is within
+//       delta = |R1 - R0|_F reach_B + |t1 - t0|
+//   of where it was (reach_B: B's largest |v| in its local frame), so every
+//   axis's separation, the SAT's maximum among them, moved by at most
+//   delta (plus the rounding of both images, kSlack).  While delta is at
+//   most kKeepMotion * kAbsTolerance * min(extent A, extent B) (half the
+//   contact choice's tolerance) and the SAT's separation at x0 plus delta
+//   and the slack stays within the margin (so the pair is still not beyond
+//   it), the kept face is re-evaluated instead of querying the SAT again:
+//   the contact is the one chosen at x0, its depth exact for x1, and no
+//   other axis can have overtaken it by more than 2 delta.
+// * Kept apart.  After a query that proved the pair beyond the margin with
+//   separation s0 along an axis (fixed in A's frame) at relative pose x0,
+//   the separation along that axis at x1 is at least s0 - delta: while
+//   s0 - delta - slack exceeds the margin the pair is still beyond it (the
+//   SAT, whose maximum is at least that, would stop too), and no query runs.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <sepax/transform.hpp>
+
+#include "contact_choice.hpp"
+
+namespace sepax::bullet {
+
+inline constexpr double kKeepMotion = 0.5;
+/// Relative slack for the rounding of the posed images and of the double
+/// evaluations below (float images: a few units of 2^-24 of the coordinates).
+inline constexpr double kSlack = 1e-6;
+
+/// delta above for relative poses x0 and x1, in double.
+inline double motion_bound(const RigidTransform<float>& x0, const RigidTransform<float>& x1, double reach) {
+  double r2 = 0, t2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      const double d = static_cast<double>(x1.rotation(i, j)) - static_cast<double>(x0.rotation(i, j));
+      r2 += d * d;
+    }
+    const double d = static_cast<double>(x1.translation[i]) - static_cast<double>(x0.translation[i]);
+    t2 += d * d;
+  }
+  return std::sqrt(r2) * reach + std::sqrt(t2);
+}
+
+/// The slack of delta and of the separations it bounds: kSlack of the
+/// coordinates involved (B's reach and both translations).
+inline double motion_slack(const RigidTransform<float>& x0, const RigidTransform<float>& x1, double reach) {
+  double m = reach;
+  for (int i = 0; i < 3; ++i) {
+    m += std::abs(static_cast<double>(x0.translation[i])) + std::abs(static_cast<double>(x1.translation[i]));
+  }
+  return kSlack * m;
+}
+
+/// True when the bounding spheres (centres c in local frames, radii r) at
+/// poses (rot_a, ta) and (rot_b, tb) - rotation rows and translations as
+/// Bullet stores them, read before any conversion - are farther apart than
+/// margin (with the slack).
+template <class Basis, class Origin>
+bool spheres_beyond(const Basis& rot_a, const Origin& ta, const std::array<double, 3>& ca, double ra,
+                    const Basis& rot_b, const Origin& tb, const std::array<double, 3>& cb, double rb,
+                    double margin) {
+  double d2 = 0, scale = ra + rb;
+  for (int i = 0; i < 3; ++i) {
+    double wa = static_cast<double>(ta[i]), wb = static_cast<double>(tb[i]);
+    for (int j = 0; j < 3; ++j) {
+      wa += static_cast<double>(rot_a[i][j]) * ca[static_cast<std::size_t>(j)];
+      wb += static_cast<double>(rot_b[i][j]) * cb[static_cast<std::size_t>(j)];
+    }
+    d2 += (wb - wa) * (wb - wa);
+    scale += std::abs(wa) + std::abs(wb);
+  }
+  const double reach = ra + rb + margin + kSlack * scale;
+  return d2 > reach * reach;
+}
+
+}  // namespace sepax::bullet
