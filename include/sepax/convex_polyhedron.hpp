@@ -156,6 +156,11 @@ inline Plane<T> plane_through_cross(const Vec3<T>& a, const Vec3<T>& e1, const V
   return Plane<T>{n, off};
 }
 
+namespace hull::detail {
+template <class T>
+struct HullPolyhedron;  // the hull builder's construction (hull/to_polyhedron.hpp)
+}  // namespace hull::detail
+
 template <Number T>
 class ConvexPolyhedron {
  public:
@@ -467,6 +472,9 @@ class ConvexPolyhedron {
  private:
   template <Number U>
   friend class ConvexPolyhedron;
+
+  template <class>
+  friend struct hull::detail::HullPolyhedron;
 
   [[noreturn]] static void fail(ErrorCode code, const std::string& what) {
     throw InvalidInput(code, what);
@@ -1063,7 +1071,7 @@ class ConvexPolyhedron {
     return true;
   }
 
-  void validate_geometry() {
+  void validate_geometry(double scan_pairs = kConvexityScanPairs) {
     if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
     if constexpr (!number_traits<T>::is_exact) check_range();
     const T plan_tol = height_tolerance(Tolerances<T>::planarity);
@@ -1151,8 +1159,7 @@ class ConvexPolyhedron {
     }
     // global convexity and orientation: every vertex against every face
     // plane, or on large shapes the local certificate (local_convexity_witnesses)
-    const bool scan = static_cast<double>(face_count()) * static_cast<double>(vertex_count()) <=
-                          kConvexityScanPairs ||
+    const bool scan = static_cast<double>(face_count()) * static_cast<double>(vertex_count()) <= scan_pairs ||
                       !vertex_windings_once();
     int faces_all_above = 0;
     int first_bad_face = -1, first_bad_vertex = -1;
