@@ -3,8 +3,9 @@
 // The hull's output as a validated ConvexPolyhedron<T>, with the decisions of ConvexPolyhedron::from_faces:
 //   1. exact T: from_faces itself;
 //   2. float T, a solid: topology, plane triples and derived data as from_faces builds them; validation
-//      with the local convexity certificate (linear), then every vertex against every face plane through
-//      a VertexTree, which skips only vertices it proves within the convexity tolerance.  The shape is
+//      with the local convexity certificate (linear), then, on shapes small enough that from_faces scans
+//      (faces x vertices <= kConvexityScanPairs), every vertex against every face plane through a
+//      VertexTree, which skips only vertices it proves within the convexity tolerance.  The shape is
 //      accepted exactly when from_faces accepts it: the scan rejects every vertex above a plane by more
 //      than the tolerance, which is what the full scan, the certificate and the inward-faces test reject.
 #pragma once
@@ -37,6 +38,8 @@ struct HullPolyhedron {
       p.choose_plane_triples();
       p.compute_derived();
       p.validate_geometry(0.0);  // the certificate (or the full scan where a vertex is not wound once)
+      if (static_cast<double>(p.face_count()) * static_cast<double>(p.vertex_count()) > kConvexityScanPairs)
+        return p;  // (what from_faces checks on a large shape: the certificate alone)
       const T conv_tol = p.height_tolerance(Tolerances<T>::convexity);
       std::vector<int> all(as_index(p.vertex_count()));
       for (int v = 0; v < p.vertex_count(); ++v) all[as_index(v)] = v;
