@@ -226,6 +226,8 @@ template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<int>& active, int a, int b,
                                                             int c, int d, std::vector<int>& reject) {
   tris_.clear();
+  live_faces_.clear();
+  live_made_ = 0;
   // Orient the tetrahedron so that its faces point outward.
   if (height(plane_through(local_point(a), local_point(b), local_point(c)), d) > T(0)) std::swap(b, c);
   const int t0 = new_tri(a, b, c);  // d below
@@ -365,12 +367,15 @@ inline void Builder<T>::expand() {
     // that are no longer on the surface (inside in exact arithmetic; float:
     // tested like any other point); to the new faces, or when the region was
     // forced, to every live face (listed once, in index order: the faces
-    // assign(p, 0) would test, without passing over the dead ones)
+    // assign(p, 0) would test, without passing over the dead ones; the list
+    // is kept between steps: the faces dead since are dropped and the faces
+    // made since appended, so it stays in index order)
     std::vector<int>& live = live_faces_;
-    live.clear();
-    if (forced)
-      for (std::size_t f = 0; f < tris_.size(); ++f)
-        if (tris_[f].alive) live.push_back(static_cast<int>(f));
+    if (forced) {
+      std::erase_if(live, [&](int f) { return !tris_[as_index(f)].alive; });
+      for (; live_made_ < tris_.size(); ++live_made_)
+        if (tris_[live_made_].alive) live.push_back(static_cast<int>(live_made_));
+    }
     auto reassign = [&](int p) {
       if (forced) {
         assign_among(p, live);
