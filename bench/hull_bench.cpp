@@ -6,10 +6,11 @@
 //   Epeck: convex_hull<CGAL::Epeck::FT> against CGAL::Epeck, up to 10^exact.
 // Ratio = sepax / CGAL (targets: 2 for double and float, 3 for Epeck).
 //
-//   sepax_hull_bench [--min 3] [--max 5] [--exact 4] [--kinds sphere,ball,slab,cylinder] [--types double,float,Epeck]
-//                    [--run both|sepax|cgal]
+//   sepax_hull_bench [--min 3] [--max 5] [--exact 4] [--kinds sphere,ball,slab,cylinder]
+//                    [--types double,float,Epeck] [--run both|sepax|cgal]
 // --run sepax (or cgal) builds only that side's hulls (the other column reads 0): for instruction counts,
-//   valgrind --tool=callgrind build/bench/sepax_hull_bench --min 3 --max 3 --kinds sphere --types double --run sepax
+//   valgrind --tool=callgrind build/bench/sepax_hull_bench --min 3 --max 3 --kinds sphere
+//     --types double --run sepax   (one command line)
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -94,8 +95,9 @@ int main(int argc, char** argv) {
       run = argv[i + 1];
     } else {
       std::fprintf(stderr,
-                   "usage: sepax_hull_bench [--min 3] [--max 5] [--exact 4] [--kinds sphere,ball,slab,cylinder] "
-                   "[--types double,float,Epeck] [--run both|sepax|cgal]\n");
+                   "usage: sepax_hull_bench [--min 3] [--max 5] [--exact 4] "
+                   "[--kinds sphere,ball,slab,cylinder] [--types double,float,Epeck] "
+                   "[--run both|sepax|cgal]\n");
       return 2;
     }
   }

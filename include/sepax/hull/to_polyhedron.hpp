@@ -26,7 +26,8 @@ namespace sepax::hull::detail {
 /// ConvexPolyhedron<T>::from_faces for the hull builder (a friend of ConvexPolyhedron).
 template <class T>
 struct HullPolyhedron {
-  static ConvexPolyhedron<T> from_faces(std::vector<Vec3<T>> vertices, const std::vector<std::vector<int>>& faces) {
+  static ConvexPolyhedron<T> from_faces(std::vector<Vec3<T>> vertices,
+                                        const std::vector<std::vector<int>>& faces) {
     if constexpr (!std::is_floating_point_v<T>) {
       return ConvexPolyhedron<T>::from_faces(std::move(vertices), faces);
     } else {
