@@ -6,7 +6,9 @@
 //   2. may_exceed: per plane, a subtree is skipped when its box proves that the computed height
 //      T(dot(n, x) - off) of each of its vertices is at most the limit (the bound is derived there);
 //      every other vertex is handed to the caller, which computes its height as before.
-// Used by the pre-check (precheck.hpp) and the hull's validation (to_polyhedron.hpp).
+//   3. max_height: the largest computed height, with the largest found so far as the limit.
+// Used by the pre-check (precheck.hpp), the hull's validation (to_polyhedron.hpp) and the slab
+// fallback's widths (fallbacks.hpp, thin_plane).
 #pragma once
 
 #include <algorithm>
@@ -83,6 +85,42 @@ class VertexTree {
         stack[top++] = nd.left + 1;
       }
     }
+  }
+
+  /// The largest computed height T(dot(n, x) - off) over the vertices: the value a pass over every vertex
+  /// finds, each vertex handed over computed by height(id) (which must compute exactly that expression).
+  /// A box is skipped when may_exceed's bound proves its vertices at most the largest height found so far
+  /// (none of them can raise it).  -infinity for an empty tree.
+  template <class Height>
+  T max_height(const Plane<T>& pl, Height&& height) const {
+    T best = -std::numeric_limits<T>::infinity();
+    if (nodes_.empty()) return best;
+    const double n0 = static_cast<double>(pl.normal[0]), n1 = static_cast<double>(pl.normal[1]),
+                 n2 = static_cast<double>(pl.normal[2]), off = static_cast<double>(pl.offset);
+    int stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& nd = nodes_[as_index(stack[--top])];
+      const double x0 = n0 > 0 ? nd.hi[0] : nd.lo[0], x1 = n1 > 0 ? nd.hi[1] : nd.lo[1],
+                   x2 = n2 > 0 ? nd.hi[2] : nd.lo[2];
+      double m = n0 * x0;
+      m = m + n1 * x1;
+      m = m + n2 * x2;
+      m = m - off;
+      double s = std::abs(n0) * nd.mag[0];
+      s = s + std::abs(n1) * nd.mag[1];
+      s = s + std::abs(n2) * nd.mag[2];
+      s = s + std::abs(off);
+      if (m + (kSlack * s + kTiny) <= static_cast<double>(best)) continue;
+      if (nd.left < 0) {
+        for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(items_[as_index(i)].id));
+      } else {
+        stack[top++] = nd.left + 1;
+        stack[top++] = nd.left;  // (the left child first)
+      }
+    }
+    return best;
   }
 
  private:
