@@ -5,7 +5,9 @@
 #include <sepax/convex_hull.hpp>
 #include <sepax/hull/vertex_tree.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -89,4 +91,35 @@ TEMPLATE_TEST_CASE("vertex tree: a plane above every vertex hands none over, one
   const Plane<T> down{Vec3<T>(T(0), T(0), T(1)), T(-2)};  // z = -2, every point 1..3 above
   tree.may_exceed(down, T(0), [&](int) { ++visited; });
   CHECK(visited == 500);
+}
+
+TEMPLATE_TEST_CASE("vertex tree: max_height is the largest computed height of a pass over every vertex",
+                   "[hull]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const double scale : {1e-2, 1.0, 1e2}) {
+    std::vector<Vec3<T>> pts;
+    for (int i = 0; i < 3000; ++i)
+      pts.emplace_back(T(scale * unit(rng)), T(scale * unit(rng)), T(scale * 1e-3 * unit(rng)));
+    std::vector<int> ids;
+    for (int i = 0; i < static_cast<int>(pts.size()); ++i) ids.push_back(i);
+    const sepax::hull::detail::VertexTree<T> tree(ids,
+                                                  [&](int v) { return pts[static_cast<std::size_t>(v)]; });
+    for (int trial = 0; trial < 300; ++trial) {
+      Vec3<T> n(T(unit(rng)), T(unit(rng)), T(unit(rng)));
+      if (trial % 3 == 0) n = Vec3<T>(T(1e-3 * unit(rng)), T(1e-3 * unit(rng)), T(1));  // the slab's normal
+      const Plane<T> pl{n, T(scale * unit(rng))};
+      T full = -std::numeric_limits<T>::infinity();
+      for (const auto& x : pts) full = std::max(full, computed_height(pl, x));
+      int measured = 0;
+      const T best = tree.max_height(pl, [&](int v) {
+        ++measured;
+        return computed_height(pl, pts[static_cast<std::size_t>(v)]);
+      });
+      INFO("scale " << scale << " trial " << trial);
+      REQUIRE(best == full);
+      CHECK(measured < static_cast<int>(pts.size()));
+    }
+  }
 }

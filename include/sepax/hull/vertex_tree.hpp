@@ -51,8 +51,8 @@ class VertexTree {
   /// not, so it is at most n.x - off + gamma_4(T) S + 4 eta(T) <= M + gamma_4(T) S + 4 eta(T) (eta: half
   /// the smallest subnormal, the absolute error of an underflowing operation).  M computed in double is
   /// the same kind of dot product: fl(M) >= M - gamma_4(double) S - 4 eta(double).  So every vertex of the
-  /// box is at most limit when fl(M) + (gamma_4(T) + gamma_4(double)) S + 8 eta(T) <= limit.  The test
-  /// below uses k = 2 (gamma_4(T) + gamma_4(double)) and 64 min(T) (>= 8 eta(T) by far): the factor 2
+  /// box is at most limit when fl(M) + (gamma_4(T) + gamma_4(double)) S + 8 eta(T) <= limit.  at_most
+  /// tests it with k = 2 (gamma_4(T) + gamma_4(double)) and 64 min(T) (>= 8 eta(T) by far): the factor 2
   /// covers the rounding of S (4 additions, relative gamma_4(double)), of k S and of the final sum (|fl(M)|
   /// <= S (1 + gamma_4), relative u(double) each), and the absolute term any underflow in them.  Non-finite
   /// values fail the test (the box is then opened).
@@ -67,17 +67,7 @@ class VertexTree {
     stack[top++] = 0;
     while (top > 0) {
       const Node& nd = nodes_[as_index(stack[--top])];
-      const double x0 = n0 > 0 ? nd.hi[0] : nd.lo[0], x1 = n1 > 0 ? nd.hi[1] : nd.lo[1],
-                   x2 = n2 > 0 ? nd.hi[2] : nd.lo[2];
-      double m = n0 * x0;
-      m = m + n1 * x1;
-      m = m + n2 * x2;
-      m = m - off;
-      double s = std::abs(n0) * nd.mag[0];
-      s = s + std::abs(n1) * nd.mag[1];
-      s = s + std::abs(n2) * nd.mag[2];
-      s = s + std::abs(off);
-      if (m + (kSlack * s + kTiny) <= lim) continue;
+      if (at_most(nd, n0, n1, n2, off, lim)) continue;
       if (nd.left < 0) {
         for (int i = nd.begin; i < nd.end; ++i) visit(items_[as_index(i)].id);
       } else {
@@ -102,17 +92,7 @@ class VertexTree {
     stack[top++] = 0;
     while (top > 0) {
       const Node& nd = nodes_[as_index(stack[--top])];
-      const double x0 = n0 > 0 ? nd.hi[0] : nd.lo[0], x1 = n1 > 0 ? nd.hi[1] : nd.lo[1],
-                   x2 = n2 > 0 ? nd.hi[2] : nd.lo[2];
-      double m = n0 * x0;
-      m = m + n1 * x1;
-      m = m + n2 * x2;
-      m = m - off;
-      double s = std::abs(n0) * nd.mag[0];
-      s = s + std::abs(n1) * nd.mag[1];
-      s = s + std::abs(n2) * nd.mag[2];
-      s = s + std::abs(off);
-      if (m + (kSlack * s + kTiny) <= static_cast<double>(best)) continue;
+      if (at_most(nd, n0, n1, n2, off, static_cast<double>(best))) continue;
       if (nd.left < 0) {
         for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(items_[as_index(i)].id));
       } else {
@@ -142,6 +122,21 @@ class VertexTree {
   };
 
   const Vec3<T>& at(int i) const { return items_[as_index(i)].x; }
+
+  /// Whether the box of nd proves every computed height of its vertices at most lim (may_exceed's bound).
+  static bool at_most(const Node& nd, double n0, double n1, double n2, double off, double lim) {
+    const double x0 = n0 > 0 ? nd.hi[0] : nd.lo[0], x1 = n1 > 0 ? nd.hi[1] : nd.lo[1],
+                 x2 = n2 > 0 ? nd.hi[2] : nd.lo[2];
+    double m = n0 * x0;
+    m = m + n1 * x1;
+    m = m + n2 * x2;
+    m = m - off;
+    double s = std::abs(n0) * nd.mag[0];
+    s = s + std::abs(n1) * nd.mag[1];
+    s = s + std::abs(n2) * nd.mag[2];
+    s = s + std::abs(off);
+    return m + (kSlack * s + kTiny) <= lim;
+  }
 
   Node fill(int b, int e) const {
     Node nd;
