@@ -1,12 +1,16 @@
 // sepax_hull_bench: convex_hull<T> against CGAL's convex_hull_3 on the same
 // points, one run, wall time.  Point sets (seed 42): on the unit sphere, in
 // the unit ball, in a thin slab [-1, 1]^2 x [-1e-3, 1e-3], on a cylinder's
-// lateral surface (radius 1, height 2); 10^3 .. 10^max points.
+// lateral surface (radius 1, height 2); 10^min .. 10^max points.
 //   double, float: sepax against CGAL::Epick (float points widened exactly);
 //   Epeck: convex_hull<CGAL::Epeck::FT> against CGAL::Epeck, up to 10^exact.
 // Ratio = sepax / CGAL (targets: 2 for double and float, 3 for Epeck).
 //
-//   sepax_hull_bench [--max 5] [--exact 4] [--kinds sphere,ball,slab,cylinder]
+//   sepax_hull_bench [--min 3] [--max 5] [--exact 4] [--kinds sphere,ball,slab,cylinder]
+//                    [--types double,float,Epeck] [--run both|sepax|cgal]
+// --run sepax (or cgal) builds only that side's hulls (the other column reads 0): for instruction counts,
+//   valgrind --tool=callgrind build/bench/sepax_hull_bench --min 3 --max 3 --kinds sphere
+//     --types double --run sepax   (one command line)
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -17,6 +21,7 @@
 
 #include "../tests/core/hull_point_sets.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -69,25 +74,37 @@ std::vector<std::string> split(const std::string& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int max_exp = 5, exact_exp = 4;
+  int min_exp = 3, max_exp = 5, exact_exp = 4;
   std::vector<std::string> kinds{"sphere", "ball", "slab", "cylinder"};
+  std::vector<std::string> types{"double", "float", "Epeck"};
+  std::string run = "both";
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--max") {
+    if (a == "--min") {
+      min_exp = std::atoi(argv[i + 1]);
+    } else if (a == "--max") {
       max_exp = std::atoi(argv[i + 1]);
     } else if (a == "--exact") {
       exact_exp = std::atoi(argv[i + 1]);
     } else if (a == "--kinds") {
       kinds = split(argv[i + 1]);
+    } else if (a == "--types") {
+      types = split(argv[i + 1]);
+    } else if (a == "--run" && (std::string(argv[i + 1]) == "both" || std::string(argv[i + 1]) == "sepax" ||
+                                std::string(argv[i + 1]) == "cgal")) {
+      run = argv[i + 1];
     } else {
-      std::fprintf(stderr, "usage: sepax_hull_bench [--max 5] [--exact 4] [--kinds sphere,ball,slab,cylinder]\n");
+      std::fprintf(stderr,
+                   "usage: sepax_hull_bench [--min 3] [--max 5] [--exact 4] "
+                   "[--kinds sphere,ball,slab,cylinder] [--types double,float,Epeck] "
+                   "[--run both|sepax|cgal]\n");
       return 2;
     }
   }
   std::printf("| points | n | type | sepax s | CGAL s | sepax / CGAL | sepax V, F | CGAL V |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   for (const auto& kind : kinds) {
-    for (int e = 3; e <= max_exp; ++e) {
+    for (int e = min_exp; e <= max_exp; ++e) {
       std::size_t n = 1;
       for (int k = 0; k < e; ++k) n *= 10;
       const auto pts = sepax::hull_sets::bench_point_set(kind, n);
@@ -100,15 +117,21 @@ int main(int argc, char** argv) {
         std::fflush(stdout);
       };
       std::size_t v = 0, f = 0, cv = 0;
-      const double epick = cgal_hull<CGAL::Epick>(pts, cv);
-      const double sd = sepax_hull<double>(pts, v, f);
-      row("double", sd, epick, v, f, cv);
-      const double epick_f = cgal_hull<CGAL::Epick>(fpts, cv);
-      const double sf = sepax_hull<float>(pts, v, f);
-      row("float", sf, epick_f, v, f, cv);
-      if (e <= exact_exp) {
-        const double epeck = cgal_hull<CGAL::Epeck>(pts, cv);
-        const double se = sepax_hull<CGAL::Epeck::FT>(pts, v, f);
+      const bool cgal = run != "sepax", mine = run != "cgal";
+      auto wanted = [&](const char* t) { return std::find(types.begin(), types.end(), t) != types.end(); };
+      if (wanted("double")) {
+        const double epick = cgal ? cgal_hull<CGAL::Epick>(pts, cv) : 0;
+        const double sd = mine ? sepax_hull<double>(pts, v, f) : 0;
+        row("double", sd, epick, v, f, cv);
+      }
+      if (wanted("float")) {
+        const double epick_f = cgal ? cgal_hull<CGAL::Epick>(fpts, cv) : 0;
+        const double sf = mine ? sepax_hull<float>(pts, v, f) : 0;
+        row("float", sf, epick_f, v, f, cv);
+      }
+      if (wanted("Epeck") && e <= exact_exp) {
+        const double epeck = cgal ? cgal_hull<CGAL::Epeck>(pts, cv) : 0;
+        const double se = mine ? sepax_hull<CGAL::Epeck::FT>(pts, v, f) : 0;
         row("Epeck", se, epeck, v, f, cv);
       }
     }

@@ -131,6 +131,11 @@ inline Plane<T> plane_through_cross(const Vec3<T>& a, const Vec3<T>& e1, const V
   return Plane<T>{n, off};
 }
 
+namespace hull::detail {
+template <class T>
+struct HullPolyhedron;  // the hull builder's construction (hull/to_polyhedron.hpp)
+}  // namespace hull::detail
+
 /// ConvexPolyhedron<T>: a validated convex polyhedron as a half-edge mesh.
 ///
 /// Layout (flat arrays, indices are int):
@@ -481,6 +486,9 @@ class ConvexPolyhedron {
   template <Number U>
   friend class ConvexPolyhedron;
 
+  template <class>
+  friend struct hull::detail::HullPolyhedron;
+
   [[noreturn]] static void fail(ErrorCode code, const std::string& what) { throw InvalidInput(code, what); }
 
   // Topology (convex_polyhedron_topology.hpp): the half-edge mesh from the
@@ -509,7 +517,7 @@ class ConvexPolyhedron {
   void check_new_range();
   void local_convexity_witnesses(int f, std::vector<int>& out) const;
   bool vertex_windings_once() const;
-  void validate_geometry();
+  void validate_geometry(double scan_pairs = kConvexityScanPairs);
 
   std::vector<Vec3<T>> vertices_;
   std::vector<HalfEdge> half_edges_;

@@ -179,7 +179,7 @@ inline bool ConvexPolyhedron<T>::vertex_windings_once() const {
 }
 
 template <Number T>
-inline void ConvexPolyhedron<T>::validate_geometry() {
+inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
   if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
   if constexpr (!number_traits<T>::is_exact) check_range();
   const T plan_tol = height_tolerance(Tolerances<T>::planarity);
@@ -267,7 +267,7 @@ inline void ConvexPolyhedron<T>::validate_geometry() {
   // global convexity and orientation: every vertex against every face
   // plane, or on large shapes the local certificate (local_convexity_witnesses)
   const bool scan =
-      static_cast<double>(face_count()) * static_cast<double>(vertex_count()) <= kConvexityScanPairs ||
+      static_cast<double>(face_count()) * static_cast<double>(vertex_count()) <= scan_pairs ||
       !vertex_windings_once();
   int faces_all_above = 0;
   int first_bad_face = -1, first_bad_vertex = -1;

@@ -108,6 +108,8 @@ class Builder {
   std::optional<ConvexPolyhedron<T>> build(const std::vector<int>& active, std::vector<int>& reject);
   int new_tri(int p0, int p1, int p2);
   void assign(int p, int first);
+  template <class Faces>
+  void assign_among(int p, const Faces& faces);
   T threshold(int p) const;
   bool sweep();
   static int edge_index(const Tri& t, int from);
@@ -171,6 +173,8 @@ class Builder {
   std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
   std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)
   std::vector<int> gone_;                    // scratch, per eye
+  std::vector<int> live_faces_;              // live triangles in index order, among tris_[0, live_made_)
+  std::size_t live_made_ = 0;                // (updated at each eye whose visible region was forced)
   std::vector<Vec3<double>> qd_;             // exact T: q_ as doubles, when shadow_
   bool shadow_ = false;                      // exact T: every welded coordinate is exactly a double
   std::vector<std::array<int, 3>> horizon_;  // scratch, per eye

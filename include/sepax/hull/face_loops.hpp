@@ -22,6 +22,7 @@
 
 #include "../convex_polyhedron.hpp"
 #include "builder.hpp"
+#include "to_polyhedron.hpp"
 
 namespace sepax::hull::detail {
 
@@ -257,7 +258,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
       v = index[as_index(v)];
     }
   }
-  return finish([&] { return ConvexPolyhedron<T>::from_faces(std::move(verts), faces); });
+  return finish([&] { return HullPolyhedron<T>::from_faces(std::move(verts), faces); });
 }
 
 }  // namespace sepax::hull::detail

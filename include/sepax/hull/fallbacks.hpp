@@ -24,6 +24,7 @@
 #include "hull_distance.hpp"
 #include "polygon_2d.hpp"
 #include "precheck.hpp"
+#include "vertex_tree.hpp"
 
 namespace sepax::hull::detail {
 
@@ -68,6 +69,23 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
       u = std::max(u, t);
     }
   };
+  // After the first width: the same range through a VertexTree of the points (its largest dot product
+  // along n and along -n, the value the pass above finds: rounding to nearest is symmetric, so the
+  // smallest dot along n is exactly minus the largest along -n).
+  std::optional<VertexTree<double>> tree;
+  auto range = [&](const Vec3<double>& n, double& l, double& u) {
+    if (!tree) {
+      std::vector<int> all(pts_.size());
+      for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+      tree.emplace(all, [&](int v) { return vec_to_double(local_point(v)); });
+    }
+    auto along = [&](const Vec3<double>& m) {
+      return tree->max_height(Plane<double>{m, 0.0},
+                              [&](int v) { return dot(m, vec_to_double(local_point(v))); });
+    };
+    u = std::max(-1e300, along(n));
+    l = std::min(1e300, -along(Vec3<double>(-n)));
+  };
   std::size_t big = faces.size();
   double big_area = -1;
   for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -83,7 +101,7 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
   for (const auto& fc : faces) {
     if (squared_norm(fc.n) == 0) continue;
     double l = 0, u = 0;
-    width(fc.n, l, u);
+    range(fc.n, l, u);
     if (u - l < hi - lo) {
       nrm = fc.n;
       lo = l;
@@ -98,7 +116,7 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
     Vec3<double> n(0, 0, 0);
     n[c] = 1;
     double l = 0, u = 0;
-    width(n, l, u);
+    range(n, l, u);
     if (u - l <= hi - lo + kHullSlabAxisPreference * e) {
       nrm = n;
       lo = l;

@@ -87,16 +87,19 @@ inline PolygonFaces polygon_faces(const ConvexPolyhedron<T>& h, const Vec3<T>& c
 // duals of a convex polyhedron's faces are the vertices of a convex one,
 // adjacent faces its edges).  A point is deep when (1 - max s) * min D
 // exceeds margin (the rounding of the heights outside_points computes, and
-// how far the validated plane of a face may be from its Newell plane);
-// every other point is measured against every face as before.  Climbs
+// how far the validated plane of a face may be from its Newell plane): it is
+// below every face plane by more than the measure's slack, so measuring it
+// could change nothing, and it is skipped at every size.  Every other point is
+// measured against every face, or on a large solid (local()) against the
+// faces near the climb's face.  Climbs
 // start where the last one ended (the points are in lexicographic order).
 template <Number T>
 struct DeepInside {
   DeepInside(const ConvexPolyhedron<T>& h, const std::vector<PolygonFace>& faces, double margin,
              std::size_t points)
       : faces_(faces) {
-    const double pairs = static_cast<double>(points) * static_cast<double>(faces.size());
-    if (h.is_flat() || pairs <= kHullPointScanPairs) return;
+    local_ = static_cast<double>(points) * static_cast<double>(faces.size()) > kHullPointScanPairs;
+    if (h.is_flat()) return;
     Vec3<double> c(0, 0, 0);
     std::size_t count = 0;
     for (const auto& fc : faces)
@@ -125,6 +128,9 @@ struct DeepInside {
     on_ = true;
   }
   bool enabled() const { return on_; }
+  /// Points x faces above kHullPointScanPairs: a point that is not deep is measured against the faces near
+  /// the climb's face (neighbours), not every face.
+  bool local() const { return local_; }
   int face() const { return at_; }  // where the last climb ended
   std::span<const int> neighbours(int f) const {
     return std::span<const int>(adj_.data() + start_[as_index(f)],
@@ -154,7 +160,7 @@ struct DeepInside {
   std::vector<int> start_, adj_;
   double need_ = 0;
   int at_ = 0;
-  bool on_ = false;
+  bool on_ = false, local_ = false;
 };
 
 // Euclidean distance of x from the polyhedron given by faces: the distance

@@ -24,6 +24,7 @@
 #include "../number_traits.hpp"
 #include "../tolerances.hpp"
 #include "builder.hpp"
+#include "vertex_tree.hpp"
 
 namespace sepax::hull::detail {
 
@@ -200,6 +201,8 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
       witness_start[f + 1] = static_cast<int>(witness.size());
     }
   }
+  // (a solid's scan through the tree; a flat pair of faces scans its few vertices directly)
+  const VertexTree<T> tree(scan && !flat ? used : std::vector<int>{}, [&](int v) { return input_point(v); });
   std::vector<char> bad(loops.size(), 0);
   std::vector<int> rotated;  // (one loop, rotated)
   std::vector<Vec3<T>> pts;  // (its points)
@@ -230,7 +233,12 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
       const bool shape_ok = ok;
       for (int v : rotated) ok = ok && abs_of(h(v)) <= plan_tol;
       if (scan) {
-        for (int v : used) ok = ok && h(v) <= conv_tol;
+        // every used vertex, those the tree proves below conv_tol skipped (the same decision)
+        if (flat) {
+          for (int v : used) ok = ok && h(v) <= conv_tol;
+        } else if (ok) {
+          tree.may_exceed(pl, conv_tol, [&](int v) { ok = ok && h(v) <= conv_tol; });
+        }
       } else {
         for (int w = witness_start[f]; w < witness_start[f + 1] && ok; ++w)
           ok = h(witness[as_index(w)]) <= conv_tol;

@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <ranges>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -121,16 +122,23 @@ inline int Builder<T>::new_tri(int p0, int p1, int p2) {
 // highest above, within eps (Traits::NearFace).
 template <Number T>
 inline void Builder<T>::assign(int p, int first) {
+  assign_among(p, std::views::iota(first, static_cast<int>(tris_.size())));
+}
+
+// assign over the faces listed (ascending; those no longer alive are passed over).
+template <Number T>
+template <class Faces>
+inline void Builder<T>::assign_among(int p, const Faces& faces) {
   typename Traits::NearFace near;
   const auto limit = Traits::outside_limit(*this, p);
-  for (std::size_t f = as_index(first); f < tris_.size(); ++f) {
-    if (!tris_[f].alive) continue;
-    const auto side = Traits::classify(*this, static_cast<int>(f), p, limit);
+  for (const int f : faces) {
+    if (!tris_[as_index(f)].alive) continue;
+    const auto side = Traits::classify(*this, f, p, limit);
     if (side.outside) {
-      tris_[f].conflict.push_back(p);
+      tris_[as_index(f)].conflict.push_back(p);
       return;
     }
-    near.offer(side, static_cast<int>(f));
+    near.offer(side, f);
   }
   near.keep(*this, p);
 }
@@ -218,6 +226,8 @@ template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<int>& active, int a, int b,
                                                             int c, int d, std::vector<int>& reject) {
   tris_.clear();
+  live_faces_.clear();
+  live_made_ = 0;
   // Orient the tetrahedron so that its faces point outward.
   if (height(plane_through(local_point(a), local_point(b), local_point(c)), d) > T(0)) std::swap(b, c);
   const int t0 = new_tri(a, b, c);  // d below
@@ -355,7 +365,24 @@ inline void Builder<T>::expand() {
     }
     // re-distribute the visible faces' conflict points, and their vertices
     // that are no longer on the surface (inside in exact arithmetic; float:
-    // tested like any other point)
+    // tested like any other point); to the new faces, or when the region was
+    // forced, to every live face (listed once, in index order: the faces
+    // assign(p, 0) would test, without passing over the dead ones; the list
+    // is kept between steps: the faces dead since are dropped and the faces
+    // made since appended, so it stays in index order)
+    std::vector<int>& live = live_faces_;
+    if (forced) {
+      std::erase_if(live, [&](int f) { return !tris_[as_index(f)].alive; });
+      for (; live_made_ < tris_.size(); ++live_made_)
+        if (tris_[live_made_].alive) live.push_back(static_cast<int>(live_made_));
+    }
+    auto reassign = [&](int p) {
+      if (forced) {
+        assign_among(p, live);
+      } else {
+        assign(p, first_new);
+      }
+    };
     if constexpr (Traits::kRechecksRounding) {
       std::vector<int>& gone = gone_;
       gone.clear();
@@ -366,7 +393,7 @@ inline void Builder<T>::expand() {
       for (int v : gone) {
         bool kept = v == eye;
         for (const auto& hz : horizon) kept = kept || hz[0] == v;
-        if (!kept) assign(v, forced ? 0 : first_new);
+        if (!kept) reassign(v);
       }
     }
     for (int f : visible) {
@@ -376,7 +403,7 @@ inline void Builder<T>::expand() {
       t.conflict.clear();
       pts.insert(pts.end(), t.on.begin(), t.on.end());
       t.on.clear();
-      for (int p : pts) assign(p, forced ? 0 : first_new);
+      for (int p : pts) reassign(p);
     }
   }
 }

@@ -185,8 +185,8 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
     };
     double hp = -1e300;
     const std::vector<int>* subset = nullptr;
-    if (deep.enabled()) {
-      if (deep(vec_to_double(local_point(p)))) continue;
+    if (deep.enabled() && deep(vec_to_double(local_point(p)))) continue;
+    if (deep.enabled() && deep.local()) {
       // the faces connected to the climb's face through faces the point is
       // less than the bound below (every face it can be above or near)
       near.assign(1, deep.face());

@@ -1,0 +1,179 @@
+// sepax/hull/vertex_tree.hpp
+//
+// Float T: "every vertex at most `limit` above this plane" without a pass over every vertex, with the same
+// decision as that pass, vertex for vertex:
+//   1. VertexTree: the vertices in a binary tree of boxes (median splits on the widest axis).
+//   2. may_exceed: per plane, a subtree is skipped when its box proves that the computed height
+//      T(dot(n, x) - off) of each of its vertices is at most the limit (the bound is derived there);
+//      every other vertex is handed to the caller, which computes its height as before.
+//   3. max_height: the largest computed height, with the largest found so far as the limit.
+// Used by the pre-check (precheck.hpp), the hull's validation (to_polyhedron.hpp) and the slab
+// fallback's widths (fallbacks.hpp, thin_plane).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+#include "../convex_polyhedron.hpp"
+#include "../number_traits.hpp"
+#include "../vec3.hpp"
+#include "index.hpp"
+
+namespace sepax::hull::detail {
+
+/// Float T: vertices in a tree of bounding boxes, for the vertices a plane may have above a height limit.
+template <Number T>
+class VertexTree {
+  static_assert(std::is_floating_point_v<T>);
+
+ public:
+  /// The tree of the vertices ids, at point(id).
+  template <class Point>
+  VertexTree(const std::vector<int>& ids, Point&& point) {
+    items_.reserve(ids.size());
+    for (int v : ids) items_.push_back(Item{point(v), v});
+    if (items_.empty()) return;
+    nodes_.push_back(fill(0, static_cast<int>(items_.size())));
+    expand(0);
+  }
+
+  /// Calls visit(v) for every vertex v whose computed height T(dot(n, x_v) - off) may exceed limit; every
+  /// vertex not visited has a computed height at most limit (with or without FMA contraction).
+  ///
+  /// Bound.  For a box [lo, hi] let x* be its corner with x*_i = hi_i where n_i > 0, else lo_i, so that
+  /// M = n.x* - off is the exact maximum of n.x - off over the box, and a_i = max(|lo_i|, |hi_i|),
+  /// S = sum |n_i| a_i + |off| >= sum |n_i| |x_i| + |off| for every x in the box.  The computed height of a
+  /// vertex x in T is a 4-term dot product (n.x - 1.off): at most 4 roundings on each term's path, fused or
+  /// not, so it is at most n.x - off + gamma_4(T) S + 4 eta(T) <= M + gamma_4(T) S + 4 eta(T) (eta: half
+  /// the smallest subnormal, the absolute error of an underflowing operation).  M computed in double is
+  /// the same kind of dot product: fl(M) >= M - gamma_4(double) S - 4 eta(double).  So every vertex of the
+  /// box is at most limit when fl(M) + (gamma_4(T) + gamma_4(double)) S + 8 eta(T) <= limit.  at_most
+  /// tests it with k = 2 (gamma_4(T) + gamma_4(double)) and 64 min(T) (>= 8 eta(T) by far): the factor 2
+  /// covers the rounding of S (4 additions, relative gamma_4(double)), of k S and of the final sum (|fl(M)|
+  /// <= S (1 + gamma_4), relative u(double) each), and the absolute term any underflow in them.  Non-finite
+  /// values fail the test (the box is then opened).
+  template <class F>
+  void may_exceed(const Plane<T>& pl, T limit, F&& visit) const {
+    if (nodes_.empty()) return;
+    const double n0 = static_cast<double>(pl.normal[0]), n1 = static_cast<double>(pl.normal[1]),
+                 n2 = static_cast<double>(pl.normal[2]), off = static_cast<double>(pl.offset);
+    const double lim = static_cast<double>(limit);
+    int stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& nd = nodes_[as_index(stack[--top])];
+      if (at_most(nd, n0, n1, n2, off, lim)) continue;
+      if (nd.left < 0) {
+        for (int i = nd.begin; i < nd.end; ++i) visit(items_[as_index(i)].id);
+      } else {
+        stack[top++] = nd.left;
+        stack[top++] = nd.left + 1;
+      }
+    }
+  }
+
+  /// The largest computed height T(dot(n, x) - off) over the vertices: the value a pass over every vertex
+  /// finds, each vertex handed over computed by height(id) (which must compute exactly that expression).
+  /// A box is skipped when may_exceed's bound proves its vertices at most the largest height found so far
+  /// (none of them can raise it).  -infinity for an empty tree.
+  template <class Height>
+  T max_height(const Plane<T>& pl, Height&& height) const {
+    T best = -std::numeric_limits<T>::infinity();
+    if (nodes_.empty()) return best;
+    const double n0 = static_cast<double>(pl.normal[0]), n1 = static_cast<double>(pl.normal[1]),
+                 n2 = static_cast<double>(pl.normal[2]), off = static_cast<double>(pl.offset);
+    int stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& nd = nodes_[as_index(stack[--top])];
+      if (at_most(nd, n0, n1, n2, off, static_cast<double>(best))) continue;
+      if (nd.left < 0) {
+        for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(items_[as_index(i)].id));
+      } else {
+        stack[top++] = nd.left + 1;
+        stack[top++] = nd.left;  // (the left child first)
+      }
+    }
+    return best;
+  }
+
+ private:
+  static constexpr int kLeaf = 8;  ///< vertices per leaf at most
+  static constexpr double gamma4(double u) { return 4 * u / (1 - 4 * u); }
+  static constexpr double kSlack =
+      2 * (gamma4(number_traits<T>::unit_roundoff) + gamma4(number_traits<double>::unit_roundoff));
+  static constexpr double kTiny = 64 * static_cast<double>(std::numeric_limits<T>::min());
+
+  struct Node {
+    double lo[3], hi[3], mag[3];  ///< box (exact: T widens exactly to double); mag_i = max(|lo_i|, |hi_i|)
+    int begin = 0, end = 0;       ///< items_[begin, end)
+    int left = -1;                ///< children left, left + 1 (-1: a leaf)
+  };
+
+  struct Item {
+    Vec3<T> x;
+    int id;
+  };
+
+  const Vec3<T>& at(int i) const { return items_[as_index(i)].x; }
+
+  /// Whether the box of nd proves every computed height of its vertices at most lim (may_exceed's bound).
+  static bool at_most(const Node& nd, double n0, double n1, double n2, double off, double lim) {
+    const double x0 = n0 > 0 ? nd.hi[0] : nd.lo[0], x1 = n1 > 0 ? nd.hi[1] : nd.lo[1],
+                 x2 = n2 > 0 ? nd.hi[2] : nd.lo[2];
+    double m = n0 * x0;
+    m = m + n1 * x1;
+    m = m + n2 * x2;
+    m = m - off;
+    double s = std::abs(n0) * nd.mag[0];
+    s = s + std::abs(n1) * nd.mag[1];
+    s = s + std::abs(n2) * nd.mag[2];
+    s = s + std::abs(off);
+    return m + (kSlack * s + kTiny) <= lim;
+  }
+
+  Node fill(int b, int e) const {
+    Node nd;
+    nd.begin = b;
+    nd.end = e;
+    for (int c = 0; c < 3; ++c) nd.lo[c] = nd.hi[c] = static_cast<double>(at(b)[c]);
+    for (int i = b + 1; i < e; ++i)
+      for (int c = 0; c < 3; ++c) {
+        nd.lo[c] = std::min(nd.lo[c], static_cast<double>(at(i)[c]));
+        nd.hi[c] = std::max(nd.hi[c], static_cast<double>(at(i)[c]));
+      }
+    for (int c = 0; c < 3; ++c) nd.mag[c] = std::max(std::abs(nd.lo[c]), std::abs(nd.hi[c]));
+    return nd;
+  }
+
+  /// Median split of node id on its box's widest axis, recursively down to leaves of kLeaf vertices: a
+  /// depth of at most log2(n / kLeaf) + 1, so the traversal's stack (depth + 1 entries) fits 64 for any
+  /// int count.
+  void expand(int id) {
+    Node nd = nodes_[as_index(id)];
+    if (nd.end - nd.begin <= kLeaf) return;
+    int axis = 0;
+    for (int c = 1; c < 3; ++c)
+      if (nd.hi[c] - nd.lo[c] > nd.hi[axis] - nd.lo[axis]) axis = c;
+    const int mid = nd.begin + (nd.end - nd.begin) / 2;
+    std::nth_element(items_.begin() + nd.begin, items_.begin() + mid, items_.begin() + nd.end,
+                     [&](const Item& p, const Item& q) { return p.x[axis] < q.x[axis]; });
+    const int left = static_cast<int>(nodes_.size());
+    nodes_.push_back(fill(nd.begin, mid));
+    nodes_.push_back(fill(mid, nd.end));
+    nodes_[as_index(id)].left = left;
+    expand(left);
+    expand(left + 1);
+  }
+
+  std::vector<Item> items_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace sepax::hull::detail

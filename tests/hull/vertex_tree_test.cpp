@@ -1,0 +1,125 @@
+// hull/vertex_tree.hpp: the vertices a VertexTree does not hand over have computed heights at most the
+// limit, for float and double, at several scales and offsets; and the tree does skip vertices.
+#include <catch2/catch.hpp>
+
+#include <sepax/convex_hull.hpp>
+#include <sepax/hull/vertex_tree.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <vector>
+
+namespace {
+
+using sepax::Plane;
+using sepax::Vec3;
+
+template <class T>
+T computed_height(const Plane<T>& pl, const Vec3<T>& x) {
+  return T(sepax::dot(pl.normal, x) - pl.offset);
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("vertex tree: every vertex it skips is at most the limit above the plane", "[hull]", float,
+                   double) {
+  using T = TestType;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  long skipped = 0, below = 0;
+  for (const double scale : {1e-3, 1.0, 1e3}) {
+    for (const double offset : {0.0, 5.0}) {
+      for (const int kind : {0, 1}) {  // on a sphere, in a thin slab
+        std::vector<Vec3<T>> pts;
+        for (int i = 0; i < 2000; ++i) {
+          Vec3<double> d(gauss(rng), gauss(rng), gauss(rng));
+          if (kind == 0) {
+            d /= std::sqrt(d.squaredNorm());
+          } else {
+            d = Vec3<double>(unit(rng), unit(rng), 1e-4 * unit(rng));
+          }
+          const Vec3<double> x = scale * (d + Vec3<double>(offset, -offset, offset / 2));
+          pts.emplace_back(T(x[0]), T(x[1]), T(x[2]));
+        }
+        std::vector<int> ids;
+        for (int i = 0; i < static_cast<int>(pts.size()); ++i) ids.push_back(i);
+        const sepax::hull::detail::VertexTree<T> tree(ids,
+                                                      [&](int v) { return pts[static_cast<std::size_t>(v)]; });
+        std::uniform_int_distribution<int> pick(0, static_cast<int>(pts.size()) - 1);
+        for (int trial = 0; trial < 200; ++trial) {
+          const auto& a = pts[static_cast<std::size_t>(pick(rng))];
+          const auto& b = pts[static_cast<std::size_t>(pick(rng))];
+          const auto& c = pts[static_cast<std::size_t>(pick(rng))];
+          const Plane<T> pl = sepax::plane_through(a, b, c);
+          // limits from far below to above: a few units of the extent's rounding, and 0
+          const T limit = trial % 4 == 0 ? T(0) : T(scale * std::ldexp(1.0, -(trial % 30)) * (trial % 3 - 1));
+          std::vector<char> seen(pts.size(), 0);
+          tree.may_exceed(pl, limit, [&](int v) { seen[static_cast<std::size_t>(v)] = 1; });
+          for (std::size_t i = 0; i < pts.size(); ++i) {
+            below += computed_height(pl, pts[i]) <= limit;
+            if (seen[i]) continue;
+            ++skipped;
+            INFO("scale " << scale << " offset " << offset << " kind " << kind << " trial " << trial);
+            REQUIRE(computed_height(pl, pts[i]) <= limit);
+          }
+        }
+      }
+    }
+  }
+  // the tree skips most of the vertices at most the limit above (a pruning, not a full scan)
+  CHECK(skipped > below / 2);
+}
+
+TEMPLATE_TEST_CASE("vertex tree: a plane above every vertex hands none over, one below hands all", "[hull]",
+                   float, double) {
+  using T = TestType;
+  std::vector<Vec3<T>> pts;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int i = 0; i < 500; ++i) pts.emplace_back(T(unit(rng)), T(unit(rng)), T(unit(rng)));
+  std::vector<int> ids;
+  for (int i = 0; i < 500; ++i) ids.push_back(i);
+  const sepax::hull::detail::VertexTree<T> tree(ids, [&](int v) { return pts[static_cast<std::size_t>(v)]; });
+  const Plane<T> up{Vec3<T>(T(0), T(0), T(1)), T(2)};  // z = 2, every point 1..3 below
+  int visited = 0;
+  tree.may_exceed(up, T(0), [&](int) { ++visited; });
+  CHECK(visited == 0);
+  const Plane<T> down{Vec3<T>(T(0), T(0), T(1)), T(-2)};  // z = -2, every point 1..3 above
+  tree.may_exceed(down, T(0), [&](int) { ++visited; });
+  CHECK(visited == 500);
+}
+
+TEMPLATE_TEST_CASE("vertex tree: max_height is the largest computed height of a pass over every vertex",
+                   "[hull]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const double scale : {1e-2, 1.0, 1e2}) {
+    std::vector<Vec3<T>> pts;
+    for (int i = 0; i < 3000; ++i)
+      pts.emplace_back(T(scale * unit(rng)), T(scale * unit(rng)), T(scale * 1e-3 * unit(rng)));
+    std::vector<int> ids;
+    for (int i = 0; i < static_cast<int>(pts.size()); ++i) ids.push_back(i);
+    const sepax::hull::detail::VertexTree<T> tree(ids,
+                                                  [&](int v) { return pts[static_cast<std::size_t>(v)]; });
+    for (int trial = 0; trial < 300; ++trial) {
+      Vec3<T> n(T(unit(rng)), T(unit(rng)), T(unit(rng)));
+      if (trial % 3 == 0) n = Vec3<T>(T(1e-3 * unit(rng)), T(1e-3 * unit(rng)), T(1));  // the slab's normal
+      const Plane<T> pl{n, T(scale * unit(rng))};
+      T full = -std::numeric_limits<T>::infinity();
+      for (const auto& x : pts) full = std::max(full, computed_height(pl, x));
+      int measured = 0;
+      const T best = tree.max_height(pl, [&](int v) {
+        ++measured;
+        return computed_height(pl, pts[static_cast<std::size_t>(v)]);
+      });
+      INFO("scale " << scale << " trial " << trial);
+      REQUIRE(best == full);
+      CHECK(measured < static_cast<int>(pts.size()));
+    }
+  }
+}
