@@ -43,13 +43,14 @@ std::unique_ptr<btConvexHullShape> bullet_hull(const std::vector<V3f>& v) {
 
 btTransform bullet_transform(const sepax::RigidTransform<float>& x) {
   const auto& r = x.rotation;
-  return btTransform(btMatrix3x3(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)),
-                     btVector3(x.translation[0], x.translation[1], x.translation[2]));
+  return btTransform(
+      btMatrix3x3(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)),
+      btVector3(x.translation[0], x.translation[1], x.translation[2]));
 }
 
 struct BulletCell {
-  std::vector<std::unique_ptr<btConvexHullShape>> local;  // per pool shape
-  std::vector<std::unique_ptr<btBoxShape>> boxes;         // per pool shape (boxes)
+  std::vector<std::unique_ptr<btConvexHullShape>> local;    // per pool shape
+  std::vector<std::unique_ptr<btBoxShape>> boxes;           // per pool shape (boxes)
   std::vector<std::unique_ptr<btConvexHullShape>> posed_b;  // per pair, pre-posed B
   std::vector<btTransform> pose_a, pose_b;                  // per pair
   // The shape a posed row gives Bullet: btBoxShape for boxes, else the hull.
@@ -113,8 +114,8 @@ void add_bullet_rows(Cell& c, std::vector<Row>& rows) {
       id.setIdentity();
       btVector3 sep;
       btPointCollector res;
-      const bool ov = btPolyhedralContactClipping::findSeparatingAxis(*a.getConvexPolyhedron(),
-                                                                       *b.getConvexPolyhedron(), id, id, sep, res);
+      const bool ov = btPolyhedralContactClipping::findSeparatingAxis(
+          *a.getConvexPolyhedron(), *b.getConvexPolyhedron(), id, id, sep, res);
       if (!ov) return Out{false, std::nan(""), false};
       // depth along Bullet's axis: overlap of the two projections (reporting only)
       const V3d ax = V3d(double(sep.x()), double(sep.y()), double(sep.z())).normalized();
@@ -144,7 +145,8 @@ void add_bullet_rows(Cell& c, std::vector<Row>& rows) {
   if (c.pool->kind == "box") {
     addp("bullet boxbox posed (float)", [cp, bc](std::size_t i) {
       const PairData& p = cp->pairs[i];
-      btBoxBoxDetector det(bc->boxes[static_cast<std::size_t>(p.a)].get(), bc->boxes[static_cast<std::size_t>(p.b)].get());
+      btBoxBoxDetector det(bc->boxes[static_cast<std::size_t>(p.a)].get(),
+                           bc->boxes[static_cast<std::size_t>(p.b)].get());
       btDiscreteCollisionDetectorInterface::ClosestPointInput in;
       in.m_transformA = bc->pose_a[i];
       in.m_transformB = bc->pose_b[i];
@@ -189,7 +191,9 @@ void ccd_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
   }
   ccdVec3Set(out, p[3 * best], p[3 * best + 1], p[3 * best + 2]);
 }
-void ccd_center(const void* obj, ccd_vec3_t* c) { ccdVec3Copy(c, &static_cast<const CcdShape*>(obj)->centre); }
+void ccd_center(const void* obj, ccd_vec3_t* c) {
+  ccdVec3Copy(c, &static_cast<const CcdShape*>(obj)->centre);
+}
 
 struct CcdCell {
   std::vector<CcdShape> a;  // per pool shape
@@ -217,8 +221,8 @@ void add_ccd_rows(Cell& c, std::vector<Row>& rows) {
                          init(ccd);
                          ccd_real_t depth;
                          ccd_vec3_t dir, pos;
-                         const int r = penetration(&cc->a[static_cast<std::size_t>(cp->pairs[i].a)], &cc->b[i], &ccd,
-                                                   &depth, &dir, &pos);
+                         const int r = penetration(&cc->a[static_cast<std::size_t>(cp->pairs[i].a)],
+                                                   &cc->b[i], &ccd, &depth, &dir, &pos);
                          if (r == 0) return Out{true, -double(depth), false};
                          if (r == -2) return Out{true, std::nan(""), true};
                          return Out{false, std::nan(""), false};
@@ -255,13 +259,14 @@ void add_fcl_rows(Cell& c, std::vector<Row>& rows) {
   auto fc = std::make_shared<FclCell>();
   for (const auto& s : c.pool->shapes) fc->a.push_back(std::make_unique<FclShape>(s.f.vertices(), s.faces));
   for (const auto& p : c.pairs)
-    fc->b.push_back(std::make_unique<FclShape>(p.bverts, c.pool->shapes[static_cast<std::size_t>(p.b)].faces));
+    fc->b.push_back(
+        std::make_unique<FclShape>(p.bverts, c.pool->shapes[static_cast<std::size_t>(p.b)].faces));
   const Cell* cp = &c;
   rows.push_back(Row{"fcl collide+contact (double)", "peer", [cp, fc](std::size_t i) {
                        fcl::CollisionRequestd req(1, true);
                        fcl::CollisionResultd res;
-                       fcl::collide(fc->a[static_cast<std::size_t>(cp->pairs[i].a)]->obj.get(), fc->b[i]->obj.get(),
-                                    req, res);
+                       fcl::collide(fc->a[static_cast<std::size_t>(cp->pairs[i].a)]->obj.get(),
+                                    fc->b[i]->obj.get(), req, res);
                        if (!res.isCollision()) return Out{false, std::nan(""), false};
                        return Out{true, -res.getContact(0).penetration_depth, false};
                      }});

@@ -52,8 +52,8 @@ void compute_reference(Cell& c) {
     p.ref_overlap = r.overlap;
     p.ref_sep = r.separation_as_double();
 #if SEPAX_BENCH_PREPARED
-    const auto bp = ConvexPolyhedron<Q>::convert_from(
-        posed(c.pool->shapes[ib].f, relative_pose(p.pose_a, p.pose_b)));
+    const auto bp =
+        ConvexPolyhedron<Q>::convert_from(posed(c.pool->shapes[ib].f, relative_pose(p.pose_a, p.pose_b)));
     const auto rp = sat::traversal(x->a[ia], c.pool->walk[ia], bp, c.pool->walk[ib]);
     p.ref_posed_overlap = rp.overlap;
     p.ref_posed_sep = rp.separation_as_double();

@@ -25,16 +25,16 @@ namespace bench {
 
 struct Out {
   bool overlap = false;
-  double sep = 0;        // signed separation (< 0: penetration depth); NaN if none
-  bool failed = false;   // the method gave no answer (counted, not timed differently)
+  double sep = 0;                          // signed separation (< 0: penetration depth); NaN if none
+  bool failed = false;                     // the method gave no answer (counted, not timed differently)
   std::array<int, 3> feature{-1, -1, -1};  // sepax rows: feature type, a, b
   std::int64_t exact_fallbacks = 0;  // robust rows: decisions the float filters left to exact arithmetic
 };
 
 struct Row {
   std::string name;
-  std::string group;  // "sepax" or "peer"
-  std::function<Out(std::size_t)> run;  // the query of pair i
+  std::string group;                                     // "sepax" or "peer"
+  std::function<Out(std::size_t)> run;                   // the query of pair i
   std::size_t max_pairs = static_cast<std::size_t>(-1);  // slow rows run on a prefix of the pairs
 };
 

@@ -68,16 +68,16 @@ Pool make_pool(const WorkloadSpec& spec) {
 }
 
 void print_header() {
-  std::printf("%-11s %-11s %-46s %11s %9s %7s %5s %10s %10s %8s\n", "workload", "poses", "row", "ns/query", "x trav",
-              "verdict", "fail", "depth-err", "depth-err", "exact");
-  std::printf("%-11s %-11s %-46s %11s %9s %7s %5s %10s %10s %8s\n", "", "", "", "", "", "diff", "", "median", "max",
-              "/query");
+  std::printf("%-11s %-11s %-46s %11s %9s %7s %5s %10s %10s %8s\n", "workload", "poses", "row", "ns/query",
+              "x trav", "verdict", "fail", "depth-err", "depth-err", "exact");
+  std::printf("%-11s %-11s %-46s %11s %9s %7s %5s %10s %10s %8s\n", "", "", "", "", "", "diff", "", "median",
+              "max", "/query");
 }
 
 void print_row(const Measured& m) {
   std::printf("%-11s %-11s %-46s %11.1f %9.2f %4d/%-3d %4d %10.2e %10.2e %8.2f", m.workload.c_str(),
-              m.poses.c_str(), m.row.c_str(), m.ns, m.ratio, m.disagree, m.queries, m.failed, m.depth_med, m.depth_max,
-              m.exact_fallbacks);
+              m.poses.c_str(), m.row.c_str(), m.ns, m.ratio, m.disagree, m.queries, m.failed, m.depth_med,
+              m.depth_max, m.exact_fallbacks);
   if (!m.same_as.empty()) std::printf("  answers differing from '%s': %d", m.same_as.c_str(), m.differences);
   std::printf("\n");
   std::fflush(stdout);
@@ -115,8 +115,8 @@ int run_callgrind(const Options& o) {
       return 0;
     }
   }
-  std::fprintf(stderr, "sepax_bench: no row '%s' in workload '%s', poses '%s'\n", o.row.c_str(), o.workload.c_str(),
-               o.poses.c_str());
+  std::fprintf(stderr, "sepax_bench: no row '%s' in workload '%s', poses '%s'\n", o.row.c_str(),
+               o.workload.c_str(), o.poses.c_str());
   return 2;
 #else
   (void)o;
@@ -126,17 +126,19 @@ int run_callgrind(const Options& o) {
 }
 
 int run(const Options& o) {
-  std::printf("sepax_bench %s: %d pairs per pose set; pre-posed rows get B posed at setup, posed rows a world\n"
-              "pose per shape and query (docs/bench.md)\n",
-              SEPAX_BENCH_VERSION, o.pairs);
+  std::printf(
+      "sepax_bench %s: %d pairs per pose set; pre-posed rows get B posed at setup, posed rows a world\n"
+      "pose per shape and query (docs/bench.md)\n",
+      SEPAX_BENCH_VERSION, o.pairs);
 #if SEPAX_BENCH_BULLET
   std::printf("Bullet btScalar: %s, margin 0\n", sizeof(btScalar) == 4 ? "float" : "double");
 #endif
 #if !SEPAX_BENCH_PREPARED
   std::printf("(sepax/prepared_shape.hpp not available: no posed sepax rows)\n");
 #endif
-  std::printf("reference: sepax traversal SAT in mpq_class on the pre-posed B (pre-posed rows) and on the\n"
-              "posed B' = posed(B, relative_pose(pose_a, pose_b)) (posed rows)\n\n");
+  std::printf(
+      "reference: sepax traversal SAT in mpq_class on the pre-posed B (pre-posed rows) and on the\n"
+      "posed B' = posed(B, relative_pose(pose_a, pose_b)) (posed rows)\n\n");
   print_header();
   std::vector<Measured> all;
   std::vector<std::string> counters;
@@ -149,7 +151,8 @@ int run(const Options& o) {
       setup_cell(c, spec, poses, pool, o.pairs);
       const double tr = now_s();
       compute_reference(c);
-      std::fprintf(stderr, "[%s %s: exact reference %.1f s]\n", c.workload.c_str(), c.poses.c_str(), now_s() - tr);
+      std::fprintf(stderr, "[%s %s: exact reference %.1f s]\n", c.workload.c_str(), c.poses.c_str(),
+                   now_s() - tr);
       counters.push_back(traversal_counters(c));
       const std::vector<Row> rows = cell_rows(c);
       std::vector<const Row*> chosen;
@@ -205,26 +208,30 @@ int main(int argc, char** argv) {
   CLI::App app{"sepax_bench: sepax's SATs against Bullet, libccd and FCL on the same pairs (docs/bench.md)",
                "sepax_bench"};
   app.set_version_flag("--version", std::string("sepax_bench ") + SEPAX_BENCH_VERSION);
-  std::vector<std::string> workload_names, pose_names{"overlapping", "separated", "moving", "resting", "sliding",
-                                                       "rolling", "hovering"};
+  std::vector<std::string> workload_names,
+      pose_names{"overlapping", "separated", "moving", "resting", "sliding", "rolling", "hovering"};
   for (const auto& w : workloads(false)) workload_names.push_back(w.name);
   app.add_flag("--quick", o.quick, "sphere hulls up to N = 64 only");
-  app.add_option("--pairs", o.pairs, "pairs per pose set (moving: pairs/16 trajectories of 32 steps; resting, sliding, rolling, hovering: pairs/32 of 120 steps)")
+  app.add_option("--pairs", o.pairs,
+                 "pairs per pose set (moving: pairs/16 trajectories of 32 steps; resting, sliding, rolling, "
+                 "hovering: pairs/32 of 120 steps)")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
   app.add_option("--min-time", o.min_time, "seconds per row for the repeated timing passes (at least 2)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--max-pass", o.max_pass,
-                 "a row whose first pass takes longer stops there (after at least 16 pairs) and is timed on that prefix")
+                 "a row whose first pass takes longer stops there (after at least 16 pairs) and is timed on "
+                 "that prefix")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--filter", o.filter, "only rows whose name contains this text (and the baseline row)");
   app.add_option("--workload", o.workload, "one workload")->check(CLI::IsMember(workload_names));
   app.add_option("--poses", o.poses, "one pose set")->check(CLI::IsMember(pose_names));
   app.add_option("--json", o.json, "also write the rows and the targets as JSON to this file");
-  auto* cg = app.add_flag("--callgrind", o.callgrind,
-                          "run one row only (--row, --workload, --poses), K passes inside callgrind client requests");
+  auto* cg = app.add_flag(
+      "--callgrind", o.callgrind,
+      "run one row only (--row, --workload, --poses), K passes inside callgrind client requests");
   app.add_option("--row", o.row, "the row for --callgrind")->needs(cg);
   app.add_option("--passes", o.passes, "passes over the pairs for --callgrind")
       ->needs(cg)
@@ -237,7 +244,8 @@ int main(int argc, char** argv) {
       throw CLI::ValidationError("--callgrind", "needs --row and --workload");
     for (const auto& w : workloads(false)) {
       const auto sets = pose_sets(w);
-      if (w.name == o.workload && !o.poses.empty() && std::find(sets.begin(), sets.end(), o.poses) == sets.end())
+      if (w.name == o.workload && !o.poses.empty() &&
+          std::find(sets.begin(), sets.end(), o.poses) == sets.end())
         throw CLI::ValidationError("--poses", "workload " + w.name + " has no pose set " + o.poses);
     }
   } catch (const CLI::ParseError& e) {

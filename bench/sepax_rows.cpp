@@ -31,8 +31,12 @@ Out from_sat(const R& r) {
 const ConvexPolyhedron<double>& ad(const Cell& c, std::size_t i) {
   return c.pool->d[static_cast<std::size_t>(c.pairs[i].a)];
 }
-const GaussMapWalk& wa(const Cell& c, std::size_t i) { return c.pool->walk[static_cast<std::size_t>(c.pairs[i].a)]; }
-const GaussMapWalk& wb(const Cell& c, std::size_t i) { return c.pool->walk[static_cast<std::size_t>(c.pairs[i].b)]; }
+const GaussMapWalk& wa(const Cell& c, std::size_t i) {
+  return c.pool->walk[static_cast<std::size_t>(c.pairs[i].a)];
+}
+const GaussMapWalk& wb(const Cell& c, std::size_t i) {
+  return c.pool->walk[static_cast<std::size_t>(c.pairs[i].b)];
+}
 
 #if SEPAX_BENCH_PREPARED
 const PreparedShape<float>& pa(const Cell& c, std::size_t i) {
@@ -83,7 +87,8 @@ void add_posed_rows(Cell& c, std::vector<Row>& rows, bool with_margin, bool with
     rows.push_back(Row{std::move(name), "sepax", std::move(f)});
   };
   if (!with_margin) {
-    add("traversal float posed", [cp](std::size_t i) { return posed_query<false>(*cp, i, SatOptions{}, nullptr); });
+    add("traversal float posed",
+        [cp](std::size_t i) { return posed_query<false>(*cp, i, SatOptions{}, nullptr); });
     if (kPosedManifold)
       add("traversal+manifold float posed",
           [cp](std::size_t i) { return posed_query<true>(*cp, i, SatOptions{}, nullptr); });
@@ -163,8 +168,10 @@ std::vector<Row> sepax_rows(Cell& c) {
 #endif
   // pre-posed, plain
   if (small)
-    add("brute float plain", [cp](std::size_t i) { return from_sat(sat::brute_force(local_a(*cp, i), cp->pairs[i].bf)); });
-  add("gauss float plain", [cp](std::size_t i) { return from_sat(sat::gauss_map(local_a(*cp, i), cp->pairs[i].bf)); });
+    add("brute float plain",
+        [cp](std::size_t i) { return from_sat(sat::brute_force(local_a(*cp, i), cp->pairs[i].bf)); });
+  add("gauss float plain",
+      [cp](std::size_t i) { return from_sat(sat::gauss_map(local_a(*cp, i), cp->pairs[i].bf)); });
   add("traversal float plain", [cp](std::size_t i) {
     return from_sat(sat::traversal(local_a(*cp, i), wa(*cp, i), cp->pairs[i].bf, wb(*cp, i)));
   });
@@ -185,8 +192,10 @@ std::vector<Row> sepax_rows(Cell& c) {
   });
   // double, plain
   if (small)
-    add("brute double plain", [cp](std::size_t i) { return from_sat(sat::brute_force(ad(*cp, i), cp->pairs[i].bd)); });
-  add("gauss double plain", [cp](std::size_t i) { return from_sat(sat::gauss_map(ad(*cp, i), cp->pairs[i].bd)); });
+    add("brute double plain",
+        [cp](std::size_t i) { return from_sat(sat::brute_force(ad(*cp, i), cp->pairs[i].bd)); });
+  add("gauss double plain",
+      [cp](std::size_t i) { return from_sat(sat::gauss_map(ad(*cp, i), cp->pairs[i].bd)); });
   add("traversal double plain", [cp](std::size_t i) {
     return from_sat(sat::traversal(ad(*cp, i), wa(*cp, i), cp->pairs[i].bd, wb(*cp, i)));
   });
@@ -213,16 +222,17 @@ std::string traversal_counters(const Cell& c) {
   const double np = double(c.pairs.size());
   const auto& a0 = local_a(c, 0);
   char buf[600];
-  std::snprintf(buf, sizeof buf,
-                "  %-11s %-11s E_A=%-4d arc tests %9.1f  (E_A*E_B %d)  height evals %8.1f  climb %7.1f  "
-                "fallback arcs %6.2f  corner passes %5.2f  pruned faces %6.1f (of %d; by a probe %5.1f of %5.1f)  "
-                "pruned arcs %6.1f  late climbs %5.1f\n",
-                c.workload.c_str(), c.poses.c_str(), a0.edge_count(), double(sum.arc_tests) / np,
-                a0.edge_count() * c.pairs[0].bf.edge_count(), double(sum.height_evals) / np,
-                double(sum.climb_steps) / np, double(sum.fallback_arcs) / np, double(sum.corner_passes) / np,
-                double(sum.pruned_faces) / np, a0.face_count() + c.pairs[0].bf.face_count(),
-                double(sum.probe_pruned) / np, double(sum.probe_checks) / np, double(sum.pruned_arcs) / np,
-                double(sum.late_certified) / np);
+  std::snprintf(
+      buf, sizeof buf,
+      "  %-11s %-11s E_A=%-4d arc tests %9.1f  (E_A*E_B %d)  height evals %8.1f  climb %7.1f  "
+      "fallback arcs %6.2f  corner passes %5.2f  pruned faces %6.1f (of %d; by a probe %5.1f of %5.1f)  "
+      "pruned arcs %6.1f  late climbs %5.1f\n",
+      c.workload.c_str(), c.poses.c_str(), a0.edge_count(), double(sum.arc_tests) / np,
+      a0.edge_count() * c.pairs[0].bf.edge_count(), double(sum.height_evals) / np,
+      double(sum.climb_steps) / np, double(sum.fallback_arcs) / np, double(sum.corner_passes) / np,
+      double(sum.pruned_faces) / np, a0.face_count() + c.pairs[0].bf.face_count(),
+      double(sum.probe_pruned) / np, double(sum.probe_checks) / np, double(sum.pruned_arcs) / np,
+      double(sum.late_certified) / np);
   return buf;
 }
 

@@ -17,7 +17,9 @@ const Measured* find(const std::vector<Measured>& all, const std::string& w, con
 std::string sphere(int n) { return "sphere" + std::to_string(n); }
 
 // null for NaN and infinities (JSON has neither)
-nlohmann::ordered_json num(double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); }
+nlohmann::ordered_json num(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
+}
 
 }  // namespace
 
@@ -31,14 +33,14 @@ std::vector<Target> target_list() {
   const int all_n[] = {8, 16, 32, 64, 128, 256};
   // the engine's query path
   for (int n : all_n)
-    add("bullet gjk+epa over posed traversal+manifold", sphere(n), "overlapping", "bullet gjk+epa posed (float)",
-        "traversal+manifold float posed", true, 3);
+    add("bullet gjk+epa over posed traversal+manifold", sphere(n), "overlapping",
+        "bullet gjk+epa posed (float)", "traversal+manifold float posed", true, 3);
   add("bullet gjk+epa over posed traversal+manifold", "box", "overlapping", "bullet gjk+epa posed (float)",
       "traversal+manifold float posed", true, 3);
   add("bullet boxbox over posed traversal+manifold", "box", "overlapping", "bullet boxbox posed (float)",
       "traversal+manifold float posed", true, 1);
-  add("bullet gjk+epa over posed traversal+manifold", "cylinder32", "overlapping", "bullet gjk+epa posed (float)",
-      "traversal+manifold float posed", true, 1);
+  add("bullet gjk+epa over posed traversal+manifold", "cylinder32", "overlapping",
+      "bullet gjk+epa posed (float)", "traversal+manifold float posed", true, 1);
   for (int n : all_n)
     add("posed over pre-posed traversal+manifold", sphere(n), "overlapping", "traversal+manifold float posed",
         "traversal+manifold float", false, 1.2);
@@ -46,8 +48,8 @@ std::vector<Target> target_list() {
     add("bullet gjk+epa over traversal+manifold, margin", sphere(n), "separated",
         "bullet gjk+epa posed margin (float)", "traversal+manifold float posed margin", true, 3);
   for (int n : all_n)
-    add("bullet gjk+epa over traversal+manifold, no margin", sphere(n), "separated", "bullet gjk+epa posed (float)",
-        "traversal+manifold float posed", true, 1);
+    add("bullet gjk+epa over traversal+manifold, no margin", sphere(n), "separated",
+        "bullet gjk+epa posed (float)", "traversal+manifold float posed", true, 1);
   for (const char* motion : {"resting", "sliding", "rolling", "hovering"})
     for (int n : {16, 32, 64, 128, 256})
       add("fresh over warm (cached) posed traversal", sphere(n), motion, "traversal float posed margin",
@@ -56,20 +58,21 @@ std::vector<Target> target_list() {
   const int gb_n[] = {4, 8, 16, 32};
   const double gb_bound[] = {3, 8, 25, 50};
   for (int i = 0; i < 4; ++i)
-    add("brute over gauss, plain", sphere(gb_n[i]), "overlapping", "brute float plain", "gauss float plain", true,
-        gb_bound[i]);
-  add("gauss over traversal, plain", sphere(32), "overlapping", "gauss float plain", "traversal float plain", true, 5);
-  add("gauss over traversal, plain", sphere(128), "overlapping", "gauss float plain", "traversal float plain", true,
-      20);
+    add("brute over gauss, plain", sphere(gb_n[i]), "overlapping", "brute float plain", "gauss float plain",
+        true, gb_bound[i]);
+  add("gauss over traversal, plain", sphere(32), "overlapping", "gauss float plain", "traversal float plain",
+      true, 5);
+  add("gauss over traversal, plain", sphere(128), "overlapping", "gauss float plain", "traversal float plain",
+      true, 20);
   for (int n : all_n)
     add("bullet gjk+epa over traversal, pre-posed", sphere(n), "overlapping", "bullet gjk+epa (float)",
         "traversal float", true, 3);
   for (int n : {16, 32, 64})
-    add("robust over plain traversal", sphere(n), "overlapping", "traversal float", "traversal float plain", false,
-        1.15);
+    add("robust over plain traversal", sphere(n), "overlapping", "traversal float", "traversal float plain",
+        false, 1.15);
   for (int n : {16, 32, 64})
-    add("traversal+manifold over traversal, plain", sphere(n), "overlapping", "traversal+manifold float plain",
-        "traversal float plain", false, 1.3);
+    add("traversal+manifold over traversal, plain", sphere(n), "overlapping",
+        "traversal+manifold float plain", "traversal float plain", false, 1.3);
   return t;
 }
 
@@ -92,16 +95,18 @@ void print_targets(const std::vector<Target>& targets) {
     const bool missing = std::isnan(t.ratio);
     std::string note;
     if (t.identical && !missing)
-      note = t.differences < 0 ? "  (answers not compared)" : "  (" + std::to_string(t.differences) + " answers differ)";
-    std::printf("  %-72s %8.2f  (%s %.2f)  %s%s\n", t.name.c_str(), t.ratio, t.at_least ? ">=" : "<=", t.bound,
-                missing ? "NOT MEASURED" : (t.met ? "met" : "MISSED"), note.c_str());
+      note = t.differences < 0 ? "  (answers not compared)"
+                               : "  (" + std::to_string(t.differences) + " answers differ)";
+    std::printf("  %-72s %8.2f  (%s %.2f)  %s%s\n", t.name.c_str(), t.ratio,
+                t.at_least ? ">=" : "<=", t.bound, missing ? "NOT MEASURED" : (t.met ? "met" : "MISSED"),
+                note.c_str());
   }
 }
 
 void list_targets() {
   for (const auto& t : target_list())
-    std::printf("%s\t%s\t%s\t%s\t%s\t%s\t%g\n", t.name.c_str(), t.workload.c_str(), t.poses.c_str(), t.slower.c_str(),
-                t.faster.c_str(), t.at_least ? "at_least" : "at_most", t.bound);
+    std::printf("%s\t%s\t%s\t%s\t%s\t%s\t%g\n", t.name.c_str(), t.workload.c_str(), t.poses.c_str(),
+                t.slower.c_str(), t.faster.c_str(), t.at_least ? "at_least" : "at_most", t.bound);
 }
 
 nlohmann::ordered_json to_json(const Measured& m) {
@@ -127,16 +132,13 @@ nlohmann::ordered_json to_json(const Measured& m) {
 }
 
 nlohmann::ordered_json to_json(const Target& t) {
-  nlohmann::ordered_json j{{"name", t.name},
-                           {"workload", t.workload},
-                           {"poses", t.poses},
-                           {"slower", t.slower},
-                           {"faster", t.faster},
-                           {"bound", t.at_least ? "at_least" : "at_most"},
-                           {"value", t.bound},
-                           {"ratio", num(t.ratio)},
-                           {"met", t.met}};
-  if (t.identical) j["result_differences"] = t.differences < 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(t.differences);
+  nlohmann::ordered_json j{
+      {"name", t.name},     {"workload", t.workload}, {"poses", t.poses},
+      {"slower", t.slower}, {"faster", t.faster},     {"bound", t.at_least ? "at_least" : "at_most"},
+      {"value", t.bound},   {"ratio", num(t.ratio)},  {"met", t.met}};
+  if (t.identical)
+    j["result_differences"] =
+        t.differences < 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(t.differences);
   return j;
 }
 

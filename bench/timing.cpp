@@ -48,7 +48,8 @@ Timing first_pass(const Cell& c, const Row& row, double max_pass, std::vector<Ou
     }
   }
   const double per_pair = (now_s() - t0) / double(t.np);
-  t.chunk = std::clamp<std::size_t>(static_cast<std::size_t>(kChunkTime / std::max(per_pair, 1e-12)), 1, t.np);
+  t.chunk =
+      std::clamp<std::size_t>(static_cast<std::size_t>(kChunkTime / std::max(per_pair, 1e-12)), 1, t.np);
   t.chunk = (t.chunk + frames - 1) / frames * frames;  // whole trajectories
   for (std::size_t b = 0; b < t.np; b += t.chunk) t.best_chunk.push_back(HUGE_VAL);
   return t;
@@ -125,7 +126,9 @@ std::vector<Measured> measure_cell(const Cell& c, const std::vector<const Row*>&
   // one); a row stops after at least two passes and min_time seconds (or 1000
   // passes).  Consecutive passes of a row within a round keep its caches and
   // branch history warm, as the minimum over repetitions assumes.
-  auto timing = [min_time](const Timing& t) { return t.passes < 2 || (t.spent < min_time && t.passes < 1000); };
+  auto timing = [min_time](const Timing& t) {
+    return t.passes < 2 || (t.spent < min_time && t.passes < 1000);
+  };
   for (bool more = true; more;) {
     more = false;
     for (auto& t : timings) {

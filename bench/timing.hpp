@@ -24,16 +24,16 @@ namespace bench {
 struct Measured {
   std::string workload, poses, row, group;
   int n = 0;
-  double ns = 0;        // ns per query
-  double ratio = 0;     // ns / the baseline's ns in the same cell
-  int queries = 0;      // pairs per pass
-  int disagree = 0;     // verdicts differing from the exact reference
-  int failed = 0;       // no answer
-  int depth_count = 0;  // overlapping pairs (both agree) with a depth
+  double ns = 0;                        // ns per query
+  double ratio = 0;                     // ns / the baseline's ns in the same cell
+  int queries = 0;                      // pairs per pass
+  int disagree = 0;                     // verdicts differing from the exact reference
+  int failed = 0;                       // no answer
+  int depth_count = 0;                  // overlapping pairs (both agree) with a depth
   double depth_med = 0, depth_max = 0;  // |depth - exact depth|
-  double exact_fallbacks = 0;  // per query (robust rows; first pass)
-  std::string same_as;  // a row whose answers this row must reproduce exactly
-  int differences = 0;  // pairs whose verdict, feature or separation differ from same_as's
+  double exact_fallbacks = 0;           // per query (robust rows; first pass)
+  std::string same_as;                  // a row whose answers this row must reproduce exactly
+  int differences = 0;                  // pairs whose verdict, feature or separation differ from same_as's
 };
 
 /// Times the rows on c; outs[r] receives row r's answers.  A slow row stops

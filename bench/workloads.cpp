@@ -149,8 +149,8 @@ double separation_at(const Pool& pool, int a, int b, const Pose& rel) {
   std::vector<V3d> v;
   for (const auto& p : lb.vertices()) v.push_back(rel.apply(to_d(p)));
   const auto bd = ConvexPolyhedron<double>::convert_from(lb).with_vertices(std::move(v));
-  const auto r = sat::traversal(pool.d[static_cast<std::size_t>(a)], pool.walk[static_cast<std::size_t>(a)], bd,
-                                pool.walk[static_cast<std::size_t>(b)]);
+  const auto r = sat::traversal(pool.d[static_cast<std::size_t>(a)], pool.walk[static_cast<std::size_t>(a)],
+                                bd, pool.walk[static_cast<std::size_t>(b)]);
   return r.separation_as_double();
 }
 
@@ -159,8 +159,8 @@ double separation_at(const Pool& pool, int a, int b, const Pose& rel) {
 // convex in s, negative at the centre, positive far out: one crossing).
 Pose in_contact(const Pool& pool, int a, int b, const Eigen::Matrix3d& r, const V3d& d, const V3d& tangent,
                 double depth) {
-  const double far = 4 * (pool.shapes[static_cast<std::size_t>(a)].extent +
-                          pool.shapes[static_cast<std::size_t>(b)].extent);
+  const double far =
+      4 * (pool.shapes[static_cast<std::size_t>(a)].extent + pool.shapes[static_cast<std::size_t>(b)].extent);
   double lo = 0, hi = far;
   for (int k = 0; k < 50; ++k) {
     const double mid = 0.5 * (lo + hi);
@@ -183,9 +183,9 @@ void build_coherent(Cell& c, Rng& rng, int count, int frames) {
     const double extent = std::max(pool.shapes[static_cast<std::size_t>(a)].extent,
                                    pool.shapes[static_cast<std::size_t>(b)].extent);
     const double depth = 0.005 * extent;
-    const V3d d = rng.unit();                         // contact direction, A towards B
-    const V3d u = d.cross(rng.unit()).normalized();   // sliding / rolling direction
-    const V3d w = d.cross(u);                         // rolling axis
+    const V3d d = rng.unit();                        // contact direction, A towards B
+    const V3d u = d.cross(rng.unit()).normalized();  // sliding / rolling direction
+    const V3d w = d.cross(u);                        // rolling axis
     const Eigen::Matrix3d r0 = rng.rotation();
     const Pose rest = in_contact(pool, a, b, r0, d, V3d::Zero(), depth);
     for (int f = 0; f < frames; ++f) {
@@ -200,7 +200,8 @@ void build_coherent(Cell& c, Rng& rng, int count, int frames) {
       } else if (c.poses == "rolling") {
         p.rel = in_contact(pool, a, b, rotation_about(w, 0.01 * f) * r0, d, V3d(0.01 * f * u), depth);
       } else {  // hovering: separated by a gap of 10% of the extent, turning and drifting
-        p.rel = in_contact(pool, a, b, rotation_about(w, 0.01 * f) * r0, d, V3d(0.004 * f * u), -0.1 * extent);
+        p.rel =
+            in_contact(pool, a, b, rotation_about(w, 0.01 * f) * r0, d, V3d(0.004 * f * u), -0.1 * extent);
       }
       add_pair(c, std::move(p), world);
     }

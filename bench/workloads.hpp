@@ -79,13 +79,13 @@ void build_pool(Pool& pool, const WorkloadSpec& spec, Rng& rng, int count);
 struct PairData {
   int a = 0;  // indices into the pool
   int b = 0;
-  Pose rel;      // B in A's frame (double)
-  Pose world_a;  // A's world pose; B's is world_a * rel
+  Pose rel;                                     // B in A's frame (double)
+  Pose world_a;                                 // A's world pose; B's is world_a * rel
   sepax::RigidTransform<float> pose_a, pose_b;  // the world poses rounded to float
-  std::vector<V3f> bverts;      // B posed by rel in double, rounded to float
-  ConvexPolyhedron<float> bf;   // B pre-posed, float
-  ConvexPolyhedron<double> bd;  // same vertices, double
-  float margin = 0;  // speculative margin: 2% of the larger shape's extent
+  std::vector<V3f> bverts;                      // B posed by rel in double, rounded to float
+  ConvexPolyhedron<float> bf;                   // B pre-posed, float
+  ConvexPolyhedron<double> bd;                  // same vertices, double
+  float margin = 0;                             // speculative margin: 2% of the larger shape's extent
   // exact reference (mpq SAT on A and the pre-posed B)
   bool ref_overlap = false;
   double ref_sep = 0;  // to_double of the exact separation (< 0: penetration depth)
@@ -98,7 +98,7 @@ struct PairData {
 struct Cell {
   std::string workload;  // the WorkloadSpec's name
   int n = 0;
-  std::string poses;     // the pose set
+  std::string poses;  // the pose set
   Pool* pool = nullptr;
   std::vector<PairData> pairs;
   int frames = 0;  // trajectories: pairs are `frames` consecutive poses each

@@ -81,7 +81,8 @@ void check_lane_arrays(const ConvexPolyhedron<T>& p) {
     }
   }
   for (int v = 0; v < p.vertex_count(); ++v) {
-    for (int c = 0; c < 3; ++c) wrong += !same_bits(p.lane_vertex(c)[static_cast<std::size_t>(v)], p.vertex(v)[c]);
+    for (int c = 0; c < 3; ++c)
+      wrong += !same_bits(p.lane_vertex(c)[static_cast<std::size_t>(v)], p.vertex(v)[c]);
   }
   CHECK(wrong == 0);
 }

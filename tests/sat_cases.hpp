@@ -29,8 +29,7 @@ using Mat3 = std::array<T, 9>;  // row major
 
 template <class T>
 Vec3<T> apply(const Mat3<T>& r, const Vec3<T>& v) {
-  return Vec3<T>(T(T(r[0] * v[0] + r[1] * v[1]) + r[2] * v[2]),
-                 T(T(r[3] * v[0] + r[4] * v[1]) + r[5] * v[2]),
+  return Vec3<T>(T(T(r[0] * v[0] + r[1] * v[1]) + r[2] * v[2]), T(T(r[3] * v[0] + r[4] * v[1]) + r[5] * v[2]),
                  T(T(r[6] * v[0] + r[7] * v[1]) + r[8] * v[2]));
 }
 
@@ -79,9 +78,11 @@ Mat3<T> quaternion_rotation(int w, int x, int y, int z) {
   const T W = from_double<T>(w), X = from_double<T>(x), Y = from_double<T>(y), Z = from_double<T>(z);
   const T n = W * W + X * X + Y * Y + Z * Z;
   const T two(2);
-  return {T((W * W + X * X - Y * Y - Z * Z) / n), T(two * (X * Y - W * Z) / n), T(two * (X * Z + W * Y) / n),
-          T(two * (X * Y + W * Z) / n), T((W * W - X * X + Y * Y - Z * Z) / n), T(two * (Y * Z - W * X) / n),
-          T(two * (X * Z - W * Y) / n), T(two * (Y * Z + W * X) / n), T((W * W - X * X - Y * Y + Z * Z) / n)};
+  return {T((W * W + X * X - Y * Y - Z * Z) / n), T(two * (X * Y - W * Z) / n),
+          T(two * (X * Z + W * Y) / n),           T(two * (X * Y + W * Z) / n),
+          T((W * W - X * X + Y * Y - Z * Z) / n), T(two * (Y * Z - W * X) / n),
+          T(two * (X * Z - W * Y) / n),           T(two * (Y * Z + W * X) / n),
+          T((W * W - X * X - Y * Y + Z * Z) / n)};
 }
 
 template <class T>
@@ -93,7 +94,8 @@ Vec3<T> v3(double x, double y, double z) {
 template <class T>
 int edge_between(const ConvexPolyhedron<T>& p, int u, int v) {
   for (int e = 0; e < p.edge_count(); ++e) {
-    if ((p.edge_tail(e) == u && p.edge_head(e) == v) || (p.edge_tail(e) == v && p.edge_head(e) == u)) return e;
+    if ((p.edge_tail(e) == u && p.edge_head(e) == v) || (p.edge_tail(e) == v && p.edge_head(e) == u))
+      return e;
   }
   return -1;
 }
@@ -121,8 +123,8 @@ struct SatCase {
   Feature feature;           // expected feature (type, index, support feature)
   Separation<T> separation;  // expected separation num / sqrt(norm2), exact
   bool overlap = false;
-  Vec3<double> axis;         // expected axis direction (from A to B, any length)
-  bool dyadic = false;       // every float operation on this case is exact
+  Vec3<double> axis;    // expected axis direction (from A to B, any length)
+  bool dyadic = false;  // every float operation on this case is exact
   /// Expected separation as a double.
   double value() const { return to_double(separation.num) / std::sqrt(to_double(separation.norm2)); }
 };
@@ -448,8 +450,9 @@ inline RandomPose random_pose(std::mt19937& rng, int trange) {
 template <class T>
 ConvexPolyhedron<T> apply_pose(const ConvexPolyhedron<T>& p, const RandomPose& r) {
   const T e(8);
-  return posed(p, quaternion_rotation<T>(r.w, r.x, r.y, r.z),
-               Vec3<T>(T(from_double<T>(r.tx) / e), T(from_double<T>(r.ty) / e), T(from_double<T>(r.tz) / e)));
+  return posed(
+      p, quaternion_rotation<T>(r.w, r.x, r.y, r.z),
+      Vec3<T>(T(from_double<T>(r.tx) / e), T(from_double<T>(r.ty) / e), T(from_double<T>(r.tz) / e)));
 }
 
 /// The shape zoo of the random tests.
@@ -470,7 +473,7 @@ std::vector<ConvexPolyhedron<T>> zoo() {
 template <class T>
 void check_known(const SatCase<T>& c, const SatResult<T>& r) {
   INFO(c.name << " [" << number_traits<T>::name << "]: got " << to_string(r.feature) << " sep "
-               << r.separation_as_double() << ", expected " << to_string(c.feature) << " sep " << c.value());
+              << r.separation_as_double() << ", expected " << to_string(c.feature) << " sep " << c.value());
   CHECK(r.overlap == c.overlap);
   CHECK(r.feature == c.feature);
   CHECK(sign(r.separation) == sign_of(c.separation.num));

@@ -86,7 +86,8 @@ inline Eigen::Matrix3d random_rotation(std::mt19937_64& rng) {
   return Eigen::AngleAxisd(u(rng), axis).toRotationMatrix();
 }
 
-inline ConvexPolyhedron<double> moved(const ConvexPolyhedron<double>& p, const Eigen::Matrix3d& r, const V3& t) {
+inline ConvexPolyhedron<double> moved(const ConvexPolyhedron<double>& p, const Eigen::Matrix3d& r,
+                                      const V3& t) {
   std::vector<V3> v;
   for (const auto& x : p.vertices()) v.push_back(r * x + t);
   return p.with_vertices(std::move(v));
@@ -95,7 +96,8 @@ inline ConvexPolyhedron<double> moved(const ConvexPolyhedron<double>& p, const E
 /// Exact rotation by the integer quaternion (w, x, y, z) (any non-zero one),
 /// then translation by t; for exact T the result is exactly rigid.
 template <Number T>
-ConvexPolyhedron<T> rotated_exact(const ConvexPolyhedron<T>& p, int w, int x, int y, int z, const Vec3<T>& t) {
+ConvexPolyhedron<T> rotated_exact(const ConvexPolyhedron<T>& p, int w, int x, int y, int z,
+                                  const Vec3<T>& t) {
   const T s(w * w + x * x + y * y + z * z);
   const T m[3][3] = {{T(w * w + x * x - y * y - z * z), T(2 * (x * y - w * z)), T(2 * (x * z + w * y))},
                      {T(2 * (x * y + w * z)), T(w * w - x * x + y * y - z * z), T(2 * (y * z - w * x))},

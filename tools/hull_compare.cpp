@@ -34,7 +34,9 @@ namespace {
 template <class T>
 std::string signature(const ConvexPolyhedron<T>& h) {
   using P = std::array<double, 3>;
-  auto pt = [&](int v) { return P{to_double(h.vertex(v)[0]), to_double(h.vertex(v)[1]), to_double(h.vertex(v)[2])}; };
+  auto pt = [&](int v) {
+    return P{to_double(h.vertex(v)[0]), to_double(h.vertex(v)[1]), to_double(h.vertex(v)[2])};
+  };
   std::vector<P> vs;
   for (int v = 0; v < h.vertex_count(); ++v) vs.push_back(pt(v));
   std::sort(vs.begin(), vs.end());

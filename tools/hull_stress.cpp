@@ -33,8 +33,16 @@ double support_gap(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts
   std::vector<Vec3<double>> dirs;
   std::mt19937 r(5);
   std::normal_distribution<double> nd;
-  for (int i = 0; i < 300; ++i) { Vec3<double> d(nd(r), nd(r), nd(r)); dirs.push_back(d / d.norm()); }
-  for (int c = 0; c < 3; ++c) for (double s : {-1.0, 1.0}) { Vec3<double> d(0, 0, 0); d[c] = s; dirs.push_back(d); }
+  for (int i = 0; i < 300; ++i) {
+    Vec3<double> d(nd(r), nd(r), nd(r));
+    dirs.push_back(d / d.norm());
+  }
+  for (int c = 0; c < 3; ++c)
+    for (double s : {-1.0, 1.0}) {
+      Vec3<double> d(0, 0, 0);
+      d[c] = s;
+      dirs.push_back(d);
+    }
   for (int f = 0; f < h.face_count(); ++f) dirs.push_back(vec_to_double(h.plane(f).normal).normalized());
   double worst = 0;
   for (const auto& d : dirs) {
@@ -48,8 +56,13 @@ double support_gap(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts
 template <class T>
 void run(unsigned seed, int iters, int only, double report) {
   std::mt19937 rng(seed);
-  int over64 = 0, over4=0, over1=0, n=0, err=0, lerr=0; double worst = -1e300; int worst_it=-1; double gworst = -1e300; int gworst_it = -1, gover64 = 0, gover4 = 0;
-  double dworst = -1e300; int dworst_it = -1, dover64 = 0, dover4 = 0;
+  int over64 = 0, over4 = 0, over1 = 0, n = 0, err = 0, lerr = 0;
+  double worst = -1e300;
+  int worst_it = -1;
+  double gworst = -1e300;
+  int gworst_it = -1, gover64 = 0, gover4 = 0;
+  double dworst = -1e300;
+  int dworst_it = -1, dover64 = 0, dover4 = 0;
   int synthetic_flat = 0, synthetic_solid = 0;  // hulls with vertices that are not input points
   for (int iter = 0; iter < iters; ++iter) {
     const int kind = iter % 9;
@@ -59,14 +72,21 @@ void run(unsigned seed, int iters, int only, double report) {
       const auto h = convex_hull(pts);
       double out = max_outside(h, pts);
       double max_abs = 0;
-      for (const auto& p : pts) for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(p[c])));
+      for (const auto& p : pts)
+        for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(p[c])));
       double allow = 64 * number_traits<T>::unit_roundoff * max_abs / (Tolerances<T>::coplanar * h.extent());
-      double o = out - allow;   // excess beyond the offset allowance
+      double o = out - allow;  // excess beyond the offset allowance
       const double gap = support_gap(h, pts) - allow;
-      if (gap > gworst) { gworst = gap; gworst_it = iter; }
+      if (gap > gworst) {
+        gworst = gap;
+        gworst_it = iter;
+      }
       if (gap > 64) ++gover64;
       const double dist = max_distance(h, pts) - allow;
-      if (dist > dworst) { dworst = dist; dworst_it = iter; }
+      if (dist > dworst) {
+        dworst = dist;
+        dworst_it = iter;
+      }
       if (dist > 64) ++dover64;
       if (dist > 4) ++dover4;
       if (gap > 4) ++gover4;
@@ -81,16 +101,34 @@ void run(unsigned seed, int iters, int only, double report) {
       if (o > 64) ++over64;
       if (o > 4) ++over4;
       if (o > 1) ++over1;
-      if (o > worst) { worst = o; worst_it = iter; }
-      if (o > report || gap > report || dist > report) std::printf("  %s seed %u iter %d kind %d n %zu out %.3g allow %.3g flat %d gap %.3g dist %.3g verts %d\n", sizeof(T)==4?"float":"double", seed, iter, kind, pts.size(), out, allow, (int)h.is_flat(), gap, dist, h.vertex_count());
-    } catch (const InvalidInput&) { ++err; }
-    catch (const std::logic_error& e) { ++lerr; std::printf("  LOGIC %s seed %u iter %d: %s\n", sizeof(T)==4?"float":"double", seed, iter, e.what()); }
+      if (o > worst) {
+        worst = o;
+        worst_it = iter;
+      }
+      if (o > report || gap > report || dist > report)
+        std::printf(
+            "  %s seed %u iter %d kind %d n %zu out %.3g allow %.3g flat %d gap %.3g dist %.3g verts %d\n",
+            sizeof(T) == 4 ? "float" : "double", seed, iter, kind, pts.size(), out, allow, (int)h.is_flat(),
+            gap, dist, h.vertex_count());
+    } catch (const InvalidInput&) {
+      ++err;
+    } catch (const std::logic_error& e) {
+      ++lerr;
+      std::printf("  LOGIC %s seed %u iter %d: %s\n", sizeof(T) == 4 ? "float" : "double", seed, iter,
+                  e.what());
+    }
   }
-  std::printf("%s seed %u: %d hulls, %d errors, %d logic; >1: %d, >4: %d, >64: %d; worst %.3g (iter %d); support gap >4: %d >64: %d worst %.3g (iter %d); dist >4: %d >64: %d worst %.3g (iter %d); projected slabs %d, tents %d\n", sizeof(T)==4?"float":"double", seed, n, err, lerr, over1, over4, over64, worst, worst_it, gover4, gover64, gworst, gworst_it, dover4, dover64, dworst, dworst_it, synthetic_flat, synthetic_solid);
+  std::printf(
+      "%s seed %u: %d hulls, %d errors, %d logic; >1: %d, >4: %d, >64: %d; worst %.3g (iter %d); support gap "
+      ">4: %d >64: %d worst %.3g (iter %d); dist >4: %d >64: %d worst %.3g (iter %d); projected slabs %d, "
+      "tents %d\n",
+      sizeof(T) == 4 ? "float" : "double", seed, n, err, lerr, over1, over4, over64, worst, worst_it, gover4,
+      gover64, gworst, gworst_it, dover4, dover64, dworst, dworst_it, synthetic_flat, synthetic_solid);
 }
 int main(int argc, char** argv) {
   const std::string type = argc > 1 ? argv[1] : "both";
-  const unsigned s0 = argc > 2 ? unsigned(std::atoi(argv[2])) : 1, s1 = argc > 3 ? unsigned(std::atoi(argv[3])) : 3;
+  const unsigned s0 = argc > 2 ? unsigned(std::atoi(argv[2])) : 1,
+                 s1 = argc > 3 ? unsigned(std::atoi(argv[3])) : 3;
   const int iters = argc > 4 ? std::atoi(argv[4]) : 10000;
   const int only = argc > 5 ? std::atoi(argv[5]) : -1;
   const double report = argc > 6 ? std::atof(argv[6]) : 64;

@@ -15,9 +15,10 @@ using Q = mpq_class;
 int main(int argc, char** argv) {
   std::mt19937_64 rng(argc > 1 ? atoi(argv[1]) : 1);
   std::uniform_int_distribution<int> qi(-3, 3), ti(-6, 6), pick(0, 7);
-  std::vector<ConvexPolyhedron<Q>> sh{shapes::cube<Q>(1.0), shapes::box<Q>(1.0, 0.5, 0.25), shapes::tetrahedron<Q>(0.75),
-    shapes::prism<Q>(4, 1.0, 0.5), shapes::regular_polygon<Q>(4, 1.0), shapes::regular_polygon<Q>(3, 1.0),
-    shapes::prism<Q>(3, 0.75, 0.5), shapes::regular_polygon<Q>(6, 0.75)};
+  std::vector<ConvexPolyhedron<Q>> sh{
+      shapes::cube<Q>(1.0),           shapes::box<Q>(1.0, 0.5, 0.25),     shapes::tetrahedron<Q>(0.75),
+      shapes::prism<Q>(4, 1.0, 0.5),  shapes::regular_polygon<Q>(4, 1.0), shapes::regular_polygon<Q>(3, 1.0),
+      shapes::prism<Q>(3, 0.75, 0.5), shapes::regular_polygon<Q>(6, 0.75)};
   long bad = 0, total = 0, fb = 0, corners = 0, lex = 0;
   for (int it = 0; it < 4000; ++it) {
     int q1[4], q2[4];
@@ -26,16 +27,22 @@ int main(int argc, char** argv) {
     if (!q1[0] && !q1[1] && !q1[2] && !q1[3]) q1[0] = 1;
     if (!q2[0] && !q2[1] && !q2[2] && !q2[3]) q2[0] = 1;
     const auto a = test::rotated_exact(sh[pick(rng)], q1[0], q1[1], q1[2], q1[3], Vec3<Q>(Q(0), Q(0), Q(0)));
-    const auto b = test::rotated_exact(sh[pick(rng)], q2[0], q2[1], q2[2], q2[3], Vec3<Q>(Q(ti(rng), 4), Q(ti(rng), 4), Q(ti(rng), 4)));
+    const auto b = test::rotated_exact(sh[pick(rng)], q2[0], q2[1], q2[2], q2[3],
+                                       Vec3<Q>(Q(ti(rng), 4), Q(ti(rng), 4), Q(ti(rng), 4)));
     const GaussMapWalk wa(a), wb(b);
     PlainKernel<Q> k(a, b);
     sat::TraversalStats ts;
     const auto t = sat::traversal_with(k, wa, wb, {}, &ts);
     const auto g = sat::gauss_map(a, b);
-    ++total; fb += ts.fallback_arcs; corners += ts.corner_passes; lex += ts.lex_starts;
+    ++total;
+    fb += ts.fallback_arcs;
+    corners += ts.corner_passes;
+    lex += ts.lex_starts;
     if (!(t.feature == g.feature) || compare(t.separation, g.separation) != 0) {
       ++bad;
-      if (bad < 5) std::printf("MISMATCH it=%d %s vs %s\n", it, to_string(t.feature).c_str(), to_string(g.feature).c_str());
+      if (bad < 5)
+        std::printf("MISMATCH it=%d %s vs %s\n", it, to_string(t.feature).c_str(),
+                    to_string(g.feature).c_str());
     }
   }
   std::printf("total %ld bad %ld fallback_arcs %ld corners %ld lex %ld\n", total, bad, fb, corners, lex);

@@ -29,7 +29,8 @@ int main() {
     const int pairs = 10;
     for (int p = 0; p < pairs; ++p) {
       const auto ad = test::sphere_hull(rng, n);
-      const auto bd = test::moved(test::sphere_hull(rng, n), test::random_rotation(rng), test::V3(0.6, 0.4, 0.2));
+      const auto bd =
+          test::moved(test::sphere_hull(rng, n), test::random_rotation(rng), test::V3(0.6, 0.4, 0.2));
       const auto a = ConvexPolyhedron<float>::convert_from(ad);
       const auto b = ConvexPolyhedron<float>::convert_from(bd);
       const GaussMapWalk wa(a), wb(b);

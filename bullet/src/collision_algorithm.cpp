@@ -49,7 +49,8 @@ struct Prepared {
 
 namespace {
 
-constexpr int kSupported[] = {BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_POINT_CLOUD_SHAPE_PROXYTYPE};
+constexpr int kSupported[] = {BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE,
+                              CONVEX_POINT_CLOUD_SHAPE_PROXYTYPE};
 
 /// The hull sepax collides for a supported shape, in its local frame (the
 /// polyhedral geometry, see the header): btPolyhedralConvexShape::getVertex
@@ -149,8 +150,8 @@ std::int64_t ShapeCache::preparations() const {
 // ---- counters ------------------------------------------------------------------
 
 struct CreateFunc::Live {
-  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, manifolds{0}, points{0}, id_matches{0}, errors{0},
-      fallback_pairs{0};
+  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, manifolds{0},
+      points{0}, id_matches{0}, errors{0}, fallback_pairs{0};
   std::mutex error_mutex;
   std::string last_error;
 
@@ -236,8 +237,8 @@ bool same_ids(const btManifoldPoint& x, const btManifoldPoint& y) {
 /// Writes the world-space manifold m of (w0, w1) into `man` (see the header):
 /// points built as btManifoldResult::addContactPoint builds them, matched to
 /// the manifold's points by their feature ids.  Returns the id matches.
-int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0, const btCollisionObjectWrapper* w1,
-                 const ContactManifold<float>& m) {
+int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
+                 const btCollisionObjectWrapper* w1, const ContactManifold<float>& m) {
   const btCollisionObject* o0 = w0->getCollisionObject();
   const btCollisionObject* o1 = w1->getCollisionObject();
   const bool swapped = man.getBody0() != o0;
@@ -298,7 +299,8 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0, 
   }
   int matches = 0;
   bool taken[MANIFOLD_CACHE_SIZE] = {false, false, false, false};
-  const bool custom = (o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK;
+  const bool custom =
+      (o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK;
   for (int j = 0; j < count; ++j) {
     int at = -1;
     for (int i = 0; i < man.getNumContacts() && at < 0; ++i) {
@@ -315,7 +317,8 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0, 
       const btCollisionObjectWrapper* x0 = swapped ? w1 : w0;
       const btCollisionObjectWrapper* x1 = swapped ? w0 : w1;
       const btManifoldPoint& q = fresh[j];
-      (*gContactAddedCallback)(man.getContactPoint(at), x0, q.m_partId0, q.m_index0, x1, q.m_partId1, q.m_index1);
+      (*gContactAddedCallback)(man.getContactPoint(at), x0, q.m_partId0, q.m_index0, x1, q.m_partId1,
+                               q.m_index1);
     }
   }
   if (gContactStartedCallback && new_collision && man.getNumContacts() > 0) gContactStartedCallback(&man);
@@ -325,8 +328,8 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0, 
 }  // namespace
 
 CollisionAlgorithm::CollisionAlgorithm(const btCollisionAlgorithmConstructionInfo& ci,
-                                       const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
-                                       CreateFunc& owner)
+                                       const btCollisionObjectWrapper* body0,
+                                       const btCollisionObjectWrapper* body1, CreateFunc& owner)
     : btActivatingCollisionAlgorithm(ci, body0, body1), owner_(owner), state_(std::make_unique<State>()) {}
 
 CollisionAlgorithm::~CollisionAlgorithm() {
@@ -340,7 +343,8 @@ void CollisionAlgorithm::getAllContactManifolds(btManifoldArray& out) {
 void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
                                           const btCollisionObjectWrapper* body1, const btDispatcherInfo&,
                                           btManifoldResult* result) {
-  if (!manifold_) manifold_ = m_dispatcher->getNewManifold(body0->getCollisionObject(), body1->getCollisionObject());
+  if (!manifold_)
+    manifold_ = m_dispatcher->getNewManifold(body0->getCollisionObject(), body1->getCollisionObject());
   result->setPersistentManifold(manifold_);
   State& s = *state_;
   auto& live = *owner_.live_;
@@ -375,8 +379,9 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     const RigidTransform<float> pa = pose_of(wa);
     const RigidTransform<float> pb = pose_of(wb);
     const RigidTransform<float> x = relative_pose(pa, pb);
-    if (s.apart && s.apart_separation - motion_bound(s.x_apart, x, s.b->reach) - motion_slack(s.x_apart, x, s.b->reach) >
-                       margin) {
+    if (s.apart &&
+        s.apart_separation - motion_bound(s.x_apart, x, s.b->reach) - motion_slack(s.x_apart, x, s.b->reach) >
+            margin) {
       live.kept_apart.fetch_add(1, std::memory_order_relaxed);
       if (manifold_->getNumContacts() > 0) manifold_->clearManifold();
       return;
@@ -386,8 +391,8 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     if (s.kept) {
       const double delta = motion_bound(s.x0, x, s.b->reach);
       const double slack = motion_slack(s.x0, x, s.b->reach);
-      const double budget =
-          kKeepMotion * kAbsTolerance * std::min(s.a->shape.polyhedron().extent(), s.b->shape.polyhedron().extent());
+      const double budget = kKeepMotion * kAbsTolerance *
+                            std::min(s.a->shape.polyhedron().extent(), s.b->shape.polyhedron().extent());
       keep = delta <= budget && s.sat_separation + delta + slack <= margin;
     }
     if (keep) {
@@ -397,7 +402,8 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       SatOptions opt;
       opt.early_out = true;
       opt.margin = margin;
-      const SatResult<float> r = sat::traversal<policy::Robust>(s.a->shape, pa, s.b->shape, pb, opt, &s.cache);
+      const SatResult<float> r =
+          sat::traversal<policy::Robust>(s.a->shape, pa, s.b->shape, pb, opt, &s.cache);
       live.queries.fetch_add(1, std::memory_order_relaxed);
       s.kept = false;
       if (r.early_out) {
@@ -446,13 +452,15 @@ btCollisionAlgorithm* CreateFunc::CreateCollisionAlgorithm(btCollisionAlgorithmC
       shapes_.get(*sa, shape_key(*sa));
       shapes_.get(*sb, shape_key(*sb));
     } catch (const InvalidInput& e) {
-      live_->error(std::string("shape refused, Bullet's algorithm used: ") + to_string(e.code()) + ": " + e.what());
+      live_->error(std::string("shape refused, Bullet's algorithm used: ") + to_string(e.code()) + ": " +
+                   e.what());
       ok = false;
     }
   }
   if (!ok) {
     live_->fallback_pairs.fetch_add(1, std::memory_order_relaxed);
-    btCollisionAlgorithmCreateFunc* f = config_.getCollisionAlgorithmCreateFunc(sa->getShapeType(), sb->getShapeType());
+    btCollisionAlgorithmCreateFunc* f =
+        config_.getCollisionAlgorithmCreateFunc(sa->getShapeType(), sb->getShapeType());
     return f->CreateCollisionAlgorithm(ci, body0, body1);
   }
   void* mem = ci.m_dispatcher1->allocateCollisionAlgorithm(sizeof(CollisionAlgorithm));

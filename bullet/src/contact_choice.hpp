@@ -59,7 +59,8 @@ inline FaceQuery face_query(const ConvexPolyhedron<float>& p, const Vec3<float>&
 
 /// r's face of p: its separation from q (min over q's vertices of n.v -
 /// offset) and q's deepest vertex.
-inline void face_separation(const ConvexPolyhedron<float>& p, const ConvexPolyhedron<float>& q, FaceQuery& r) {
+inline void face_separation(const ConvexPolyhedron<float>& p, const ConvexPolyhedron<float>& q,
+                            FaceQuery& r) {
   const auto& pl = p.plane(r.face);
   const double nx = pl.normal[0], ny = pl.normal[1], nz = pl.normal[2], off = pl.offset;
   r.separation = std::numeric_limits<double>::infinity();
@@ -76,8 +77,8 @@ inline void face_separation(const ConvexPolyhedron<float>& p, const ConvexPolyhe
 /// r with its feature replaced by the face q of B (use_b) or of A: q's
 /// separation (unit normals) and support vertex, the axis in world.
 inline SatResult<float> face_result(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float>& bp,
-                                    const RigidTransform<float>& pose_a, const SatResult<float>& r, bool use_b,
-                                    const FaceQuery& q) {
+                                    const RigidTransform<float>& pose_a, const SatResult<float>& r,
+                                    bool use_b, const FaceQuery& q) {
   SatResult<float> out = r;
   out.separation = Separation<float>{static_cast<float>(q.separation), 1.0f};
   if (use_b) {

@@ -30,7 +30,8 @@ inline SatResult<float> chosen_contact(const PreparedShape<float>& a, const Rigi
 /// posed_part_scratch: the same contact and manifold as on the full B'.
 inline SatResult<float> kept_manifold(const PreparedShape<float>& a, const RigidTransform<float>& pose_a,
                                       const PreparedShape<float>& b, const RigidTransform<float>& x,
-                                      const SatResult<float>& last, double margin, ContactManifold<float>& out) {
+                                      const SatResult<float>& last, double margin,
+                                      ContactManifold<float>& out) {
   const ConvexPolyhedron<float>* bp = nullptr;
   if (last.feature.type == FeatureType::FaceB) {
     const int g = last.feature.b;

@@ -86,12 +86,14 @@ struct World {
     btVector3 inertia(0, 0, 0);
     if (mass > 0) shape->calculateLocalInertia(static_cast<btScalar>(mass), inertia);
     motions.push_back(std::make_unique<btDefaultMotionState>(pose));
-    btRigidBody::btRigidBodyConstructionInfo ci(static_cast<btScalar>(mass), motions.back().get(), shape, inertia);
+    btRigidBody::btRigidBodyConstructionInfo ci(static_cast<btScalar>(mass), motions.back().get(), shape,
+                                                inertia);
     ci.m_friction = static_cast<btScalar>(friction);
     bodies_owned.push_back(std::make_unique<btRigidBody>(ci));
     btRigidBody* rb = bodies_owned.back().get();
     if (mass > 0) {
-      rb->setActivationState(DISABLE_DEACTIVATION);  // the solver keeps working: rest is measured, not assumed
+      rb->setActivationState(
+          DISABLE_DEACTIVATION);  // the solver keeps working: rest is measured, not assumed
       bodies.push_back(Body{rb, shape, mass});
     }
     world.addRigidBody(rb);
@@ -138,8 +140,8 @@ void scene_dice(World& w) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   for (int i = 0; i < 16; ++i) {
-    btQuaternion q(static_cast<btScalar>(u(rng)), static_cast<btScalar>(u(rng)), static_cast<btScalar>(u(rng)),
-                   static_cast<btScalar>(u(rng) + 1.5));
+    btQuaternion q(static_cast<btScalar>(u(rng)), static_cast<btScalar>(u(rng)),
+                   static_cast<btScalar>(u(rng)), static_cast<btScalar>(u(rng) + 1.5));
     q.normalize();
     w.add(die, 1e-3, at((i % 4) * 0.03 - 0.045, 0.02 + 0.01 * (i % 3), (i / 4) * 0.03 - 0.045, q));
   }
@@ -208,7 +210,7 @@ struct Scene {
   const char* name;
   void (*build)(World&);
 };
-const Scene kScenes[] = {{"stack", scene_stack}, {"pyramid", scene_pyramid}, {"dice", scene_dice},
+const Scene kScenes[] = {{"stack", scene_stack},   {"pyramid", scene_pyramid}, {"dice", scene_dice},
                          {"plates", scene_plates}, {"pile", scene_pile},       {"slope", scene_slope}};
 
 // ---- metrics -----------------------------------------------------------------------
@@ -259,7 +261,7 @@ struct Metrics {
   double points_per_pair = 0;  // over the rest window
   double np_us = 0;            // narrowphase time per step
   bool standing = true;
-  double top_fall = 0;         // the top body's displacement from its start
+  double top_fall = 0;  // the top body's displacement from its start
   sepax::bullet::Counters counters;
 };
 
@@ -280,7 +282,8 @@ Metrics run(const Scene& sc, bool use_sepax, double settle_s, double rest_s) {
   // top body: highest at the start
   std::size_t top = 0;
   for (std::size_t i = 0; i < w.bodies.size(); ++i) {
-    if (w.bodies[i].rb->getWorldTransform().getOrigin().y() > w.bodies[top].rb->getWorldTransform().getOrigin().y())
+    if (w.bodies[i].rb->getWorldTransform().getOrigin().y() >
+        w.bodies[top].rb->getWorldTransform().getOrigin().y())
       top = i;
   }
   const btVector3 top_start = w.bodies[top].rb->getWorldTransform().getOrigin();
@@ -328,7 +331,8 @@ Metrics run(const Scene& sc, bool use_sepax, double settle_s, double rest_s) {
       const auto* o1 = man->getBody1();
       const auto& a = geo.of(o0->getCollisionShape());
       const auto& b = geo.of(o1->getCollisionShape());
-      const auto res = sepax::sat::traversal(a, pose_of(o0->getWorldTransform()), b, pose_of(o1->getWorldTransform()));
+      const auto res =
+          sepax::sat::traversal(a, pose_of(o0->getWorldTransform()), b, pose_of(o1->getWorldTransform()));
       const double depth = -sepax::to_double(res.separation) - inflation(o0->getCollisionShape(), use_sepax) -
                            inflation(o1->getCollisionShape(), use_sepax);
       m.max_penetration = std::max(m.max_penetration, depth);
@@ -364,8 +368,9 @@ int main(int argc, char** argv) {
     } else if (a == "--algorithm" && i + 1 < argc) {
       algo = argv[++i];
     } else if (a == "--help" || a == "-h") {
-      std::printf("usage: %s [--short] [--algorithm bullet|sepax|both] [stack pyramid dice plates pile slope]\n",
-                  argv[0]);
+      std::printf(
+          "usage: %s [--short] [--algorithm bullet|sepax|both] [stack pyramid dice plates pile slope]\n",
+          argv[0]);
       return 0;
     } else {
       names.push_back(a);
@@ -397,19 +402,20 @@ int main(int argc, char** argv) {
       const Metrics m = run(*sc, use_sepax, settle, rest);
       if (!use_sepax) bullet_standing = m.standing;
       std::printf("%-8s %-6s %12.4f %11.4f %11.4f %11.3g %12.3g %8.2f %10.2f %8s\n", sc->name,
-                  use_sepax ? "sepax" : "bullet", 1e3 * m.max_penetration, 1e3 * m.drift5, 1e3 * m.drift10, m.ke,
-                  m.ke_per_mass, m.points_per_pair, m.np_us, m.standing ? "yes" : "NO");
+                  use_sepax ? "sepax" : "bullet", 1e3 * m.max_penetration, 1e3 * m.drift5, 1e3 * m.drift10,
+                  m.ke, m.ke_per_mass, m.points_per_pair, m.np_us, m.standing ? "yes" : "NO");
       if (use_sepax) {
         const auto& c = m.counters;
-        std::printf("         sepax: %lld queries, %lld beyond the margin, %lld culled by spheres, %lld kept apart, %lld kept faces, "
-                    "%lld manifolds, %lld points, %lld id matches, %lld refused, %lld fallback pairs%s%s\n",
-                    static_cast<long long>(c.queries), static_cast<long long>(c.early_outs),
-                    static_cast<long long>(c.culled), static_cast<long long>(c.kept_apart),
-                    static_cast<long long>(c.kept),
-                    static_cast<long long>(c.manifolds), static_cast<long long>(c.points),
-                    static_cast<long long>(c.id_matches), static_cast<long long>(c.errors),
-                    static_cast<long long>(c.fallback_pairs), c.last_error.empty() ? "" : "; last: ",
-                    c.last_error.c_str());
+        std::printf(
+            "         sepax: %lld queries, %lld beyond the margin, %lld culled by spheres, %lld kept apart, "
+            "%lld kept faces, "
+            "%lld manifolds, %lld points, %lld id matches, %lld refused, %lld fallback pairs%s%s\n",
+            static_cast<long long>(c.queries), static_cast<long long>(c.early_outs),
+            static_cast<long long>(c.culled), static_cast<long long>(c.kept_apart),
+            static_cast<long long>(c.kept), static_cast<long long>(c.manifolds),
+            static_cast<long long>(c.points), static_cast<long long>(c.id_matches),
+            static_cast<long long>(c.errors), static_cast<long long>(c.fallback_pairs),
+            c.last_error.empty() ? "" : "; last: ", c.last_error.c_str());
         if (short_mode) {
           if (c.errors != 0 || c.fallback_pairs != 0) {
             std::fprintf(stderr, "FAIL %s: sepax refused %lld queries / %lld pairs\n", sc->name,
@@ -421,7 +427,8 @@ int main(int argc, char** argv) {
             ++failures;
           }
           if (!m.standing && bullet_standing) {
-            std::fprintf(stderr, "FAIL %s: the stack fell with sepax, not with Bullet (top body moved %.4g m)\n",
+            std::fprintf(stderr,
+                         "FAIL %s: the stack fell with sepax, not with Bullet (top body moved %.4g m)\n",
                          sc->name, m.top_fall);
             ++failures;
           }

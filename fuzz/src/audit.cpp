@@ -72,7 +72,8 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
         << " faces" << (p.is_flat() ? " (double-sided polygon: faces 0 and 1 are its two sides)" : "")
         << ", extent " << g(p.extent()) << "\n";
     if (p.is_flat())
-      notes.push_back(std::string(name) + " is a double-sided polygon: its two face normals are exactly opposite, "
+      notes.push_back(std::string(name) +
+                      " is a double-sided polygon: its two face normals are exactly opposite, "
                       "its edges' arcs are half great circles, and every edge of it has both faces");
   };
   out << "sepax audit (" << fname << " against exact mpq)\n";
@@ -146,16 +147,18 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
       parallel_exact += pe;
       parallel_tol += pf && !pe;
       verdict_diffs += sf.minkowski_face() != se.minkowski_face();
-      const std::string mink = std::string(sf.minkowski_face() ? "yes" : "no") + "/" + (se.minkowski_face() ? "yes" : "no");
+      const std::string mink =
+          std::string(sf.minkowski_face() ? "yes" : "no") + "/" + (se.minkowski_face() ? "yes" : "no");
       const std::string par = std::string(pf ? "yes" : "no") + "/" + (pe ? "yes" : "no");
       std::snprintf(line, sizeof line, " %-9s %1s | %-9s%s\n", mink.c_str(),
                     sf.minkowski_face() != se.minkowski_face() ? "!" : "", par.c_str(), pf != pe ? " !" : "");
       out << line;
-      j["edge_pairs"].push_back(Json{{"a", ea},
-                                     {"b", eb},
-                                     {"triple_products", std::move(products)},
-                                     {"minkowski_face", Json{{"value", sf.minkowski_face()}, {"exact", se.minkowski_face()}}},
-                                     {"parallel", Json{{"value", pf}, {"exact", pe}}}});
+      j["edge_pairs"].push_back(
+          Json{{"a", ea},
+               {"b", eb},
+               {"triple_products", std::move(products)},
+               {"minkowski_face", Json{{"value", sf.minkowski_face()}, {"exact", se.minkowski_face()}}},
+               {"parallel", Json{{"value", pf}, {"exact", pe}}}});
     }
   }
 
@@ -178,8 +181,8 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
                              {"difference", vf - ed},
                              {"error_bound", bnd},
                              {"exact_zero", sign(se) == 0}});
-    std::snprintf(line, sizeof line, "  %-22s %18.10g %20.12g %17.3g %16.3g%s\n", name.c_str(), vf, ed, vf - ed, bnd,
-                  sign(se) == 0 ? "  exact zero" : "");
+    std::snprintf(line, sizeof line, "  %-22s %18.10g %20.12g %17.3g %16.3g%s\n", name.c_str(), vf, ed,
+                  vf - ed, bnd, sign(se) == 0 ? "  exact zero" : "");
     out << line;
   };
   for (int f = 0; f < A.face_count(); ++f) {
@@ -187,9 +190,10 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
     const auto qe = ke.face_query_a(f);
     double bnd = 0;
     for (const auto& v : B.vertices())
-      bnd = std::max(bnd, bounds::face_bound<F>(A.plane(f).normal, A.plane_points(f)[0], v, dA[static_cast<std::size_t>(f)]));
-    row("faceA " + std::to_string(f) + " (vB " + std::to_string(qe.support_vertex) + ")", double(q.separation.num),
-        qe.separation, bnd);
+      bnd = std::max(bnd, bounds::face_bound<F>(A.plane(f).normal, A.plane_points(f)[0], v,
+                                                dA[static_cast<std::size_t>(f)]));
+    row("faceA " + std::to_string(f) + " (vB " + std::to_string(qe.support_vertex) + ")",
+        double(q.separation.num), qe.separation, bnd);
     cands.push_back({Feature::face_a(f, qe.support_vertex), qe.separation});
   }
   for (int f = 0; f < B.face_count(); ++f) {
@@ -197,9 +201,10 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
     const auto qe = ke.face_query_b(f);
     double bnd = 0;
     for (const auto& v : A.vertices())
-      bnd = std::max(bnd, bounds::face_bound<F>(B.plane(f).normal, B.plane_points(f)[0], v, dB[static_cast<std::size_t>(f)]));
-    row("faceB " + std::to_string(f) + " (vA " + std::to_string(qe.support_vertex) + ")", double(q.separation.num),
-        qe.separation, bnd);
+      bnd = std::max(bnd, bounds::face_bound<F>(B.plane(f).normal, B.plane_points(f)[0], v,
+                                                dB[static_cast<std::size_t>(f)]));
+    row("faceB " + std::to_string(f) + " (vA " + std::to_string(qe.support_vertex) + ")",
+        double(q.separation.num), qe.separation, bnd);
     cands.push_back({Feature::face_b(qe.support_vertex, f), qe.separation});
   }
   for (int ea = 0; ea < A.edge_count(); ++ea) {
@@ -214,7 +219,8 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
       const F len = std::sqrt(squared_norm(n));
       n = Vec3<F>(n[0] / len, n[1] / len, n[2] / len);
       const double dn = bounds::delta_normal<F>(da, db, bounds::sqrt_lower(squared_norm(ne).get_d()));
-      const double bnd = bounds::edge_bound<F>(n, Vec3<F>(B.vertex(B.edge_tail(eb)) - A.vertex(A.edge_tail(ea))), dn);
+      const double bnd =
+          bounds::edge_bound<F>(n, Vec3<F>(B.vertex(B.edge_tail(eb)) - A.vertex(A.edge_tail(ea))), dn);
       std::string name = "edges " + std::to_string(ea) + " x " + std::to_string(eb);
       if (me != mf) name += me ? " (exact only)" : " (" + fname + " only)";
       row(name, double(k.edge_separation(ea, eb).num), se, bnd);
@@ -234,13 +240,15 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
       for (int e = 0; e < p.edge_count(); ++e) {
         const auto qf = of_a ? k.side_query_a(e) : k.side_query_b(e);
         const auto qe = of_a ? ke.side_query_a(e) : ke.side_query_b(e);
-        const double bnd = bounds::side_axis_bound<F>(p, e, q, dp[static_cast<std::size_t>(p.edge_face(e, 0))]);
+        const double bnd =
+            bounds::side_axis_bound<F>(p, e, q, dp[static_cast<std::size_t>(p.edge_face(e, 0))]);
         row(std::string(of_a ? "sideA " : "sideB ") + std::to_string(e) + (of_a ? " (vB " : " (vA ") +
                 std::to_string(qe.support_vertex) + ")",
             double(qf.separation.num), qe.separation, bnd);
         {
-          cands.push_back({of_a ? Feature::side_a(e, qe.support_vertex) : Feature::side_b(qe.support_vertex, e),
-                           qe.separation});
+          cands.push_back(
+              {of_a ? Feature::side_a(e, qe.support_vertex) : Feature::side_b(qe.support_vertex, e),
+               qe.separation});
         }
       }
     };
@@ -249,7 +257,8 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
   }
 
   // ---- chosen features ----
-  out << "\nChosen features (maximum separation; ties broken faceA < faceB < edges < sideA < sideB by index):\n";
+  out << "\nChosen features (maximum separation; ties broken faceA < faceB < edges < sideA < sideB by "
+         "index):\n";
   j["chosen"] = Json::array();
   auto show = [&](const std::string& cfg, const std::string& sat, bool overlap, const Feature& f, double s) {
     j["chosen"].push_back(Json{{"config", cfg},
@@ -303,7 +312,9 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
       if (m.kind == ContactKind::Face) {
         Json steps = Json::array();
         for (const auto& st : m.clip_steps)
-          steps.push_back(Json{{"side_edge", st.side_edge}, {"vertices_in", st.vertices_in}, {"vertices_out", st.vertices_out}});
+          steps.push_back(Json{{"side_edge", st.side_edge},
+                               {"vertices_in", st.vertices_in},
+                               {"vertices_out", st.vertices_out}});
         jx["reference"] = m.reference_shape == 0 ? "A" : "B";
         jx["reference_face"] = m.reference_face;
         jx["incident_face"] = m.incident_face;
@@ -315,8 +326,8 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
       for (const auto& pt : m.points) {
         const Vec3<double> p = vec_to_double(pt.position);
         jx["points"].push_back(Json{{"id", to_string(pt.id)},
-                                   {"position", Json::array({p[0], p[1], p[2]})},
-                                   {"separation", sepax::to_double(pt.separation)}});
+                                    {"position", Json::array({p[0], p[1], p[2]})},
+                                    {"separation", sepax::to_double(pt.separation)}});
       }
       jm[cfg == "mpq" ? "exact" : "value"] = std::move(jx);
       out << "  " << cfg << ": " << to_string(m.kind) << " contact, " << m.size() << " point(s)";
@@ -346,29 +357,36 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
                             {"max_depth_error", d.max_depth_error},
                             {"max_position_error", d.max_position_error}};
     j["manifold"] = std::move(jm);
-    out << "  " << fname << " against exact: " << (d.identical() ? "same kind, faces, point count and ids"
-                                                                   : "combinatorics differ")
-        << "; deepest depth error " << g(d.deepest_depth_error) << ", max depth error " << g(d.max_depth_error)
-        << ", max position error " << g(d.max_position_error) << "\n";
-    if (!d.identical()) notes.push_back("the " + fname + " contact manifold differs combinatorially from the exact one");
+    out << "  " << fname << " against exact: "
+        << (d.identical() ? "same kind, faces, point count and ids" : "combinatorics differ")
+        << "; deepest depth error " << g(d.deepest_depth_error) << ", max depth error "
+        << g(d.max_depth_error) << ", max position error " << g(d.max_position_error) << "\n";
+    if (!d.identical())
+      notes.push_back("the " + fname + " contact manifold differs combinatorially from the exact one");
   }
 
   // ---- notes ----
   if (flat_pair) {
     bool coplanar = true;
     for (int v = 0; v < Be.vertex_count() && coplanar; ++v)
-      coplanar = sign(Separation<Q>{Q(dot(Ae.plane(0).normal, Be.vertex(v)) - Ae.plane(0).offset), Q(1)}) == 0;
+      coplanar =
+          sign(Separation<Q>{Q(dot(Ae.plane(0).normal, Be.vertex(v)) - Ae.plane(0).offset), Q(1)}) == 0;
     if (coplanar)
-      notes.push_back("both shapes are flat and exactly in one plane: every face and edge-pair axis is the plane "
-                      "normal (separation 0); the in-plane edge normals (sideA/sideB) decide a gap");
+      notes.push_back(
+          "both shapes are flat and exactly in one plane: every face and edge-pair axis is the plane "
+          "normal (separation 0); the in-plane edge normals (sideA/sideB) decide a gap");
   }
   if (parallel_exact)
-    notes.push_back(std::to_string(parallel_exact) + " edge pair(s) are exactly parallel (no edge axis; skipped by every SAT)");
+    notes.push_back(std::to_string(parallel_exact) +
+                    " edge pair(s) are exactly parallel (no edge axis; skipped by every SAT)");
   if (parallel_tol)
-    notes.push_back(std::to_string(parallel_tol) + " edge pair(s) are not exactly parallel but within the " + fname +
-                    " 'parallel' tolerance (" + g(Tolerances<F>::parallel) + "): plain " + fname + " skips them");
+    notes.push_back(std::to_string(parallel_tol) + " edge pair(s) are not exactly parallel but within the " +
+                    fname + " 'parallel' tolerance (" + g(Tolerances<F>::parallel) + "): plain " + fname +
+                    " skips them");
   if (exact_zeros) {
-    std::string s = std::to_string(exact_zeros) + " triple product(s) are exactly zero (an arc endpoint exactly on the other arc's plane: a face normal exactly perpendicular to the other edge), in pairs";
+    std::string s = std::to_string(exact_zeros) +
+                    " triple product(s) are exactly zero (an arc endpoint exactly on the other arc's plane: "
+                    "a face normal exactly perpendicular to the other edge), in pairs";
     int shown = 0;
     for (const auto& [a, b] : zero_pairs) {
       if (shown++ == 12) {
@@ -380,9 +398,11 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
     notes.push_back(s);
   }
   if (sign_diffs)
-    notes.push_back(std::to_string(sign_diffs) + " triple-product sign(s) differ between " + fname + " and exact (marked '!')");
+    notes.push_back(std::to_string(sign_diffs) + " triple-product sign(s) differ between " + fname +
+                    " and exact (marked '!')");
   if (verdict_diffs)
-    notes.push_back(std::to_string(verdict_diffs) + " Minkowski-face verdict(s) differ between " + fname + " and exact");
+    notes.push_back(std::to_string(verdict_diffs) + " Minkowski-face verdict(s) differ between " + fname +
+                    " and exact");
   {
     int ties = 0;
     std::string s;
@@ -391,10 +411,12 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
       if (ties++ < 8) s += " " + to_string(cnd.f);
     }
     if (ties)
-      notes.push_back(std::to_string(ties) + " other candidate(s) tie exactly with the chosen " + to_string(ref.feature) +
-                      ":" + s + (ties > 8 ? " ..." : "") + " (the tie-break picks the first in feature order)");
+      notes.push_back(std::to_string(ties) + " other candidate(s) tie exactly with the chosen " +
+                      to_string(ref.feature) + ":" + s + (ties > 8 ? " ..." : "") +
+                      " (the tie-break picks the first in feature order)");
   }
-  if (sign(ref.separation) == 0) notes.push_back("the shapes touch exactly (maximum separation is exactly 0): reported as overlap");
+  if (sign(ref.separation) == 0)
+    notes.push_back("the shapes touch exactly (maximum separation is exactly 0): reported as overlap");
   j["notes"] = notes;
   out << "\nNotes:\n";
   if (notes.empty()) out << "  nothing degenerate\n";
@@ -406,15 +428,19 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
 int run_audit(const FuzzCase& c, const AuditOptions& opt, std::ostream& out) {
   std::ostringstream text;
   Json j;
-  if (opt.use_double) audit_as<double>(c, text, j);
-  else audit_as<float>(c, text, j);
+  if (opt.use_double)
+    audit_as<double>(c, text, j);
+  else
+    audit_as<float>(c, text, j);
   CheckOptions check;
   check.inject_fault = opt.inject_fault;
   const CaseReport r = check_case_guarded(c, check);
   Json findings = Json::array();
   for (const auto& f : r.unexplained)
-    findings.push_back(Json{{"comparison", f.comparison}, {"config", f.config}, {"sat", f.sat}, {"detail", f.detail}});
-  j["check"] = Json{{"valid", r.valid}, {"unexplained", r.unexplained_count}, {"findings", std::move(findings)}};
+    findings.push_back(
+        Json{{"comparison", f.comparison}, {"config", f.config}, {"sat", f.sat}, {"detail", f.detail}});
+  j["check"] =
+      Json{{"valid", r.valid}, {"unexplained", r.unexplained_count}, {"findings", std::move(findings)}};
   if (opt.json) {
     out << j.dump() << "\n";
   } else {

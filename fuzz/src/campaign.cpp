@@ -61,12 +61,14 @@ std::string write_reproducer(const std::string& dir, const FuzzCase& c, const Ca
   std::filesystem::create_directories(dir);
   std::string path;
   for (int k = 0;; ++k) {
-    path = dir + "/unexplained-" + c.family + "-" + std::to_string(c.seed) + (k ? "-" + std::to_string(k) : "") + ".case";
+    path = dir + "/unexplained-" + c.family + "-" + std::to_string(c.seed) +
+           (k ? "-" + std::to_string(k) : "") + ".case";
     if (!std::filesystem::exists(path)) break;
   }
   std::ostringstream s;
   s << "sepax fuzz reproducer: " << r.unexplained_count << " unexplained disagreement(s)\n";
-  for (const auto& f : r.unexplained) s << "[" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
+  for (const auto& f : r.unexplained)
+    s << "[" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
   s << "replay: sepax fuzz --replay " << path << "\n";
   s << "audit:  sepax audit --case " << path;
   write_case_file(path, c, s.str());
@@ -78,7 +80,8 @@ namespace {
 // Counts as {"agree": n, "exact_zero": n, ...} in Klass order.
 nlohmann::ordered_json counts_json(const Counts& c) {
   nlohmann::ordered_json o = nlohmann::ordered_json::object();
-  for (int k = 0; k < kKlassCount; ++k) o[klass_name(static_cast<Klass>(k))] = c.n[static_cast<std::size_t>(k)];
+  for (int k = 0; k < kKlassCount; ++k)
+    o[klass_name(static_cast<Klass>(k))] = c.n[static_cast<std::size_t>(k)];
   return o;
 }
 
@@ -106,13 +109,16 @@ nlohmann::ordered_json manifold_json(const std::map<std::string, Counts>& compar
 
 void print_json(std::ostream& out, const Report& r) {
   using Json = nlohmann::ordered_json;
-  Json families = Json::object(), comparisons = Json::object(), by_config = Json::object(), findings = Json::array();
+  Json families = Json::object(), comparisons = Json::object(), by_config = Json::object(),
+       findings = Json::array();
   for (const auto& [name, f] : r.families)
-    families[name] = Json{{"cases", f.cases}, {"rejected", f.rejected}, {"unexplained", f.unexplained}, {"skipped", f.skipped}};
+    families[name] = Json{
+        {"cases", f.cases}, {"rejected", f.rejected}, {"unexplained", f.unexplained}, {"skipped", f.skipped}};
   for (const auto& [name, c] : r.comparisons) comparisons[name] = counts_json(c);
   for (const auto& [name, c] : r.by_config) by_config[name] = counts_json(c);
   for (const auto& f : r.findings)
-    findings.push_back(Json{{"comparison", f.comparison}, {"config", f.config}, {"sat", f.sat}, {"detail", f.detail}});
+    findings.push_back(
+        Json{{"comparison", f.comparison}, {"config", f.config}, {"sat", f.sat}, {"detail", f.detail}});
   const Json j{{"cases", r.cases},
                {"rejected", r.rejected},
                {"seconds", r.seconds},
@@ -135,19 +141,22 @@ void print_json(std::ostream& out, const Report& r) {
 void print_text(std::ostream& out, const Report& r) {
   char line[256];
   out << "sepax differential fuzz report\n";
-  std::snprintf(line, sizeof line, "  %lld cases checked (+%lld rejected by validation) in %.1f s: %.1f cases/s, seed %llu\n",
+  std::snprintf(line, sizeof line,
+                "  %lld cases checked (+%lld rejected by validation) in %.1f s: %.1f cases/s, seed %llu\n",
                 static_cast<long long>(r.cases), static_cast<long long>(r.rejected), r.seconds,
                 r.seconds > 0 ? static_cast<double>(r.cases) / r.seconds : 0.0,
                 static_cast<unsigned long long>(r.seed));
   out << line;
-  out << "  configurations: float_plain double_plain" << (has_robust_policy() ? " float_robust double_robust" : "")
+  out << "  configurations: float_plain double_plain"
+      << (has_robust_policy() ? " float_robust double_robust" : "")
       << " mpq gmpq epeck; SATs: brute_force gauss_map" << (has_traversal_sat() ? " traversal" : "") << "\n";
   if (!has_robust_policy()) out << "  (robust policy not built in: robust_kernel.hpp not found)\n";
   if (!has_traversal_sat()) out << "  (traversal SAT not built in: sat_traversal.hpp not found)\n";
   out << "\n  family       cases  rejected  unexplained\n";
   for (const auto& [name, f] : r.families) {
-    std::snprintf(line, sizeof line, "  %-10s %7lld  %8lld  %11lld\n", name.c_str(), static_cast<long long>(f.cases),
-                  static_cast<long long>(f.rejected), static_cast<long long>(f.unexplained));
+    std::snprintf(line, sizeof line, "  %-10s %7lld  %8lld  %11lld\n", name.c_str(),
+                  static_cast<long long>(f.cases), static_cast<long long>(f.rejected),
+                  static_cast<long long>(f.unexplained));
     out << line;
   }
   auto table = [&](const std::map<std::string, Counts>& m, const char* title) {
@@ -158,7 +167,8 @@ void print_text(std::ostream& out, const Report& r) {
       std::snprintf(line, sizeof line, "  %-30s %12lld %10lld %10lld %8lld %11lld %9lld\n", name.c_str(),
                     static_cast<long long>(c[Klass::agree]), static_cast<long long>(c[Klass::exact_zero]),
                     static_cast<long long>(c[Klass::explained]), static_cast<long long>(c[Klass::tie]),
-                    static_cast<long long>(c[Klass::unexplained]), static_cast<long long>(c[Klass::nonconvex]));
+                    static_cast<long long>(c[Klass::unexplained]),
+                    static_cast<long long>(c[Klass::nonconvex]));
       out << line;
     }
   };
@@ -179,7 +189,8 @@ void print_text(std::ostream& out, const Report& r) {
   }
   print_manifold_text(out, r.comparisons, r.by_config, r.details, r.maxima);
   out << "\n  unexplained disagreements: " << r.unexplained() << "\n";
-  for (const auto& f : r.findings) out << "    [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
+  for (const auto& f : r.findings)
+    out << "    [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
   if (!r.reproducers.empty()) {
     out << "  reproducers written:\n";
     for (const auto& p : r.reproducers) out << "    " << p << "\n";
@@ -202,8 +213,8 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
   int shrunk = 0;
   // Shrink a finding (its original reproducer is `original`) and record the
   // shrunk reproducer; a failure to shrink never hides the finding.
-  auto shrink_finding = [&](Report& rep, const std::string& original, const std::string& dir, const FuzzCase& c,
-                            const CaseReport& r) {
+  auto shrink_finding = [&](Report& rep, const std::string& original, const std::string& dir,
+                            const FuzzCase& c, const CaseReport& r) {
     if (shrink_opt.max_steps <= 0 || shrunk >= shrink_max) return;
     ++shrunk;
     try {
@@ -213,7 +224,8 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
       if (write_shrunk_reproducer(path, original, c, r, shrink_opt, &st)) {
         rep.reproducers.push_back(path);
         if (!quiet)
-          std::fprintf(stderr, " %d of %d steps kept in %.1f s -> %s\n", st.kept, st.steps, st.seconds, path.c_str());
+          std::fprintf(stderr, " %d of %d steps kept in %.1f s -> %s\n", st.kept, st.steps, st.seconds,
+                       path.c_str());
       }
     } catch (const std::exception& e) {
       std::cerr << "sepax fuzz: could not shrink " << original << ": " << e.what() << "\n";
@@ -248,7 +260,8 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
           c = decode_bytes(reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size());
           if (out_given) {
             std::filesystem::create_directories(out_dir);
-            const auto to = std::filesystem::path(out_dir) / (std::filesystem::path(p).stem().string() + ".case");
+            const auto to =
+                std::filesystem::path(out_dir) / (std::filesystem::path(p).stem().string() + ".case");
             write_case_file(to.string(), c, "decoded from the libFuzzer input " + p);
             if (!quiet) std::cerr << p << ": decoded to " << to.string() << "\n";
           }
@@ -265,18 +278,22 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
       const CaseReport r = check_case_guarded(c, check);
       rep.add(c.family, r);
       if (!quiet) {
-        std::cerr << p << ": " << (r.valid ? (r.unexplained_count ? "UNEXPLAINED" : "ok") : "rejected: " + r.reject_reason)
+        std::cerr << p << ": "
+                  << (r.valid ? (r.unexplained_count ? "UNEXPLAINED" : "ok") : "rejected: " + r.reject_reason)
                   << "\n";
       }
       if (r.unexplained_count) {
-        for (const auto& f : r.unexplained) std::cerr << "  [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
+        for (const auto& f : r.unexplained)
+          std::cerr << "  [" << f.comparison << " " << f.config << " " << f.sat << "] " << f.detail << "\n";
         if (status == 0) status = 1;
         if (shrink_replays) shrink_finding(rep, p, out_dir, c, r);
       }
     }
     rep.seconds = elapsed();
-    if (json) print_json(out, rep);
-    else print_text(out, rep);
+    if (json)
+      print_json(out, rep);
+    else
+      print_text(out, rep);
     return status != 0 ? status : (rep.unexplained() ? 1 : 0);
   }
 
@@ -304,15 +321,18 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
         if (progress && now - last_progress >= 1.0) {
           last_progress = now;
           std::fprintf(stderr, "\r[sepax fuzz] %6.1f s  %8lld cases  %7.1f cases/s  unexplained %lld   ", now,
-                       static_cast<long long>(rep.cases), now > 0 ? static_cast<double>(rep.cases) / now : 0.0,
+                       static_cast<long long>(rep.cases),
+                       now > 0 ? static_cast<double>(rep.cases) / now : 0.0,
                        static_cast<long long>(rep.unexplained()));
           std::fflush(stderr);
         }
       });
   rep.seconds = elapsed();
   if (progress) std::fprintf(stderr, "\n");
-  if (json) print_json(out, rep);
-  else print_text(out, rep);
+  if (json)
+    print_json(out, rep);
+  else
+    print_text(out, rep);
   return rep.unexplained() ? 1 : 0;
 }
 

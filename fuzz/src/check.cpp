@@ -27,12 +27,18 @@ namespace sepax::fuzz {
 
 const char* klass_name(Klass k) {
   switch (k) {
-    case Klass::agree: return "agree";
-    case Klass::exact_zero: return "exact_zero";
-    case Klass::explained: return "explained";
-    case Klass::tie: return "tie";
-    case Klass::unexplained: return "unexplained";
-    case Klass::nonconvex: return "nonconvex";
+    case Klass::agree:
+      return "agree";
+    case Klass::exact_zero:
+      return "exact_zero";
+    case Klass::explained:
+      return "explained";
+    case Klass::tie:
+      return "tie";
+    case Klass::unexplained:
+      return "unexplained";
+    case Klass::nonconvex:
+      return "nonconvex";
   }
   return "?";
 }
@@ -153,7 +159,7 @@ struct Exact {
   std::unique_ptr<PlainKernel<Q>> k;
   SatResult<Q> ref;
   std::vector<FaceQuery<Q>> fqA, fqB;
-  std::vector<ArcSigns> arcs;  // ea * EB + eb
+  std::vector<ArcSigns> arcs;        // ea * EB + eb
   std::vector<double> nlenA, nlenB;  // lower bounds on |N_e| per face
   // Is the exact image exactly convex (every face's vertices exactly on the
   // plane through its plane triple, every vertex on or below every face)?
@@ -186,11 +192,12 @@ static int exact_plane_side(const ConvexPolyhedron<float>& p, int f, int v) {
   const auto& t = p.face(f).plane_vertices;
   if (v == t[0] || v == t[1] || v == t[2]) return 0;
   const Vec3<float>&a = p.vertex(t[0]), &b = p.vertex(t[1]), &c = p.vertex(t[2]), &x = p.vertex(v);
-  const FilteredSign s = orientation_filter(vec_cast<double>(a), vec_cast<double>(b), vec_cast<double>(c),
-                                            vec_cast<double>(x));
+  const FilteredSign s =
+      orientation_filter(vec_cast<double>(a), vec_cast<double>(b), vec_cast<double>(c), vec_cast<double>(x));
   if (s.certain) return s.det > 0 ? 1 : -1;
   const Vec3<Q> qa = vec_cast<Q>(a);
-  return sgn(Q(dot(cross(Vec3<Q>(vec_cast<Q>(b) - qa), Vec3<Q>(vec_cast<Q>(c) - qa)), Vec3<Q>(vec_cast<Q>(x) - qa))));
+  return sgn(Q(
+      dot(cross(Vec3<Q>(vec_cast<Q>(b) - qa), Vec3<Q>(vec_cast<Q>(c) - qa)), Vec3<Q>(vec_cast<Q>(x) - qa))));
 }
 
 bool exactly_convex(const ConvexPolyhedron<float>& p) {
@@ -238,12 +245,16 @@ Separation<Q> exact_edge_projection(const Exact& E, int ea, int eb) {
 // The exact separation of a feature as the given SAT defines it.
 Separation<Q> exact_value(const Exact& E, Sat sat, const Feature& f) {
   switch (f.type) {
-    case FeatureType::FaceA: return E.fqA[static_cast<std::size_t>(f.a)].separation;
-    case FeatureType::FaceB: return E.fqB[static_cast<std::size_t>(f.b)].separation;
+    case FeatureType::FaceA:
+      return E.fqA[static_cast<std::size_t>(f.a)].separation;
+    case FeatureType::FaceB:
+      return E.fqB[static_cast<std::size_t>(f.b)].separation;
     case FeatureType::EdgePair:
       return sat == Sat::brute_force ? exact_edge_projection(E, f.a, f.b) : E.k->edge_separation(f.a, f.b);
-    case FeatureType::SideA: return E.k->side_query_a(f.a).separation;
-    case FeatureType::SideB: return E.k->side_query_b(f.b).separation;
+    case FeatureType::SideA:
+      return E.k->side_query_a(f.a).separation;
+    case FeatureType::SideB:
+      return E.k->side_query_b(f.b).separation;
   }
   return {};
 }
@@ -305,8 +316,10 @@ struct FloatSide {
   // Forward error bound of the separation the given SAT reports for feature f.
   double bound(Sat sat, const Feature& f) const {
     switch (f.type) {
-      case FeatureType::FaceA: return face_bound(A, deltaA, f.a, B);
-      case FeatureType::FaceB: return face_bound(B, deltaB, f.b, A);
+      case FeatureType::FaceA:
+        return face_bound(A, deltaA, f.a, B);
+      case FeatureType::FaceB:
+        return face_bound(B, deltaB, f.b, A);
       case FeatureType::EdgePair: {
         const Vec3<F> da = A.edge_direction(f.a), db = B.edge_direction(f.b);
         const double dn = edge_delta(f.a, f.b);
@@ -324,8 +337,10 @@ struct FloatSide {
         const double u = bounds::u_of<F>();
         return (2 * m + 2 * u * mag * (1 + bounds::gamma(1, u))) * bounds::kSlack;
       }
-      case FeatureType::SideA: return side_bound(A, deltaA, f.a, B);
-      case FeatureType::SideB: return side_bound(B, deltaB, f.b, A);
+      case FeatureType::SideA:
+        return side_bound(A, deltaA, f.a, B);
+      case FeatureType::SideB:
+        return side_bound(B, deltaB, f.b, A);
     }
     return 0;
   }
@@ -373,7 +388,8 @@ struct FloatSide {
     const Vec3<Q>&ta = E.A.vertex(E.A.edge_tail(ea)), &ha = E.A.vertex(E.A.edge_head(ea));
     const Vec3<Q>&tb = E.B.vertex(E.B.edge_tail(eb)), &hb = E.B.vertex(E.B.edge_head(eb));
     if (plus)
-      return near(ta, g.ha, 1, wa) && near(ha, g.ha, 1, wa) && near(tb, g.lb, -1, wb) && near(hb, g.lb, -1, wb);
+      return near(ta, g.ha, 1, wa) && near(ha, g.ha, 1, wa) && near(tb, g.lb, -1, wb) &&
+             near(hb, g.lb, -1, wb);
     return near(ta, g.la, -1, wa) && near(ha, g.la, -1, wa) && near(tb, g.hb, 1, wb) && near(hb, g.hb, 1, wb);
   }
 
@@ -452,8 +468,10 @@ bool arc_prunable(const FloatSide<F>& S, int ea, double sf) {
   const int f0 = E.A.edge_face(ea, 0), f1 = E.A.edge_face(ea, 1);
   const Separation<Q> best{Q(sf), Q(1)};
   for (int x = 0; x < E.B.vertex_count(); ++x) {
-    const bool below0 = !beats(E.k->face_separation_a(f0, x), best, S.bound(Sat::traversal, Feature::face_a(f0, x)));
-    if (below0 && !beats(E.k->face_separation_a(f1, x), best, S.bound(Sat::traversal, Feature::face_a(f1, x))))
+    const bool below0 =
+        !beats(E.k->face_separation_a(f0, x), best, S.bound(Sat::traversal, Feature::face_a(f0, x)));
+    if (below0 &&
+        !beats(E.k->face_separation_a(f1, x), best, S.bound(Sat::traversal, Feature::face_a(f1, x))))
       return true;
   }
   return false;
@@ -487,12 +505,14 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
     const EdgeGaps g = exact_edge_gaps(E, ff.a, ff.b);
     for (const bool plus : {true, false}) {
       const Separation<Q> v = plus ? g.plus() : g.minus();
-      if (within(sf, v, bf) && (exactly_supported(E, g, ff, plus) || S.support_may_accept(ff.a, ff.b, plus, g))) {
+      if (within(sf, v, bf) &&
+          (exactly_supported(E, g, ff, plus) || S.support_may_accept(ff.a, ff.b, plus, g))) {
         own = v;
         break;
       }
     }
-    if (!own) return fail("no orientation of its edge pair is within its support band (9) and its value bound");
+    if (!own)
+      return fail("no orientation of its edge pair is within its support band (9) and its value bound");
   } else {
     own = exact_value(E, sat, ff);
   }
@@ -503,12 +523,15 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
   std::string bad;
   auto measured = [&](const Separation<Q>& v, const Feature& f) {
     if (!bad.empty() || !beats(v, *own, bf + S.bound(sat, f))) return;
-    bad = "it measured " + to_string(f) + " at exact value " + num(sepax::to_double(v)) + ", beyond its choice";
+    bad =
+        "it measured " + to_string(f) + " at exact value " + num(sepax::to_double(v)) + ", beyond its choice";
   };
   for (int f = 0; f < E.A.face_count(); ++f)
-    measured(E.fqA[static_cast<std::size_t>(f)].separation, Feature::face_a(f, E.fqA[static_cast<std::size_t>(f)].support_vertex));
+    measured(E.fqA[static_cast<std::size_t>(f)].separation,
+             Feature::face_a(f, E.fqA[static_cast<std::size_t>(f)].support_vertex));
   for (int f = 0; f < E.B.face_count(); ++f)
-    measured(E.fqB[static_cast<std::size_t>(f)].separation, Feature::face_b(E.fqB[static_cast<std::size_t>(f)].support_vertex, f));
+    measured(E.fqB[static_cast<std::size_t>(f)].separation,
+             Feature::face_b(E.fqB[static_cast<std::size_t>(f)].support_vertex, f));
   if (E.A.is_flat() && E.B.is_flat()) {  // side axes (best_axis.hpp): always measured
     for (int e = 0; e < E.A.edge_count(); ++e) {
       const auto q = E.k->side_query_a(e);
@@ -526,7 +549,8 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
       const bool exact_candidate =
           E.arcs[static_cast<std::size_t>(ea * EB + eb)].minkowski_face() && !E.k->edges_parallel(ea, eb);
       const bool skipped = k.edges_parallel(ea, eb);
-      const bool taken = !skipped && (brute ? k.edge_separation_full(ea, eb).has_value() : k.minkowski_face(ea, eb));
+      const bool taken =
+          !skipped && (brute ? k.edge_separation_full(ea, eb).has_value() : k.minkowski_face(ea, eb));
       if (taken && brute) {
         const EdgeGaps g = exact_edge_gaps(E, ea, eb);  // the lower of the two orientations it may have taken
         measured(sepax::compare(g.plus(), g.minus()) <= 0 ? g.plus() : g.minus(), f);
@@ -537,9 +561,10 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
       } else if (exact_candidate) {
         const Separation<Q> x = exact_value(E, sat, f);
         if (!beats(x, *own, bf + S.bound(sat, f))) continue;  // does not beat it
-        if (skipped && parallel_band<F>(A.edge_direction(ea), B.edge_direction(eb)) == ParallelBand::inside) continue;  // (6)
+        if (skipped && parallel_band<F>(A.edge_direction(ea), B.edge_direction(eb)) == ParallelBand::inside)
+          continue;                        // (6)
         if (!skipped && !brute) continue;  // its arc test: classified per pair (2)
-        if (!skipped) {  // the exact brute force measures only exactly supported pairs
+        if (!skipped) {                    // the exact brute force measures only exactly supported pairs
           const EdgeGaps g = exact_edge_gaps(E, ea, eb);
           if (!exactly_supported(E, g, f, true) && !exactly_supported(E, g, f, false)) continue;
         }
@@ -608,9 +633,9 @@ void check_margins(const FloatSide<F>& S, Sat sat, const SatResult<F>& full, con
       } else if (exact_beyond) {
         // it found no axis beyond the margin, exact arithmetic has one
         k = exact_decisions ? Klass::unexplained
-                            : close(R.separation, Separation<Q>{qm, Q(1)}, S.bound(sat, full.feature) + be)
-                                  ? Klass::explained
-                                  : Klass::unexplained;
+            : close(R.separation, Separation<Q>{qm, Q(1)}, S.bound(sat, full.feature) + be)
+                ? Klass::explained
+                : Klass::unexplained;
         why = "no early exit, but the exact maximum separation is beyond the margin";
       }
     } else {
@@ -642,8 +667,9 @@ void check_margins(const FloatSide<F>& S, Sat sat, const SatResult<F>& full, con
       std::ostringstream s;
       s << why << ": " << cfg << " " << sat_name(sat) << " margin " << num(m) << " early_out=" << r.early_out
         << " overlap=" << r.overlap << " feature " << to_string(r.feature) << " separation "
-        << num(r.separation_as_double()) << "; full result: feature " << to_string(full.feature) << " separation "
-        << num(full.separation_as_double()) << "; exact maximum " << num(sepax::to_double(R.separation));
+        << num(r.separation_as_double()) << "; full result: feature " << to_string(full.feature)
+        << " separation " << num(full.separation_as_double()) << "; exact maximum "
+        << num(sepax::to_double(R.separation));
       return s.str();
     });
   }
@@ -682,24 +708,27 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
           const Q te = dot(Ne, de);
           const Vec3<F> nf = b_normal ? B.plane(face).normal : A.plane(face).normal;
           const Vec3<F> df = b_normal ? A.edge_direction(ea) : B.edge_direction(eb);
-          const double bnd = bounds::arc_bound<F>(nf, df, (b_normal ? S.deltaB : S.deltaA)[static_cast<std::size_t>(face)]);
+          const double bnd =
+              bounds::arc_bound<F>(nf, df, (b_normal ? S.deltaB : S.deltaA)[static_cast<std::size_t>(face)]);
           // adc and bdc are negated dot products (sat_kernel.hpp)
           const Q signed_te = b_normal ? te : Q(-te);
-          const Klass k2 = classify_sign(f4[i], Separation<Q>{signed_te, squared_norm(Ne)}, bnd, exact_decisions);
+          const Klass k2 =
+              classify_sign(f4[i], Separation<Q>{signed_te, squared_norm(Ne)}, bnd, exact_decisions);
           worst = std::max(worst, k2);
           rec.add("arc_sign", cfg, "kernel", k2, [&] {
             std::ostringstream s;
             s << "edge pair (" << ea << "," << eb << ") " << side_name(i) << ": " << cfg << " sign " << f4[i]
-              << " (value " << num((b_normal ? 1.0 : -1.0) * double(dot(nf, df))) << "), exact sign " << e4[i] << " (value "
-              << num(signed_te.get_d() / std::sqrt(squared_norm(Ne).get_d())) << "), forward error bound "
-              << num(bnd);
+              << " (value " << num((b_normal ? 1.0 : -1.0) * double(dot(nf, df))) << "), exact sign " << e4[i]
+              << " (value " << num(signed_te.get_d() / std::sqrt(squared_norm(Ne).get_d()))
+              << "), forward error bound " << num(bnd);
             return s.str();
           });
         }
         if (fs.minkowski_face() == es.minkowski_face()) {
           ++agree_verdicts;
         } else {
-          if (worst == Klass::agree) worst = Klass::unexplained;  // cannot happen: verdict is a function of the signs
+          if (worst == Klass::agree)
+            worst = Klass::unexplained;  // cannot happen: verdict is a function of the signs
           rec.add("minkowski_face", cfg, "kernel", worst, [&] {
             std::ostringstream s;
             s << "edge pair (" << ea << "," << eb << "): " << cfg << " says "
@@ -710,7 +739,8 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
         }
         // the orientation of the Gauss-map edge axis (sat_kernel.hpp
         // edge_separation), for every pair both sides measure
-        if (!fs.minkowski_face() || !es.minkowski_face() || E.k->edges_parallel(ea, eb) || k.edges_parallel(ea, eb))
+        if (!fs.minkowski_face() || !es.minkowski_face() || E.k->edges_parallel(ea, eb) ||
+            k.edges_parallel(ea, eb))
           continue;
         const Feature fpair = Feature::edges(ea, eb);
         const bool flipped = sgn(dot(vec_cast<Q>(k.axis(fpair)), E.k->axis(fpair))) <= 0;
@@ -718,7 +748,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
           ++agree_sides;
           continue;
         }
-        const Klass ks = exact_decisions ? Klass::unexplained
+        const Klass ks = exact_decisions                  ? Klass::unexplained
                          : S.orientation_may_flip(ea, eb) ? Klass::explained
                                                           : Klass::unexplained;
         rec.add("axis_side", cfg, "kernel", ks, [&] {
@@ -766,8 +796,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     if (!(ff == fe)) {
       if (exact_decisions) {
         kf = Klass::unexplained;
-      } else if (same_axis(ff, fe) &&
-                 (ff.type == FeatureType::SideA || ff.type == FeatureType::SideB)) {
+      } else if (same_axis(ff, fe) && (ff.type == FeatureType::SideA || ff.type == FeatureType::SideB)) {
         // same side axis, different support vertex: their exact heights
         const bool on_a = ff.type == FeatureType::SideA;
         const int e = on_a ? ff.a : ff.b;
@@ -779,8 +808,10 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
       } else if (same_axis(ff, fe)) {
         // same face, different support vertex: compare the two vertices' exact heights
         const bool on_a = ff.type == FeatureType::FaceA;
-        const Separation<Q> h1 = on_a ? E.k->face_separation_a(ff.a, ff.b) : E.k->face_separation_b(ff.b, ff.a);
-        const Separation<Q> h2 = on_a ? E.k->face_separation_a(fe.a, fe.b) : E.k->face_separation_b(fe.b, fe.a);
+        const Separation<Q> h1 =
+            on_a ? E.k->face_separation_a(ff.a, ff.b) : E.k->face_separation_b(ff.b, ff.a);
+        const Separation<Q> h2 =
+            on_a ? E.k->face_separation_a(fe.a, fe.b) : E.k->face_separation_b(fe.b, fe.a);
         kf = close(h1, h2, 2 * bf) ? Klass::tie : Klass::unexplained;
       } else {
         kf = close(xf, se, bf + be) ? Klass::tie : Klass::unexplained;
@@ -796,11 +827,12 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     bool winner_unmeasured = false;
     if (!exact_decisions && !(ff == fe) && fe.type == FeatureType::EdgePair) {
       const kernel_t<Policy, F> k(A, B);
-      winner_unmeasured = k.edges_parallel(fe.a, fe.b) || (sat != Sat::brute_force && orientation_flipped(k, E, fe));
+      winner_unmeasured =
+          k.edges_parallel(fe.a, fe.b) || (sat != Sat::brute_force && orientation_flipped(k, E, fe));
     }
     std::optional<DecisionCheck> dc;
-    if (!exact_decisions &&
-        (winner_unmeasured || ko == Klass::unexplained || kf == Klass::unexplained || ks == Klass::unexplained)) {
+    if (!exact_decisions && (winner_unmeasured || ko == Klass::unexplained || kf == Klass::unexplained ||
+                             ks == Klass::unexplained)) {
       dc = decision_check<F, Policy>(S, sat, r, bf);
       const Klass by_decisions = dc->ok ? Klass::explained : Klass::unexplained;
       for (Klass* k : {&ko, &kf, &ks})
@@ -831,7 +863,8 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
                       std::optional<SatResult<T>>* gauss_out = nullptr) {
   const auto A = ConvexPolyhedron<T>::convert_from(Af);
   const auto B = ConvexPolyhedron<T>::convert_from(Bf);
-  const double cost = static_cast<double>(A.edge_count()) * B.edge_count() * (A.vertex_count() + B.vertex_count());
+  const double cost =
+      static_cast<double>(A.edge_count()) * B.edge_count() * (A.vertex_count() + B.vertex_count());
   for (Sat sat : all_sats()) {
     if (skip_reference && sat == Sat::gauss_map) continue;  // it is the reference itself
     if ((sat == Sat::brute_force && cost > static_cast<double>(opt.exact_brute_budget)) ||
@@ -888,7 +921,8 @@ std::vector<ArcSigns> exact_arc_signs(const ConvexPolyhedron<float>& A, const Co
   auto to_z = [&](const ConvexPolyhedron<float>& p) {
     std::vector<VZ> out;
     for (const auto& v : p.vertices())
-      out.push_back({Z(std::ldexp(double(v[0]), S)), Z(std::ldexp(double(v[1]), S)), Z(std::ldexp(double(v[2]), S))});
+      out.push_back(
+          {Z(std::ldexp(double(v[0]), S)), Z(std::ldexp(double(v[1]), S)), Z(std::ldexp(double(v[2]), S))});
     return out;
   };
   auto sub = [](const VZ& a, const VZ& b) { return VZ{Z(a[0] - b[0]), Z(a[1] - b[1]), Z(a[2] - b[2])}; };
@@ -907,7 +941,8 @@ std::vector<ArcSigns> exact_arc_signs(const ConvexPolyhedron<float>& A, const Co
   auto dirs = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
     std::vector<VZ> out;
     for (int e = 0; e < p.edge_count(); ++e)
-      out.push_back(sub(v[static_cast<std::size_t>(p.edge_head(e))], v[static_cast<std::size_t>(p.edge_tail(e))]));
+      out.push_back(
+          sub(v[static_cast<std::size_t>(p.edge_head(e))], v[static_cast<std::size_t>(p.edge_tail(e))]));
     return out;
   };
   const auto va = to_z(A), vb = to_z(B);

@@ -181,7 +181,8 @@ double poly_dist(const V& x, const std::vector<V>& poly) {
   if (poly.empty()) return kInf;
   if (poly.size() == 1) return (x - poly[0]).norm();
   double d = kInf;
-  for (std::size_t i = 0; i < poly.size(); ++i) d = std::min(d, seg_dist(x, poly[i], poly[(i + 1) % poly.size()]));
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    d = std::min(d, seg_dist(x, poly[i], poly[(i + 1) % poly.size()]));
   return d;
 }
 
@@ -194,14 +195,14 @@ struct Replay {
   std::vector<double> ep;           // float: position bound of each vertex (M4)
   std::vector<V> planes_n;          // float: unit side-plane normals and offsets (double), for distances
   std::vector<double> planes_o;
-  double rho = 0;                   // float: largest height bound of a decision, as a distance
-  bool exact_zero = false;          // a vertex exactly on a side plane (exact T)
-  bool infinite = false;            // some bound was infinite (ill-conditioned cut)
+  double rho = 0;           // float: largest height bound of a decision, as a distance
+  bool exact_zero = false;  // a vertex exactly on a side plane (exact T)
+  bool infinite = false;    // some bound was infinite (ill-conditioned cut)
 };
 
 template <class T>
-Replay<T> replay_clip(const ConvexPolyhedron<T>& R, const ConvexPolyhedron<T>& I, int ref_face, int inc, double dn,
-                      const T& weld2) {
+Replay<T> replay_clip(const ConvexPolyhedron<T>& R, const ConvexPolyhedron<T>& I, int ref_face, int inc,
+                      double dn, const T& weld2) {
   constexpr bool fl = !number_traits<T>::is_exact;
   const double u = fl ? number_traits<T>::unit_roundoff : 0.0;
   const double g1 = gamma(1, u), g2 = gamma(2, u), g3 = gamma(3, u);
@@ -296,7 +297,8 @@ Replay<T> replay_clip(const ConvexPolyhedron<T>& R, const ConvexPolyhedron<T>& I
         ++w;
       }
     }
-    if (w != tmp.size()) throw std::logic_error("manifold replay: clip_polygon output size differs from the replay");
+    if (w != tmp.size())
+      throw std::logic_error("manifold replay: clip_polygon output size differs from the replay");
     if constexpr (fl) {
       // weld_polygon keeps the first vertex of each run of near-duplicates
       // (with its bound); replay it to know which bounds survive.
@@ -373,7 +375,8 @@ struct FloatCheck {
     double ep, es, ex;  // position bound of the incident point, depth bound, position bound of `position`
   };
 
-  FloatCheck(const ConvexPolyhedron<F>& a, const ConvexPolyhedron<F>& b, const ExactSide& e, std::string c, Recorder& r)
+  FloatCheck(const ConvexPolyhedron<F>& a, const ConvexPolyhedron<F>& b, const ExactSide& e, std::string c,
+             Recorder& r)
       : A(a), B(b), E(e), cfg(std::move(c)), rec(r) {}
 
   double delta_n(const ConvexPolyhedron<F>& p, const std::vector<double>& nlen, int f) const {
@@ -385,7 +388,8 @@ struct FloatCheck {
   // The SAT separation bound (error_bounds.hpp (3) / (4)), as check.cpp's
   // FloatSide::bound for the Gauss map.
   double sat_bound(const Feature& f) const {
-    auto face = [&](const ConvexPolyhedron<F>& p, const std::vector<double>& nlen, int fi, const ConvexPolyhedron<F>& q) {
+    auto face = [&](const ConvexPolyhedron<F>& p, const std::vector<double>& nlen, int fi,
+                    const ConvexPolyhedron<F>& q) {
       const double dnf = delta_n(p, nlen, fi);
       double m = 0;
       for (const auto& v : q.vertices())
@@ -393,8 +397,10 @@ struct FloatCheck {
       return m;
     };
     switch (f.type) {
-      case FeatureType::FaceA: return face(A, E.nlenA, f.a, B);
-      case FeatureType::FaceB: return face(B, E.nlenB, f.b, A);
+      case FeatureType::FaceA:
+        return face(A, E.nlenA, f.a, B);
+      case FeatureType::FaceB:
+        return face(B, E.nlenB, f.b, A);
       case FeatureType::EdgePair: {
         const Vec3<F> da = A.edge_direction(f.a), db = B.edge_direction(f.b);
         const Vec3<Q> ne = cross(E.A.edge_direction(f.a), E.B.edge_direction(f.b));
@@ -405,7 +411,8 @@ struct FloatCheck {
         const Vec3<F> w(B.vertex(B.edge_tail(f.b)) - A.vertex(A.edge_tail(f.a)));
         return bounds::edge_bound<F>(n, w, dnf);
       }
-      default: break;  // feature types without a bound here: no value is compared
+      default:
+        break;  // feature types without a bound here: no value is compared
     }
     return kInf;
   }
@@ -421,7 +428,7 @@ struct FloatCheck {
       const double b = sat_bound(r.feature);
       why << "one manifold is empty: " << cfg << " " << mf.size() << " points, exact " << me.size()
           << " (exact separation " << num(to_double(E.sat.separation)) << ", bound " << num(b) << ")";
-      Klass k = sign(E.sat.separation) == 0 ? Klass::exact_zero
+      Klass k = sign(E.sat.separation) == 0        ? Klass::exact_zero
                 : within(0.0, E.sat.separation, b) ? Klass::explained
                                                    : Klass::unexplained;
       rec.aspect("points", k);
@@ -478,8 +485,8 @@ struct FloatCheck {
     const bool depth_ok = within(sf, ce.separation, bs);
     rec.aspect("depth", depth_ok ? Klass::agree : Klass::unexplained);
     if (!depth_ok) {
-      why << "edge contact depth " << num(-sf) << " vs exact " << num(-to_double(ce.separation)) << " bound " << num(bs)
-          << "; ";
+      why << "edge contact depth " << num(-sf) << " vs exact " << num(-to_double(ce.separation)) << " bound "
+          << num(bs) << "; ";
       k = Klass::unexplained;
     }
     // position
@@ -501,11 +508,13 @@ struct FloatCheck {
     // we only need magnitudes <= 1 (clamped), so use 1 as their bound
     const double smax = 1.0, tmax = 1.0;
     const double bs_ = std::abs(double(b)) * smax;
-    const double dt = (g6 * X * Y * smax + X * Y * ds + g6 * Y * Rn + 2 * g1 * (bs_ + bs_ + std::abs(double(f)))) /
-                          (Y * Y * (1 - g6)) +
-                      (g6 + g1) * tmax;
-    const double ds2 = (g6 * X * (Rn + Y) + g1 * (std::abs(double(b)) + std::abs(double(cc)))) / (X * X * (1 - g6)) +
-                       g1 * smax;
+    const double dt =
+        (g6 * X * Y * smax + X * Y * ds + g6 * Y * Rn + 2 * g1 * (bs_ + bs_ + std::abs(double(f)))) /
+            (Y * Y * (1 - g6)) +
+        (g6 + g1) * tmax;
+    const double ds2 =
+        (g6 * X * (Rn + Y) + g1 * (std::abs(double(b)) + std::abs(double(cc)))) / (X * X * (1 - g6)) +
+        g1 * smax;
     const double Ds = ds + ds2 + (Y / X) * dt, Dt = dt;
     const double epa = (X * Ds + g1 * smax * X + g2 * (smax * X + nrm(vd(c.point_a)))) * kSlack;
     const double epb = (Y * Dt + g1 * tmax * Y + g2 * (tmax * Y + nrm(vd(c.point_b)))) * kSlack;
@@ -554,8 +563,8 @@ struct FloatCheck {
       const int gf = mf.incident_face, ge = me.incident_face;
       const bool t = close(score_e(gf), score_e(ge), bound(gf) + bound(ge));
       why << "incident face " << gf << " vs exact " << ge << " (exact anti-parallelism "
-          << num(to_double(score_e(gf))) << " vs " << num(to_double(score_e(ge))) << ", bounds " << num(bound(gf))
-          << " + " << num(bound(ge)) << ")";
+          << num(to_double(score_e(gf))) << " vs " << num(to_double(score_e(ge))) << ", bounds "
+          << num(bound(gf)) << " + " << num(bound(ge)) << ")";
       const Klass k = t ? Klass::tie : Klass::unexplained;
       rec.aspect("incident_face", k);
       return k;
@@ -570,7 +579,8 @@ struct FloatCheck {
     const Replay<Q> rpe = replay_clip(Re, Ie, rf, inc, 0.0, Q(0));
     // A cut of a segment lying within its bound of a side plane has no finite
     // bound (M4): counted, so that vacuous comparisons are visible.
-    if (rpf.infinite || !std::isfinite(rpf.rho)) rec.rep.details["manifold.ill_conditioned"].add(Klass::agree);
+    if (rpf.infinite || !std::isfinite(rpf.rho))
+      rec.rep.details["manifold.ill_conditioned"].add(Klass::agree);
     // -- the kept points with their bounds (M5), (M6) --
     const Vec3<F>& n = R.plane(rf).normal;
     const V nd = vd(n), p0 = vd(R.plane_points(rf)[0]);
@@ -618,8 +628,8 @@ struct FloatCheck {
       }
     }
     if (!same_replay) {
-      why << "internal: the clip replay does not reproduce contact_manifold (" << mf.size() << " points, replay "
-          << kept.size() << ")";
+      why << "internal: the clip replay does not reproduce contact_manifold (" << mf.size()
+          << " points, replay " << kept.size() << ")";
       rec.aspect("points", Klass::unexplained);
       return Klass::unexplained;
     }
@@ -628,7 +638,8 @@ struct FloatCheck {
     std::vector<bool> used(static_cast<std::size_t>(me.size()), false);
     for (int i = 0; i < mf.size(); ++i)
       for (int j = 0; j < me.size(); ++j)
-        if (!used[static_cast<std::size_t>(j)] && mf.points[static_cast<std::size_t>(i)].id == me.points[static_cast<std::size_t>(j)].id) {
+        if (!used[static_cast<std::size_t>(j)] &&
+            mf.points[static_cast<std::size_t>(i)].id == me.points[static_cast<std::size_t>(j)].id) {
           match[static_cast<std::size_t>(i)] = j;
           used[static_cast<std::size_t>(j)] = true;
           break;
@@ -654,8 +665,8 @@ struct FloatCheck {
       if (std::isfinite(kb.es)) {
         rec.ratio("depth", std::abs(sf - to_double(ce.separation)) / kb.es);
         if (!within(sf, ce.separation, kb.es)) {
-          why << "point " << to_string(c.id) << " depth " << num(-sf) << " vs exact " << num(-to_double(ce.separation))
-              << " beyond bound " << num(kb.es) << "; ";
+          why << "point " << to_string(c.id) << " depth " << num(-sf) << " vs exact "
+              << num(-to_double(ce.separation)) << " beyond bound " << num(kb.es) << "; ";
           kvals = Klass::unexplained;
         }
       }
@@ -663,8 +674,8 @@ struct FloatCheck {
         const Q d2 = squared_norm(Vec3<Q>(vq(c.position) - ce.position));
         rec.ratio("position", std::sqrt(d2.get_d()) / kb.ex);
         if (d2 > Q(kb.ex) * Q(kb.ex)) {
-          why << "point " << to_string(c.id) << " position error " << num(std::sqrt(d2.get_d())) << " beyond bound "
-              << num(kb.ex) << "; ";
+          why << "point " << to_string(c.id) << " position error " << num(std::sqrt(d2.get_d()))
+              << " beyond bound " << num(kb.ex) << "; ";
           kvals = Klass::unexplained;
         }
       }
@@ -728,8 +739,9 @@ struct FloatCheck {
       auto exact_zero_at = [&](const Vec3<Q>& x, const ContactFeatureId& idr) {
         if (sgn(Q(dot(Re.plane(rf).normal, x) - Re.plane(rf).offset)) == 0) return true;
         for (const auto& sq : sides) {
-          const bool own = (idr.a.kind == ShapeFeatureKind::Edge && idr.a.index == sq.edge) ||
-                           (idr.a.kind == ShapeFeatureKind::Vertex && (idr.a.index == sq.tail || idr.a.index == sq.head));
+          const bool own =
+              (idr.a.kind == ShapeFeatureKind::Edge && idr.a.index == sq.edge) ||
+              (idr.a.kind == ShapeFeatureKind::Vertex && (idr.a.index == sq.tail || idr.a.index == sq.head));
           if (!own && sgn(Q(dot(sq.c, x) - sq.off)) == 0) return true;
         }
         return false;
@@ -757,11 +769,14 @@ struct FloatCheck {
     rec.aspect("points", kpts);
     if (mf.support_fallback) rec.aspect("support_fallback", kpts);
     if (me.support_fallback) rec.aspect("support_fallback_exact", kpts);
-    if (fallback_differs) why << "support-vertex safety net: " << cfg << " " << mf.support_fallback << ", exact " << me.support_fallback << "; ";
+    if (fallback_differs)
+      why << "support-vertex safety net: " << cfg << " " << mf.support_fallback << ", exact "
+          << me.support_fallback << "; ";
     // -- the reduction --
     Klass kred = Klass::agree;
     bool same_red = mr.size() == E.red.size();
-    for (int i = 0; same_red && i < mr.size(); ++i) same_red = mr.points[static_cast<std::size_t>(i)].id == E.red.points[static_cast<std::size_t>(i)].id;
+    for (int i = 0; same_red && i < mr.size(); ++i)
+      same_red = mr.points[static_cast<std::size_t>(i)].id == E.red.points[static_cast<std::size_t>(i)].id;
     if (!same_red) {
       if (!same_ids) {
         kred = kpts;  // different clipped points: the reduction follows
@@ -776,8 +791,8 @@ struct FloatCheck {
 
   // (M8): is the float's reduction within the tolerance and bounds of the
   // exact optimum?  Same clipped points (ids in the same order) assumed.
-  bool reduction_tie(const ContactManifold<F>& mf, const ContactManifold<F>& mr, const std::vector<Kept>& kept,
-                     double dn, double es_max, double ext) {
+  bool reduction_tie(const ContactManifold<F>& mf, const ContactManifold<F>& mr,
+                     const std::vector<Kept>& kept, double dn, double es_max, double ext) {
     const auto& me = E.all;
     auto index_of = [&](const ContactFeatureId& id) {
       for (int i = 0; i < mf.size(); ++i)
@@ -787,7 +802,8 @@ struct FloatCheck {
     std::vector<int> xf, xe;
     for (const auto& p : mr.points) xf.push_back(index_of(p.id));
     for (const auto& p : E.red.points) xe.push_back(index_of(p.id));
-    if (std::find(xf.begin(), xf.end(), -1) != xf.end() || std::find(xe.begin(), xe.end(), -1) != xe.end()) return false;
+    if (std::find(xf.begin(), xf.end(), -1) != xf.end() || std::find(xe.begin(), xe.end(), -1) != xe.end())
+      return false;
     std::vector<Vec3<Q>> pe;
     for (const auto& p : me.points) pe.push_back(p.position);
     const double nlen = std::sqrt(squared_norm(me.normal).get_d());
@@ -796,7 +812,8 @@ struct FloatCheck {
     };
     const V nd = vd(mf.normal);
     auto dT = [&](int a, int b, int c) {
-      const V pa = vd(mf.points[static_cast<std::size_t>(a)].position), pb = vd(mf.points[static_cast<std::size_t>(b)].position),
+      const V pa = vd(mf.points[static_cast<std::size_t>(a)].position),
+              pb = vd(mf.points[static_cast<std::size_t>(b)].position),
               pc = vd(mf.points[static_cast<std::size_t>(c)].position);
       const double ea = kept[static_cast<std::size_t>(a)].ex, eb = kept[static_cast<std::size_t>(b)].ex,
                    ec = kept[static_cast<std::size_t>(c)].ex;
@@ -834,15 +851,15 @@ struct FloatCheck {
     const bool deep_ok = sd - se <= key_tol + 2 * es_max + 0x1p-40 * ext;
     why << "exact area of the float's choice " << num(hf) << " vs the exact optimum "
         << (xf[0] != xe[0] ? "with its deepest point " : "") << num(he) << " (tolerance " << num(area_tol)
-        << ", bounds " << num(dH(xf)) << " + " << num(dH(xo)) << "), deepest " << num(-sd) << " vs " << num(-se)
-        << "; ";
+        << ", bounds " << num(dH(xf)) << " + " << num(dH(xo)) << "), deepest " << num(-sd) << " vs "
+        << num(-se) << "; ";
     return area_ok && deep_ok;
   }
 };
 
 template <class F>
-Klass check_with(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, const ExactSide& E, const std::string& cfg,
-                 Recorder& rec, const SatResult<F>& r) {
+Klass check_with(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, const ExactSide& E,
+                 const std::string& cfg, Recorder& rec, const SatResult<F>& r) {
   if (!(r.feature == E.sat.feature)) {
     rec.rep.details["manifold.skipped_feature_differs"].add(Klass::agree);
     return Klass::agree;
@@ -860,19 +877,22 @@ Klass check_with(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, con
 }
 
 template <class F, class Policy>
-void check_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, const ExactSide& E, const std::string& cfg,
-                  Recorder& rec, const std::optional<SatResult<F>>& given) {
+void check_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, const ExactSide& E,
+                  const std::string& cfg, Recorder& rec, const std::optional<SatResult<F>>& given) {
   check_with<F>(A, B, E, cfg, rec, given ? *given : run_sat<Policy>(Sat::gauss_map, A, B));
 }
 
-ExactSide make_exact(const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq, const SatResult<Q>& exact_sat) {
+ExactSide make_exact(const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq,
+                     const SatResult<Q>& exact_sat) {
   ExactSide E{Aq, Bq, exact_sat, {}, {}, {}, {}};
   ManifoldOptions all_opt;
   all_opt.reduce = false;
   E.all = contact_manifold(Aq, Bq, exact_sat, all_opt);
   E.red = contact_manifold(Aq, Bq, exact_sat);
-  for (int f = 0; f < Aq.face_count(); ++f) E.nlenA.push_back(bounds::sqrt_lower(squared_norm(Aq.plane(f).normal).get_d()));
-  for (int f = 0; f < Bq.face_count(); ++f) E.nlenB.push_back(bounds::sqrt_lower(squared_norm(Bq.plane(f).normal).get_d()));
+  for (int f = 0; f < Aq.face_count(); ++f)
+    E.nlenA.push_back(bounds::sqrt_lower(squared_norm(Aq.plane(f).normal).get_d()));
+  for (int f = 0; f < Bq.face_count(); ++f)
+    E.nlenB.push_back(bounds::sqrt_lower(squared_norm(Bq.plane(f).normal).get_d()));
   return E;
 }
 
@@ -897,8 +917,9 @@ void check_gmpq(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>
       same = p.id == q.id && to_q(p.separation.num) == q.separation.num &&
              to_q(p.separation.norm2) == q.separation.norm2 && vq(p.position) == q.position;
     }
-    if (!same) why << "gmpq manifold (" << (pass ? "reduced" : "all points") << ") " << ids_string(m) << " differs from mpq "
-                   << ids_string(me);
+    if (!same)
+      why << "gmpq manifold (" << (pass ? "reduced" : "all points") << ") " << ids_string(m)
+          << " differs from mpq " << ids_string(me);
   }
   rec.final("gmpq", same ? Klass::agree : Klass::unexplained, [&] { return why.str(); });
 }
@@ -915,8 +936,9 @@ void counts_line(std::ostream& out, const std::string& name, const Counts& c) {
 }  // namespace
 
 void check_manifolds(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
-                     const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq, const SatResult<Q>& exact_sat,
-                     const CaseGaussMaps& given, const CheckOptions& opt, CaseReport& rep) {
+                     const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq,
+                     const SatResult<Q>& exact_sat, const CaseGaussMaps& given, const CheckOptions& opt,
+                     CaseReport& rep) {
   Recorder rec{rep, opt};
   const ExactSide E = make_exact(Aq, Bq, exact_sat);
   if (static_cast<std::int64_t>(Aq.edge_count()) * Bq.edge_count() <= opt.gmpq_pair_budget)
@@ -932,21 +954,23 @@ void check_manifolds(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<f
 }
 
 Klass check_manifold_float(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
-                           const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq, const SatResult<Q>& exact_sat,
-                           const SatResult<float>& float_sat, const CheckOptions& opt, CaseReport& rep) {
+                           const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq,
+                           const SatResult<Q>& exact_sat, const SatResult<float>& float_sat,
+                           const CheckOptions& opt, CaseReport& rep) {
   Recorder rec{rep, opt};
   const ExactSide E = make_exact(Aq, Bq, exact_sat);
   return check_with<float>(Af, Bf, E, "float_given", rec, float_sat);
 }
 
 void print_manifold_text(std::ostream& out, const std::map<std::string, Counts>& comparisons,
-                         const std::map<std::string, Counts>& by_config, const std::map<std::string, Counts>& details,
+                         const std::map<std::string, Counts>& by_config,
+                         const std::map<std::string, Counts>& details,
                          const std::map<std::string, double>& maxima) {
   const auto it = comparisons.find("manifold");
   if (it == comparisons.end()) return;
   char line[200];
-  std::snprintf(line, sizeof line, "\n  %-34s %10s %10s %10s %8s %11s\n", "contact manifold (float vs exact)", "agree",
-                "exact_zero", "explained", "tie", "unexplained");
+  std::snprintf(line, sizeof line, "\n  %-34s %10s %10s %10s %8s %11s\n", "contact manifold (float vs exact)",
+                "agree", "exact_zero", "explained", "tie", "unexplained");
   out << line;
   counts_line(out, "manifold", it->second);
   for (const auto& [k, c] : by_config)

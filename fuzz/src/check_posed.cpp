@@ -36,8 +36,7 @@ struct PoseSpec {
   std::array<double, 3> t{0, 0, 0};
   template <class F>
   RigidTransform<F> get() const {
-    return RigidTransform<F>::from_quaternion(q[0], q[1], q[2], q[3],
-                                              Vec3<F>(F(t[0]), F(t[1]), F(t[2])));
+    return RigidTransform<F>::from_quaternion(q[0], q[1], q[2], q[3], Vec3<F>(F(t[0]), F(t[1]), F(t[2])));
   }
 };
 
@@ -111,29 +110,33 @@ Poses draw_poses(std::uint64_t seed, double extent) {
 }
 
 template <class T>
-std::string describe(const char* what, const std::string& cfg, Sat sat, const SatResult<T>& x, const SatResult<T>& y) {
+std::string describe(const char* what, const std::string& cfg, Sat sat, const SatResult<T>& x,
+                     const SatResult<T>& y) {
   std::ostringstream s;
-  s << what << ": " << cfg << " " << sat_name(sat) << ": overlap=" << x.overlap << " early_out=" << x.early_out
-    << " feature " << to_string(x.feature) << " separation " << num(sepax::to_double(x.separation))
-    << "; against overlap=" << y.overlap << " early_out=" << y.early_out << " feature " << to_string(y.feature)
-    << " separation " << num(sepax::to_double(y.separation));
+  s << what << ": " << cfg << " " << sat_name(sat) << ": overlap=" << x.overlap
+    << " early_out=" << x.early_out << " feature " << to_string(x.feature) << " separation "
+    << num(sepax::to_double(x.separation)) << "; against overlap=" << y.overlap
+    << " early_out=" << y.early_out << " feature " << to_string(y.feature) << " separation "
+    << num(sepax::to_double(y.separation));
   return s.str();
 }
 
 template <class F, class Policy>
-void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, const Poses& P, const std::string& cfg,
-                  bool robust, Recorder& rec) {
+void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, const Poses& P,
+                  const std::string& cfg, bool robust, Recorder& rec) {
   const CheckOptions& opt = rec.opt;
   const PreparedShape<F> pa(A), pb(B);
   const RigidTransform<F> xa = P.a.get<F>(), xb = P.b<F>(0);
   const ConvexPolyhedron<F> Bp = posed(B, relative_pose(xa, xb));
-  const bool exact_ref = static_cast<std::int64_t>(A.edge_count()) * B.edge_count() <= opt.posed_exact_pair_budget;
+  const bool exact_ref =
+      static_cast<std::int64_t>(A.edge_count()) * B.edge_count() <= opt.posed_exact_pair_budget;
   std::optional<ConvexPolyhedron<Q>> Aq, Bq;
   if (robust && exact_ref) {
     Aq = ConvexPolyhedron<Q>::convert_from(A);
     Bq = ConvexPolyhedron<Q>::convert_from(Bp);
   }
-  const double brute_cost = static_cast<double>(A.edge_count()) * B.edge_count() * (A.vertex_count() + B.vertex_count());
+  const double brute_cost =
+      static_cast<double>(A.edge_count()) * B.edge_count() * (A.vertex_count() + B.vertex_count());
   for (Sat sat : all_sats()) {
     const char* sn = sat_name(sat);
     if (sat == Sat::brute_force && brute_cost > static_cast<double>(opt.float_brute_budget)) {
@@ -146,8 +149,9 @@ void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, co
     SatResult<F> local = run_sat<Policy>(sat, A, Bp);
     const Vec3<F> local_axis = local.axis;
     local.axis = xa.rotate(local_axis);
-    rec.add("posed", cfg, sn, same_bits(r, local) ? Klass::agree : Klass::unexplained,
-            [&] { return describe("posed query differs from the query on (A, posed(B, X))", cfg, sat, r, local); });
+    rec.add("posed", cfg, sn, same_bits(r, local) ? Klass::agree : Klass::unexplained, [&] {
+      return describe("posed query differs from the query on (A, posed(B, X))", cfg, sat, r, local);
+    });
     if (sat == Sat::gauss_map) {
       SatResult<F> rl = local;
       rl.axis = local_axis;
@@ -160,17 +164,21 @@ void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, co
       ml.normal = r.axis;
       const ContactManifold<F> m = contact_manifold(pa, xa, pb, xb, r);
       rec.add("posed", cfg, "manifold", same_bits(m, ml) ? Klass::agree : Klass::unexplained, [&] {
-        return cfg + ": the posed contact manifold differs from the manifold of (A, posed(B, X)) mapped to world (" +
+        return cfg +
+               ": the posed contact manifold differs from the manifold of (A, posed(B, X)) mapped to world "
+               "(" +
                std::to_string(m.size()) + " against " + std::to_string(ml.size()) + " points)";
       });
     }
     // robust: exact decisions on the posed input
     if (robust) {
-      if (!exact_ref || (sat == Sat::brute_force && brute_cost > static_cast<double>(opt.exact_brute_budget))) {
+      if (!exact_ref ||
+          (sat == Sat::brute_force && brute_cost > static_cast<double>(opt.exact_brute_budget))) {
         rec.skip("posed_exact", cfg, sn);
       } else {
         const SatResult<Q> e = run_sat<policy::Plain>(sat, *Aq, *Bq);
-        const bool ok = r.overlap == e.overlap && r.feature == e.feature && sign(r.separation) == sign(e.separation);
+        const bool ok =
+            r.overlap == e.overlap && r.feature == e.feature && sign(r.separation) == sign(e.separation);
         rec.add("posed_exact", cfg, sn, ok ? Klass::agree : Klass::unexplained, [&] {
           std::ostringstream s;
           s << cfg << " " << sn << " posed: overlap=" << r.overlap << " feature " << to_string(r.feature)
@@ -236,10 +244,12 @@ void posed_rational(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<fl
   for (Sat sat : {Sat::gauss_map, Sat::traversal}) {
     const SatResult<Q> p = sat::run<policy::Plain>(sat, pa, xa, pb, xb);
     const SatResult<Q> w = run_sat<policy::Plain>(sat, Aw, Bw);
-    const bool ok = p.overlap == w.overlap && p.feature == w.feature && sepax::compare(p.separation, w.separation) == 0 &&
-                    p.axis == w.axis;
-    rec.add("posed_rational", "mpq", sat_name(sat), ok ? Klass::agree : Klass::unexplained,
-            [&] { return describe("posed query at exact rational poses differs from the exactly moved shapes", "mpq", sat, p, w); });
+    const bool ok = p.overlap == w.overlap && p.feature == w.feature &&
+                    sepax::compare(p.separation, w.separation) == 0 && p.axis == w.axis;
+    rec.add("posed_rational", "mpq", sat_name(sat), ok ? Klass::agree : Klass::unexplained, [&] {
+      return describe("posed query at exact rational poses differs from the exactly moved shapes", "mpq", sat,
+                      p, w);
+    });
   }
 }
 

@@ -134,7 +134,7 @@ ShapeSpec sphere_hull(Rng& r, int n) {
 ShapeSpec random_box(Rng& r) {
   const int kind = irange(r, 0, 2);
   double hx = uni(r, 0.2, 1.5), hy = uni(r, 0.2, 1.5), hz = uni(r, 0.2, 1.5);
-  if (kind == 0) hx = hy = hz = 1.0;                       // cube: all ties
+  if (kind == 0) hx = hy = hz = 1.0;  // cube: all ties
   if (kind == 1) hx = irange(r, 1, 4) * 0.25, hy = irange(r, 1, 4) * 0.25, hz = irange(r, 1, 4) * 0.25;
   return spec_from(shapes::box<double>(hx, hy, hz));
 }
@@ -221,10 +221,14 @@ ShapeSpec perturbed(Rng& r, ShapeSpec s) {
 
 ShapeSpec any_solid(Rng& r) {
   switch (irange(r, 0, 3)) {
-    case 0: return random_box(r);
-    case 1: return random_tetra(r);
-    case 2: return random_prism(r);
-    default: return sphere_hull(r, irange(r, 4, 24));
+    case 0:
+      return random_box(r);
+    case 1:
+      return random_tetra(r);
+    case 2:
+      return random_prism(r);
+    default:
+      return sphere_hull(r, irange(r, 4, 24));
   }
 }
 
@@ -321,7 +325,8 @@ FuzzCase touching(Rng& r) {
 // ---- shapes as collision pipelines produce them ----
 // A point of the ellipsoid sum (x_i / rad_i)^2 = 1 along direction d.
 V on_ellipsoid(const V& d, const V& rad) {
-  const double q = (d[0] / rad[0]) * (d[0] / rad[0]) + (d[1] / rad[1]) * (d[1] / rad[1]) + (d[2] / rad[2]) * (d[2] / rad[2]);
+  const double q = (d[0] / rad[0]) * (d[0] / rad[0]) + (d[1] / rad[1]) * (d[1] / rad[1]) +
+                   (d[2] / rad[2]) * (d[2] / rad[2]);
   return d / std::sqrt(q);
 }
 
@@ -546,15 +551,17 @@ ShapeSpec builtin_shape(const std::string& name) {
   } else if (head == "prism" || head == "polygon") {
     const auto p = params(1);
     if (p.size() != 1 || p[0] != std::floor(p[0]) || p[0] < 3 || p[0] > 100000)
-      throw InvalidInput(ErrorCode::Parse, head + " needs " + head + ":N with an integer N >= 3, got '" + name + "'");
+      throw InvalidInput(ErrorCode::Parse,
+                         head + " needs " + head + ":N with an integer N >= 3, got '" + name + "'");
     const int n = static_cast<int>(p[0]);
     s = spec_from(head == "prism" ? shapes::prism<double>(n) : shapes::regular_polygon<double>(n));
   } else if (head == "triangle") {
     s = flat_of({V(0, 0, 0), V(1, 0, 0), V(0, 1, 0)});  // the same triangle as the sepax program's built-in
   } else {
-    throw InvalidInput(ErrorCode::Parse, "unknown shape '" + name +
-                                             "' (built-in shapes: cube, box:HX,HY,HZ, tetra, prism:N, polygon:N, "
-                                             "triangle; or a fuzz case file with --case)");
+    throw InvalidInput(ErrorCode::Parse,
+                       "unknown shape '" + name +
+                           "' (built-in shapes: cube, box:HX,HY,HZ, tetra, prism:N, polygon:N, "
+                           "triangle; or a fuzz case file with --case)");
   }
   round_to_float(s);
   return s;
@@ -608,7 +615,8 @@ ShapeSpec decode_shape(ByteReader& br) {
       for (int i = 0; i < 3; ++i) t.push_back(br.v3(1.0 / 1024));
       return flat_of(t);
     }
-    default: return spec_from(shapes::regular_polygon<double>(3 + br.u8() % 6, 1.0));
+    default:
+      return spec_from(shapes::regular_polygon<double>(3 + br.u8() % 6, 1.0));
   }
 }
 }  // namespace

@@ -116,7 +116,8 @@ Eigen::Matrix3d frame_inverse(const ShapeSpec& s) {
     if (!(area > best_area)) continue;
     V x = V::Zero();
     for (std::size_t i = 0; i < f.size(); ++i) {
-      const V e = s.vertices[static_cast<std::size_t>(f[(i + 1) % f.size()])] - s.vertices[static_cast<std::size_t>(f[i])];
+      const V e = s.vertices[static_cast<std::size_t>(f[(i + 1) % f.size()])] -
+                  s.vertices[static_cast<std::size_t>(f[i])];
       if (e.squaredNorm() > x.squaredNorm()) x = e;
     }
     const V z = n / area;
@@ -275,7 +276,8 @@ class Shrinker {
       if (!t.isZero()) {
         std::ostringstream w;
         w << "translate the scene by -(" << t.transpose() << ")";
-        attempt_moved(true, true, [&](const V& v) { return V(v - t); }, w.str());
+        attempt_moved(
+            true, true, [&](const V& v) { return V(v - t); }, w.str());
       }
     }
     // Whole scene: A's frame to the identity (about A's centre).
@@ -283,8 +285,9 @@ class Shrinker {
       const Eigen::Matrix3d R = frame_inverse(cur_.a);
       if (!R.isIdentity(0)) {
         const V ca = centroid(cur_.a);
-        scene_rotated_ = attempt_moved(true, true, [&](const V& v) { return V(R * (v - ca) + ca); },
-                                       "rotate the scene: A's frame to the identity", true);
+        scene_rotated_ = attempt_moved(
+            true, true, [&](const V& v) { return V(R * (v - ca) + ca); },
+            "rotate the scene: A's frame to the identity", true);
       }
     }
     // B alone: its frame to the identity, or to A's frame (about B's centre).
@@ -292,13 +295,15 @@ class Shrinker {
       const Eigen::Matrix3d RB = frame_inverse(cur_.b);
       const V cb = centroid(cur_.b);
       if (!RB.isIdentity(0))
-        b_rotated_ = attempt_moved(false, true, [&](const V& v) { return V(RB * (v - cb) + cb); },
-                                   "rotate B: its frame to the identity", true);
+        b_rotated_ = attempt_moved(
+            false, true, [&](const V& v) { return V(RB * (v - cb) + cb); },
+            "rotate B: its frame to the identity", true);
       if (!b_rotated_) {
         const Eigen::Matrix3d R = frame_inverse(cur_.a).transpose() * frame_inverse(cur_.b);
         if (!R.isIdentity(0))
-          b_rotated_ = attempt_moved(false, true, [&](const V& v) { return V(R * (v - cb) + cb); },
-                                     "rotate B: its frame to A's frame", true);
+          b_rotated_ = attempt_moved(
+              false, true, [&](const V& v) { return V(R * (v - cb) + cb); },
+              "rotate B: its frame to A's frame", true);
       }
     }
     // B alone: its offset from A rounded to k significant bits.
@@ -314,7 +319,9 @@ class Shrinker {
           if (d.isZero()) break;
           std::ostringstream w;
           w << "round B's offset from A to the grid 2^" << std::ilogb(g);
-          if (attempt_moved(false, true, [&](const V& v) { return V(v + d); }, w.str())) break;
+          if (attempt_moved(
+                  false, true, [&](const V& v) { return V(v + d); }, w.str()))
+            break;
         }
       }
     }
@@ -329,7 +336,9 @@ class Shrinker {
         const double g = std::ldexp(top, -k);
         std::ostringstream w;
         w << "round " << (on_a ? "A" : "B") << "'s coordinates to the grid 2^" << std::ilogb(g);
-        const auto map = [g](const V& v) { return V(round_to_grid(v[0], g), round_to_grid(v[1], g), round_to_grid(v[2], g)); };
+        const auto map = [g](const V& v) {
+          return V(round_to_grid(v[0], g), round_to_grid(v[1], g), round_to_grid(v[2], g));
+        };
         // Skip grids that change nothing (the coordinates are already on them).
         const ShapeSpec& s = on_a ? cur_.a : cur_.b;
         bool changes = false;
@@ -343,7 +352,8 @@ class Shrinker {
 
 }  // namespace
 
-FuzzCase shrink(const FuzzCase& c, const FailurePredicate& fails, const ShrinkOptions& opt, ShrinkStats* stats) {
+FuzzCase shrink(const FuzzCase& c, const FailurePredicate& fails, const ShrinkOptions& opt,
+                ShrinkStats* stats) {
   ShrinkStats local;
   ShrinkStats& st = stats ? *stats : local;
   st = ShrinkStats{};
@@ -371,8 +381,8 @@ bool write_shrunk_reproducer(const std::string& path, const std::string& origin,
     std::filesystem::create_directories(dir);
   std::ostringstream s;
   s << "sepax fuzz reproducer, shrunk: " << mr.unexplained_count << " unexplained disagreement(s)\n";
-  s << "shrunk from " << origin << " preserving [" << sig.str() << "]: A " << c.a.vertices.size()
-    << " -> " << m.a.vertices.size() << " vertices, B " << c.b.vertices.size() << " -> " << m.b.vertices.size()
+  s << "shrunk from " << origin << " preserving [" << sig.str() << "]: A " << c.a.vertices.size() << " -> "
+    << m.a.vertices.size() << " vertices, B " << c.b.vertices.size() << " -> " << m.b.vertices.size()
     << " vertices; " << st.kept << " of " << st.steps << " steps kept in " << st.seconds << " s"
     << (st.out_of_budget ? " (budget spent: may shrink further)" : "") << "\n";
   for (const auto& l : st.log) s << "  step: " << l << "\n";

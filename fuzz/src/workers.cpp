@@ -19,8 +19,8 @@ int worker_count(int jobs) {
   return n > 0 ? static_cast<int>(n) : 1;
 }
 
-CaseOutcome run_case(const std::vector<std::string>& families, std::uint64_t campaign_seed, std::uint64_t index,
-                     const CheckOptions& opt) {
+CaseOutcome run_case(const std::vector<std::string>& families, std::uint64_t campaign_seed,
+                     std::uint64_t index, const CheckOptions& opt) {
   CaseOutcome o;
   o.index = index;
   o.family = families[static_cast<std::size_t>(index % families.size())];
@@ -111,7 +111,8 @@ void run_in_order(int jobs, const std::function<bool(std::uint64_t)>& more,
   {
     std::unique_lock lk(m);
     for (;;) {
-      ready.wait(lk, [&] { return abort || done.count(next_consume) != 0 || (stopped && next_consume >= end); });
+      ready.wait(lk,
+                 [&] { return abort || done.count(next_consume) != 0 || (stopped && next_consume >= end); });
       if (abort || (stopped && next_consume >= end && done.count(next_consume) == 0)) break;
       auto node = done.extract(next_consume);
       lk.unlock();

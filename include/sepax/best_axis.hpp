@@ -83,9 +83,7 @@ class BestAxis {
   ///    and the face's sign is -1: no early out either.  Both runs continue
   ///    with the same best, and the robust kernel's later decisions are the
   ///    exact ones.  The first face (no best yet) is never skipped.
-  bool certainly_below(const K& k, const FaceEstimate<T>& e) const
-    requires HasFaceEstimate<K>
-  {
+  bool certainly_below(const K& k, const FaceEstimate<T>& e) const requires HasFaceEstimate<K> {
     static_assert(kBounded, "a face estimate is compared with the best's error bound");
     return has_ && static_cast<double>(e.separation.num) - static_cast<double>(sep_.num) <
                        -k.compare_width(e.error, err_);
@@ -97,9 +95,7 @@ class BestAxis {
   /// caller then skips it (no edges_parallel, edge_separation, consider or
   /// early-out check: the pair is not parallel and its separation is
   /// negative), which is what exact arithmetic does with it.
-  bool pair_certainly_below(const K& k, int ea, int eb) const
-    requires HasEdgePairBelow<K>
-  {
+  bool pair_certainly_below(const K& k, int ea, int eb) const requires HasEdgePairBelow<K> {
     static_assert(kBounded, "the pair is compared with the best's error bound");
     return has_ && k.edge_pair_below(ea, eb, sep_.num, err_);
   }
@@ -168,17 +164,23 @@ template <SatKernel K>
 bool scan_face_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt) {
   // nullptr (every face certified) unless the kernel has the estimates
   const auto estimate_a = [&] {
-    if constexpr (HasFaceEstimate<K>) return [&](int f) { return k.face_estimate_a(f); };
-    else return nullptr;
+    if constexpr (HasFaceEstimate<K>)
+      return [&](int f) { return k.face_estimate_a(f); };
+    else
+      return nullptr;
   }();
   const auto estimate_b = [&] {
-    if constexpr (HasFaceEstimate<K>) return [&](int f) { return k.face_estimate_b(f); };
-    else return nullptr;
+    if constexpr (HasFaceEstimate<K>)
+      return [&](int f) { return k.face_estimate_b(f); };
+    else
+      return nullptr;
   }();
-  return scan_queries(k, best, stats.face_axes, k.a().face_count(), opt, [&](int f) { return k.face_query_a(f); },
-                      [](int f, int v) { return Feature::face_a(f, v); }, estimate_a) ||
-         scan_queries(k, best, stats.face_axes, k.b().face_count(), opt, [&](int f) { return k.face_query_b(f); },
-                      [](int f, int v) { return Feature::face_b(v, f); }, estimate_b);
+  return scan_queries(
+             k, best, stats.face_axes, k.a().face_count(), opt, [&](int f) { return k.face_query_a(f); },
+             [](int f, int v) { return Feature::face_a(f, v); }, estimate_a) ||
+         scan_queries(
+             k, best, stats.face_axes, k.b().face_count(), opt, [&](int f) { return k.face_query_b(f); },
+             [](int f, int v) { return Feature::face_b(v, f); }, estimate_b);
 }
 
 /// Warm start (SatCache): offer the seed feature, re-evaluated at this pose
@@ -195,9 +197,9 @@ bool seed_best(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt, 
   const auto ev = reevaluate(k, *seed);
   if (!ev) return false;
   const FeatureType ty = ev->first.type;
-  ++(ty == FeatureType::EdgePair ? stats.edge_pairs
-                                 : ty == FeatureType::FaceA || ty == FeatureType::FaceB ? stats.face_axes
-                                                                                        : stats.side_axes);
+  ++(ty == FeatureType::EdgePair                            ? stats.edge_pairs
+     : ty == FeatureType::FaceA || ty == FeatureType::FaceB ? stats.face_axes
+                                                            : stats.side_axes);
   best.consider(k, ev->second, ev->first);
   return stops_early(k, ev->second, ev->first, opt);
 }
@@ -218,10 +220,12 @@ bool seed_best(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt, 
 template <SatKernel K>
 bool scan_side_axes(K& k, BestAxis<K>& best, SatStats& stats, const SatOptions& opt) {
   if (!k.a().is_flat() || !k.b().is_flat()) return false;
-  return scan_queries(k, best, stats.side_axes, k.a().edge_count(), opt, [&](int e) { return k.side_query_a(e); },
-                      [](int e, int v) { return Feature::side_a(e, v); }) ||
-         scan_queries(k, best, stats.side_axes, k.b().edge_count(), opt, [&](int e) { return k.side_query_b(e); },
-                      [](int e, int v) { return Feature::side_b(v, e); });
+  return scan_queries(
+             k, best, stats.side_axes, k.a().edge_count(), opt, [&](int e) { return k.side_query_a(e); },
+             [](int e, int v) { return Feature::side_a(e, v); }) ||
+         scan_queries(
+             k, best, stats.side_axes, k.b().edge_count(), opt, [&](int e) { return k.side_query_b(e); },
+             [](int e, int v) { return Feature::side_b(v, e); });
 }
 
 }  // namespace sepax::sat::detail

@@ -80,9 +80,9 @@ void clip_with(const Poly& in, const ClipPlane<T>& plane, int incident_face, Pol
     // da and db have strictly opposite signs (one may be <= 0, the other > 0).
     const T t = da / T(da - db);
     ClipVertex<T> c;
-    c.point = Vec3<T>(a.point[0] + t * T(b.point[0] - a.point[0]),
-                      a.point[1] + t * T(b.point[1] - a.point[1]),
-                      a.point[2] + t * T(b.point[2] - a.point[2]));
+    c.point =
+        Vec3<T>(a.point[0] + t * T(b.point[0] - a.point[0]), a.point[1] + t * T(b.point[1] - a.point[1]),
+                a.point[2] + t * T(b.point[2] - a.point[2]));
     if (a.next_on_side) {
       const int corner = shared_corner(a.side_tail, a.side_head, plane.tail, plane.head);
       c.id.a = corner >= 0 ? ShapeFeature::vertex(corner) : ShapeFeature::edge(plane.edge);

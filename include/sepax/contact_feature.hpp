@@ -63,10 +63,14 @@ struct ContactFeatureId {
 
 inline const char* kind_name(ShapeFeatureKind k) {
   switch (k) {
-    case ShapeFeatureKind::None: return "none";
-    case ShapeFeatureKind::Vertex: return "vertex";
-    case ShapeFeatureKind::Edge: return "edge";
-    case ShapeFeatureKind::Face: return "face";
+    case ShapeFeatureKind::None:
+      return "none";
+    case ShapeFeatureKind::Vertex:
+      return "vertex";
+    case ShapeFeatureKind::Edge:
+      return "edge";
+    case ShapeFeatureKind::Face:
+      return "face";
   }
   return "?";
 }

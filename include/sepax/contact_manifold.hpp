@@ -75,10 +75,14 @@ enum class ContactKind : std::uint8_t { None = 0, Face = 1, Edge = 2, Side = 3 }
 
 inline const char* to_string(ContactKind k) {
   switch (k) {
-    case ContactKind::None: return "none";
-    case ContactKind::Face: return "face";
-    case ContactKind::Edge: return "edge";
-    case ContactKind::Side: return "side";
+    case ContactKind::None:
+      return "none";
+    case ContactKind::Face:
+      return "face";
+    case ContactKind::Edge:
+      return "edge";
+    case ContactKind::Side:
+      return "side";
   }
   return "?";
 }
@@ -182,12 +186,14 @@ bool within_margin(const Separation<T>& s, const T& margin) {
 }
 
 [[noreturn]] inline void bad_feature(const std::string& what) {
-  throw InvalidInput(ErrorCode::BadIndex, "contact_manifold: the SAT result does not fit the shapes: " + what);
+  throw InvalidInput(ErrorCode::BadIndex,
+                     "contact_manifold: the SAT result does not fit the shapes: " + what);
 }
 
 inline void check_index(int i, int count, const char* what) {
   if (i < 0 || i >= count) {
-    bad_feature(std::string(what) + " " + std::to_string(i) + " out of range [0, " + std::to_string(count) + ")");
+    bad_feature(std::string(what) + " " + std::to_string(i) + " out of range [0, " + std::to_string(count) +
+                ")");
   }
 }
 
@@ -307,7 +313,8 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
       cp.head = head;
       if (welded && !clip_polygon_if_cut(poly, cp, inc, tmp)) {
         if (opt.record_steps) {
-          m.clip_steps.push_back(ClipStep{cp.edge, static_cast<int>(poly.size()), static_cast<int>(poly.size())});
+          m.clip_steps.push_back(
+              ClipStep{cp.edge, static_cast<int>(poly.size()), static_cast<int>(poly.size())});
         }
         continue;
       }
@@ -317,7 +324,8 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
         welded = true;
       }
       if (opt.record_steps) {
-        m.clip_steps.push_back(ClipStep{cp.edge, static_cast<int>(poly.size()), static_cast<int>(tmp.size())});
+        m.clip_steps.push_back(
+            ClipStep{cp.edge, static_cast<int>(poly.size()), static_cast<int>(tmp.size())});
       }
       std::swap(pp, tp);
     }
@@ -494,7 +502,8 @@ void side_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   SmallVector<End, 2> ends;
   auto at = [&](const T& g) {  // the point of p -> q where d.(x - t) == g
     const T lambda = T(g - gp) / T(gq - gp);
-    return Vec3<T>(p[0] + lambda * (q[0] - p[0]), p[1] + lambda * (q[1] - p[1]), p[2] + lambda * (q[2] - p[2]));
+    return Vec3<T>(p[0] + lambda * (q[0] - p[0]), p[1] + lambda * (q[1] - p[1]),
+                   p[2] + lambda * (q[2] - p[2]));
   };
   auto clip_end = [&](const Vec3<T>& x, const T& gx, int vx) {
     if (gx < T(0)) {
@@ -603,8 +612,8 @@ ContactManifold<T> contact_manifold(const ConvexPolyhedron<T>& a, const ConvexPo
 /// Convenience: run `sat_fn(a, b)` (any callable returning SatResult<T>) and
 /// build the manifold from its result.
 template <Number T, class SatFn>
-ContactManifold<T> contact_manifold_with(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, SatFn&& sat_fn,
-                                         const ManifoldOptions& opt = {}) {
+ContactManifold<T> contact_manifold_with(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b,
+                                         SatFn&& sat_fn, const ManifoldOptions& opt = {}) {
   const SatResult<T> r = sat_fn(a, b);
   return contact_manifold(a, b, r, opt);
 }

@@ -266,9 +266,8 @@ inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
   }
   // global convexity and orientation: every vertex against every face
   // plane, or on large shapes the local certificate (local_convexity_witnesses)
-  const bool scan =
-      static_cast<double>(face_count()) * static_cast<double>(vertex_count()) <= scan_pairs ||
-      !vertex_windings_once();
+  const bool scan = static_cast<double>(face_count()) * static_cast<double>(vertex_count()) <= scan_pairs ||
+                    !vertex_windings_once();
   int faces_all_above = 0;
   int first_bad_face = -1, first_bad_vertex = -1;
   double first_bad_height = 0;

@@ -13,26 +13,25 @@
 namespace sepax {
 
 enum class ErrorCode {
-  NonFinite,        // NaN or infinity in a coordinate
-  TooFewPoints,     // fewer than 3 distinct points (or 4 for a solid face list)
-  Collinear,        // all points on one line
-  BadIndex,         // a face refers to a vertex that does not exist
-  DegenerateFace,   // a face with < 3 vertices, a repeated vertex, or zero area
-  NotManifold,      // an edge not shared by exactly two faces, or used twice in one direction
-  BadEuler,         // V - E + F != 2
-  UnusedVertex,     // a vertex on no face
-  NonPlanarFace,    // a face's vertices are not on one plane (within tolerance)
-  NonConvexFace,    // a face polygon that turns the wrong way or has collinear corners
-  NotConvex,        // a vertex above some face plane, or two adjacent faces coplanar
-  InwardFaces,      // faces are oriented inward (clockwise seen from outside)
-  BadScale,         // extent zero, or coordinates too large for the number type
-  Parse,            // a malformed input file
+  NonFinite,       // NaN or infinity in a coordinate
+  TooFewPoints,    // fewer than 3 distinct points (or 4 for a solid face list)
+  Collinear,       // all points on one line
+  BadIndex,        // a face refers to a vertex that does not exist
+  DegenerateFace,  // a face with < 3 vertices, a repeated vertex, or zero area
+  NotManifold,     // an edge not shared by exactly two faces, or used twice in one direction
+  BadEuler,        // V - E + F != 2
+  UnusedVertex,    // a vertex on no face
+  NonPlanarFace,   // a face's vertices are not on one plane (within tolerance)
+  NonConvexFace,   // a face polygon that turns the wrong way or has collinear corners
+  NotConvex,       // a vertex above some face plane, or two adjacent faces coplanar
+  InwardFaces,     // faces are oriented inward (clockwise seen from outside)
+  BadScale,        // extent zero, or coordinates too large for the number type
+  Parse,           // a malformed input file
 };
 
 class InvalidInput : public std::invalid_argument {
  public:
-  InvalidInput(ErrorCode code, const std::string& message)
-      : std::invalid_argument(message), code_(code) {}
+  InvalidInput(ErrorCode code, const std::string& message) : std::invalid_argument(message), code_(code) {}
   ErrorCode code() const noexcept { return code_; }
 
  private:
@@ -60,20 +59,34 @@ inline InvalidInput coordinate_beyond_range(int axis, const char* what, std::siz
 
 inline const char* to_string(ErrorCode c) {
   switch (c) {
-    case ErrorCode::NonFinite: return "non-finite";
-    case ErrorCode::TooFewPoints: return "too-few-points";
-    case ErrorCode::Collinear: return "collinear";
-    case ErrorCode::BadIndex: return "bad-index";
-    case ErrorCode::DegenerateFace: return "degenerate-face";
-    case ErrorCode::NotManifold: return "not-manifold";
-    case ErrorCode::BadEuler: return "bad-euler";
-    case ErrorCode::UnusedVertex: return "unused-vertex";
-    case ErrorCode::NonPlanarFace: return "non-planar-face";
-    case ErrorCode::NonConvexFace: return "non-convex-face";
-    case ErrorCode::NotConvex: return "not-convex";
-    case ErrorCode::InwardFaces: return "inward-faces";
-    case ErrorCode::BadScale: return "bad-scale";
-    case ErrorCode::Parse: return "parse";
+    case ErrorCode::NonFinite:
+      return "non-finite";
+    case ErrorCode::TooFewPoints:
+      return "too-few-points";
+    case ErrorCode::Collinear:
+      return "collinear";
+    case ErrorCode::BadIndex:
+      return "bad-index";
+    case ErrorCode::DegenerateFace:
+      return "degenerate-face";
+    case ErrorCode::NotManifold:
+      return "not-manifold";
+    case ErrorCode::BadEuler:
+      return "bad-euler";
+    case ErrorCode::UnusedVertex:
+      return "unused-vertex";
+    case ErrorCode::NonPlanarFace:
+      return "non-planar-face";
+    case ErrorCode::NonConvexFace:
+      return "non-convex-face";
+    case ErrorCode::NotConvex:
+      return "not-convex";
+    case ErrorCode::InwardFaces:
+      return "inward-faces";
+    case ErrorCode::BadScale:
+      return "bad-scale";
+    case ErrorCode::Parse:
+      return "parse";
   }
   return "unknown";
 }

@@ -36,11 +36,19 @@ struct Feature {
   int a = -1;
   int b = -1;
 
-  static Feature face_a(int face, int support_vertex_b) { return {FeatureType::FaceA, face, support_vertex_b}; }
-  static Feature face_b(int support_vertex_a, int face) { return {FeatureType::FaceB, support_vertex_a, face}; }
+  static Feature face_a(int face, int support_vertex_b) {
+    return {FeatureType::FaceA, face, support_vertex_b};
+  }
+  static Feature face_b(int support_vertex_a, int face) {
+    return {FeatureType::FaceB, support_vertex_a, face};
+  }
   static Feature edges(int edge_a, int edge_b) { return {FeatureType::EdgePair, edge_a, edge_b}; }
-  static Feature side_a(int edge, int support_vertex_b) { return {FeatureType::SideA, edge, support_vertex_b}; }
-  static Feature side_b(int support_vertex_a, int edge) { return {FeatureType::SideB, support_vertex_a, edge}; }
+  static Feature side_a(int edge, int support_vertex_b) {
+    return {FeatureType::SideA, edge, support_vertex_b};
+  }
+  static Feature side_b(int support_vertex_a, int edge) {
+    return {FeatureType::SideB, support_vertex_a, edge};
+  }
 
   /// The index that orders features of one type (the face for face features,
   /// the edge for side features).
@@ -61,11 +69,16 @@ inline bool precedes(const Feature& x, const Feature& y) {
 /// "faceA", "faceB", "edges", "sideA" or "sideB" (the names the JSON output uses).
 inline const char* type_name(FeatureType t) {
   switch (t) {
-    case FeatureType::FaceA: return "faceA";
-    case FeatureType::FaceB: return "faceB";
-    case FeatureType::EdgePair: return "edges";
-    case FeatureType::SideA: return "sideA";
-    case FeatureType::SideB: return "sideB";
+    case FeatureType::FaceA:
+      return "faceA";
+    case FeatureType::FaceB:
+      return "faceB";
+    case FeatureType::EdgePair:
+      return "edges";
+    case FeatureType::SideA:
+      return "sideA";
+    case FeatureType::SideB:
+      return "sideB";
   }
   return "?";
 }

@@ -109,8 +109,7 @@ class GaussMapWalk {
   /// copy of it).
   template <Number T>
   bool fits(const ConvexPolyhedron<T>& p) const {
-    return p.vertex_count() == nv_ && p.edge_count() == ne_ && p.face_count() == nf_ &&
-           p.is_flat() == flat_;
+    return p.vertex_count() == nv_ && p.edge_count() == ne_ && p.face_count() == nf_ && p.is_flat() == flat_;
   }
 
   /// Throws InvalidInput (BadIndex) when the data does not fit p.
@@ -119,10 +118,10 @@ class GaussMapWalk {
     if (!fits(p)) {
       throw InvalidInput(ErrorCode::BadIndex,
                          std::string("traversal: the GaussMapWalk passed for shape ") + which +
-                             " was built for a different polyhedron (V/E/F " + std::to_string(nv_) +
-                             "/" + std::to_string(ne_) + "/" + std::to_string(nf_) + ", shape has " +
-                             std::to_string(p.vertex_count()) + "/" + std::to_string(p.edge_count()) +
-                             "/" + std::to_string(p.face_count()) + ")");
+                             " was built for a different polyhedron (V/E/F " + std::to_string(nv_) + "/" +
+                             std::to_string(ne_) + "/" + std::to_string(nf_) + ", shape has " +
+                             std::to_string(p.vertex_count()) + "/" + std::to_string(p.edge_count()) + "/" +
+                             std::to_string(p.face_count()) + ")");
     }
   }
 

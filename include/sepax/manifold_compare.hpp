@@ -15,14 +15,14 @@ namespace sepax {
 
 struct ManifoldDifference {
   bool same_kind = false;
-  bool same_feature = false;        // the SAT feature
-  bool same_faces = false;          // reference shape, reference and incident face
-  bool same_count = false;          // number of points
-  bool same_ids = false;            // feature ids, point by point (implies same_count)
-  bool same_deepest = false;        // the deepest point's id
-  double deepest_depth_error = 0;   // |depth difference| of the deepest points
-  double max_depth_error = 0;       // over points with the same index (when same_count)
-  double max_position_error = 0;    // Euclidean, over points with the same index (when same_count)
+  bool same_feature = false;       // the SAT feature
+  bool same_faces = false;         // reference shape, reference and incident face
+  bool same_count = false;         // number of points
+  bool same_ids = false;           // feature ids, point by point (implies same_count)
+  bool same_deepest = false;       // the deepest point's id
+  double deepest_depth_error = 0;  // |depth difference| of the deepest points
+  double max_depth_error = 0;      // over points with the same index (when same_count)
+  double max_position_error = 0;   // Euclidean, over points with the same index (when same_count)
 
   /// Everything combinatorial agrees.
   bool identical() const { return same_kind && same_feature && same_faces && same_ids; }
@@ -62,8 +62,8 @@ ManifoldDifference compare_manifolds(const ContactManifold<X>& x, const ContactM
   const int ix = detail::deepest_index(x), iy = detail::deepest_index(y);
   if (ix >= 0 && iy >= 0) {
     d.same_deepest = x.points[static_cast<std::size_t>(ix)].id == y.points[static_cast<std::size_t>(iy)].id;
-    d.deepest_depth_error =
-        std::abs(x.points[static_cast<std::size_t>(ix)].depth() - y.points[static_cast<std::size_t>(iy)].depth());
+    d.deepest_depth_error = std::abs(x.points[static_cast<std::size_t>(ix)].depth() -
+                                     y.points[static_cast<std::size_t>(iy)].depth());
   } else {
     d.same_deepest = ix < 0 && iy < 0;
   }

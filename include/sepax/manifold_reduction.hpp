@@ -116,7 +116,8 @@ bool weakly_convex_sequence(const Points& points, const Seq& q, const Vec3<T>& n
   using detail::orient;
   sigma = 0;
   // q[0] must not coincide with its neighbours (its two rays below).
-  if (!(squared_norm(Vec3<T>(P(1) - P(0))) > T(0)) || !(squared_norm(Vec3<T>(P(n - 1) - P(0))) > T(0))) return false;
+  if (!(squared_norm(Vec3<T>(P(1) - P(0))) > T(0)) || !(squared_norm(Vec3<T>(P(n - 1) - P(0))) > T(0)))
+    return false;
   // Fan from q[0]: the angles of q[1..n-1] around q[0] must be monotone ...
   for (std::size_t t = 1; t + 1 < n; ++t) {
     const int s = sgn_tol(orient(P(0), P(t), P(t + 1), normal));
@@ -157,8 +158,8 @@ inline constexpr std::size_t kReductionInlinePoints = 64;
 inline constexpr std::size_t kReductionInlineGeneral = 16;
 
 template <Number T, class Points, class Keys, class Out>
-void reduce_contact_points_into(const Points& points, const Keys& keys, const Vec3<T>& normal, const T& key_tol,
-                                const T& area_tol, Out& out, bool force_general = false);
+void reduce_contact_points_into(const Points& points, const Keys& keys, const Vec3<T>& normal,
+                                const T& key_tol, const T& area_tol, Out& out, bool force_general = false);
 
 template <Number T>
 std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const std::vector<T>& keys,
@@ -170,8 +171,8 @@ std::vector<int> reduce_contact_points(const std::vector<Vec3<T>>& points, const
 }
 
 template <Number T, class Points, class Keys, class Out>
-void reduce_contact_points_into(const Points& points, const Keys& keys, const Vec3<T>& normal, const T& key_tol,
-                                const T& area_tol, Out& out, bool force_general) {
+void reduce_contact_points_into(const Points& points, const Keys& keys, const Vec3<T>& normal,
+                                const T& key_tol, const T& area_tol, Out& out, bool force_general) {
   const int n = static_cast<int>(points.size());
   out.clear();
   if (n == 0) return;
@@ -262,7 +263,9 @@ void reduce_contact_points_into(const Points& points, const Keys& keys, const Ve
     // order within area_tol of it (the smallest sorted triple).
     SmallVector<T, kReductionInlineGeneral * kReductionInlineGeneral> td(
         static_cast<std::size_t>(n) * static_cast<std::size_t>(n), T(0));
-    auto TD = [&](int a, int b) -> T& { return td[static_cast<std::size_t>(a) * static_cast<std::size_t>(n) + static_cast<std::size_t>(b)]; };
+    auto TD = [&](int a, int b) -> T& {
+      return td[static_cast<std::size_t>(a) * static_cast<std::size_t>(n) + static_cast<std::size_t>(b)];
+    };
     for (int a = 0; a < n; ++a)
       for (int b = a + 1; b < n; ++b)
         if (a != d && b != d) TD(a, b) = abs_of(orient(P(d), P(a), P(b), normal));
@@ -274,7 +277,8 @@ void reduce_contact_points_into(const Points& points, const Keys& keys, const Ve
           if (k == d) continue;
           for (int l = k + 1; l < n; ++l) {
             if (l == d) continue;
-            const T h = T(T(TD(j, k) + TD(j, l) + TD(k, l) + abs_of(orient(P(j), P(k), P(l), normal))) / T(2));
+            const T h =
+                T(T(TD(j, k) + TD(j, l) + TD(k, l) + abs_of(orient(P(j), P(k), P(l), normal))) / T(2));
             if (!find) {
               if (!have4 || h > m4) m4 = h, have4 = true;
             } else if (!(h < floor)) {

@@ -85,7 +85,7 @@ concept Number = std::copyable<T> && requires(const T a, const T b, double d) {
   T(1);
   { a + b } -> std::convertible_to<T>;
   { a - b } -> std::convertible_to<T>;
-  { a * b } -> std::convertible_to<T>;
+  { a* b } -> std::convertible_to<T>;
   { a / b } -> std::convertible_to<T>;
   { -a } -> std::convertible_to<T>;
   { a < b } -> std::convertible_to<bool>;

@@ -29,9 +29,9 @@ struct FilteredSign {
 };
 
 namespace detail {
-inline constexpr double kOrientRel = 9.0 * 0x1p-53;   ///< 9u, derived on orientation_filter
-inline constexpr double kUnderflowUnit = 0x1p-1068;   ///< 64 eta, eta = 2^-1074
-inline constexpr double kOverflowGuard = 0x1p1000;    ///< the permanent above which the filter gives up
+inline constexpr double kOrientRel = 9.0 * 0x1p-53;  ///< 9u, derived on orientation_filter
+inline constexpr double kUnderflowUnit = 0x1p-1068;  ///< 64 eta, eta = 2^-1074
+inline constexpr double kOverflowGuard = 0x1p1000;   ///< the permanent above which the filter gives up
 }  // namespace detail
 
 /// det[A, B, C], A = a1 - a0, B = b1 - b0, C = c1 - c0, with the certainty of
@@ -77,7 +77,8 @@ inline constexpr double kOverflowGuard = 0x1p1000;    ///< the permanent above w
 /// The same constants hold for float inputs, which convert exactly to double.
 inline FilteredSign orientation_filter(double a0x, double a0y, double a0z, double a1x, double a1y, double a1z,
                                        double b0x, double b0y, double b0z, double b1x, double b1y, double b1z,
-                                       double c0x, double c0y, double c0z, double c1x, double c1y, double c1z) {
+                                       double c0x, double c0y, double c0z, double c1x, double c1y,
+                                       double c1z) {
   const double ax = a1x - a0x, ay = a1y - a0y, az = a1z - a0z;
   const double bx = b1x - b0x, by = b1y - b0y, bz = b1z - b0z;
   const double cx = c1x - c0x, cy = c1y - c0y, cz = c1z - c0z;
@@ -106,8 +107,8 @@ inline FilteredSign orientation_filter(double a0x, double a0y, double a0z, doubl
 /// (a, b, c) that (b - a) x (c - a) points to.
 inline FilteredSign orientation_filter(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
                                        const Vec3<double>& p) {
-  return orientation_filter(a[0], a[1], a[2], b[0], b[1], b[2], a[0], a[1], a[2], c[0], c[1], c[2], a[0], a[1], a[2],
-                            p[0], p[1], p[2]);
+  return orientation_filter(a[0], a[1], a[2], b[0], b[1], b[2], a[0], a[1], a[2], c[0], c[1], c[2], a[0],
+                            a[1], a[2], p[0], p[1], p[2]);
 }
 
 }  // namespace sepax

@@ -49,26 +49,10 @@ class PlainKernel {
   /// Optional members (sat_kernel.hpp, HasSupportFilter), float and double:
   /// two vertices below a face are compared by their rounded projections
   /// fl(n.x), with no filter: within it (d = 0, or NaN) they are equal.
-  T support_filter_a() const
-    requires std::is_floating_point_v<T>
-  {
-    return T(0);
-  }
-  T support_filter_b() const
-    requires std::is_floating_point_v<T>
-  {
-    return T(0);
-  }
-  int support_sign_a(int, int, int, T d) const
-    requires std::is_floating_point_v<T>
-  {
-    return sign_of(d);
-  }
-  int support_sign_b(int, int, int, T d) const
-    requires std::is_floating_point_v<T>
-  {
-    return sign_of(d);
-  }
+  T support_filter_a() const requires std::is_floating_point_v<T> { return T(0); }
+  T support_filter_b() const requires std::is_floating_point_v<T> { return T(0); }
+  int support_sign_a(int, int, int, T d) const requires std::is_floating_point_v<T> { return sign_of(d); }
+  int support_sign_b(int, int, int, T d) const requires std::is_floating_point_v<T> { return sign_of(d); }
 
   // The arc test reads the per-edge arrays of ConvexPolyhedron (edge_direction,
   // edge_normal): the same T values as head - tail and the face planes'
@@ -115,8 +99,7 @@ class PlainKernel {
   /// same decision as minkowski_face.  Shapes whose coordinates could overflow
   /// (not lanes_bounded) take the scalar test.  Exact T has no batched form.
   int minkowski_faces(int ea, int lo, int hi, int* out) const
-    requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
-  {
+      requires(std::is_same_v<T, float> || std::is_same_v<T, double>) {
     if (lanes_) {
       return simd::arc_candidates<false>(b_, lo, hi, a_.edge_direction(ea), a_.edge_normal(ea, 0),
                                          a_.edge_normal(ea, 1), T(0), out);
@@ -182,11 +165,16 @@ class PlainKernel {
 
   Vec3<T> axis(const Feature& f) const {
     switch (f.type) {
-      case FeatureType::FaceA: return a_.plane(f.a).normal;
-      case FeatureType::FaceB: return Vec3<T>(-b_.plane(f.b).normal);
-      case FeatureType::EdgePair: return oriented_axis_for_report(f.a, f.b);
-      case FeatureType::SideA: return side_normal(a_, f.a);
-      case FeatureType::SideB: return Vec3<T>(-side_normal(b_, f.b));
+      case FeatureType::FaceA:
+        return a_.plane(f.a).normal;
+      case FeatureType::FaceB:
+        return Vec3<T>(-b_.plane(f.b).normal);
+      case FeatureType::EdgePair:
+        return oriented_axis_for_report(f.a, f.b);
+      case FeatureType::SideA:
+        return side_normal(a_, f.a);
+      case FeatureType::SideB:
+        return Vec3<T>(-side_normal(b_, f.b));
     }
     return Vec3<T>(T(0), T(0), T(0));
   }
@@ -211,7 +199,6 @@ class PlainKernel {
                             kSupportRoundingSlack * u * p.max_abs_coordinate());
     }
   }
-
 
   /// Optional member (sat_kernel.hpp, HasCompareMargin): sign of (s - m).
   /// Exact T: exact (m converted exactly); float/double: s's value against m
@@ -369,7 +356,8 @@ class PlainKernel {
                                      const T& e1, const T& t, bool& at_max, bool& at_min) {
     for (const int v : {p.edge_tail(e), p.edge_head(e)}) {
       for (const int h : p.vertex_half_edges(v)) {
-        rule_out(dot(n, p.vertex(p.half_edge(ConvexPolyhedron<T>::twin(h)).origin)), e0, e1, t, at_max, at_min);
+        rule_out(dot(n, p.vertex(p.half_edge(ConvexPolyhedron<T>::twin(h)).origin)), e0, e1, t, at_max,
+                 at_min);
         if (!at_max && !at_min) return;
       }
     }

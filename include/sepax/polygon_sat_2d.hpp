@@ -151,11 +151,10 @@ class Polygon2 {
           bad = side < -tol;
         }
         if (bad)
-          fail(ErrorCode::NonConvexFace, "not convex: vertex " + std::to_string(j) +
-                                             (number_traits<T>::is_exact ? " is not strictly left of edge "
-                                                                         : " is right of edge ") +
-                                             std::to_string(i) + " (" + std::to_string(i) + "->" +
-                                             std::to_string((i + 1) % n) + ")");
+          fail(ErrorCode::NonConvexFace,
+               "not convex: vertex " + std::to_string(j) +
+                   (number_traits<T>::is_exact ? " is not strictly left of edge " : " is right of edge ") +
+                   std::to_string(i) + " (" + std::to_string(i) + "->" + std::to_string((i + 1) % n) + ")");
       }
     }
   }
@@ -310,10 +309,12 @@ Polygon2<T> project_flat(const ConvexPolyhedron<T>& p, int drop, std::vector<int
 /// Tolerances<T>::coplanar of the extent for float T).
 template <Number T>
 Sat2Result<T> coplanar_sat(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) {
-  if (!a.is_flat() || !b.is_flat()) throw std::invalid_argument("coplanar_sat: both shapes must be flat polygons");
+  if (!a.is_flat() || !b.is_flat())
+    throw std::invalid_argument("coplanar_sat: both shapes must be flat polygons");
   const Plane<T>& pl = a.plane(0);
   T tol(0);
-  if constexpr (!number_traits<T>::is_exact) tol = static_cast<T>(Tolerances<T>::coplanar * std::max(a.extent(), b.extent()));
+  if constexpr (!number_traits<T>::is_exact)
+    tol = static_cast<T>(Tolerances<T>::coplanar * std::max(a.extent(), b.extent()));
   for (const auto& v : b.vertices())
     if (abs_of(T(dot(pl.normal, v) - pl.offset)) > tol)
       throw std::invalid_argument("coplanar_sat: the two polygons are not in one plane");
@@ -325,9 +326,11 @@ Sat2Result<T> coplanar_sat(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<
   const Polygon2<T> pb = project_flat(b, drop, &lb);
   Sat2Result<T> r = polygon_sat(pa, pb);
   const auto edge3 = [](const ConvexPolyhedron<T>& p, const std::vector<int>& l, int i) {
-    const int x = l[static_cast<std::size_t>(i)], y = l[static_cast<std::size_t>((i + 1) % static_cast<int>(l.size()))];
+    const int x = l[static_cast<std::size_t>(i)],
+              y = l[static_cast<std::size_t>((i + 1) % static_cast<int>(l.size()))];
     for (int e = 0; e < p.edge_count(); ++e)
-      if ((p.edge_tail(e) == x && p.edge_head(e) == y) || (p.edge_tail(e) == y && p.edge_head(e) == x)) return e;
+      if ((p.edge_tail(e) == x && p.edge_head(e) == y) || (p.edge_tail(e) == y && p.edge_head(e) == x))
+        return e;
     return -1;
   };
   if (r.feature.type == FeatureType::FaceA) {

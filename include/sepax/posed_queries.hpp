@@ -66,7 +66,8 @@ bool feature_parts(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, c
   nfaces = 0;
   edge = -1;
   switch (f.type) {
-    case FeatureType::FaceA: return f.a >= 0 && f.a < a.face_count();  // B's vertices only
+    case FeatureType::FaceA:
+      return f.a >= 0 && f.a < a.face_count();  // B's vertices only
     case FeatureType::FaceB:
       if (!(f.b >= 0 && f.b < b.face_count())) return false;
       faces[0] = f.b;
@@ -78,7 +79,8 @@ bool feature_parts(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, c
       nfaces = 2;
       edge = f.b;
       return true;
-    case FeatureType::SideA: return f.a >= 0 && f.a < a.edge_count() && a.is_flat() && b.is_flat();
+    case FeatureType::SideA:
+      return f.a >= 0 && f.a < a.edge_count() && a.is_flat() && b.is_flat();
     case FeatureType::SideB:
       if (!(f.b >= 0 && f.b < b.edge_count() && a.is_flat() && b.is_flat())) return false;
       faces = {b.edge_face(f.b, 0), b.edge_face(f.b, 1)};
@@ -98,8 +100,8 @@ bool feature_parts(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, c
 /// feature does not separate beyond the margin (the query then derives the
 /// rest of B' and runs the SAT).
 template <class Policy, Number T>
-std::optional<SatResult<T>> warm_hit(const PreparedShape<T>& a, const PreparedShape<T>& b, const RigidTransform<T>& x,
-                                     SatCache<T>& cache, const SatOptions& opt) {
+std::optional<SatResult<T>> warm_hit(const PreparedShape<T>& a, const PreparedShape<T>& b,
+                                     const RigidTransform<T>& x, SatCache<T>& cache, const SatOptions& opt) {
   std::array<int, 2> faces{};
   int nfaces = 0, edge = -1;
   if (!feature_parts(a.polyhedron(), b.polyhedron(), cache.feature, faces, nfaces, edge)) return std::nullopt;
@@ -125,7 +127,8 @@ std::optional<SatResult<T>> warm_hit(const PreparedShape<T>& a, const PreparedSh
 /// posed query, or the full pre-posed B' (the tests' reference).
 template <class Policy, Number T, class Part>
 std::optional<SatResult<T>> margin_precheck_with(const PreparedShape<T>& pa, const PreparedShape<T>& pb,
-                                                 const RigidTransform<T>& x, const SatOptions& opt, Part&& part) {
+                                                 const RigidTransform<T>& x, const SatOptions& opt,
+                                                 Part&& part) {
   const ConvexPolyhedron<T>& a = pa.polyhedron();
   const ConvexPolyhedron<T>& bv = part(std::span<const int>());
   const Vec3<T>& ca = a.centroid();
@@ -182,19 +185,22 @@ bool cache_says_near(const SatCache<T>* cache, const SatOptions& opt) {
 template <class Policy, Number T>
 std::optional<SatResult<T>> margin_precheck(const PreparedShape<T>& a, const PreparedShape<T>& b,
                                             const RigidTransform<T>& x, const SatOptions& opt) {
-  return margin_precheck_with<Policy>(a, b, x, opt, [&](std::span<const int> faces) -> const ConvexPolyhedron<T>& {
-    return b.posed_part_scratch(x, faces, std::span<const int>());
-  });
+  return margin_precheck_with<Policy>(a, b, x, opt,
+                                      [&](std::span<const int> faces) -> const ConvexPolyhedron<T>& {
+                                        return b.posed_part_scratch(x, faces, std::span<const int>());
+                                      });
 }
 
 /// The posed query: B moved into A's frame, the kernel built on (A, B'),
 /// run(k) the SAT, the axis mapped to world.  With early_out and a valid
 /// cache, the cached feature is checked first on a partial B' (warm_hit).
 template <class Policy, Number T, class Run>
-SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
-                         const RigidTransform<T>& pose_b, const SatOptions& opt, SatCache<T>* cache, Run&& run) {
+SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pose_a,
+                         const PreparedShape<T>& b, const RigidTransform<T>& pose_b, const SatOptions& opt,
+                         SatCache<T>* cache, Run&& run) {
   check_options(opt);
-  if (a.polyhedron().empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape A is empty (moved from)");
+  if (a.polyhedron().empty())
+    throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape A is empty (moved from)");
   const RigidTransform<T> x = relative_pose(pose_a, pose_b);
   if (cache && opt.early_out && cache->valid) {
     if (auto hit = warm_hit<Policy>(a, b, x, *cache, opt)) {
@@ -223,26 +229,32 @@ SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pos
 /// Posed traversal SAT (see the header comment).
 template <class Policy = policy::Plain, Number T>
 SatResult<T> traversal(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
-                       const RigidTransform<T>& pose_b, const SatOptions& opt = {}, SatCache<T>* cache = nullptr) {
-  return detail::posed_query<Policy>(a, pose_a, b, pose_b, opt, cache, [&](auto& k, const SatOptions& o, const Feature* seed) {
-    return traversal_with(k, a.walk(), b.walk(), o, nullptr, seed);
-  });
+                       const RigidTransform<T>& pose_b, const SatOptions& opt = {},
+                       SatCache<T>* cache = nullptr) {
+  return detail::posed_query<Policy>(a, pose_a, b, pose_b, opt, cache,
+                                     [&](auto& k, const SatOptions& o, const Feature* seed) {
+                                       return traversal_with(k, a.walk(), b.walk(), o, nullptr, seed);
+                                     });
 }
 
 /// Posed Gauss-map SAT (see the header comment).
 template <class Policy = policy::Plain, Number T>
 SatResult<T> gauss_map(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
-                       const RigidTransform<T>& pose_b, const SatOptions& opt = {}, SatCache<T>* cache = nullptr) {
-  return detail::posed_query<Policy>(a, pose_a, b, pose_b, opt, cache,
-                                     [](auto& k, const SatOptions& o, const Feature* seed) { return gauss_map_with(k, o, seed); });
+                       const RigidTransform<T>& pose_b, const SatOptions& opt = {},
+                       SatCache<T>* cache = nullptr) {
+  return detail::posed_query<Policy>(
+      a, pose_a, b, pose_b, opt, cache,
+      [](auto& k, const SatOptions& o, const Feature* seed) { return gauss_map_with(k, o, seed); });
 }
 
 /// Posed brute-force SAT (see the header comment).
 template <class Policy = policy::Plain, Number T>
-SatResult<T> brute_force(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
-                         const RigidTransform<T>& pose_b, const SatOptions& opt = {}, SatCache<T>* cache = nullptr) {
-  return detail::posed_query<Policy>(a, pose_a, b, pose_b, opt, cache,
-                                     [](auto& k, const SatOptions& o, const Feature* seed) { return brute_force_with(k, o, seed); });
+SatResult<T> brute_force(const PreparedShape<T>& a, const RigidTransform<T>& pose_a,
+                         const PreparedShape<T>& b, const RigidTransform<T>& pose_b,
+                         const SatOptions& opt = {}, SatCache<T>* cache = nullptr) {
+  return detail::posed_query<Policy>(
+      a, pose_a, b, pose_b, opt, cache,
+      [](auto& k, const SatOptions& o, const Feature* seed) { return brute_force_with(k, o, seed); });
 }
 
 /// All three behind one entry point (sat.hpp's run), posed.
@@ -251,9 +263,12 @@ SatResult<T> run(SatAlgorithm algorithm, const PreparedShape<T>& a, const RigidT
                  const PreparedShape<T>& b, const RigidTransform<T>& pose_b, const SatOptions& opt = {},
                  SatCache<T>* cache = nullptr) {
   switch (algorithm) {
-    case SatAlgorithm::brute_force: return brute_force<Policy>(a, pose_a, b, pose_b, opt, cache);
-    case SatAlgorithm::traversal: return traversal<Policy>(a, pose_a, b, pose_b, opt, cache);
-    case SatAlgorithm::gauss_map: break;
+    case SatAlgorithm::brute_force:
+      return brute_force<Policy>(a, pose_a, b, pose_b, opt, cache);
+    case SatAlgorithm::traversal:
+      return traversal<Policy>(a, pose_a, b, pose_b, opt, cache);
+    case SatAlgorithm::gauss_map:
+      break;
   }
   return gauss_map<Policy>(a, pose_a, b, pose_b, opt, cache);
 }
@@ -273,7 +288,8 @@ namespace detail {
 /// The same manifold, bit for bit, on either.
 template <Number T>
 ContactManifold<T> posed_manifold_on(const ConvexPolyhedron<T>& a, const RigidTransform<T>& pose_a,
-                                     const ConvexPolyhedron<T>& bp, const SatResult<T>& r, const SatOptions& opt) {
+                                     const ConvexPolyhedron<T>& bp, const SatResult<T>& r,
+                                     const SatOptions& opt) {
   ManifoldOptions mo;
   mo.margin = opt.margin;
   ContactManifold<T> m = contact_manifold(a, bp, r, mo);
@@ -301,8 +317,10 @@ ContactManifold<T> contact_manifold(const PreparedShape<T>& a, const RigidTransf
                                     const PreparedShape<T>& b, const RigidTransform<T>& pose_b,
                                     const SatResult<T>& r, const SatOptions& opt = {}) {
   check_options(opt);
-  if (a.polyhedron().empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape A is empty (moved from)");
-  return detail::posed_manifold_on(a.polyhedron(), pose_a, b.posed_scratch(relative_pose(pose_a, pose_b)), r, opt);
+  if (a.polyhedron().empty())
+    throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape A is empty (moved from)");
+  return detail::posed_manifold_on(a.polyhedron(), pose_a, b.posed_scratch(relative_pose(pose_a, pose_b)), r,
+                                   opt);
 }
 
 }  // namespace sepax

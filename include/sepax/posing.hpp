@@ -71,11 +71,13 @@ template <Number T>
 void check_rigid(const RigidTransform<T>& x) {
   const auto& r = x.rotation;
   if constexpr (number_traits<T>::is_exact) {
-    const T det = r(0, 0) * (r(1, 1) * r(2, 2) - r(1, 2) * r(2, 1)) - r(0, 1) * (r(1, 0) * r(2, 2) - r(1, 2) * r(2, 0)) +
+    const T det = r(0, 0) * (r(1, 1) * r(2, 2) - r(1, 2) * r(2, 1)) -
+                  r(0, 1) * (r(1, 0) * r(2, 2) - r(1, 2) * r(2, 0)) +
                   r(0, 2) * (r(1, 0) * r(2, 1) - r(1, 1) * r(2, 0));
     if (!(det > T(0))) {
-      throw InvalidInput(ErrorCode::BadScale, "pose: the rotation's determinant is not positive (a reflection or "
-                                              "a degenerate matrix would turn the shape inside out)");
+      throw InvalidInput(ErrorCode::BadScale,
+                         "pose: the rotation's determinant is not positive (a reflection or "
+                         "a degenerate matrix would turn the shape inside out)");
     }
   } else {
     double m[3][3];
@@ -91,7 +93,8 @@ void check_rigid(const RigidTransform<T>& x) {
         o2 += g * g;
       }
     }
-    det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+    det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+          m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     // Rounding of the double evaluation (u_d = 2^-53): each entry of
     // M^T M - I rounds at most 4 times relative to |M|_F^2 + 1; a Frobenius
@@ -103,9 +106,10 @@ void check_rigid(const RigidTransform<T>& x) {
     const double fro = std::sqrt(f2) * (1 + 1e-10);
     const double omega = std::sqrt(o2) * (1 + 1e-10) + 13 * ud * (fro * fro + 1);
     if (!(omega <= 1e-3) || !(det > 0)) {
-      throw InvalidInput(ErrorCode::BadScale, "pose: the rotation is not a rotation (|R^T R - I| = " +
-                                                  std::to_string(std::sqrt(o2)) + ", det = " + std::to_string(det) +
-                                                  "; sepax needs an orthonormal matrix with det +1 within 1e-3)");
+      throw InvalidInput(ErrorCode::BadScale,
+                         "pose: the rotation is not a rotation (|R^T R - I| = " +
+                             std::to_string(std::sqrt(o2)) + ", det = " + std::to_string(det) +
+                             "; sepax needs an orthonormal matrix with det +1 within 1e-3)");
     }
   }
 }

@@ -220,7 +220,8 @@ class PreparedShape {
                                                 std::span<const int> edges) const {
     auto& s = detail::pose_scratch<T>();
     if (s.serial == serial_ && s.stage != S::kNone && detail::same_pose(s.x, x)) {
-      if (s.stage == S::kFull) return s.poly;  // every plane is there (derive_rigid_part would narrow its bound)
+      if (s.stage == S::kFull)
+        return s.poly;  // every plane is there (derive_rigid_part would narrow its bound)
     } else {
       pose_vertices(s, x);
     }
@@ -233,7 +234,8 @@ class PreparedShape {
 
   // s.poly = the partial image of this shape at x (stage kVertices).
   void pose_vertices(S& s, const RigidTransform<T>& x) const {
-    if (poly_.empty()) throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape: the shape is empty (moved from)");
+    if (poly_.empty())
+      throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape: the shape is empty (moved from)");
     const bool same_topology = s.serial == serial_;
     s.stage = S::kNone;
     s.serial = 0;  // until the posing below has finished (it may throw)
@@ -259,10 +261,10 @@ class PreparedShape {
       const Vec3<T>& c = poly_.centroid();
       for (int f = 0; f < nf; ++f) {
         const Plane<T>& pl = poly_.plane(f);
-        const double h = static_cast<double>(pl.offset) -
-                         (static_cast<double>(pl.normal[0]) * static_cast<double>(c[0]) +
-                          static_cast<double>(pl.normal[1]) * static_cast<double>(c[1]) +
-                          static_cast<double>(pl.normal[2]) * static_cast<double>(c[2]));
+        const double h =
+            static_cast<double>(pl.offset) - (static_cast<double>(pl.normal[0]) * static_cast<double>(c[0]) +
+                                              static_cast<double>(pl.normal[1]) * static_cast<double>(c[1]) +
+                                              static_cast<double>(pl.normal[2]) * static_cast<double>(c[2]));
         r = h < r ? h : r;
       }
       inner_radius_ = poly_.is_flat() || !(r > 0) ? 0.0 : r;

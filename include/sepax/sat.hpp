@@ -25,9 +25,12 @@ inline constexpr SatAlgorithm kSatAlgorithms[] = {SatAlgorithm::brute_force, Sat
 /// "brute_force", "gauss_map", "traversal".
 inline const char* to_string(SatAlgorithm s) {
   switch (s) {
-    case SatAlgorithm::brute_force: return "brute_force";
-    case SatAlgorithm::gauss_map: return "gauss_map";
-    case SatAlgorithm::traversal: return "traversal";
+    case SatAlgorithm::brute_force:
+      return "brute_force";
+    case SatAlgorithm::gauss_map:
+      return "gauss_map";
+    case SatAlgorithm::traversal:
+      return "traversal";
   }
   return "?";
 }
@@ -38,9 +41,12 @@ template <class Policy = policy::Plain, Number T>
 SatResult<T> run(SatAlgorithm algorithm, const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b,
                  const SatOptions& opt = {}) {
   switch (algorithm) {
-    case SatAlgorithm::brute_force: return brute_force<Policy>(a, b, opt);
-    case SatAlgorithm::traversal: return traversal<Policy>(a, b, opt);
-    case SatAlgorithm::gauss_map: break;
+    case SatAlgorithm::brute_force:
+      return brute_force<Policy>(a, b, opt);
+    case SatAlgorithm::traversal:
+      return traversal<Policy>(a, b, opt);
+    case SatAlgorithm::gauss_map:
+      break;
   }
   return gauss_map<Policy>(a, b, opt);
 }

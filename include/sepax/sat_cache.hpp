@@ -95,7 +95,8 @@ std::optional<std::pair<Feature, Separation<typename K::FT>>> reevaluate(K& k, c
 /// separation s proven beyond the margin (stops_early): separated, early_out,
 /// axis k.axis(f), stats counting f and k's exact fallbacks.
 template <SatKernel K>
-SatResult<typename K::FT> early_out_result(const K& k, const Feature& f, const Separation<typename K::FT>& s) {
+SatResult<typename K::FT> early_out_result(const K& k, const Feature& f,
+                                           const Separation<typename K::FT>& s) {
   SatResult<typename K::FT> r;
   r.overlap = false;
   r.feature = f;
@@ -122,7 +123,8 @@ SatResult<typename K::FT> early_out_result(const K& k, const Feature& f, const S
 /// kernel need only answer for that feature: the posed queries build it on a
 /// partial image of B (posing.hpp, "Staged posing").
 template <SatKernel K>
-std::optional<SatResult<typename K::FT>> cache_hit(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt) {
+std::optional<SatResult<typename K::FT>> cache_hit(K& k, SatCache<typename K::FT>& cache,
+                                                   const SatOptions& opt) {
   using T = typename K::FT;
   if (!opt.early_out || !cache.valid) return std::nullopt;
   const auto ev = reevaluate(k, cache.feature);
@@ -145,7 +147,8 @@ std::optional<SatResult<typename K::FT>> cache_hit(K& k, SatCache<typename K::FT
 /// after a miss the SAT's result is returned unchanged (for overlapping
 /// shapes exactly the fresh one, feature and separation included).
 template <SatKernel K, class Run>
-SatResult<typename K::FT> cached_run(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt, Run&& run) {
+SatResult<typename K::FT> cached_run(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt,
+                                     Run&& run) {
   SatResult<typename K::FT> r;
   if constexpr (std::is_invocable_v<Run&, K&, const SatOptions&, const Feature*>) {
     // warm start: the cached feature is the SAT's first candidate
@@ -165,7 +168,8 @@ SatResult<typename K::FT> cached_run(K& k, SatCache<typename K::FT>& cache, cons
 /// warm-started: the cached feature is passed as its first candidate (see
 /// cached_run).
 template <SatKernel K, class Run>
-SatResult<typename K::FT> cached_with(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt, Run&& run) {
+SatResult<typename K::FT> cached_with(K& k, SatCache<typename K::FT>& cache, const SatOptions& opt,
+                                      Run&& run) {
   if (auto hit = cache_hit(k, cache, opt)) return *hit;
   return cached_run(k, cache, opt, std::forward<Run>(run));
 }

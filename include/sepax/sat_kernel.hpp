@@ -169,7 +169,8 @@ concept HasFaceEstimate = requires(const K k, int i, double e) {
 /// (BestAxis, the traversal's best); compare_width is that filter's width
 /// (see HasFaceEstimate), from which the traversal derives its thresholds.
 template <class K>
-concept HasBoundedCompare = requires(const K& k, const Feature& f, const Separation<typename K::FT>& s, double e) {
+concept HasBoundedCompare = requires(const K& k, const Feature& f, const Separation<typename K::FT>& s,
+                                     double e) {
   { k.error_bound(f) } -> std::same_as<double>;
   { k.compare_bounded(s, f, e, s, f, e) } -> std::same_as<int>;
   { k.compare_width(e, e) } -> std::same_as<double>;
@@ -234,15 +235,16 @@ concept HasEdgePairBelow = requires(const K k, int i, typename K::FT x, double e
 /// double m), the comparison of the values for plain float/double.
 /// Kernels without it compare s with m converted to FT (sepax::compare).
 template <class K>
-concept HasCompareMargin = requires(const K k, const Separation<typename K::FT>& s, const Feature& f, double m) {
+concept HasCompareMargin = requires(const K k, const Separation<typename K::FT>& s, const Feature& f,
+                                    double m) {
   { k.compare_margin(s, f, m) } -> std::same_as<int>;
 };
 
 /// Throws InvalidInput (BadScale) unless opt.margin is finite and >= 0.
 inline void check_options(const SatOptions& opt) {
   if (!(opt.margin >= 0.0) || !(opt.margin <= std::numeric_limits<double>::max())) {
-    throw InvalidInput(ErrorCode::BadScale, "SatOptions::margin must be finite and >= 0, got " +
-                                                std::to_string(opt.margin));
+    throw InvalidInput(ErrorCode::BadScale,
+                       "SatOptions::margin must be finite and >= 0, got " + std::to_string(opt.margin));
   }
 }
 

@@ -38,10 +38,9 @@ ConvexPolyhedron<T> cube(double half = 1.0) {
 /// Regular tetrahedron with vertices (s,s,s), (s,-s,-s), (-s,s,-s), (-s,-s,s).
 template <Number T>
 ConvexPolyhedron<T> tetrahedron(double s = 1.0) {
-  std::vector<Vec3<T>> v{vec_from_double<T>(Vec3<double>(s, s, s)),
-                         vec_from_double<T>(Vec3<double>(s, -s, -s)),
-                         vec_from_double<T>(Vec3<double>(-s, s, -s)),
-                         vec_from_double<T>(Vec3<double>(-s, -s, s))};
+  std::vector<Vec3<T>> v{
+      vec_from_double<T>(Vec3<double>(s, s, s)), vec_from_double<T>(Vec3<double>(s, -s, -s)),
+      vec_from_double<T>(Vec3<double>(-s, s, -s)), vec_from_double<T>(Vec3<double>(-s, -s, s))};
   return ConvexPolyhedron<T>::from_faces(std::move(v), {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
 }
 
@@ -49,7 +48,8 @@ ConvexPolyhedron<T> tetrahedron(double s = 1.0) {
 /// circumradius r, half height h.  n >= 3.
 template <Number T>
 ConvexPolyhedron<T> prism(int n, double r = 1.0, double h = 1.0) {
-  if (n < 3) throw InvalidInput(ErrorCode::TooFewPoints, "a prism needs at least 3 sides, got " + std::to_string(n));
+  if (n < 3)
+    throw InvalidInput(ErrorCode::TooFewPoints, "a prism needs at least 3 sides, got " + std::to_string(n));
   std::vector<Vec3<T>> v;
   for (int k = 0; k < 2; ++k) {
     for (int i = 0; i < n; ++i) {
@@ -73,7 +73,8 @@ ConvexPolyhedron<T> prism(int n, double r = 1.0, double h = 1.0) {
 /// Double-sided regular n-gon in the plane z = 0, circumradius r, front normal +z.
 template <Number T>
 ConvexPolyhedron<T> regular_polygon(int n, double r = 1.0) {
-  if (n < 3) throw InvalidInput(ErrorCode::TooFewPoints, "a polygon needs at least 3 sides, got " + std::to_string(n));
+  if (n < 3)
+    throw InvalidInput(ErrorCode::TooFewPoints, "a polygon needs at least 3 sides, got " + std::to_string(n));
   std::vector<Vec3<T>> v;
   for (int i = 0; i < n; ++i) {
     const double t = 2.0 * std::numbers::pi * i / n;

@@ -169,8 +169,8 @@ inline typename L::V dot3(typename L::V x, typename L::V y, typename L::V z, typ
 ///    are left out.
 template <bool kFilter, class T>
 SEPAX_SIMD_INLINE inline int arc_candidates(const ConvexPolyhedron<T>& b, int lo, int hi, const Vec3<T>& da,
-                          const Vec3<T>& na0, const Vec3<T>& na1, T bound, int* out,
-                          bool* uncertain = nullptr) {
+                                            const Vec3<T>& na0, const Vec3<T>& na1, T bound, int* out,
+                                            bool* uncertain = nullptr) {
   using L = Lanes<T>;
   using V = typename L::V;
   constexpr int W = L::width;
@@ -307,7 +307,8 @@ SEPAX_SIMD_INLINE inline Support<T> support_scan(const ConvexPolyhedron<T>& q, c
   const V best = L::hmin(L::select(at_min, idx, inf));
   r.min = L::first(mn);
   r.index = static_cast<int>(L::first(best));
-  if (r.min == std::numeric_limits<T>::infinity()) r.index = 0;  // every value +inf (never with bounded lanes)
+  if (r.min == std::numeric_limits<T>::infinity())
+    r.index = 0;  // every value +inf (never with bounded lanes)
   if constexpr (kSecond) {
     // the best lane contributes its second value, every other lane its first
     const M best_lane = L::mand(at_min, L::eq(idx, best));

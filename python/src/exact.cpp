@@ -24,7 +24,8 @@ struct ExactCache {
 };
 
 std::shared_ptr<const ExactShape> make_exact_shape(const ConvexPolyhedron<double>& p) {
-  return std::make_shared<const ExactShape>(ExactShape{PreparedShape<mpq_class>(ConvexPolyhedron<mpq_class>::convert_from(p))});
+  return std::make_shared<const ExactShape>(
+      ExactShape{PreparedShape<mpq_class>(ConvexPolyhedron<mpq_class>::convert_from(p))});
 }
 
 std::unique_ptr<ExactCache, void (*)(ExactCache*)> make_exact_cache() {

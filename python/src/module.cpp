@@ -63,7 +63,8 @@ struct Shape {
   std::shared_ptr<const PreparedShape<float>> f;  // lazily (the GIL guards it)
   std::shared_ptr<const ExactShape> q;            // lazily
 
-  explicit Shape(ConvexPolyhedron<double> p) : d(std::make_shared<const PreparedShape<double>>(std::move(p))) {}
+  explicit Shape(ConvexPolyhedron<double> p)
+      : d(std::make_shared<const PreparedShape<double>>(std::move(p))) {}
 
   const ConvexPolyhedron<double>& poly() const { return d->polyhedron(); }
   const PreparedShape<float>& as_float() {
@@ -107,14 +108,16 @@ py::array_t<double> array3(const std::array<double, 3>& a) {
 // ---- poses ------------------------------------------------------------------
 
 void check_finite(double x, const std::string& what) {
-  if (!std::isfinite(x)) throw InvalidInput(ErrorCode::NonFinite, what + " is not finite (" + format_number(x) + ")");
+  if (!std::isfinite(x))
+    throw InvalidInput(ErrorCode::NonFinite, what + " is not finite (" + format_number(x) + ")");
 }
 
 /// R (3,3) and t (3,) from rows i of stacked arrays (or the single ones).
 PoseD pose_from_parts(const double* r, const double* t, const std::string& what) {
   PoseD p;
   for (std::size_t k = 0; k < 9; ++k) {
-    check_finite(r[k], what + ": rotation entry (" + std::to_string(k / 3) + ", " + std::to_string(k % 3) + ")");
+    check_finite(r[k],
+                 what + ": rotation entry (" + std::to_string(k / 3) + ", " + std::to_string(k % 3) + ")");
     p.r[k] = r[k];
   }
   for (std::size_t k = 0; k < 3; ++k) {
@@ -129,9 +132,10 @@ PoseD pose_from_matrix(const double* m, const std::string& what) {
   const double t[3] = {m[3], m[7], m[11]};
   PoseD p = pose_from_parts(r, t, what);
   if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1) {
-    throw InvalidInput(ErrorCode::BadScale, what + ": the last row of a 4x4 pose is (" + format_number(m[12]) + ", " +
-                                                format_number(m[13]) + ", " + format_number(m[14]) + ", " +
-                                                format_number(m[15]) + "), not (0, 0, 0, 1)");
+    throw InvalidInput(ErrorCode::BadScale, what + ": the last row of a 4x4 pose is (" +
+                                                format_number(m[12]) + ", " + format_number(m[13]) + ", " +
+                                                format_number(m[14]) + ", " + format_number(m[15]) +
+                                                "), not (0, 0, 0, 1)");
   }
   return p;
 }
@@ -145,7 +149,8 @@ std::vector<PoseD> poses_from(const py::handle& obj, const std::string& what, bo
     const DoubleArray r = DoubleArray::ensure(obj[py::int_(0)]);
     const DoubleArray t = DoubleArray::ensure(obj[py::int_(1)]);
     if (!r || !t) usage_error(what + ": (R, t) must be arrays of numbers");
-    const bool single = r.ndim() == 2 && r.shape(0) == 3 && r.shape(1) == 3 && t.ndim() == 1 && t.shape(0) == 3;
+    const bool single =
+        r.ndim() == 2 && r.shape(0) == 3 && r.shape(1) == 3 && t.ndim() == 1 && t.shape(0) == 3;
     const bool stacked = batch && r.ndim() == 3 && r.shape(1) == 3 && r.shape(2) == 3 && t.ndim() == 2 &&
                          t.shape(1) == 3 && r.shape(0) == t.shape(0);
     if (single) return {pose_from_parts(r.data(), t.data(), what)};
@@ -248,8 +253,9 @@ Request make_request(const std::string& number, bool robust, const std::string& 
   q.number_name = number;
   q.algorithm_name = to_string(q.opt.algorithm);
   if (cache && q.number != NumberKind::Exact && !q.opt.robust && q.opt.algorithm == SatAlgorithm::traversal) {
-    usage_error("a cache cannot warm-start the plain float/double traversal (its climb is in rounding arithmetic): "
-                "use robust=True, another algorithm, or no cache");
+    usage_error(
+        "a cache cannot warm-start the plain float/double traversal (its climb is in rounding arithmetic): "
+        "use robust=True, another algorithm, or no cache");
   }
   return q;
 }
@@ -385,8 +391,9 @@ QueryOut run_request(const Request& q, Shape& a, Shape& b, const PoseD& pa, cons
   return out;
 }
 
-Result query(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b, const std::string& number,
-             bool robust, const std::string& algorithm, double margin, bool early_out, Cache* cache, bool manifold) {
+Result query(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b,
+             const std::string& number, bool robust, const std::string& algorithm, double margin,
+             bool early_out, Cache* cache, bool manifold) {
   const Request q = make_request(number, robust, algorithm, margin, early_out, manifold, cache);
   const PoseD pa = poses_from(pose_a, "pose_a", false).front();
   const PoseD pb = poses_from(pose_b, "pose_b", false).front();
@@ -414,8 +421,8 @@ BatchResult query_batch(Shape& a, Shape& b, const py::object& poses_a, const py:
   const std::vector<PoseD> pb = poses_from(poses_b, "poses_b", true);
   BatchPoses poses{pa.data(), pa.size(), pb.data(), pb.size(), std::max(pa.size(), pb.size())};
   if ((pa.size() != 1 && pa.size() != poses.k) || (pb.size() != 1 && pb.size() != poses.k)) {
-    usage_error("poses_a and poses_b hold " + std::to_string(pa.size()) + " and " + std::to_string(pb.size()) +
-                " poses: each must hold K or 1");
+    usage_error("poses_a and poses_b hold " + std::to_string(pa.size()) + " and " +
+                std::to_string(pb.size()) + " poses: each must hold K or 1");
   }
   const auto k = static_cast<py::ssize_t>(poses.k);
   BatchResult r;
@@ -519,8 +526,8 @@ py::dict audit_in(const PreparedShape<T>& a, const PoseD& pa, const PreparedShap
 py::object audit_report_object(Shape& a, Shape& b, const PoseD& pa, const PoseD& pb, bool use_double,
                                const std::string& report);
 
-py::object audit(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b, const std::string& number,
-                 const py::object& report) {
+py::object audit(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b,
+                 const std::string& number, const py::object& report) {
   const PoseD pa = poses_from(pose_a, "pose_a", false).front();
   const PoseD pb = poses_from(pose_b, "pose_b", false).front();
   const NumberKind n = parse_number(number);
@@ -540,15 +547,17 @@ py::object audit(Shape& a, Shape& b, const py::object& pose_a, const py::object&
 /// audit(report="text"|"json"): the fuzzer's full audit (sepax audit).
 py::object audit_report_object(Shape& a, Shape& b, const PoseD& pa, const PoseD& pb, bool use_double,
                                const std::string& report) {
-  if (report != "text" && report != "json") usage_error("report must be None, \"text\" or \"json\", not \"" + report + "\"");
+  if (report != "text" && report != "json")
+    usage_error("report must be None, \"text\" or \"json\", not \"" + report + "\"");
   AuditReport r;
   {
     py::gil_scoped_release release;
     r = audit_report(a.poly(), pa, b.poly(), pb, use_double, report == "json");
   }
   if (r.rounded > 0) {
-    const std::string note = "sepax.audit: " + std::to_string(r.rounded) +
-                             " coordinates changed when rounded to float (the report audits the rounded shapes)";
+    const std::string note =
+        "sepax.audit: " + std::to_string(r.rounded) +
+        " coordinates changed when rounded to float (the report audits the rounded shapes)";
     if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();
   }
   if (report == "text") return py::str(r.text);
@@ -564,7 +573,10 @@ std::string render_svg(Shape& a, Shape& b, const py::object& pose_a, const py::o
   const QueryOut out = run_request(q, a, b, pa, pb, nullptr);
   std::string t;
   if (title.is_none()) {
-    t = "sepax.query: " + q.number_name + (q.number == NumberKind::Exact ? "" : q.opt.robust ? " robust" : " plain") +
+    t = "sepax.query: " + q.number_name +
+        (q.number == NumberKind::Exact ? ""
+         : q.opt.robust                ? " robust"
+                                       : " plain") +
         ", " + q.algorithm_name + (margin > 0 ? ", margin " + format_number(margin) : "");
   } else {
     t = title.cast<std::string>();
@@ -606,9 +618,10 @@ CaseReportPy replay(const py::object& path_like, bool bytes) {
   if (!py::module_::import("os").attr("path").attr("isfile")(path).cast<bool>()) {
     const py::object err = py::module_::import("builtins").attr("FileNotFoundError");
     const py::object errno_mod = py::module_::import("errno");
-    PyErr_SetObject(err.ptr(), py::make_tuple(errno_mod.attr("ENOENT"),
-                                              "sepax.fuzz.replay: no such file (a fuzzer reproducer, .case)", path)
-                                   .ptr());
+    PyErr_SetObject(err.ptr(),
+                    py::make_tuple(errno_mod.attr("ENOENT"),
+                                   "sepax.fuzz.replay: no such file (a fuzzer reproducer, .case)", path)
+                        .ptr());
     throw py::error_already_set();
   }
   Replayed rp;
@@ -697,14 +710,16 @@ not an error: its outcome is 'rejected', with reject_reason.  The GIL is release
 }
 #else
 py::object audit_report_object(Shape&, Shape&, const PoseD&, const PoseD&, bool, const std::string&) {
-  usage_error("audit reports need the fuzzer library: this module was built without it (SEPAX_BUILD_CLI=OFF)");
+  usage_error(
+      "audit reports need the fuzzer library: this module was built without it (SEPAX_BUILD_CLI=OFF)");
 }
 #endif
 
 // ---- repr ---------------------------------------------------------------------
 
 std::string feature_repr(const Feature& f) {
-  return "Feature('" + std::string(type_name(f.type)) + "', " + std::to_string(f.a) + ", " + std::to_string(f.b) + ")";
+  return "Feature('" + std::string(type_name(f.type)) + "', " + std::to_string(f.a) + ", " +
+         std::to_string(f.b) + ")";
 }
 
 std::string number_repr(double x) { return format_number(x); }
@@ -725,10 +740,12 @@ PYBIND11_MODULE(sepax, m) {
   // errors
   py::enum_<ErrorCode>(m, "ErrorCode", "Which rule an input broke (sepax/error.hpp).")
       .value("NonFinite", ErrorCode::NonFinite, "NaN or infinity in a coordinate")
-      .value("TooFewPoints", ErrorCode::TooFewPoints, "fewer than 3 distinct points (or 4 for a solid face list)")
+      .value("TooFewPoints", ErrorCode::TooFewPoints,
+             "fewer than 3 distinct points (or 4 for a solid face list)")
       .value("Collinear", ErrorCode::Collinear, "all points on one line")
       .value("BadIndex", ErrorCode::BadIndex, "a face refers to a vertex that does not exist")
-      .value("DegenerateFace", ErrorCode::DegenerateFace, "a face with < 3 vertices, a repeated vertex, or zero area")
+      .value("DegenerateFace", ErrorCode::DegenerateFace,
+             "a face with < 3 vertices, a repeated vertex, or zero area")
       .value("NotManifold", ErrorCode::NotManifold, "an edge not shared by exactly two faces")
       .value("BadEuler", ErrorCode::BadEuler, "V - E + F != 2")
       .value("UnusedVertex", ErrorCode::UnusedVertex, "a vertex on no face")
@@ -736,7 +753,8 @@ PYBIND11_MODULE(sepax, m) {
       .value("NonConvexFace", ErrorCode::NonConvexFace, "a face polygon that turns the wrong way")
       .value("NotConvex", ErrorCode::NotConvex, "a vertex above some face plane, or coplanar adjacent faces")
       .value("InwardFaces", ErrorCode::InwardFaces, "faces oriented inward")
-      .value("BadScale", ErrorCode::BadScale, "zero extent, coordinates out of range, a non-rigid pose, a bad margin")
+      .value("BadScale", ErrorCode::BadScale,
+             "zero extent, coordinates out of range, a non-rigid pose, a bad margin")
       .value("Parse", ErrorCode::Parse, "a malformed input file");
   {
     py::dict ns;
@@ -766,16 +784,18 @@ class InvalidInput(ValueError):
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InvalidInput& e) {
-      const py::object exc = invalid_input_type()(py::str(e.what()), py::cast(e.code()), sepax::to_string(e.code()));
+      const py::object exc =
+          invalid_input_type()(py::str(e.what()), py::cast(e.code()), sepax::to_string(e.code()));
       PyErr_SetObject(invalid_input_type().ptr(), exc.ptr());
     }
   });
 
   // shapes
-  py::class_<Shape>(m, "Shape",
-                    "A convex polyhedron in its local frame, validated in double and prepared once per number "
-                    "type it is queried in (float: the vertices rounded to float; exact: their exact values; "
-                    "same faces and plane triples).  Immutable; may be queried from several threads.")
+  py::class_<Shape>(
+      m, "Shape",
+      "A convex polyhedron in its local frame, validated in double and prepared once per number "
+      "type it is queried in (float: the vertices rounded to float; exact: their exact values; "
+      "same faces and plane triples).  Immutable; may be queried from several threads.")
       .def(py::init([](const py::object& vertices, const std::vector<std::vector<int>>& faces) {
              std::vector<Vec3<double>> v = points_from(vertices, "vertices");
              py::gil_scoped_release release;
@@ -785,53 +805,60 @@ class InvalidInput(ValueError):
            "Shape(vertices, faces): vertices (N, 3); faces: lists of vertex indices, counter-clockwise seen "
            "from outside (a flat shape: the polygon and the same polygon reversed).  Validated; raises "
            "sepax.InvalidInput naming the problem.")
-      .def_property_readonly("vertices", [](const Shape& s) { return vec_rows(s.poly().vertices()); },
-                             "(N, 3) float64 array of the vertices (a copy).")
-      .def_property_readonly("faces",
-                             [](const Shape& s) {
-                               std::vector<std::vector<int>> f;
-                               for (int i = 0; i < s.poly().face_count(); ++i) f.push_back(s.poly().face_vertices(i));
-                               return f;
-                             },
-                             "The faces as lists of vertex indices (counter-clockwise seen from outside).")
-      .def_property_readonly("normals",
-                             [](const Shape& s) {
-                               std::vector<Vec3<double>> n;
-                               for (const auto& p : s.poly().planes()) n.push_back(p.normal);
-                               return vec_rows(n);
-                             },
-                             "(F, 3) unit outward face normals.")
-      .def_property_readonly("offsets",
-                             [](const Shape& s) {
-                               py::array_t<double> o(s.poly().face_count());
-                               for (int i = 0; i < s.poly().face_count(); ++i) {
-                                 o.mutable_at(i) = s.poly().planes()[static_cast<std::size_t>(i)].offset;
-                               }
-                               return o;
-                             },
-                             "(F,) plane offsets: normals[f] . x == offsets[f] on face f.")
-      .def_property_readonly("edges",
-                             [](const Shape& s) {
-                               const auto& he = s.poly().half_edges();
-                               py::array_t<std::int32_t> e({py::ssize_t{s.poly().edge_count()}, py::ssize_t{2}});
-                               auto w = e.mutable_unchecked<2>();
-                               for (py::ssize_t i = 0; i < s.poly().edge_count(); ++i) {
-                                 w(i, 0) = he[static_cast<std::size_t>(2 * i)].origin;
-                                 w(i, 1) = he[static_cast<std::size_t>(2 * i + 1)].origin;
-                               }
-                               return e;
-                             },
-                             "(E, 2) int32 vertex pairs; row e is undirected edge e (feature and contact ids).")
+      .def_property_readonly(
+          "vertices", [](const Shape& s) { return vec_rows(s.poly().vertices()); },
+          "(N, 3) float64 array of the vertices (a copy).")
+      .def_property_readonly(
+          "faces",
+          [](const Shape& s) {
+            std::vector<std::vector<int>> f;
+            for (int i = 0; i < s.poly().face_count(); ++i) f.push_back(s.poly().face_vertices(i));
+            return f;
+          },
+          "The faces as lists of vertex indices (counter-clockwise seen from outside).")
+      .def_property_readonly(
+          "normals",
+          [](const Shape& s) {
+            std::vector<Vec3<double>> n;
+            for (const auto& p : s.poly().planes()) n.push_back(p.normal);
+            return vec_rows(n);
+          },
+          "(F, 3) unit outward face normals.")
+      .def_property_readonly(
+          "offsets",
+          [](const Shape& s) {
+            py::array_t<double> o(s.poly().face_count());
+            for (int i = 0; i < s.poly().face_count(); ++i) {
+              o.mutable_at(i) = s.poly().planes()[static_cast<std::size_t>(i)].offset;
+            }
+            return o;
+          },
+          "(F,) plane offsets: normals[f] . x == offsets[f] on face f.")
+      .def_property_readonly(
+          "edges",
+          [](const Shape& s) {
+            const auto& he = s.poly().half_edges();
+            py::array_t<std::int32_t> e({py::ssize_t{s.poly().edge_count()}, py::ssize_t{2}});
+            auto w = e.mutable_unchecked<2>();
+            for (py::ssize_t i = 0; i < s.poly().edge_count(); ++i) {
+              w(i, 0) = he[static_cast<std::size_t>(2 * i)].origin;
+              w(i, 1) = he[static_cast<std::size_t>(2 * i + 1)].origin;
+            }
+            return e;
+          },
+          "(E, 2) int32 vertex pairs; row e is undirected edge e (feature and contact ids).")
       .def_property_readonly("vertex_count", [](const Shape& s) { return s.poly().vertex_count(); })
       .def_property_readonly("edge_count", [](const Shape& s) { return s.poly().edge_count(); })
       .def_property_readonly("face_count", [](const Shape& s) { return s.poly().face_count(); })
-      .def_property_readonly("is_flat", [](const Shape& s) { return s.poly().is_flat(); },
-                             "True for a double-sided polygon (two opposite faces).")
-      .def_property_readonly("bounds",
-                             [](const Shape& s) {
-                               return vec_rows({s.poly().bounds_min(), s.poly().bounds_max()});
-                             },
-                             "(2, 3): the bounding box's min and max corners.")
+      .def_property_readonly(
+          "is_flat", [](const Shape& s) { return s.poly().is_flat(); },
+          "True for a double-sided polygon (two opposite faces).")
+      .def_property_readonly(
+          "bounds",
+          [](const Shape& s) {
+            return vec_rows({s.poly().bounds_min(), s.poly().bounds_max()});
+          },
+          "(2, 3): the bounding box's min and max corners.")
       .def(py::pickle(
           [](const Shape& s) {
             std::vector<std::vector<int>> f;
@@ -863,8 +890,9 @@ class InvalidInput(ValueError):
       "(vertices are input points; coplanar points give a flat double-sided polygon).  Raises "
       "sepax.InvalidInput: NonFinite (NaN/inf, naming the point), TooFewPoints, Collinear, BadScale.");
   m.def(
-      "box", [](double hx, double hy, double hz) { return Shape(shapes::box<double>(hx, hy, hz)); }, py::arg("hx"),
-      py::arg("hy"), py::arg("hz"), "box(hx, hy, hz) -> Shape: the axis-aligned box with these half extents.");
+      "box", [](double hx, double hy, double hz) { return Shape(shapes::box<double>(hx, hy, hz)); },
+      py::arg("hx"), py::arg("hy"), py::arg("hz"),
+      "box(hx, hy, hz) -> Shape: the axis-aligned box with these half extents.");
   m.def(
       "cube", [](double half) { return Shape(shapes::cube<double>(half)); }, py::arg("half") = 1.0,
       "cube(half=1.0) -> Shape: the cube [-half, half]^3.");
@@ -873,7 +901,8 @@ class InvalidInput(ValueError):
       "tetrahedron(s=1.0) -> Shape: (s,s,s), (s,-s,-s), (-s,s,-s), (-s,-s,s).");
   m.def(
       "prism", [](int n, double r, double h) { return Shape(shapes::prism<double>(n, r, h)); }, py::arg("n"),
-      py::arg("r") = 1.0, py::arg("h") = 1.0, "prism(n, r=1.0, h=1.0) -> Shape: the regular n-gon prism around z.");
+      py::arg("r") = 1.0, py::arg("h") = 1.0,
+      "prism(n, r=1.0, h=1.0) -> Shape: the regular n-gon prism around z.");
   m.def(
       "polygon",
       [](const py::object& loop) {
@@ -888,7 +917,8 @@ class InvalidInput(ValueError):
       [](const py::object& translation, const py::object& quaternion) {
         const DoubleArray t = DoubleArray::ensure(translation), qa = DoubleArray::ensure(quaternion);
         if (!t || t.ndim() != 1 || t.shape(0) != 3) usage_error("translation must have shape (3,)");
-        if (!qa || qa.ndim() != 1 || qa.shape(0) != 4) usage_error("quaternion must have shape (4,) as (w, x, y, z)");
+        if (!qa || qa.ndim() != 1 || qa.shape(0) != 4)
+          usage_error("quaternion must have shape (4,) as (w, x, y, z)");
         const auto x = RigidTransform<double>::from_quaternion(qa.at(0), qa.at(1), qa.at(2), qa.at(3),
                                                                Vec3<double>(t.at(0), t.at(1), t.at(2)));
         PoseD p;
@@ -898,8 +928,10 @@ class InvalidInput(ValueError):
         }
         return pose_matrix(pose_from_parts(p.r.data(), p.t.data(), "pose"));
       },
-      py::arg("translation") = py::make_tuple(0.0, 0.0, 0.0), py::arg("quaternion") = py::make_tuple(1.0, 0.0, 0.0, 0.0),
-      "pose(translation=(0,0,0), quaternion=(1,0,0,0)) -> (4, 4) array: rotation by the quaternion (w, x, y, z), "
+      py::arg("translation") = py::make_tuple(0.0, 0.0, 0.0),
+      py::arg("quaternion") = py::make_tuple(1.0, 0.0, 0.0, 0.0),
+      "pose(translation=(0,0,0), quaternion=(1,0,0,0)) -> (4, 4) array: rotation by the quaternion (w, x, y, "
+      "z), "
       "normalised first, then translation; the same matrix as the CLI's --pose.");
 
   // features and caches
@@ -911,20 +943,20 @@ class InvalidInput(ValueError):
       .def_readonly("a", &Feature::a)
       .def_readonly("b", &Feature::b)
       .def("__eq__", [](const Feature& x, const Feature& y) { return x == y; })
-      .def("__hash__", [](const Feature& f) {
-        return py::hash(py::make_tuple(static_cast<int>(f.type), f.a, f.b));
-      })
+      .def("__hash__",
+           [](const Feature& f) { return py::hash(py::make_tuple(static_cast<int>(f.type), f.a, f.b)); })
       .def("__repr__", &feature_repr);
   m.attr("FEATURE_TYPES") = py::make_tuple("faceA", "faceB", "edges", "sideA", "sideB");
   m.attr("VERTEX") = static_cast<int>(ShapeFeatureKind::Vertex);
   m.attr("EDGE") = static_cast<int>(ShapeFeatureKind::Edge);
   m.attr("FACE") = static_cast<int>(ShapeFeatureKind::Face);
 
-  py::class_<Cache>(m, "Cache",
-                    "Per-pair warm-start cache (sepax/sat_cache.hpp): pass the same Cache for the same pair at "
-                    "every step.  A cached query returns the fresh query's verdict, feature and separation "
-                    "(with early_out: a separating axis beyond the margin, maybe found at once).  A foreign "
-                    "or stale cache costs one re-evaluation.  Thread-safe (one query at a time uses it).")
+  py::class_<Cache>(
+      m, "Cache",
+      "Per-pair warm-start cache (sepax/sat_cache.hpp): pass the same Cache for the same pair at "
+      "every step.  A cached query returns the fresh query's verdict, feature and separation "
+      "(with early_out: a separating axis beyond the margin, maybe found at once).  A foreign "
+      "or stale cache costs one re-evaluation.  Thread-safe (one query at a time uses it).")
       .def(py::init<>())
       .def_property_readonly("hits", &Cache::hits, "early-out queries answered by the cached feature")
       .def_property_readonly("misses", &Cache::misses, "queries that ran the SAT")
@@ -938,17 +970,23 @@ class InvalidInput(ValueError):
       .def_readonly("points", &Manifold::points, "(M, 3) contact points (midpoints of points_a and points_b)")
       .def_readonly("points_a", &Manifold::points_a, "(M, 3) the points on A")
       .def_readonly("points_b", &Manifold::points_b, "(M, 3) the points on B")
-      .def_readonly("separations", &Manifold::separations, "(M,) signed separation of each point along normal")
+      .def_readonly("separations", &Manifold::separations,
+                    "(M,) signed separation of each point along normal")
       .def_property_readonly(
-          "depths", [](const Manifold& mf) { return py::array_t<double>(py::reinterpret_steal<py::object>(
-                                                 PyNumber_Negative(mf.separations.ptr()))); },
+          "depths",
+          [](const Manifold& mf) {
+            return py::array_t<double>(
+                py::reinterpret_steal<py::object>(PyNumber_Negative(mf.separations.ptr())));
+          },
           "(M,) penetration depths: -separations")
-      .def_readonly("ids", &Manifold::ids,
-                    "(M, 4) int32 feature ids (kind A, index A, kind B, index B), kinds sepax.VERTEX/EDGE/FACE; "
-                    "stable while the same features stay in contact (warm starting)")
+      .def_readonly(
+          "ids", &Manifold::ids,
+          "(M, 4) int32 feature ids (kind A, index A, kind B, index B), kinds sepax.VERTEX/EDGE/FACE; "
+          "stable while the same features stay in contact (warm starting)")
       .def_readonly("id_keys", &Manifold::id_keys, "(M,) uint64 keys of the ids (ContactFeatureId::key)")
       .def_readonly("id_names", &Manifold::id_names, "the ids as text, e.g. 'A:face 1/B:vertex 4'")
-      .def_readonly("reference_shape", &Manifold::reference_shape, "face contacts: 0 reference face on A, 1 on B")
+      .def_readonly("reference_shape", &Manifold::reference_shape,
+                    "face contacts: 0 reference face on A, 1 on B")
       .def_readonly("reference_face", &Manifold::reference_face)
       .def_readonly("incident_face", &Manifold::incident_face)
       .def("__len__", [](const Manifold& mf) { return mf.id_names.size(); })
@@ -966,19 +1004,22 @@ class InvalidInput(ValueError):
       .def_readonly("axis", &Result::axis, "(3,) unit axis from A towards B (exact: normalised in double)")
       .def_readonly("feature", &Result::feature)
       .def_readonly("early_out", &Result::early_out, "the query stopped at a separation proven > margin")
-      .def_readonly("stats", &Result::stats, "face_axes, edge_pairs, minkowski_faces, side_axes, exact_fallbacks")
-      .def_readonly("separation_exact", &Result::separation_exact,
-                    "number='exact': (num, norm2) as fractions.Fraction, separation = num / sqrt(norm2); else None")
+      .def_readonly("stats", &Result::stats,
+                    "face_axes, edge_pairs, minkowski_faces, side_axes, exact_fallbacks")
+      .def_readonly(
+          "separation_exact", &Result::separation_exact,
+          "number='exact': (num, norm2) as fractions.Fraction, separation = num / sqrt(norm2); else None")
       .def_readonly("manifold", &Result::manifold, "the contact Manifold, or None (not asked, or early_out)")
       .def_readonly("number", &Result::number)
       .def_readonly("algorithm", &Result::algorithm)
       .def_readonly("robust", &Result::robust)
       .def("__repr__", [](const Result& r) {
-        return std::string("<sepax.Result: ") + (r.overlap ? "overlap" : "separated") +
-               ", separation " + number_repr(r.separation) + ", " + feature_repr(r.feature) + ">";
+        return std::string("<sepax.Result: ") + (r.overlap ? "overlap" : "separated") + ", separation " +
+               number_repr(r.separation) + ", " + feature_repr(r.feature) + ">";
       });
 
-  py::class_<BatchResult>(m, "BatchResult", "The answers of sepax.query_batch as arrays (one row per pose pair).")
+  py::class_<BatchResult>(m, "BatchResult",
+                          "The answers of sepax.query_batch as arrays (one row per pose pair).")
       .def_readonly("overlap", &BatchResult::overlap, "(K,) bool")
       .def_readonly("early_out", &BatchResult::early_out, "(K,) bool")
       .def_readonly("separation", &BatchResult::separation, "(K,) float64")
@@ -987,18 +1028,23 @@ class InvalidInput(ValueError):
       .def_readonly("feature", &BatchResult::feature, "(K, 2) int32: the feature's a and b")
       .def_readonly("exact_fallbacks", &BatchResult::exact_fallbacks, "(K,) int64")
       .def_readonly("contact_count", &BatchResult::contact_count, "(K,) int32 or None (manifold=False)")
-      .def_readonly("contact_points", &BatchResult::contact_points, "(K, 4, 3) float64, unused rows NaN, or None")
-      .def_readonly("contact_separations", &BatchResult::contact_separations, "(K, 4) float64, unused NaN, or None")
-      .def_readonly("contact_ids", &BatchResult::contact_ids, "(K, 4, 4) int32 ids as Manifold.ids, unused -1, or None")
+      .def_readonly("contact_points", &BatchResult::contact_points,
+                    "(K, 4, 3) float64, unused rows NaN, or None")
+      .def_readonly("contact_separations", &BatchResult::contact_separations,
+                    "(K, 4) float64, unused NaN, or None")
+      .def_readonly("contact_ids", &BatchResult::contact_ids,
+                    "(K, 4, 4) int32 ids as Manifold.ids, unused -1, or None")
       .def_readonly("number", &BatchResult::number)
       .def_readonly("algorithm", &BatchResult::algorithm)
       .def_readonly("robust", &BatchResult::robust)
       .def("__len__", [](const BatchResult& r) { return r.size; })
-      .def("__repr__", [](const BatchResult& r) { return "<sepax.BatchResult: " + std::to_string(r.size) + " rows>"; });
+      .def("__repr__",
+           [](const BatchResult& r) { return "<sepax.BatchResult: " + std::to_string(r.size) + " rows>"; });
 
-  m.def("query", &query, py::arg("a"), py::arg("b"), py::arg("pose_a") = py::none(), py::arg("pose_b") = py::none(),
-        py::kw_only(), py::arg("number") = "double", py::arg("robust") = true, py::arg("algorithm") = "traversal",
-        py::arg("margin") = 0.0, py::arg("early_out") = false, py::arg("cache") = nullptr, py::arg("manifold") = true,
+  m.def("query", &query, py::arg("a"), py::arg("b"), py::arg("pose_a") = py::none(),
+        py::arg("pose_b") = py::none(), py::kw_only(), py::arg("number") = "double", py::arg("robust") = true,
+        py::arg("algorithm") = "traversal", py::arg("margin") = 0.0, py::arg("early_out") = false,
+        py::arg("cache") = nullptr, py::arg("manifold") = true,
         R"(query(a, b, pose_a=None, pose_b=None, *, number="double", robust=True, algorithm="traversal",
       margin=0.0, early_out=False, cache=None, manifold=True) -> Result
 
@@ -1018,8 +1064,9 @@ manifold:  build the contact manifold (when the query did not stop early).
 The GIL is released while the query runs.  Raises sepax.InvalidInput (a ValueError with .code)
 for a non-finite or non-rigid pose or a bad margin, ValueError for malformed arguments.)");
 
-  m.def("audit", &audit, py::arg("a"), py::arg("b"), py::arg("pose_a") = py::none(), py::arg("pose_b") = py::none(),
-        py::kw_only(), py::arg("number") = "double", py::arg("report") = py::none(),
+  m.def("audit", &audit, py::arg("a"), py::arg("b"), py::arg("pose_a") = py::none(),
+        py::arg("pose_b") = py::none(), py::kw_only(), py::arg("number") = "double",
+        py::arg("report") = py::none(),
         R"(audit(a, b, pose_a=None, pose_b=None, *, number="double", report=None) -> dict | str
 
 The per-edge-pair sign table of the Minkowski-face test on the input a posed query decides on
@@ -1042,9 +1089,9 @@ double arithmetic on that input.)");
 #endif
 
   m.def("query_batch", &query_batch, py::arg("a"), py::arg("b"), py::arg("poses_a"), py::arg("poses_b"),
-        py::kw_only(), py::arg("number") = "double", py::arg("robust") = true, py::arg("algorithm") = "traversal",
-        py::arg("margin") = 0.0, py::arg("early_out") = false, py::arg("cache") = nullptr,
-        py::arg("manifold") = false,
+        py::kw_only(), py::arg("number") = "double", py::arg("robust") = true,
+        py::arg("algorithm") = "traversal", py::arg("margin") = 0.0, py::arg("early_out") = false,
+        py::arg("cache") = nullptr, py::arg("manifold") = false,
         R"(query_batch(a, b, poses_a, poses_b, *, number="double", robust=True, algorithm="traversal",
             margin=0.0, early_out=False, cache=None, manifold=False) -> BatchResult
 

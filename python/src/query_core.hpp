@@ -109,14 +109,15 @@ SatResult<T> posed_sat(const QueryOptions& o, const PreparedShape<T>& a, const R
 
 /// One posed query (and its manifold when asked and not stopped early).
 template <Number T>
-void run_query(const QueryOptions& o, const PreparedShape<T>& a, const PoseD& pose_a, const PreparedShape<T>& b,
-               const PoseD& pose_b, SatCache<T>* cache, QueryOut& out) {
+void run_query(const QueryOptions& o, const PreparedShape<T>& a, const PoseD& pose_a,
+               const PreparedShape<T>& b, const PoseD& pose_b, SatCache<T>* cache, QueryOut& out) {
   const RigidTransform<T> pa = to_transform<T>(pose_a), pb = to_transform<T>(pose_b);
   SatResult<T> r;
   if constexpr (number_traits<T>::is_exact) {
     r = posed_sat<policy::Plain>(o, a, pa, b, pb, cache);
   } else {
-    r = o.robust ? posed_sat<policy::Robust>(o, a, pa, b, pb, cache) : posed_sat<policy::Plain>(o, a, pa, b, pb, cache);
+    r = o.robust ? posed_sat<policy::Robust>(o, a, pa, b, pb, cache)
+                 : posed_sat<policy::Plain>(o, a, pa, b, pb, cache);
   }
   out.overlap = r.overlap;
   out.early_out = r.early_out;
@@ -160,14 +161,14 @@ struct BatchColumns {
   bool* overlap = nullptr;
   bool* early_out = nullptr;
   double* separation = nullptr;
-  double* axis = nullptr;            // K x 3
+  double* axis = nullptr;  // K x 3
   std::int8_t* feature_type = nullptr;
-  std::int32_t* feature = nullptr;   // K x 2 (a, b)
+  std::int32_t* feature = nullptr;  // K x 2 (a, b)
   std::int64_t* exact_fallbacks = nullptr;
-  std::int32_t* contact_count = nullptr;      // K
-  double* contact_points = nullptr;           // K x 4 x 3
-  double* contact_separations = nullptr;      // K x 4
-  std::int32_t* contact_ids = nullptr;        // K x 4 x 4 (kind A, index A, kind B, index B)
+  std::int32_t* contact_count = nullptr;  // K
+  double* contact_points = nullptr;       // K x 4 x 3
+  double* contact_separations = nullptr;  // K x 4
+  std::int32_t* contact_ids = nullptr;    // K x 4 x 4 (kind A, index A, kind B, index B)
 };
 
 /// Poses of a batch: K rows of PoseD for each side, or one broadcast.
@@ -182,8 +183,8 @@ struct BatchPoses {
 /// The batch: row i is run_query on (poses.a[i or 0], poses.b[i or 0]),
 /// with one cache carried from row to row when `cache` is given.
 template <Number T>
-void run_batch(const QueryOptions& o, const PreparedShape<T>& a, const PreparedShape<T>& b, const BatchPoses& poses,
-               SatCache<T>* cache, const BatchColumns& c) {
+void run_batch(const QueryOptions& o, const PreparedShape<T>& a, const PreparedShape<T>& b,
+               const BatchPoses& poses, SatCache<T>* cache, const BatchColumns& c) {
   QueryOut q;
   const double nan = std::nan("");
   for (std::size_t i = 0; i < poses.k; ++i) {
@@ -202,7 +203,8 @@ void run_batch(const QueryOptions& o, const PreparedShape<T>& a, const PreparedS
     for (std::size_t p = 0; p < static_cast<std::size_t>(kBatchPoints); ++p) {
       const std::size_t row = i * kBatchPoints + p;
       const bool used = p < n;
-      for (std::size_t j = 0; j < 3; ++j) c.contact_points[3 * row + j] = used ? q.points[p].position[j] : nan;
+      for (std::size_t j = 0; j < 3; ++j)
+        c.contact_points[3 * row + j] = used ? q.points[p].position[j] : nan;
       c.contact_separations[row] = used ? q.points[p].separation : nan;
       const ContactFeatureId id = used ? q.points[p].id : ContactFeatureId{};
       c.contact_ids[4 * row + 0] = used ? static_cast<std::int32_t>(id.a.kind) : -1;
@@ -218,7 +220,7 @@ void run_batch(const QueryOptions& o, const PreparedShape<T>& a, const PreparedS
 /// test (ArcSigns: cba, dba, adc, bdc) and whether the edges are parallel,
 /// as kernel K decides them.
 struct SignTable {
-  std::vector<std::int8_t> signs;     // rows x 4
+  std::vector<std::int8_t> signs;      // rows x 4
   std::vector<std::uint8_t> parallel;  // rows
 };
 
@@ -243,9 +245,10 @@ void fill_sign_table(K& k, int edges_a, int edges_b, SignTable& t) {
 /// The sign table of A and B' = B posed into A's frame (the input every
 /// posed query decides on) under Policy.
 template <class Policy, Number T>
-void sign_table(const PreparedShape<T>& a, const PoseD& pose_a, const PreparedShape<T>& b, const PoseD& pose_b,
-                SignTable& t) {
-  const ConvexPolyhedron<T>& bp = b.posed_scratch(relative_pose(to_transform<T>(pose_a), to_transform<T>(pose_b)));
+void sign_table(const PreparedShape<T>& a, const PoseD& pose_a, const PreparedShape<T>& b,
+                const PoseD& pose_b, SignTable& t) {
+  const ConvexPolyhedron<T>& bp =
+      b.posed_scratch(relative_pose(to_transform<T>(pose_a), to_transform<T>(pose_b)));
   kernel_t<Policy, T> k(a.polyhedron(), bp);
   fill_sign_table(k, a.polyhedron().edge_count(), bp.edge_count(), t);
 }

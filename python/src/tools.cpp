@@ -52,9 +52,10 @@ fuzz::ShapeSpec spec_of(const ConvexPolyhedron<double>& p, int& rounded) {
 
 }  // namespace
 
-AuditReport audit_report(const ConvexPolyhedron<double>& a, const PoseD& pose_a, const ConvexPolyhedron<double>& b,
-                         const PoseD& pose_b, bool use_double, bool json) {
-  const RigidTransform<double> rel = relative_pose(to_transform<double>(pose_a), to_transform<double>(pose_b));
+AuditReport audit_report(const ConvexPolyhedron<double>& a, const PoseD& pose_a,
+                         const ConvexPolyhedron<double>& b, const PoseD& pose_b, bool use_double, bool json) {
+  const RigidTransform<double> rel =
+      relative_pose(to_transform<double>(pose_a), to_transform<double>(pose_b));
   AuditReport out;
   fuzz::FuzzCase c;
   c.family = "python";

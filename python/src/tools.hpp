@@ -34,8 +34,8 @@ struct AuditReport {
 /// coordinate rounded to the nearest float (the audit compares float, double
 /// and exact arithmetic on one float-valued input).  Throws InvalidInput when
 /// a rounded shape is no longer a valid convex polyhedron.
-AuditReport audit_report(const ConvexPolyhedron<double>& a, const PoseD& pose_a, const ConvexPolyhedron<double>& b,
-                         const PoseD& pose_b, bool use_double, bool json);
+AuditReport audit_report(const ConvexPolyhedron<double>& a, const PoseD& pose_a,
+                         const ConvexPolyhedron<double>& b, const PoseD& pose_b, bool use_double, bool json);
 
 struct Replayed {
   fuzz::FuzzCase c;

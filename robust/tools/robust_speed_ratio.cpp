@@ -42,8 +42,10 @@ void measure(int npts, bool brute) {
   for (int i = 0; i < 64; ++i) {
     Vec3<double> d(u(rng), u(rng), u(rng));
     d = d.normalized() * (0.3 + 1.2 * (0.5 + 0.5 * u(rng)));  // centres 0.3..1.5 apart: overlapping
-    pairs.emplace_back(testing::posed(hulls[static_cast<std::size_t>(i) % 8], testing::random_rotation(rng), Vec3<double>(0, 0, 0)),
-                       testing::posed(hulls[static_cast<std::size_t>(i / 8) % 8], testing::random_rotation(rng), d));
+    pairs.emplace_back(
+        testing::posed(hulls[static_cast<std::size_t>(i) % 8], testing::random_rotation(rng),
+                       Vec3<double>(0, 0, 0)),
+        testing::posed(hulls[static_cast<std::size_t>(i / 8) % 8], testing::random_rotation(rng), d));
   }
   const int reps = brute ? 1 : 40;
   std::int64_t fb_plain = 0, fb_robust = 0;
@@ -56,10 +58,11 @@ void measure(int npts, bool brute) {
     best_robust = std::min(best_robust, run<policy::Robust, T>(pairs, reps, brute, fb_robust, cs));
   }
   const double n = static_cast<double>(pairs.size()) * reps;
-  std::printf("%-6s %-11s %2d pts: plain %8.2f us  robust %8.2f us  ratio %.3f  exact fallbacks/query %.4f  (%g)\n",
-              std::string(number_traits<T>::name).c_str(), brute ? "brute_force" : "gauss_map", npts,
-              1e6 * best_plain / n, 1e6 * best_robust / n, best_robust / best_plain,
-              static_cast<double>(fb_robust) / n, cs > 0 ? 1.0 : 0.0);
+  std::printf(
+      "%-6s %-11s %2d pts: plain %8.2f us  robust %8.2f us  ratio %.3f  exact fallbacks/query %.4f  (%g)\n",
+      std::string(number_traits<T>::name).c_str(), brute ? "brute_force" : "gauss_map", npts,
+      1e6 * best_plain / n, 1e6 * best_robust / n, best_robust / best_plain,
+      static_cast<double>(fb_robust) / n, cs > 0 ? 1.0 : 0.0);
 }
 
 int main() {

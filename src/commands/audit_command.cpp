@@ -57,14 +57,16 @@ fuzz::FuzzCase audit_case(const ShapePair& p, const Pose* pose_b, std::ostream& 
   for (const io::ShapeData* d : {&p.a, &p.b}) {
     if (const std::size_t n = rounded_coordinates(*d); n != 0) {
       note << "sepax audit: note: " << d->name << ": " << n
-           << " coordinate(s) rounded to float (float, double and exact runs see the same float-valued input)\n";
+           << " coordinate(s) rounded to float (float, double and exact runs see the same float-valued "
+              "input)\n";
     }
   }
   const Vec3<double> o = vec_to_double(built.origin);
   if (o[0] != 0 || o[1] != 0 || o[2] != 0) {
     note << "sepax audit: note: the shapes are audited moved by -(" << format_number(o[0]) << ", "
          << format_number(o[1]) << ", " << format_number(o[2])
-         << "), an exact translation near them (as sepax query builds them): positions are relative to that point\n";
+         << "), an exact translation near them (as sepax query builds them): positions are relative to that "
+            "point\n";
   }
   c.a = spec_of(built.a);
   c.b = spec_of(built.b);
@@ -77,31 +79,33 @@ int run_audit(const std::vector<std::string>& args, std::istream& in, std::ostre
   RunConfig cfg;
   cfg.number = NumberKind::Float;
   bool json = false, hull = false;
-  CommandLine cl("audit",
-                 "Every decision the SATs make for one pair, in float (or double) against exact mpq arithmetic: "
-                 "the triple products of every edge pair, every candidate axis with its error bound, the features "
-                 "every configuration chooses, the contact manifold; then the full differential check of the case.",
-                 std::string("shapes (A, B):\n") + io::builtin_shapes_help() +
-                     "FILE.case as the only argument: a fuzzer reproducer, audited as it is\n"
-                     "\nA and B are built as 'sepax query A B --number float' builds them: coordinates rounded to "
-                     "float,\npoints hulled in float, B posed, both moved by an exact centre near them.\n"
-                     "\nExit status: 0 no unexplained disagreement, 1 at least one, 2 usage error, 3 an input that "
-                     "cannot be read, parsed or built, 4 internal error.\n");
+  CommandLine cl(
+      "audit",
+      "Every decision the SATs make for one pair, in float (or double) against exact mpq arithmetic: "
+      "the triple products of every edge pair, every candidate axis with its error bound, the features "
+      "every configuration chooses, the contact manifold; then the full differential check of the case.",
+      std::string("shapes (A, B):\n") + io::builtin_shapes_help() +
+          "FILE.case as the only argument: a fuzzer reproducer, audited as it is\n"
+          "\nA and B are built as 'sepax query A B --number float' builds them: coordinates rounded to "
+          "float,\npoints hulled in float, B posed, both moved by an exact centre near them.\n"
+          "\nExit status: 0 no unexplained disagreement, 1 at least one, 2 usage error, 3 an input that "
+          "cannot be read, parsed or built, 4 internal error.\n");
   auto& app = cl.app;
   app.add_option("shapes", shapes, "A B, or one FILE.case")->type_name("");
-  app.add_option("--case", case_file, "audit the fuzzer reproducer FILE (the same as giving FILE.case as the pair)")
+  app.add_option("--case", case_file,
+                 "audit the fuzzer reproducer FILE (the same as giving FILE.case as the pair)")
       ->type_name("FILE");
   cl.describe_value("--case", "a case file");
   app.add_option_function<std::string>(
-         "--number,--type",
-         [&cfg](const std::string& v) { cfg.number = *parse_number_kind(v); },
+         "--number,--type", [&cfg](const std::string& v) { cfg.number = *parse_number_kind(v); },
          "the audited arithmetic: float or double (default float), against exact")
       ->type_name("float|double")
       ->check(
           [](const std::string& v) {
             const auto k = parse_number_kind(v);
-            return k && *k != NumberKind::Exact ? std::string()
-                                                 : "'" + v + "': the audit compares float or double against exact";
+            return k && *k != NumberKind::Exact
+                       ? std::string()
+                       : "'" + v + "': the audit compares float or double against exact";
           },
           "");
   cl.describe_value("--number", "a value: float or double");
@@ -115,7 +119,8 @@ int run_audit(const std::vector<std::string>& args, std::istream& in, std::ostre
   if (const auto status = cl.parse(args, out, err)) return *status;
   try {
     const std::optional<Pose> pose = cl.pose();
-    if (!case_file.empty() && !shapes.empty()) throw UsageError("give either --case FILE or the shapes, not both");
+    if (!case_file.empty() && !shapes.empty())
+      throw UsageError("give either --case FILE or the shapes, not both");
     try {
       const ShapePair p = case_file.empty() ? load_pair(shapes, hull, in) : load_case(case_file, hull);
       if (pose && p.from_case) throw UsageError("--pose cannot be used with a case file (the case places B)");
@@ -132,6 +137,8 @@ int run_audit(const std::vector<std::string>& args, std::istream& in, std::ostre
   }
 }
 
-int audit_main(int argc, char** argv) { return run_audit(arguments(argc, argv), std::cin, std::cout, std::cerr); }
+int audit_main(int argc, char** argv) {
+  return run_audit(arguments(argc, argv), std::cin, std::cout, std::cerr);
+}
 
 }  // namespace sepax::cli

@@ -45,7 +45,8 @@ io::ShapeData points_from_json(const json::Value& doc, const char* key) {
     for (int c = 0; c < 3; ++c) {
       const auto& x = p[static_cast<std::size_t>(c)];
       if (!x.is_number()) {
-        throw LineError{where + ": coordinate " + std::to_string(c) + " is " + json::kind_name(x) + ", not a number"};
+        throw LineError{where + ": coordinate " + std::to_string(c) + " is " + json::kind_name(x) +
+                        ", not a number"};
       }
       q[c] = x.get<double>();
     }
@@ -58,13 +59,16 @@ io::ShapeData points_from_json(const json::Value& doc, const char* key) {
 BatchAnswer answer(const std::string& id_text, const json::Value& rest, bool error) {
   std::string body = json::write(rest);  // "{...}"
   std::string text = "{\"id\":" + id_text;
-  if (body.size() > 2) text += "," + body.substr(1);
-  else text += "}";
+  if (body.size() > 2)
+    text += "," + body.substr(1);
+  else
+    text += "}";
   return {std::move(text), error};
 }
 
 BatchAnswer error_answer(const std::string& id_text, std::size_t line_number, const std::string& message) {
-  return answer(id_text, json::Value{{"error", "line " + std::to_string(line_number) + ": " + message}}, true);
+  return answer(id_text, json::Value{{"error", "line " + std::to_string(line_number) + ": " + message}},
+                true);
 }
 
 }  // namespace
@@ -83,7 +87,8 @@ BatchAnswer batch_line(std::string_view line, std::size_t line_number, const Bat
                         "invalid JSON at column " + std::to_string(e.column()) + ": " + e.problem());
   }
   if (!doc.value.is_object())
-    return error_answer("null", line_number, std::string("expected a JSON object, got ") + json::kind_name(doc.value));
+    return error_answer("null", line_number,
+                        std::string("expected a JSON object, got ") + json::kind_name(doc.value));
   std::string id = "null";
   const auto idp = doc.value.find("id");
   if (idp != doc.value.end() && idp->is_number()) id = doc.number_text.at("id");

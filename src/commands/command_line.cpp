@@ -21,7 +21,8 @@ std::optional<double> parse_double(const std::string& s) {
   return v;
 }
 
-int input_error(std::ostream& out, std::ostream& err, bool json, const std::string& verb, const std::string& what) {
+int input_error(std::ostream& out, std::ostream& err, bool json, const std::string& verb,
+                const std::string& what) {
   err << "sepax " << verb << ": error: " << what << "\n";
   if (json) out << json::write(json::Value{{"error", what}}) << "\n";
   return kExitInput;
@@ -87,13 +88,16 @@ std::string option_in(const std::string& message) {
   const auto start = message.find("--");
   if (start == std::string::npos) return {};
   auto end = start + 2;
-  while (end < message.size() && (std::isalnum(static_cast<unsigned char>(message[end])) || message[end] == '-')) ++end;
+  while (end < message.size() &&
+         (std::isalnum(static_cast<unsigned char>(message[end])) || message[end] == '-'))
+    ++end;
   return message.substr(start, end - start);
 }
 
 }  // namespace
 
-std::optional<int> CommandLine::parse(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+std::optional<int> CommandLine::parse(const std::vector<std::string>& args, std::ostream& out,
+                                      std::ostream& err) {
   std::vector<std::string> rev = has_pose_ ? join_pose_tokens(args) : args;
   // `-:FMT` and `-#NAME` are shape arguments (standard input), not short options: they pass CLI11 with
   // a marker in place of the dash, which every positional option turns back into '-'.
@@ -115,7 +119,8 @@ std::optional<int> CommandLine::parse(const std::vector<std::string>& args, std:
   } catch (const CLI::ExtrasError&) {
     const auto extra = app.remaining();
     const std::string first = extra.empty() ? std::string("?") : extra.front();
-    return usage_error(err, (looks_like_option(first) ? "unknown option '" : "unexpected argument '") + first + "'");
+    return usage_error(
+        err, (looks_like_option(first) ? "unknown option '" : "unexpected argument '") + first + "'");
   } catch (const CLI::ArgumentMismatch& e) {
     const std::string name = option_in(e.what());
     const auto it = needs_.find(name);
@@ -175,7 +180,8 @@ std::optional<Pose> CommandLine::pose() const {
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
-  if (t.size() < 3) throw UsageError("--pose needs 3 numbers (tx ty tz), optionally followed by 4 (qw qx qy qz)");
+  if (t.size() < 3)
+    throw UsageError("--pose needs 3 numbers (tx ty tz), optionally followed by 4 (qw qx qy qz)");
   if (t.size() != 3 && t.size() != 7)
     throw UsageError("--pose: a rotation needs 4 numbers (qw qx qy qz) after the translation");
   double v[7] = {0, 0, 0, 1, 0, 0, 0};
@@ -202,7 +208,8 @@ std::optional<std::uint64_t> parse_unsigned(const std::string& s) {
 
 }  // namespace
 
-CLI::Option* CommandLine::add_unsigned(const std::string& name, std::uint64_t& target, const std::string& desc) {
+CLI::Option* CommandLine::add_unsigned(const std::string& name, std::uint64_t& target,
+                                       const std::string& desc) {
   describe_value(name, "a non-negative integer");
   return app
       .add_option_function<std::string>(
@@ -241,7 +248,7 @@ CLI::Option* CommandLine::add_nonnegative(const std::string& name, double& targe
           [](const std::string& v) {
             const auto x = parse_double(v);
             return x && std::isfinite(*x) && *x >= 0 ? std::string()
-                                                      : "'" + v + "' is not a non-negative number";
+                                                     : "'" + v + "' is not a non-negative number";
           },
           "");
 }

@@ -88,7 +88,8 @@ class CommandLine {
 
 /// An input that cannot be read, parsed or built: prints "sepax VERB: error:
 /// what" to err and, when json, {"error": what} to out; returns 3.
-int input_error(std::ostream& out, std::ostream& err, bool json, const std::string& verb, const std::string& what);
+int input_error(std::ostream& out, std::ostream& err, bool json, const std::string& verb,
+                const std::string& what);
 
 /// argv[1..argc) as strings (argv[0] is the verb).
 std::vector<std::string> arguments(int argc, char** argv);

@@ -9,7 +9,8 @@ namespace sepax::cli {
 
 Pose Pose::make(const Vec3<double>& t, std::array<double, 4> q) {
   for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(t[i])) throw InvalidInput(ErrorCode::NonFinite, "--pose: the translation is not finite");
+    if (!std::isfinite(t[i]))
+      throw InvalidInput(ErrorCode::NonFinite, "--pose: the translation is not finite");
   }
   double n2 = 0;
   for (const double c : q) {

@@ -17,7 +17,7 @@ namespace sepax::cli {
 struct Pose {
   Vec3<double> translation = Vec3<double>(0, 0, 0);
   std::array<double, 4> rotation{1, 0, 0, 0};  // unit quaternion w, x, y, z
-  RigidTransform<double> transform;             // the same motion as a matrix
+  RigidTransform<double> transform;            // the same motion as a matrix
 
   /// Throws InvalidInput for non-finite values or a zero quaternion.
   static Pose make(const Vec3<double>& t, std::array<double, 4> q = {1, 0, 0, 0});

@@ -27,10 +27,12 @@ constexpr const char* kExitText =
 
 std::string shapes_footer(const char* extra = "") {
   return std::string("shapes (A, B, SHAPE):\n") + io::builtin_shapes_help() +
-         "FILE.case as the only argument: a fuzzer reproducer (A and B, B placed by the case)\n" + extra + kExitText;
+         "FILE.case as the only argument: a fuzzer reproducer (A and B, B placed by the case)\n" + extra +
+         kExitText;
 }
 
-const char* const kPoseHelp = "move B: rotate by the quaternion (normalised; default identity), then translate";
+const char* const kPoseHelp =
+    "move B: rotate by the quaternion (normalised; default identity), then translate";
 
 int batch(const CommandLine& cl, const std::string& file, const BatchOptions& opt, std::istream& in,
           std::ostream& out, std::ostream& err) {
@@ -62,11 +64,11 @@ int run_query(const std::vector<std::string>& args, std::istream& in, std::ostre
   bool json = false, hull = false, manifold = true;
   std::string batch_file;
   int jobs = 0;
-  CommandLine cl("query", "Separating axis test of two convex shapes A and B, or of a batch of JSON lines.",
-                 shapes_footer(
-                     "\n--batch: one JSON object per line, {\"id\": ID, \"a\": [[x,y,z], ...], \"b\": [...]} "
-                     "(point sets, hulled);\none JSON object per line out, in input order, with the contact "
-                     "manifold unless --no-manifold.\n"));
+  CommandLine cl(
+      "query", "Separating axis test of two convex shapes A and B, or of a batch of JSON lines.",
+      shapes_footer("\n--batch: one JSON object per line, {\"id\": ID, \"a\": [[x,y,z], ...], \"b\": [...]} "
+                    "(point sets, hulled);\none JSON object per line out, in input order, with the contact "
+                    "manifold unless --no-manifold.\n"));
   auto& app = cl.app;
   app.add_option("shapes", shapes, "A B, or one FILE.case")->type_name("");
   cl.add_pose(kPoseHelp);
@@ -80,7 +82,8 @@ int run_query(const std::vector<std::string>& args, std::istream& in, std::ostre
   cl.describe_value("--batch", "a file name (or - for standard input)");
   app.add_flag("--manifold,!--no-manifold", manifold,
                "with --batch: the contact manifold in every answer (default on)");
-  cl.add_unsigned("--jobs", jobs, "with --batch: threads answering lines (default 0: all cores; same output)");
+  cl.add_unsigned("--jobs", jobs,
+                  "with --batch: threads answering lines (default 0: all cores; same output)");
   if (const auto status = cl.parse(args, out, err)) return *status;
   try {
     const std::optional<Pose> pose = cl.pose();
@@ -101,10 +104,13 @@ int run_query(const std::vector<std::string>& args, std::istream& in, std::ostre
     ShapePair p;
     try {
       p = load_pair(shapes, hull, in);
-      if (pose && p.from_case) throw UsageError("--pose cannot be used with a .case file (the case places B)");
+      if (pose && p.from_case)
+        throw UsageError("--pose cannot be used with a .case file (the case places B)");
       const RunOutcome r = run_sat(p.a, p.b, pose ? &*pose : nullptr, cfg);
-      if (json) out << json::write(query_json(r, cfg)) << "\n";
-      else print_query_text(out, r, cfg, p.a.name, p.b.name);
+      if (json)
+        out << json::write(query_json(r, cfg)) << "\n";
+      else
+        print_query_text(out, r, cfg, p.a.name, p.b.name);
       return kExitOk;
     } catch (const InvalidInput& e) {
       return input_error(out, err, json, "query", e.what());
@@ -166,15 +172,17 @@ int run_render(const std::vector<std::string>& args, std::ostream& out, std::ost
   RunConfig cfg;
   bool hull = false;
   std::string svg;
-  CommandLine cl("render",
-                 "Draw A, B (B moved by --pose), their contact manifold and the overlaid Gauss maps of A and -B "
-                 "(arcs, Minkowski edge-edge faces, the chosen axis) as an SVG picture.  The case is computed in "
-                 "double (robust policy with --robust), so its feature indices match "
-                 "`sepax query --number double`.",
-                 shapes_footer());
+  CommandLine cl(
+      "render",
+      "Draw A, B (B moved by --pose), their contact manifold and the overlaid Gauss maps of A and -B "
+      "(arcs, Minkowski edge-edge faces, the chosen axis) as an SVG picture.  The case is computed in "
+      "double (robust policy with --robust), so its feature indices match "
+      "`sepax query --number double`.",
+      shapes_footer());
   auto& app = cl.app;
   app.add_option("shapes", shapes, "A B, or one FILE.case")->type_name("");
-  app.add_option("--svg", svg, "write the picture to FILE (- for standard output); required")->type_name("FILE|-");
+  app.add_option("--svg", svg, "write the picture to FILE (- for standard output); required")
+      ->type_name("FILE|-");
   cl.describe_value("--svg", "a file name (or - for standard output)");
   cl.add_pose(kPoseHelp);
   cl.add_algorithm(cfg);
@@ -187,14 +195,16 @@ int run_render(const std::vector<std::string>& args, std::ostream& out, std::ost
     if (!app.count("--svg")) throw UsageError("--svg FILE is required (- for standard output)");
     try {
       const ShapePair p = load_pair(shapes, hull);
-      if (pose && p.from_case) throw UsageError("--pose cannot be used with a .case file (the case places B)");
+      if (pose && p.from_case)
+        throw UsageError("--pose cannot be used with a .case file (the case places B)");
       const std::string picture =
           render_case_svg(p.a, p.b, pose ? &*pose : nullptr, cfg, p.a.name + "  vs  " + p.b.name);
       if (svg == "-") {
         out << picture;
       } else {
         std::ofstream f(svg, std::ios::binary);
-        if (!(f << picture) || !f.flush()) return input_error(out, err, false, "render", "cannot write " + svg);
+        if (!(f << picture) || !f.flush())
+          return input_error(out, err, false, "render", "cannot write " + svg);
         err << "sepax render: wrote " << svg << "\n";
       }
       return kExitOk;
@@ -206,7 +216,9 @@ int run_render(const std::vector<std::string>& args, std::ostream& out, std::ost
   }
 }
 
-int query_main(int argc, char** argv) { return run_query(arguments(argc, argv), std::cin, std::cout, std::cerr); }
+int query_main(int argc, char** argv) {
+  return run_query(arguments(argc, argv), std::cin, std::cout, std::cerr);
+}
 int info_main(int argc, char** argv) { return run_info(arguments(argc, argv), std::cout, std::cerr); }
 int render_main(int argc, char** argv) { return run_render(arguments(argc, argv), std::cout, std::cerr); }
 

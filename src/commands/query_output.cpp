@@ -5,7 +5,9 @@
 
 namespace sepax::cli {
 
-json::Value feature_json(const Feature& f) { return json::Value{{"type", type_name(f.type)}, {"a", f.a}, {"b", f.b}}; }
+json::Value feature_json(const Feature& f) {
+  return json::Value{{"type", type_name(f.type)}, {"a", f.a}, {"b", f.b}};
+}
 
 json::Value vector_json(const Vec3<double>& v) {
   return json::Value::array({json::number(v[0]), json::number(v[1]), json::number(v[2])});
@@ -29,13 +31,18 @@ std::string counts_text(const ShapeCounts& c) {
 std::string feature_text(const Feature& f) {
   const std::string a = std::to_string(f.a), b = std::to_string(f.b);
   switch (f.type) {
-    case FeatureType::FaceA: return "faceA: face " + a + " of A, support vertex " + b + " of B";
-    case FeatureType::FaceB: return "faceB: face " + b + " of B, support vertex " + a + " of A";
-    case FeatureType::EdgePair: return "edges: edge " + a + " of A, edge " + b + " of B";
+    case FeatureType::FaceA:
+      return "faceA: face " + a + " of A, support vertex " + b + " of B";
+    case FeatureType::FaceB:
+      return "faceB: face " + b + " of B, support vertex " + a + " of A";
+    case FeatureType::EdgePair:
+      return "edges: edge " + a + " of A, edge " + b + " of B";
     case FeatureType::SideA:
-      return "sideA: in-plane normal of edge " + a + " of A (coplanar polygons), support vertex " + b + " of B";
+      return "sideA: in-plane normal of edge " + a + " of A (coplanar polygons), support vertex " + b +
+             " of B";
     case FeatureType::SideB:
-      return "sideB: in-plane normal of edge " + b + " of B (coplanar polygons), support vertex " + a + " of A";
+      return "sideB: in-plane normal of edge " + b + " of B (coplanar polygons), support vertex " + a +
+             " of A";
   }
   return "?";
 }
@@ -45,8 +52,8 @@ std::string feature_text(const Feature& f) {
 json::Value manifold_json(const ManifoldOut& m) {
   json::Value points = json::Value::array();
   for (const auto& p : m.points) {
-    points.push_back(
-        json::Value{{"position", vector_json(p.position)}, {"separation", json::number(p.separation)}, {"id", p.id}});
+    points.push_back(json::Value{
+        {"position", vector_json(p.position)}, {"separation", json::number(p.separation)}, {"id", p.id}});
   }
   json::Value o{{"kind", m.kind}};
   if (m.kind == "face") {
@@ -101,7 +108,8 @@ void print_query_text(std::ostream& out, const RunOutcome& r, const RunConfig& c
     out << "manifold:   none (no contact points)\n";
     return;
   }
-  out << "manifold:   " << m.kind << " contact, " << m.points.size() << " point" << (m.points.size() == 1 ? "" : "s");
+  out << "manifold:   " << m.kind << " contact, " << m.points.size() << " point"
+      << (m.points.size() == 1 ? "" : "s");
   if (m.kind == "face") {
     out << " (reference face " << m.reference_face << " of " << (m.reference_shape == 0 ? "A" : "B")
         << ", incident face " << m.incident_face << " of " << (m.reference_shape == 0 ? "B" : "A") << ", "
@@ -112,8 +120,8 @@ void print_query_text(std::ostream& out, const RunOutcome& r, const RunConfig& c
   out << "\n";
   for (const auto& p : m.points) {
     out << "  point " << json::number_text(p.position[0]) << " " << json::number_text(p.position[1]) << " "
-        << json::number_text(p.position[2]) << "  separation " << json::number_text(p.separation) << "  " << p.id
-        << "\n";
+        << json::number_text(p.position[2]) << "  separation " << json::number_text(p.separation) << "  "
+        << p.id << "\n";
   }
 }
 

@@ -12,13 +12,13 @@
 
 namespace sepax::cli {
 
-
 std::string render_case_svg(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b,
                             const RunConfig& cfg, const std::string& title) {
   const ConvexPolyhedron<double> a = build_shape<double>(sa);
   const ConvexPolyhedron<double> b = build_shape<double>(sb, pose_b);
   const SatAlgorithm alg = sat_algorithm(cfg.algorithm);
-  const SatResult<double> r = cfg.robust ? sat::run<policy::Robust>(alg, a, b) : sat::run<policy::Plain>(alg, a, b);
+  const SatResult<double> r =
+      cfg.robust ? sat::run<policy::Robust>(alg, a, b) : sat::run<policy::Plain>(alg, a, b);
   render::SvgScene scene{&a, &b, r, {}, title};
   for (const auto& p : contact_manifold(a, b, r).points) {
     scene.contacts.push_back(render::SvgContact{p.position, sepax::to_double(p.separation)});

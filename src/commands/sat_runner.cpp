@@ -30,27 +30,36 @@ namespace sepax::cli {
 
 const char* name(NumberKind k) {
   switch (k) {
-    case NumberKind::Float: return "float";
-    case NumberKind::Double: return "double";
-    case NumberKind::Exact: return "exact";
+    case NumberKind::Float:
+      return "float";
+    case NumberKind::Double:
+      return "double";
+    case NumberKind::Exact:
+      return "exact";
   }
   return "?";
 }
 
 const char* name(AlgorithmKind k) {
   switch (k) {
-    case AlgorithmKind::Brute: return "brute";
-    case AlgorithmKind::Gauss: return "gauss";
-    case AlgorithmKind::Traversal: return "traversal";
+    case AlgorithmKind::Brute:
+      return "brute";
+    case AlgorithmKind::Gauss:
+      return "gauss";
+    case AlgorithmKind::Traversal:
+      return "traversal";
   }
   return "?";
 }
 
 SatAlgorithm sat_algorithm(AlgorithmKind k) {
   switch (k) {
-    case AlgorithmKind::Brute: return SatAlgorithm::brute_force;
-    case AlgorithmKind::Gauss: return SatAlgorithm::gauss_map;
-    case AlgorithmKind::Traversal: return SatAlgorithm::traversal;
+    case AlgorithmKind::Brute:
+      return SatAlgorithm::brute_force;
+    case AlgorithmKind::Gauss:
+      return SatAlgorithm::gauss_map;
+    case AlgorithmKind::Traversal:
+      return SatAlgorithm::traversal;
   }
   return SatAlgorithm::gauss_map;
 }
@@ -116,7 +125,8 @@ SatResult<T> run_algorithm(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<
 }
 
 template <Number T>
-RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b, const RunConfig& cfg) {
+RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pose* pose_b,
+                     const RunConfig& cfg) {
   // Both shapes in one frame near them (shape_builder.hpp, build_pair), so
   // a small pair far from the origin is resolved as well as near it;
   // positions are reported in world coordinates.
@@ -160,9 +170,12 @@ RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pos
 RunOutcome run_sat(const io::ShapeData& a, const io::ShapeData& b, const Pose* pose_b, const RunConfig& cfg) {
   if (const std::string why = unsupported_reason(cfg); !why.empty()) throw std::invalid_argument(why);
   switch (cfg.number) {
-    case NumberKind::Float: return run_typed<float>(a, b, pose_b, cfg);
-    case NumberKind::Double: return run_typed<double>(a, b, pose_b, cfg);
-    case NumberKind::Exact: return run_typed<mpq_class>(a, b, pose_b, cfg);
+    case NumberKind::Float:
+      return run_typed<float>(a, b, pose_b, cfg);
+    case NumberKind::Double:
+      return run_typed<double>(a, b, pose_b, cfg);
+    case NumberKind::Exact:
+      return run_typed<mpq_class>(a, b, pose_b, cfg);
   }
   throw std::invalid_argument("unknown number type");
 }
@@ -178,9 +191,12 @@ ShapeCounts counts_centred(const io::ShapeData& s, const Pose* pose) {
 
 ShapeCounts shape_counts(const io::ShapeData& s, NumberKind number, const Pose* pose) {
   switch (number) {
-    case NumberKind::Float: return counts_centred<float>(s, pose);
-    case NumberKind::Double: return counts_centred<double>(s, pose);
-    case NumberKind::Exact: return counts_centred<mpq_class>(s, pose);
+    case NumberKind::Float:
+      return counts_centred<float>(s, pose);
+    case NumberKind::Double:
+      return counts_centred<double>(s, pose);
+    case NumberKind::Exact:
+      return counts_centred<mpq_class>(s, pose);
   }
   throw std::invalid_argument("unknown number type");
 }

@@ -54,14 +54,14 @@ struct ManifoldOut {
   int reference_shape = -1;   // face contacts: 0 = A, 1 = B
   int reference_face = -1;
   int incident_face = -1;
-  int candidate_points = 0;   // points below the reference face before the reduction
+  int candidate_points = 0;  // points below the reference face before the reduction
   std::vector<ContactOut> points;
 };
 
 struct RunOutcome {
   bool overlap = false;
-  double separation = 0;                  // signed, along the unit axis
-  Feature feature;                        // see sepax/feature.hpp
+  double separation = 0;                        // signed, along the unit axis
+  Feature feature;                              // see sepax/feature.hpp
   Vec3<double> normal = Vec3<double>(0, 0, 0);  // unit axis from A towards B
   SatStats stats;
   bool early_out = false;

@@ -84,8 +84,8 @@ std::vector<Vec3<T>> converted(const io::ShapeData& s, const std::vector<Vec3<do
     out.push_back(vec_from_double<T>(v[i]));
     for (int c = 0; c < 3; ++c) {
       if (!number_traits<T>::is_finite(out.back()[c])) {
-        throw coordinate_beyond_range(c, s.kind == io::ShapeData::Kind::Points ? "point" : "vertex", i, v[i][c],
-                                      number_traits<T>::name);
+        throw coordinate_beyond_range(c, s.kind == io::ShapeData::Kind::Points ? "point" : "vertex", i,
+                                      v[i][c], number_traits<T>::name);
       }
     }
   }
@@ -178,7 +178,8 @@ std::vector<Vec3<T>> shape_points(const io::ShapeData& s, const Pose* pose = nul
 
 /// s built in T (posed by pose), at its coordinates minus *centre when given.
 template <Number T>
-ConvexPolyhedron<T> build_shape(const io::ShapeData& s, const Pose* pose = nullptr, const Vec3<T>* centre = nullptr) {
+ConvexPolyhedron<T> build_shape(const io::ShapeData& s, const Pose* pose = nullptr,
+                                const Vec3<T>* centre = nullptr) {
   try {
     return detail::build_unnamed<T>(s, pose, centre ? *centre : Vec3<T>(T(0), T(0), T(0)));
   } catch (const InvalidInput& e) {
@@ -218,7 +219,8 @@ BuiltPair<T> build_pair(const io::ShapeData& sa, const io::ShapeData& sb, const 
     // 2^29 of each other's magnitude), rounded once; double: v + cb restores
     // the coordinate read (exact), minus ca rounded once.
     if constexpr (std::is_same_v<T, float>) {
-      moved.push_back(vec_from_double<T>(Vec3<double>(vec_to_double(v) + vec_to_double(cb) - vec_to_double(ca))));
+      moved.push_back(
+          vec_from_double<T>(Vec3<double>(vec_to_double(v) + vec_to_double(cb) - vec_to_double(ca))));
     } else {
       moved.push_back(Vec3<T>(Vec3<T>(v + cb) - ca));
     }

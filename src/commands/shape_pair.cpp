@@ -20,7 +20,8 @@ std::string shape_argument(const std::string& arg, bool hull) {
 }
 
 const char* pair_arguments_help() {
-  return "two shapes A and B (built-ins, OFF or OBJ face lists, points files; 'sepax query --help' lists them), "
+  return "two shapes A and B (built-ins, OFF or OBJ face lists, points files; 'sepax query --help' lists "
+         "them), "
          "or one fuzzer reproducer FILE.case";
 }
 
@@ -52,8 +53,8 @@ ShapePair load_case(const std::string& path, bool hull) {
 ShapePair load_pair(const std::vector<std::string>& positional, bool hull, std::istream& standard_input) {
   if (positional.size() == 1 && is_case_file(positional[0])) return load_case(positional[0], hull);
   if (positional.size() != 2)
-    throw UsageError("expected two shapes A and B, got " + std::to_string(positional.size()) + " (arguments: " +
-                     pair_arguments_help() + ")");
+    throw UsageError("expected two shapes A and B, got " + std::to_string(positional.size()) +
+                     " (arguments: " + pair_arguments_help() + ")");
   io::ShapeData first = io::load_shape(shape_argument(positional[0], hull), standard_input);
   io::ShapeData second = io::load_shape(shape_argument(positional[1], hull), standard_input);
   return {std::move(first), std::move(second), false};

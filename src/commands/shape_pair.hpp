@@ -41,7 +41,8 @@ ShapePair load_case(const std::string& path, bool hull);
 /// Throws UsageError (command_line.hpp) for a wrong number of arguments or a
 /// .case in a build without the fuzzer, InvalidInput for unreadable input.
 /// `-` arguments read `standard_input`.
-ShapePair load_pair(const std::vector<std::string>& positional, bool hull, std::istream& standard_input = std::cin);
+ShapePair load_pair(const std::vector<std::string>& positional, bool hull,
+                    std::istream& standard_input = std::cin);
 
 /// The one-line description of the accepted arguments, for usage errors.
 const char* pair_arguments_help();

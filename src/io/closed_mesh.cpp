@@ -102,7 +102,8 @@ ClosedMesh closed_mesh(const ShapeData& s) {
       edges.push_back({loop[i], loop[(i + 1) % loop.size()], static_cast<int>(f), static_cast<int>(i)});
     }
   }
-  std::sort(edges.begin(), edges.end(), [](const DirectedEdge& a, const DirectedEdge& b) { return a.key() < b.key(); });
+  std::sort(edges.begin(), edges.end(),
+            [](const DirectedEdge& a, const DirectedEdge& b) { return a.key() < b.key(); });
   const DirectedEdge* again = nullptr;  // the repeated use met first in file order
   const DirectedEdge* again_first = nullptr;
   for (std::size_t i = 1; i < edges.size(); ++i) {
@@ -114,7 +115,9 @@ ClosedMesh closed_mesh(const ShapeData& s) {
       again_first = &edges[k];
     }
   }
-  const auto name = [&](int welded_vertex) { return std::to_string(m.vertex[static_cast<std::size_t>(welded_vertex)]); };
+  const auto name = [&](int welded_vertex) {
+    return std::to_string(m.vertex[static_cast<std::size_t>(welded_vertex)]);
+  };
   if (degenerate < m.faces.size() && (!again || static_cast<int>(degenerate) <= again->face)) {
     fail(ErrorCode::DegenerateFace,
          "face " + std::to_string(degenerate) + " uses the point of vertex " + name(repeated) + " twice");
@@ -129,11 +132,13 @@ ClosedMesh closed_mesh(const ShapeData& s) {
   // Each directed edge's reverse must be there too.
   for (const DirectedEdge& e : edges) {
     const DirectedEdge reverse{e.to, e.from, -1, -1};
-    const auto it = std::lower_bound(edges.begin(), edges.end(), reverse,
-                                     [](const DirectedEdge& a, const DirectedEdge& b) { return a.key() < b.key(); });
+    const auto it =
+        std::lower_bound(edges.begin(), edges.end(), reverse,
+                         [](const DirectedEdge& a, const DirectedEdge& b) { return a.key() < b.key(); });
     if (it == edges.end() || it->from != e.to || it->to != e.from) {
       fail(ErrorCode::NotManifold, "face " + std::to_string(e.face) + ": its edge " + name(e.from) + "-" +
-                                       name(e.to) + " is on no other face: the mesh is open (it has a hole or a border)");
+                                       name(e.to) +
+                                       " is on no other face: the mesh is open (it has a hole or a border)");
     }
   }
   return m;

@@ -23,9 +23,9 @@ inline constexpr const char* kHullHint =
     "; to use the convex hull of the vertices, write hull:FILE (or pass --hull)";
 
 struct ClosedMesh {
-  std::vector<int> vertex;               // welded vertex -> its first index in ShapeData::vertices
-                                         // (only vertices some face uses)
-  std::vector<std::vector<int>> faces;   // per face of the input, the welded vertex loop
+  std::vector<int> vertex;              // welded vertex -> its first index in ShapeData::vertices
+                                        // (only vertices some face uses)
+  std::vector<std::vector<int>> faces;  // per face of the input, the welded vertex loop
 };
 
 /// Welds identical vertices and checks the faces form a closed, consistently

@@ -137,19 +137,22 @@ ConvexPolyhedron<T> convex_mesh(const ShapeData& s, const std::vector<Vec3<T>>& 
         throw InvalidInput(ErrorCode::NotConvex,
                            "face " + std::to_string(f) + ": its vertex " +
                                std::to_string(m.vertex[static_cast<std::size_t>(i)]) +
-                               " is inside the convex hull of the vertices: the mesh is not convex" + kHullHint);
+                               " is inside the convex hull of the vertices: the mesh is not convex" +
+                               kHullHint);
       }
     }
-    throw InvalidInput(ErrorCode::NotConvex,
-                       "face " + std::to_string(f) +
-                           " is not on the boundary of the convex hull of the vertices, facing out: the mesh is "
-                           "not convex, or the face is turned inwards" +
-                           kHullHint);
+    throw InvalidInput(
+        ErrorCode::NotConvex,
+        "face " + std::to_string(f) +
+            " is not on the boundary of the convex hull of the vertices, facing out: the mesh is "
+            "not convex, or the face is turned inwards" +
+            kHullHint);
   }
   if (!(mesh_area < 1.5 * hull_area)) {
     throw InvalidInput(ErrorCode::NotManifold,
                        "the faces cover the surface of their convex hull more than once (area " +
-                           format_number(mesh_area) + " against " + format_number(hull_area) + ")" + kHullHint);
+                           format_number(mesh_area) + " against " + format_number(hull_area) + ")" +
+                           kHullHint);
   }
   return hull;
 }

@@ -69,17 +69,21 @@ std::vector<ObjObject> read_obj_objects(std::istream& in, const std::string& nam
     if (tok[0] == "v") {
       const std::string what = "vertex " + std::to_string(out.vertices.size() + 1);
       const std::size_t n = tok.size() - 1;
-      if (n < 3) r.fail(what + " has " + std::to_string(n) + " value" + (n == 1 ? "" : "s") + "; expected 'v x y z'");
-      if (n == 5 || n > 7) r.fail(what + " has " + std::to_string(n) + " values; expected x y z [w] or x y z r g b");
+      if (n < 3)
+        r.fail(what + " has " + std::to_string(n) + " value" + (n == 1 ? "" : "s") + "; expected 'v x y z'");
+      if (n == 5 || n > 7)
+        r.fail(what + " has " + std::to_string(n) + " values; expected x y z [w] or x y z r g b");
       Vec3<double> p;
       for (int c = 0; c < 3; ++c) {
-        p[c] = parse_double(r, tok[static_cast<std::size_t>(c) + 1], [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
+        p[c] = parse_double(r, tok[static_cast<std::size_t>(c) + 1],
+                            [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
       }
       if (n == 4) {
         const double w = parse_double(r, tok[4], [&] { return "w of " + what; });
         if (w != 1.0) r.fail(what + " has w = " + std::string(tok[4]) + "; only w = 1 is supported");
       } else {
-        for (std::size_t c = 4; c <= n; ++c) (void)parse_double(r, tok[c], [&] { return "a colour value of " + what; });
+        for (std::size_t c = 4; c <= n; ++c)
+          (void)parse_double(r, tok[c], [&] { return "a colour value of " + what; });
       }
       out.vertices.push_back(p);
     } else if (tok[0] == "f") {
@@ -140,8 +144,9 @@ std::vector<ObjObject> read_obj_objects(std::istream& in, const std::string& nam
     return objects;
   }
   for (std::size_t k = 0; k < names.size(); ++k) {
-    objects.push_back(ObjObject{names[k], object_shape(out, name + "#" + (names[k].empty() ? std::to_string(k) : names[k]),
-                                                       faces_of[names[k]])});
+    objects.push_back(
+        ObjObject{names[k], object_shape(out, name + "#" + (names[k].empty() ? std::to_string(k) : names[k]),
+                                         faces_of[names[k]])});
   }
   return objects;
 }
@@ -159,8 +164,9 @@ ShapeData select_object(const std::vector<ObjObject>& objects, const std::string
   if (!selector) {
     if (objects.size() == 1) return objects[0].shape;
     throw InvalidInput(ErrorCode::Parse, file + ": the file holds " + std::to_string(objects.size()) +
-                                             " objects (" + object_list(objects) + "); select one with " + file +
-                                             "#NAME or " + file + "#K ('sepax info " + file + "' lists them)");
+                                             " objects (" + object_list(objects) + "); select one with " +
+                                             file + "#NAME or " + file + "#K ('sepax info " + file +
+                                             "' lists them)");
   }
   for (const auto& o : objects) {
     if (o.name == *selector) return o.shape;
@@ -172,7 +178,8 @@ ShapeData select_object(const std::vector<ObjObject>& objects, const std::string
     return objects[k].shape;
   }
   throw InvalidInput(ErrorCode::Parse, file + ": no object '" + *selector + "' (the file holds " +
-                                           std::to_string(objects.size()) + ": " + object_list(objects) + ")");
+                                           std::to_string(objects.size()) + ": " + object_list(objects) +
+                                           ")");
 }
 
 ShapeData read_obj(std::istream& in, const std::string& name) {

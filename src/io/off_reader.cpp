@@ -88,7 +88,8 @@ ShapeData read_off(std::istream& in, const std::string& name) {
     }
     Vec3<double> p;
     for (int c = 0; c < 3; ++c) {
-      p[c] = parse_double(r, tok[static_cast<std::size_t>(c)], [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
+      p[c] = parse_double(r, tok[static_cast<std::size_t>(c)],
+                          [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
     }
     out.vertices.push_back(p);
   }
@@ -101,11 +102,13 @@ ShapeData read_off(std::istream& in, const std::string& name) {
     const long long n = parse_count(r, tok[0], "the vertex count of " + what, kMaxCount);
     if (n < 3) r.fail(what + " has " + std::to_string(n) + " vertices; a face needs at least 3");
     if (static_cast<long long>(tok.size()) - 1 < n) {
-      r.fail(what + " declares " + std::to_string(n) + " vertices but lists " + std::to_string(tok.size() - 1));
+      r.fail(what + " declares " + std::to_string(n) + " vertices but lists " +
+             std::to_string(tok.size() - 1));
     }
     std::vector<int> face;
     for (long long k = 1; k <= n; ++k) {
-      const long long idx = parse_integer(r, tok[static_cast<std::size_t>(k)], [&] { return "a vertex index of " + what; });
+      const long long idx =
+          parse_integer(r, tok[static_cast<std::size_t>(k)], [&] { return "a vertex index of " + what; });
       if (idx < 0 || idx >= nv) {
         r.fail(what + ": vertex index " + std::to_string(idx) + " is out of range (the file has " +
                std::to_string(nv) + " vertices, indices 0.." + std::to_string(nv - 1) + ")");
@@ -117,7 +120,8 @@ ShapeData read_off(std::istream& in, const std::string& name) {
   }
 
   if (next_tokens()) {
-    r.fail("unexpected content after the last face (the counts line declares " + std::to_string(nf) + " faces)");
+    r.fail("unexpected content after the last face (the counts line declares " + std::to_string(nf) +
+           " faces)");
   }
   return out;
 }

@@ -18,8 +18,7 @@ std::ifstream open_input(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int e = errno;
-    throw InvalidInput(ErrorCode::Parse,
-                       path + ": cannot open: " + (e ? std::strerror(e) : "unknown error"));
+    throw InvalidInput(ErrorCode::Parse, path + ": cannot open: " + (e ? std::strerror(e) : "unknown error"));
   }
   return in;
 }

@@ -22,7 +22,8 @@ ShapeData read_points(std::istream& in, const std::string& name) {
     }
     Vec3<double> p;
     for (int c = 0; c < 3; ++c) {
-      p[c] = parse_double(r, tok[static_cast<std::size_t>(c)], [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
+      p[c] = parse_double(r, tok[static_cast<std::size_t>(c)],
+                          [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
     }
     out.vertices.push_back(p);
   }

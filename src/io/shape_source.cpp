@@ -59,7 +59,8 @@ int side_count(const std::string& spec, std::string_view s) {
 
 std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
 
@@ -91,9 +92,8 @@ ShapeData builtin_shape_unnamed(const std::string& spec) {
   if (spec == "cube") return from_polyhedron(shapes::cube<double>(), spec);
   if (spec == "tetra") return from_polyhedron(shapes::tetrahedron<double>(), spec);
   if (spec == "triangle") {
-    return from_polyhedron(shapes::triangle<double>(Vec3<double>(0, 0, 0), Vec3<double>(1, 0, 0),
-                                                    Vec3<double>(0, 1, 0)),
-                           spec);
+    return from_polyhedron(
+        shapes::triangle<double>(Vec3<double>(0, 0, 0), Vec3<double>(1, 0, 0), Vec3<double>(0, 1, 0)), spec);
   }
   if (spec.starts_with("box:")) {
     const std::string_view args = std::string_view(spec).substr(4);
@@ -101,7 +101,8 @@ ShapeData builtin_shape_unnamed(const std::string& spec) {
     std::size_t start = 0;
     for (int i = 0; i < 3; ++i) {
       const std::size_t comma = args.find(',', start);
-      if ((i < 2) != (comma != std::string_view::npos)) bad(spec, "expected box:HX,HY,HZ (three half extents)");
+      if ((i < 2) != (comma != std::string_view::npos))
+        bad(spec, "expected box:HX,HY,HZ (three half extents)");
       const std::string_view part = args.substr(start, i < 2 ? comma - start : std::string_view::npos);
       h[i] = positive_number(spec, part, i == 0 ? "HX" : i == 1 ? "HY" : "HZ");
       start = comma + 1;
@@ -112,7 +113,8 @@ ShapeData builtin_shape_unnamed(const std::string& spec) {
     return from_polyhedron(shapes::prism<double>(side_count(spec, std::string_view(spec).substr(6))), spec);
   }
   if (spec.starts_with("polygon:")) {
-    return from_polyhedron(shapes::regular_polygon<double>(side_count(spec, std::string_view(spec).substr(8))), spec);
+    return from_polyhedron(
+        shapes::regular_polygon<double>(side_count(spec, std::string_view(spec).substr(8))), spec);
   }
   bad(spec, "not a built-in shape");
 }
@@ -143,7 +145,8 @@ std::string sniffed_format(const std::string& text) {
     if (t.ends_with("OFF")) return "off";
     if (t == "ply") return "ply";
     if (t == "solid") return "stl";
-    static constexpr std::string_view obj_words[] = {"v", "vt", "vn", "vp", "f", "o", "g", "s", "l", "p", "usemtl", "mtllib"};
+    static constexpr std::string_view obj_words[] = {"v", "vt", "vn", "vp", "f",      "o",
+                                                     "g", "s",  "l",  "p",  "usemtl", "mtllib"};
     for (const auto w : obj_words) {
       if (t == w) return "obj";
     }
@@ -157,9 +160,11 @@ std::string sniffed_format(const std::string& text) {
 
 ShapeData read_stdin(const std::string& spec, const std::optional<std::string>& selector, std::istream& in) {
   std::string format = spec == "-" ? "" : spec.substr(2);
-  std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(format.begin(), format.end(), format.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (!in.good() || in.peek() == std::char_traits<char>::eof()) {
-    throw InvalidInput(ErrorCode::Parse, "standard input: nothing to read (empty, or already read by another '-')");
+    throw InvalidInput(ErrorCode::Parse,
+                       "standard input: nothing to read (empty, or already read by another '-')");
   }
   std::ostringstream all;
   all << in.rdbuf();
@@ -172,7 +177,8 @@ ShapeData read_stdin(const std::string& spec, const std::optional<std::string>& 
   if (format == "pts" || format == "xyz" || format == "txt") return read_points(s, name);
   if (format == "ply") return read_ply(s, name);
   if (format == "stl") return read_stl(s, name);
-  throw InvalidInput(ErrorCode::Parse, "'" + spec + "': unknown format '" + format + "' (off, obj, ply, stl or pts)");
+  throw InvalidInput(ErrorCode::Parse,
+                     "'" + spec + "': unknown format '" + format + "' (off, obj, ply, stl or pts)");
 }
 
 /// A face list's vertices as a point set (to be hulled).
@@ -211,7 +217,8 @@ ShapeData load_shape(const std::string& spec, std::istream& standard_input) {
 ShapeData load_shape(const std::string& spec) { return load_shape(spec, std::cin); }
 
 std::optional<std::string> object_listing(const std::string& spec, std::optional<ShapeData>* single) {
-  if (lower_extension(spec) != ".obj" || spec.starts_with("hull:") || is_builtin_shape(spec)) return std::nullopt;
+  if (lower_extension(spec) != ".obj" || spec.starts_with("hull:") || is_builtin_shape(spec))
+    return std::nullopt;
   auto in = open_input(spec);
   auto objects = read_obj_objects(in, spec);
   if (objects.size() < 2) {
@@ -223,7 +230,8 @@ std::optional<std::string> object_listing(const std::string& spec, std::optional
   for (std::size_t k = 0; k < objects.size(); ++k) {
     const ShapeData& d = objects[k].shape;
     s += "  " + std::to_string(k) + "  " + (objects[k].name.empty() ? "(no name)" : objects[k].name) + ": " +
-         std::to_string(d.vertices.size()) + " vertices, " + std::to_string(d.faces.size()) + " faces in the file\n";
+         std::to_string(d.vertices.size()) + " vertices, " + std::to_string(d.faces.size()) +
+         " faces in the file\n";
   }
   return s;
 }

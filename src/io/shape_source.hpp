@@ -40,7 +40,8 @@ ShapeData load_shape(const std::string& spec);
 /// counts) for `sepax info`; nullopt for any other shape argument.  When
 /// spec is an OBJ file of one object and `single` is given, that object is
 /// stored there, so that the file is read once.
-std::optional<std::string> object_listing(const std::string& spec, std::optional<ShapeData>* single = nullptr);
+std::optional<std::string> object_listing(const std::string& spec,
+                                          std::optional<ShapeData>* single = nullptr);
 
 /// One line per built-in, for --help.
 const char* builtin_shapes_help();

@@ -35,7 +35,8 @@ ShapeData soup(const std::string& name, const char* format, Read&& read) {
   } catch (const std::exception& e) {
     fail(name, std::string("not a readable ") + format + " file (" + e.what() + ")");
   }
-  if (!ok) fail(name, std::string("not a readable ") + format + " file (the reader stopped on malformed content)");
+  if (!ok)
+    fail(name, std::string("not a readable ") + format + " file (the reader stopped on malformed content)");
   if (points.empty()) fail(name, "no vertices in the file");
   if (polygons.empty()) fail(name, "no faces in the file (for a point set, use a points file)");
   ShapeData out;

@@ -55,7 +55,8 @@ std::string shown(std::string_view token) {
 std::optional<double> quick_double(std::string_view t) {
   double v = 0;
   const auto r = std::from_chars(t.data(), t.data() + t.size(), v, std::chars_format::general);
-  if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size() || !std::isfinite(v)) return std::nullopt;
+  if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size() || !std::isfinite(v))
+    return std::nullopt;
   return v;
 }
 
@@ -99,7 +100,8 @@ long long parse_count(const LineReader& reader, std::string_view token, const st
                       long long max) {
   const long long v = parse_integer(reader, token, what);
   if (v < 0) reader.fail(what + " is negative (" + std::to_string(v) + ")");
-  if (v > max) reader.fail(what + " " + std::to_string(v) + " is too large (at most " + std::to_string(max) + ")");
+  if (v > max)
+    reader.fail(what + " " + std::to_string(v) + " is too large (at most " + std::to_string(max) + ")");
   return v;
 }
 

@@ -11,7 +11,8 @@
 namespace sepax::cli::json {
 
 ParseError::ParseError(std::size_t line, std::size_t column, const std::string& problem)
-    : std::runtime_error("line " + std::to_string(line) + ", column " + std::to_string(column) + ": " + problem),
+    : std::runtime_error("line " + std::to_string(line) + ", column " + std::to_string(column) + ": " +
+                         problem),
       line_(line),
       column_(column),
       problem_(problem) {}
@@ -49,7 +50,9 @@ class CountingIterator {
   std::size_t* consumed_ = nullptr;
 };
 
-bool number_char(char c) { return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E'; }
+bool number_char(char c) {
+  return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
+}
 
 // nlohmann's escaping of a token for messages (lexer::get_token_string):
 // control characters become "<U+00XX>".
@@ -99,7 +102,8 @@ class Builder {
     return true;
   }
 
-  bool parse_error(std::size_t position, const std::string& last_token, const nlohmann::detail::exception& ex) {
+  bool parse_error(std::size_t position, const std::string& last_token,
+                   const nlohmann::detail::exception& ex) {
     // position counts the bytes read, the end of input included; the token
     // in error (escaped in last_token) ends there.
     const std::size_t end = std::min(position, text_.size());
@@ -107,9 +111,11 @@ class Builder {
     if (position <= text_.size())  // at the end of input, the column is one past the last byte
       while (start > 0 && len < last_token.size()) len += escaped_length(text_[--start]);
     // The reader's token text may begin with the separators and whitespace before the token.
-    while (start + 1 < end && std::string_view(" \t\r\n,:").find(text_[start]) != std::string_view::npos) ++start;
+    while (start + 1 < end && std::string_view(" \t\r\n,:").find(text_[start]) != std::string_view::npos)
+      ++start;
     // A structural character in error is its own token.
-    if (end > 0 && position <= text_.size() && std::string_view("[]{}:,").find(text_[end - 1]) != std::string_view::npos)
+    if (end > 0 && position <= text_.size() &&
+        std::string_view("[]{}:,").find(text_[end - 1]) != std::string_view::npos)
       start = end - 1;
     return fail_at(start, problem(ex, last_token));
   }
@@ -218,9 +224,10 @@ Document parse_document(std::string_view text, const ParseOptions& options) {
   Document doc;
   Builder b(text, options, doc);
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
-    throw ParseError(1 + static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')),
-                     text.size() - (text.rfind('\n') == std::string_view::npos ? 0 : text.rfind('\n') + 1) + 1,
-                     "empty input: expected a JSON value");
+    throw ParseError(
+        1 + static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')),
+        text.size() - (text.rfind('\n') == std::string_view::npos ? 0 : text.rfind('\n') + 1) + 1,
+        "empty input: expected a JSON value");
   }
   const CountingIterator first(text.data(), &b.consumed), last(text.data() + text.size(), nullptr);
   const bool ok = Value::sax_parse(first, last, &b, nlohmann::detail::input_format_t::json, /*strict=*/true);
@@ -228,7 +235,9 @@ Document parse_document(std::string_view text, const ParseOptions& options) {
   return doc;
 }
 
-Value parse(std::string_view text, const ParseOptions& options) { return parse_document(text, options).value; }
+Value parse(std::string_view text, const ParseOptions& options) {
+  return parse_document(text, options).value;
+}
 
 Value number(double d) {
   if (!std::isfinite(d)) return nullptr;
@@ -238,7 +247,9 @@ Value number(double d) {
   return d;
 }
 
-std::string write(const Value& v) { return v.dump(-1, ' ', false, nlohmann::detail::error_handler_t::strict); }
+std::string write(const Value& v) {
+  return v.dump(-1, ' ', false, nlohmann::detail::error_handler_t::strict);
+}
 
 std::string number_text(double d) {
   if (!std::isfinite(d)) return "null";
@@ -252,15 +263,22 @@ std::string quote(std::string_view s) { return Value(std::string(s)).dump(); }
 
 const char* kind_name(const Value& v) {
   switch (v.type()) {
-    case Value::value_t::null: return "null";
-    case Value::value_t::boolean: return "boolean";
+    case Value::value_t::null:
+      return "null";
+    case Value::value_t::boolean:
+      return "boolean";
     case Value::value_t::number_integer:
     case Value::value_t::number_unsigned:
-    case Value::value_t::number_float: return "number";
-    case Value::value_t::string: return "string";
-    case Value::value_t::array: return "array";
-    case Value::value_t::object: return "object";
-    default: return "?";
+    case Value::value_t::number_float:
+      return "number";
+    case Value::value_t::string:
+      return "string";
+    case Value::value_t::array:
+      return "array";
+    case Value::value_t::object:
+      return "object";
+    default:
+      return "?";
   }
 }
 

@@ -57,11 +57,20 @@ std::string escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -113,7 +122,8 @@ void draw_shape(std::ostringstream& s, const ConvexPolyhedron<double>& p, const 
     const bool front = p.plane(f).normal.dot(cam.view) > 0;
     if (!front && !p.is_flat()) continue;
     s << "<polygon points=\"";
-    for (int v : p.face_vertices(f)) s << fmt(vp.px(cam.x(p.vertex(v)))) << ',' << fmt(vp.py(cam.y(p.vertex(v)))) << ' ';
+    for (int v : p.face_vertices(f))
+      s << fmt(vp.px(cam.x(p.vertex(v)))) << ',' << fmt(vp.py(cam.y(p.vertex(v)))) << ' ';
     s << "\" fill=\"" << color << "\" fill-opacity=\"" << (p.is_flat() ? "0.18" : "0.10")
       << "\" stroke=\"none\"/>\n";
   }
@@ -142,9 +152,11 @@ void draw_polyline_on_sphere(std::ostringstream& s, const std::vector<V3>& pts, 
     std::size_t j = i + 1;
     while (j < pts.size() && (cam.depth(pts[j]) >= 0) == front) ++j;
     const std::size_t end = std::min(j, pts.size() - 1);
-    s << "<polyline fill=\"none\" stroke=\"" << color << "\" stroke-width=\"" << fmt(front ? width : width * 0.6)
-      << "\"" << (front ? "" : " stroke-opacity=\"0.25\" stroke-dasharray=\"3 3\"") << " points=\"";
-    for (std::size_t k = i; k <= end; ++k) s << fmt(vp.px(cam.x(pts[k]))) << ',' << fmt(vp.py(cam.y(pts[k]))) << ' ';
+    s << "<polyline fill=\"none\" stroke=\"" << color << "\" stroke-width=\""
+      << fmt(front ? width : width * 0.6) << "\""
+      << (front ? "" : " stroke-opacity=\"0.25\" stroke-dasharray=\"3 3\"") << " points=\"";
+    for (std::size_t k = i; k <= end; ++k)
+      s << fmt(vp.px(cam.x(pts[k]))) << ',' << fmt(vp.py(cam.y(pts[k]))) << ' ';
     s << "\"/>\n";
     i = end;
     if (j >= pts.size()) break;
@@ -177,7 +189,8 @@ std::string render_svg(const SvgScene& scene) {
     line << (r.overlap ? "overlap" : "separated") << "  separation " << r.separation_as_double() << "  axis "
          << to_string(r.feature) << "  (" << fmt(axis.x()) << ", " << fmt(axis.y()) << ", " << fmt(axis.z())
          << ")  contacts " << scene.contacts.size();
-    s << "<text x=\"" << kMargin << "\" y=\"48\" font-size=\"13\" fill=\"#444\">" << escape(line.str()) << "</text>\n";
+    s << "<text x=\"" << kMargin << "\" y=\"48\" font-size=\"13\" fill=\"#444\">" << escape(line.str())
+      << "</text>\n";
   }
 
   // ---- left panel: the shapes ----
@@ -229,10 +242,14 @@ std::string render_svg(const SvgScene& scene) {
       << "\" fill=\"#fafafa\" stroke=\"#ddd\"/>\n";
     s << "<circle cx=\"" << fmt(vp.px(0)) << "\" cy=\"" << fmt(vp.py(0)) << "\" r=\"" << fmt(vp.scale)
       << "\" fill=\"white\" stroke=\"#999\"/>\n";
-    for (int e = 0; e < A.edge_count(); ++e) draw_polyline_on_sphere(s, arc_points(A, e, false), cam, vp, kColorA, 1.6);
-    for (int e = 0; e < B.edge_count(); ++e) draw_polyline_on_sphere(s, arc_points(B, e, true), cam, vp, kColorB, 1.6);
-    for (int f = 0; f < A.face_count(); ++f) draw_dot(s, unit(A.plane(f).normal), cam, vp, kColorA, 3.5, true);
-    for (int f = 0; f < B.face_count(); ++f) draw_dot(s, unit(V3(-B.plane(f).normal)), cam, vp, kColorB, 3.5, true);
+    for (int e = 0; e < A.edge_count(); ++e)
+      draw_polyline_on_sphere(s, arc_points(A, e, false), cam, vp, kColorA, 1.6);
+    for (int e = 0; e < B.edge_count(); ++e)
+      draw_polyline_on_sphere(s, arc_points(B, e, true), cam, vp, kColorB, 1.6);
+    for (int f = 0; f < A.face_count(); ++f)
+      draw_dot(s, unit(A.plane(f).normal), cam, vp, kColorA, 3.5, true);
+    for (int f = 0; f < B.face_count(); ++f)
+      draw_dot(s, unit(V3(-B.plane(f).normal)), cam, vp, kColorB, 3.5, true);
     // Minkowski edge-edge faces: the crossings of A's arcs with -B's arcs
     PlainKernel<double> k(A, B);
     for (int ea = 0; ea < A.edge_count(); ++ea) {
@@ -256,8 +273,9 @@ std::string render_svg(const SvgScene& scene) {
   // legend
   const double ly = kTop + 2 * kMargin + kPanel + 16;
   s << "<text x=\"" << kMargin << "\" y=\"" << ly << "\" font-size=\"12\" fill=\"#444\">"
-    << "A: " << A.vertex_count() << " vertices, " << A.face_count() << " faces" << (A.is_flat() ? " (double-sided)" : "")
-    << ".  B: " << B.vertex_count() << " vertices, " << B.face_count() << " faces" << (B.is_flat() ? " (double-sided)" : "")
+    << "A: " << A.vertex_count() << " vertices, " << A.face_count() << " faces"
+    << (A.is_flat() ? " (double-sided)" : "") << ".  B: " << B.vertex_count() << " vertices, "
+    << B.face_count() << " faces" << (B.is_flat() ? " (double-sided)" : "")
     << ".  Far hemisphere faded.</text>\n";
   s << "</svg>\n";
   return s.str();

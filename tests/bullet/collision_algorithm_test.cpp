@@ -21,7 +21,8 @@ struct Pair {
   std::unique_ptr<sepax::bullet::CreateFunc> cf;
   btCollisionObject a, b;
 
-  Pair(btCollisionShape* sa, btCollisionShape* sb, const btTransform& ta, const btTransform& tb, bool use_sepax) {
+  Pair(btCollisionShape* sa, btCollisionShape* sb, const btTransform& ta, const btTransform& tb,
+       bool use_sepax) {
     if (use_sepax) {
       cf = std::make_unique<sepax::bullet::CreateFunc>(config);
       sepax::bullet::register_algorithm(dispatcher, *cf);
@@ -57,7 +58,8 @@ btTransform at(float x, float y, float z, const btQuaternion& q = btQuaternion::
 void check_convention(const btPersistentManifold& m) {
   for (int i = 0; i < m.getNumContacts(); ++i) {
     const auto& p = m.getContactPoint(i);
-    const btVector3 d = p.getPositionWorldOnA() - (p.getPositionWorldOnB() + p.m_normalWorldOnB * p.getDistance());
+    const btVector3 d =
+        p.getPositionWorldOnA() - (p.getPositionWorldOnB() + p.m_normalWorldOnB * p.getDistance());
     CHECK(d.length() < 1e-5f);
     CHECK(std::abs(p.m_normalWorldOnB.length() - 1) < 1e-5f);
     const btVector3 la = m.getBody0()->getWorldTransform()(p.m_localPointA);
@@ -203,7 +205,8 @@ std::vector<PointKey> points_of(const btPersistentManifold* m) {
   if (!m) return out;
   for (int i = 0; i < m->getNumContacts(); ++i) {
     const auto& p = m->getContactPoint(i);
-    out.push_back(PointKey{p.getPositionWorldOnB(), p.getDistance(), {p.m_partId0, p.m_index0, p.m_partId1, p.m_index1}});
+    out.push_back(PointKey{
+        p.getPositionWorldOnB(), p.getDistance(), {p.m_partId0, p.m_index0, p.m_partId1, p.m_index1}});
   }
   std::sort(out.begin(), out.end(), [](const PointKey& x, const PointKey& y) {
     return std::lexicographical_compare(x.ids, x.ids + 4, y.ids, y.ids + 4);
@@ -271,7 +274,8 @@ TEST_CASE("bullet: pairs whose bounding spheres are beyond the margin are culled
   CHECK(c.queries == 0);
 }
 
-TEST_CASE("bullet: a pair proven beyond the margin stays so without a query while it moves less than its gap") {
+TEST_CASE(
+    "bullet: a pair proven beyond the margin stays so without a query while it moves less than its gap") {
   btBoxShape box(btVector3(0.5f, 0.5f, 0.5f));
   const btScalar thr = gContactBreakingThreshold;  // AABBs grown by it: the pair stays in the broadphase
   Pair p(&box, &box, at(0, 0, 0), at(0, 1.0f + 1.5f * thr, 0), true);

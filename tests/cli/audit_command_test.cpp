@@ -96,8 +96,8 @@ TEST_CASE("audit: shapes are loaded and built as sepax query --number float buil
   CHECK_THAT(pieces.err, Catch::Contains("the shapes are audited moved by -(150"));
   CHECK_THAT(pieces.out, Catch::Contains("no unexplained disagreement"));
   std::ostringstream note;
-  const fuzz::FuzzCase c =
-      audit_case(load_pair({data + "vhacd_pieces.obj#convex_0", data + "vhacd_pieces.obj#1"}, false), nullptr, note);
+  const fuzz::FuzzCase c = audit_case(
+      load_pair({data + "vhacd_pieces.obj#convex_0", data + "vhacd_pieces.obj#1"}, false), nullptr, note);
   for (const auto& v : c.a.vertices) CHECK(std::abs(v[0]) < 1);
   // standard input, with the format guessed from the content
   const Run in = audit({"-", "cube", "--pose", "2.5", "0", "0"}, test::file_text(data + "cube.off"));
@@ -114,7 +114,8 @@ TEST_CASE("audit: shapes are loaded and built as sepax query --number float buil
   // an invalid case names the file
   const Run inward = audit({std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/invalid-inward-box.case"});
   CHECK(inward.status == 3);
-  CHECK_THAT(inward.err, Catch::StartsWith("sepax audit: error: ") && Catch::Contains("invalid-inward-box.case A: "));
+  CHECK_THAT(inward.err,
+             Catch::StartsWith("sepax audit: error: ") && Catch::Contains("invalid-inward-box.case A: "));
 }
 
 TEST_CASE("audit: bad shape arguments name the file and exit 3", "[audit][errors]") {
@@ -124,10 +125,12 @@ TEST_CASE("audit: bad shape arguments name the file and exit 3", "[audit][errors
   const std::string big = temp_file("big.pts", "0 0 0\n1e39 0 0\n0 1 0\n");
   const Run overflow = audit({big, "cube"});
   CHECK(overflow.status == 3);
-  CHECK_THAT(overflow.err, Catch::Contains("big.pts: coordinate x of point 1 (1e+39) is beyond the range of float"));
+  CHECK_THAT(overflow.err,
+             Catch::Contains("big.pts: coordinate x of point 1 (1e+39) is beyond the range of float"));
   const Run overflow_json = audit({big, "cube", "--json"});
   CHECK(overflow_json.status == 3);
-  CHECK_THAT(overflow_json.out, Catch::StartsWith("{\"error\":\"") && Catch::Contains("is beyond the range of float"));
+  CHECK_THAT(overflow_json.out,
+             Catch::StartsWith("{\"error\":\"") && Catch::Contains("is beyond the range of float"));
   const std::string line = temp_file("line.pts", "0 0 0\n1 0 0\n2 0 0\n");
   const Run collinear = audit({"cube", line});
   CHECK(collinear.status == 3);

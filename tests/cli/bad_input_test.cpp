@@ -118,7 +118,8 @@ TEST_CASE("bad input: 1e300 coordinates", "[bad_input]") {
 }
 
 TEST_CASE("bad input: too few, collinear and coplanar points", "[bad_input]") {
-  check_unreadable(test::temp_file("two.pts", "0 0 0\n1 0 0\n"), "two.pts: convex_hull: needs at least 3 distinct points, got 2");
+  check_unreadable(test::temp_file("two.pts", "0 0 0\n1 0 0\n"),
+                   "two.pts: convex_hull: needs at least 3 distinct points, got 2");
   check_unreadable(test::temp_file("line.pts", "0 0 0\n1 0 0\n2 0 0\n"), "line.pts: convex_hull: ");
   // coplanar points are a documented result: the flat double-sided polygon
   const std::string flat = test::temp_file("flat.pts", "0 0 0\n1 0 0\n0 1 0\n1 1 0\n");
@@ -134,12 +135,16 @@ TEST_CASE("bad input: a non-convex OBJ is refused with the way out", "[bad_input
       "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\nv 0 0 0.5\n"
       "f 1 4 3\nf 1 3 2\nf 5 6 9\nf 6 7 9\nf 7 8 9\nf 8 5 9\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\n"
       "f 1 8 4\nf 2 3 7\nf 2 7 6\n");
-  for (const auto& args : commands_on(dent)) check_run(args, 3, "the mesh is not convex; to use the convex hull of the vertices, write hull:FILE (or pass --hull)");
+  for (const auto& args : commands_on(dent))
+    check_run(
+        args, 3,
+        "the mesh is not convex; to use the convex hull of the vertices, write hull:FILE (or pass --hull)");
   check_run({"query", "cube", dent, "--hull"}, 0, "");
 }
 
 TEST_CASE("bad input: missing file, directory, unknown extension, unknown option", "[bad_input]") {
-  check_unreadable("/nonexistent/shape.obj", "/nonexistent/shape.obj: cannot open: No such file or directory");
+  check_unreadable("/nonexistent/shape.obj",
+                   "/nonexistent/shape.obj: cannot open: No such file or directory");
   const std::string dir = (test::temp_dir().path / "folder.obj").string();
   std::filesystem::create_directories(dir);
   check_unreadable(dir, "folder.obj: cannot open: is a directory");
@@ -152,7 +157,8 @@ TEST_CASE("bad input: missing file, directory, unknown extension, unknown option
   }
 }
 
-TEST_CASE("bad input: a scanned mesh of a million vertices is refused in bounded time and memory", "[bad_input][huge]") {
+TEST_CASE("bad input: a scanned mesh of a million vertices is refused in bounded time and memory",
+          "[bad_input][huge]") {
   // A 1000 x 1000 height field (an open surface, as a scan is): 10^6
   // vertices, about 2 * 10^6 triangles, 86 MB of OBJ text.
   const std::string path = (test::temp_dir().path / "scan.obj").string();
@@ -181,16 +187,18 @@ TEST_CASE("bad input: a scanned mesh of a million vertices is refused in bounded
     REQUIRE_FALSE(r.timed_out);
     REQUIRE(r.signal == 0);
     CHECK(r.status == 3);
-    CHECK_THAT(r.err, Catch::Contains("scan.obj:1000001: face 0: its edge 0-1000 is on no other face: the mesh is open") &&
-                          Catch::Contains("hull:FILE"));
+    CHECK_THAT(
+        r.err,
+        Catch::Contains("scan.obj:1000001: face 0: its edge 0-1000 is on no other face: the mesh is open") &&
+            Catch::Contains("hull:FILE"));
     // peak memory: about 5 times the file's size (the text is read line by
     // line; the vertices, faces and their directed edges are held)
     CHECK(r.max_rss_kb < 1024 * 1024);
     // processor time (wall time depends on the machine's load): reading and
     // checking take a few seconds; 30 leaves room for a slow machine
     CHECK(r.cpu_seconds < 30);
-    WARN(args[0] << ": " << r.cpu_seconds << " s processor time (" << r.seconds << " s wall), " << r.max_rss_kb / 1024
-                 << " MB peak");
+    WARN(args[0] << ": " << r.cpu_seconds << " s processor time (" << r.seconds << " s wall), "
+                 << r.max_rss_kb / 1024 << " MB peak");
   }
   std::filesystem::remove(path);
 }

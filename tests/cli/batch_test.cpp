@@ -59,17 +59,20 @@ TEST_CASE("batch: bad lines give an error object naming the problem and the run 
     const char* id;  // expected id as JSON text
     const char* problem;
   } cases[] = {
-      {"{\"id\": 1, \"a\": " + good_pts + ", \"b\": ", "null", "invalid JSON at column 56: unexpected end of input"},
+      {"{\"id\": 1, \"a\": " + good_pts + ", \"b\": ", "null",
+       "invalid JSON at column 56: unexpected end of input"},
       {"not json", "null", "invalid JSON at column 1"},
       {"[1, 2]", "null", "expected a JSON object, got array"},
       {"{\"a\": " + good_pts + ", \"b\": " + good_pts + "}", "null", "missing key \"id\""},
-      {"{\"id\": [1], \"a\": " + good_pts + ", \"b\": " + good_pts + "}", "null", "\"id\" must be a number or a string, got array"},
+      {"{\"id\": [1], \"a\": " + good_pts + ", \"b\": " + good_pts + "}", "null",
+       "\"id\" must be a number or a string, got array"},
       {"{\"id\": \"x\", \"b\": " + good_pts + "}", "\"x\"", "missing key \"a\""},
       {"{\"id\": 7, \"a\": " + good_pts + "}", "7", "missing key \"b\""},
       {"{\"id\": 7, \"a\": {}, \"b\": " + good_pts + "}", "7", "a: expected an array of points"},
       {"{\"id\": 7, \"a\": [], \"b\": " + good_pts + "}", "7", "a: no points"},
       {"{\"id\": 7, \"a\": [[0,0]], \"b\": " + good_pts + "}", "7", "a[0]: expected a point [x, y, z]"},
-      {"{\"id\": 7, \"a\": " + good_pts + ", \"b\": [[0,0,0],[1,\"0\",0]]}", "7", "b[1]: coordinate 1 is string, not a number"},
+      {"{\"id\": 7, \"a\": " + good_pts + ", \"b\": [[0,0,0],[1,\"0\",0]]}", "7",
+       "b[1]: coordinate 1 is string, not a number"},
       {"{\"id\": 7, \"a\": " + good_pts + ", \"b\": [[0,0,0],[1,null,0]]}", "7", "coordinate 1 is null"},
       {"{\"id\": 1e999, \"a\": [], \"b\": []}", "null", "outside the range of a double"},
   };
@@ -98,13 +101,19 @@ TEST_CASE("batch: good lines are answered like query, ids echoed exactly as writ
   }
   const std::string cube_at_origin = points_of("cube", 0, 0, 0);
   const std::string input =
-      "{\"id\": 12345678901234567890, \"a\": " + cube_at_origin + ", \"b\": " + points_of("cube", 2.5, 0, 0) + "}\n"
+      "{\"id\": 12345678901234567890, \"a\": " + cube_at_origin + ", \"b\": " + points_of("cube", 2.5, 0, 0) +
+      "}\n"
       "\n"  // blank lines are skipped
       "   \r\n"
-      "{\"b\": " + points_of("tetra", 0.5, 0.25, 0) + ", \"id\": \"overlapping \\\"pair\\\"\", \"a\": " + cube_at_origin +
+      "{\"b\": " +
+      points_of("tetra", 0.5, 0.25, 0) + ", \"id\": \"overlapping \\\"pair\\\"\", \"a\": " + cube_at_origin +
       ", \"note\": \"extra keys are ignored\"}\r\n"
-      "{\"id\": -0.5e1, \"a\": [[0,0,0],[1,1,1],[2,2,2]], \"b\": " + cube_at_origin + "}\n"
-      "{\"id\": 3, \"a\": " + points_of("prism:6", 0, 0, 0) + ", \"b\": " + points_of("prism:6", 0.3, 0.1, 2.0) + "}";  // no final newline
+      "{\"id\": -0.5e1, \"a\": [[0,0,0],[1,1,1],[2,2,2]], \"b\": " +
+      cube_at_origin +
+      "}\n"
+      "{\"id\": 3, \"a\": " +
+      points_of("prism:6", 0, 0, 0) + ", \"b\": " + points_of("prism:6", 0.3, 0.1, 2.0) +
+      "}";  // no final newline
   BatchSummary sum;
   const auto out = run_lines(input, &sum);
   REQUIRE(out.size() == 4);
@@ -136,7 +145,9 @@ TEST_CASE("batch: good lines are answered like query, ids echoed exactly as writ
   CHECK(f.at("type").get<std::string>() == type_name(r.feature.type));
   CHECK(f.at("a").get<double>() == r.feature.a);
   CHECK(f.at("b").get<double>() == r.feature.b);
-  CHECK(json::write(out[3].at("normal")) == json::write(json::Value::array({json::number(r.normal[0]), json::number(r.normal[1]), json::number(r.normal[2])})));
+  CHECK(json::write(out[3].at("normal")) ==
+        json::write(json::Value::array(
+            {json::number(r.normal[0]), json::number(r.normal[1]), json::number(r.normal[2])})));
   // output keys, in order
   std::vector<std::string> keys;
   for (const auto& kv : out[3].items()) keys.push_back(kv.key());
@@ -151,8 +162,8 @@ TEST_CASE("batch: every number type answers, exact and double agree on clear cas
   std::string input;
   for (int i = 0; i < 6; ++i) {
     const double t = 1.05 + 0.5 * i;  // 1.05 .. 3.55: overlapping and separated, never touching
-    input += "{\"id\": " + std::to_string(i) + ", \"a\": " + points_of("tetra", 0, 0, 0) + ", \"b\": " +
-             points_of("cube", t, 0.1, -0.2) + "}\n";
+    input += "{\"id\": " + std::to_string(i) + ", \"a\": " + points_of("tetra", 0, 0, 0) +
+             ", \"b\": " + points_of("cube", t, 0.1, -0.2) + "}\n";
   }
   RunConfig exact, fl;
   exact.number = NumberKind::Exact;
@@ -175,8 +186,8 @@ TEST_CASE("batch: --jobs N gives the same output, line for line, as --jobs 1", "
   std::string input;
   for (int i = 0; i < 40; ++i) {
     const double t = 0.9 + 0.07 * i;
-    input += "{\"id\": " + std::to_string(i) + ".50, \"a\": " + points_of("prism:5", 0, 0, 0) + ", \"b\": " +
-             points_of("tetra", t, 0.1, -0.2) + "}\n";
+    input += "{\"id\": " + std::to_string(i) + ".50, \"a\": " + points_of("prism:5", 0, 0, 0) +
+             ", \"b\": " + points_of("tetra", t, 0.1, -0.2) + "}\n";
     if (i % 7 == 3) input += "{\"id\": " + std::to_string(i) + ", \"a\": [[0,0,0]], \"b\": []}\n\n";
   }
   std::string outputs[3];

@@ -66,7 +66,9 @@ inline std::string file_text(const std::string& path) {
 }
 
 /// A file `name` with `text` in this process's temporary directory; its path.
-inline std::string temp_file(const std::string& name, const std::string& text) { return temp_dir().write(name, text); }
+inline std::string temp_file(const std::string& name, const std::string& text) {
+  return temp_dir().write(name, text);
+}
 
 /// `sepax query ARGS` with stdin_text on standard input.
 inline CommandRun query(const std::vector<std::string>& args, const std::string& stdin_text = "") {
@@ -128,13 +130,13 @@ inline CommandRun verb_main(int (*main_fn)(int, char**), std::vector<std::string
 #ifdef SEPAX_CLI_PROGRAM
 /// The sepax program run in a child process.
 struct ProgramRun {
-  int status = -1;       // exit status (-1 when killed by a signal)
-  int signal = 0;        // the signal that ended it, 0 when it exited
+  int status = -1;  // exit status (-1 when killed by a signal)
+  int signal = 0;   // the signal that ended it, 0 when it exited
   bool timed_out = false;
   std::string out, err;
-  long max_rss_kb = 0;   // its peak resident memory
+  long max_rss_kb = 0;     // its peak resident memory
   double cpu_seconds = 0;  // its user + system time
-  double seconds = 0;    // wall time
+  double seconds = 0;      // wall time
 };
 
 /// Runs `sepax ARGS` (SEPAX_CLI_PROGRAM) with standard input from the file

@@ -35,7 +35,8 @@ const char* kCubeVerts =
 
 // The cube's 12 triangles (1-based), two per side.
 const char* kCubeTris =
-    "f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 7 6\n";
+    "f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 "
+    "7 6\n";
 
 template <Number T>
 void check_cube(const io::ShapeData& d) {
@@ -54,7 +55,8 @@ void check_refused(const io::ShapeData& d, const std::string& problem) {
     (void)build_shape<T>(d);
     FAIL("accepted");
   } catch (const InvalidInput& e) {
-    CHECK_THAT(e.what(), Catch::StartsWith(d.name) && Catch::Contains(problem) && Catch::Contains("hull:FILE"));
+    CHECK_THAT(e.what(),
+               Catch::StartsWith(d.name) && Catch::Contains(problem) && Catch::Contains("hull:FILE"));
   }
 }
 
@@ -62,15 +64,19 @@ void check_refused(const io::ShapeData& d, const std::string& problem) {
 
 TEST_CASE("convex mesh: the triangulated cube is the cube in every number type", "[mesh]") {
   const io::ShapeData files[] = {
-      io::load_shape(kData + "cube_tri.obj"), io::load_shape(kData + "cube.stl"),
-      io::load_shape(kData + "cube_binary.stl"), io::load_shape(kData + "cube.ply"),
+      io::load_shape(kData + "cube_tri.obj"),
+      io::load_shape(kData + "cube.stl"),
+      io::load_shape(kData + "cube_binary.stl"),
+      io::load_shape(kData + "cube.ply"),
       obj(std::string(kCubeVerts) + kCubeTris),
       // a texture seam: vertex 1 repeated as vertex 9, used by two triangles
       obj(std::string(kCubeVerts) + "v -1 -1 -1\n" +
-          "f 9 4 3\nf 9 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 7 6\n"),
+          "f 9 4 3\nf 9 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\nf 1 8 4\nf 2 3 "
+          "7\nf 2 7 6\n"),
       // a side split into four triangles around a vertex at its centre
       obj(std::string(kCubeVerts) + "v 0 0 -1\n" +
-          "f 1 4 9\nf 4 3 9\nf 3 2 9\nf 2 1 9\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\n"
+          "f 1 4 9\nf 4 3 9\nf 3 2 9\nf 2 1 9\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 "
+          "8\n"
           "f 1 8 4\nf 2 3 7\nf 2 7 6\n"),
   };
   for (const auto& d : files) {
@@ -91,16 +97,21 @@ TEST_CASE("convex mesh: the triangulated cube is the cube in every number type",
 TEST_CASE("convex mesh: open, non-manifold, inconsistent and non-convex meshes are refused", "[mesh]") {
   const std::string v = kCubeVerts;
   // open: the last triangle missing
-  const auto open = obj(v + "f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\nf 1 8 4\nf 2 3 7\n");
+  const auto open = obj(
+      v +
+      "f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\nf 1 8 4\nf 2 3 7\n");
   // inconsistent: one triangle turned over
-  const auto flipped = obj(v + "f 1 3 4\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 7 6\n");
+  const auto flipped = obj(v +
+                           "f 1 3 4\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 "
+                           "8\nf 1 8 4\nf 2 3 7\nf 2 7 6\n");
   // non-convex: the top's centre pushed down into the cube (a dent)
-  const auto dent = obj(v + "v 0 0 0.5\n" +
-                        "f 1 4 3\nf 1 3 2\nf 5 6 9\nf 6 7 9\nf 7 8 9\nf 8 5 9\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\n"
-                        "f 1 8 4\nf 2 3 7\nf 2 7 6\n");
-  for (const auto& [d, problem] : {std::pair{open, "the mesh is open"},
-                                   std::pair{flipped, "inconsistently oriented"},
-                                   std::pair{dent, "not convex"}}) {
+  const auto dent = obj(
+      v + "v 0 0 0.5\n" +
+      "f 1 4 3\nf 1 3 2\nf 5 6 9\nf 6 7 9\nf 7 8 9\nf 8 5 9\nf 1 2 6\nf 1 6 5\nf 3 4 8\nf 3 8 7\nf 1 5 8\n"
+      "f 1 8 4\nf 2 3 7\nf 2 7 6\n");
+  for (const auto& [d, problem] :
+       {std::pair{open, "the mesh is open"}, std::pair{flipped, "inconsistently oriented"},
+        std::pair{dent, "not convex"}}) {
     INFO(problem);
     check_refused<float>(d, problem);
     check_refused<double>(d, problem);
@@ -111,7 +122,8 @@ TEST_CASE("convex mesh: open, non-manifold, inconsistent and non-convex meshes a
     (void)build_shape<double>(open);
     FAIL("accepted");
   } catch (const InvalidInput& e) {
-    CHECK_THAT(e.what(), Catch::Matches("m\\.obj:[0-9]+: face [0-9]+: its edge [0-9]+-[0-9]+ is on no other face.*"));
+    CHECK_THAT(e.what(),
+               Catch::Matches("m\\.obj:[0-9]+: face [0-9]+: its edge [0-9]+-[0-9]+ is on no other face.*"));
   }
   // a dented mesh names the vertex inside the hull (vertex 8, 0-based)
   CHECK_THROWS_WITH(build_shape<mpq_class>(dent), Catch::Contains("its vertex 8 is inside the convex hull"));

@@ -54,11 +54,20 @@ struct RefusingBuffer : std::streambuf {
 TEST_CASE("exit status: query gives 0, 1 (a batch line failed), 2 and 3", "[exit]") {
   for (const Expectation& e : std::vector<Expectation>{
            {{"query", "cube", "cube", "--pose", "2.5", "0", "0"}, 0, "separation: 0.5", ""},
-           {{"query", "--batch", kData + "batch.jsonl"}, 1, "\"error\":\"line 3: a: ", "2 of 4 queries failed"},
+           {{"query", "--batch", kData + "batch.jsonl"},
+            1,
+            "\"error\":\"line 3: a: ",
+            "2 of 4 queries failed"},
            {{"query", "cube", "cube", "--frobnicate"}, 2, "", "sepax query: unknown option '--frobnicate'"},
            {{"query", "cube"}, 2, "", "expected two shapes A and B, got 1"},
-           {{"query", "cube", "/nonexistent/shape.off"}, 3, "", "sepax query: error: /nonexistent/shape.off: cannot open"},
-           {{"query", "cube", kData + "malformed.off", "--json"}, 3, "{\"error\":\"", "malformed.off:5: bad number 'oops'"},
+           {{"query", "cube", "/nonexistent/shape.off"},
+            3,
+            "",
+            "sepax query: error: /nonexistent/shape.off: cannot open"},
+           {{"query", "cube", kData + "malformed.off", "--json"},
+            3,
+            "{\"error\":\"",
+            "malformed.off:5: bad number 'oops'"},
            {{"query", "--batch", "/nonexistent/lines.jsonl"}, 3, "", "/nonexistent/lines.jsonl: cannot open"},
        })
     check_program(e);
@@ -79,9 +88,18 @@ TEST_CASE("exit status: render gives 0, 2 and 3", "[exit]") {
   for (const Expectation& e : std::vector<Expectation>{
            {{"render", "cube", "cube", "--pose", "3", "0", "0", "--svg", "-"}, 0, "<svg ", ""},
            {{"render", "cube", "cube"}, 2, "", "sepax render: --svg FILE is required"},
-           {{"render", "cube", "cube", "--svg", "-", "--number", "exact"}, 2, "", "unknown option '--number'"},
-           {{"render", "cube", "/nonexistent/shape.obj", "--svg", "-"}, 3, "", "sepax render: error: /nonexistent/shape.obj: cannot open"},
-           {{"render", "cube", "cube", "--svg", "/nonexistent/dir/picture.svg"}, 3, "", "cannot write /nonexistent/dir/picture.svg"},
+           {{"render", "cube", "cube", "--svg", "-", "--number", "exact"},
+            2,
+            "",
+            "unknown option '--number'"},
+           {{"render", "cube", "/nonexistent/shape.obj", "--svg", "-"},
+            3,
+            "",
+            "sepax render: error: /nonexistent/shape.obj: cannot open"},
+           {{"render", "cube", "cube", "--svg", "/nonexistent/dir/picture.svg"},
+            3,
+            "",
+            "cannot write /nonexistent/dir/picture.svg"},
        })
     check_program(e);
 }
@@ -91,12 +109,17 @@ TEST_CASE("exit status: fuzz gives 0, 1, 2 and 3", "[exit][fuzz]") {
   const std::string out_dir = (test::temp_dir().path / "reproducers").string();
   for (const Expectation& e : std::vector<Expectation>{
            {{"fuzz", "--cases", "2", "--quiet", "--out", out_dir}, 0, "unexplained disagreements: 0", ""},
-           {{"fuzz", "--quiet", "--replay", std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/00-triangle-on-box-face.case"},
-            0, "unexplained disagreements: 0", ""},
+           {{"fuzz", "--quiet", "--replay",
+             std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/00-triangle-on-box-face.case"},
+            0,
+            "unexplained disagreements: 0",
+            ""},
            // the checker catches a wrong verdict: exit 1, the finding named
            {{"fuzz", "--replay", std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/00-triangle-on-box-face.case",
              "--inject-fault"},
-            1, "", "[overlap float_robust gauss_map]"},
+            1,
+            "",
+            "[overlap float_robust gauss_map]"},
            {{"fuzz", "--cases", "2", "--inject-fault"}, 2, "", "--inject-fault applies to --replay only"},
            {{"fuzz", "--seed", "1.5"}, 2, "", "sepax fuzz: --seed: '1.5' is not a non-negative integer"},
            {{"fuzz", "--frobnicate"}, 2, "", "unknown option '--frobnicate'"},
@@ -108,12 +131,22 @@ TEST_CASE("exit status: fuzz gives 0, 1, 2 and 3", "[exit][fuzz]") {
 TEST_CASE("exit status: audit gives 0, 1, 2 and 3", "[exit][audit]") {
   for (const Expectation& e : std::vector<Expectation>{
            {{"audit", "cube", "triangle", "--pose", "0", "0", "1"}, 0, "no unexplained disagreement", ""},
-           {{"audit", "cube", "triangle", "--pose", "0", "0", "1", "--inject-fault"}, 1, "[overlap float_robust gauss_map]",
+           {{"audit", "cube", "triangle", "--pose", "0", "0", "1", "--inject-fault"},
+            1,
+            "[overlap float_robust gauss_map]",
             ""},
            {{"audit", "cube"}, 2, "", "sepax audit: expected two shapes A and B, got 1"},
-           {{"audit", "cube", "cube", "--number", "exact"}, 2, "", "the audit compares float or double against exact"},
-           {{"audit", "cube", "/nonexistent/shape.obj"}, 3, "", "sepax audit: error: /nonexistent/shape.obj: cannot open"},
-           {{"audit", std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/invalid-inward-box.case"}, 3, "",
+           {{"audit", "cube", "cube", "--number", "exact"},
+            2,
+            "",
+            "the audit compares float or double against exact"},
+           {{"audit", "cube", "/nonexistent/shape.obj"},
+            3,
+            "",
+            "sepax audit: error: /nonexistent/shape.obj: cannot open"},
+           {{"audit", std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/invalid-inward-box.case"},
+            3,
+            "",
             "invalid-inward-box.case A: "},
        })
     check_program(e);
@@ -147,7 +180,8 @@ TEST_CASE("exit status: 3 when standard output cannot be written", "[exit]") {
 TEST_CASE("exit status: 4 for an exception escaping any verb, with its message", "[exit]") {
   std::vector<std::vector<std::string>> commands = {
       {"query", "cube", "cube"},
-      {"query", "--batch", kData + "batch.jsonl", "--jobs", "1"},  // the writer thread of --jobs N runs outside the verb
+      {"query", "--batch", kData + "batch.jsonl", "--jobs",
+       "1"},  // the writer thread of --jobs N runs outside the verb
       {"info", "cube"},
       {"render", "cube", "cube", "--svg", "-"},
       {"help"},

@@ -14,9 +14,13 @@ using namespace sepax::cli;
 
 namespace {
 
-int fuzz_main_args(std::vector<std::string> args) { return test::verb_main(&fuzz_main, std::move(args)).status; }
+int fuzz_main_args(std::vector<std::string> args) {
+  return test::verb_main(&fuzz_main, std::move(args)).status;
+}
 
-int audit_main_args(std::vector<std::string> args) { return test::verb_main(&audit_main, std::move(args)).status; }
+int audit_main_args(std::vector<std::string> args) {
+  return test::verb_main(&audit_main, std::move(args)).status;
+}
 
 test::CommandRun fuzz(const std::vector<std::string>& args) {
   std::ostringstream out, err;
@@ -39,8 +43,9 @@ TEST_CASE("sepax fuzz shrink options", "[fuzz][cli][shrink]") {
   CHECK(fuzz_main_args({"fuzz", "--shrink-steps", "x"}) == 2);
   CHECK(fuzz_main_args({"fuzz", "--shrink-seconds"}) == 2);
   // replaying passing cases with --shrink writes nothing and succeeds
-  CHECK(fuzz_main_args({"fuzz", "--quiet", "--replay", SEPAX_SOURCE_DIR "/fuzz/corpus/00-triangle-on-box-face.case",
-                        "--shrink", "--out", "fuzz-test-shrink-out"}) == 0);
+  CHECK(fuzz_main_args({"fuzz", "--quiet", "--replay",
+                        SEPAX_SOURCE_DIR "/fuzz/corpus/00-triangle-on-box-face.case", "--shrink", "--out",
+                        "fuzz-test-shrink-out"}) == 0);
 }
 
 TEST_CASE("fuzz: numbers are validated, --opt=value works, help goes to stdout", "[fuzz][cli]") {

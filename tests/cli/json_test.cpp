@@ -13,17 +13,19 @@
 
 using namespace sepax::cli;
 
-
 TEST_CASE("json: compact output keeps key order; integral doubles are written without a fraction", "[json]") {
-  CHECK(json::write(json::parse(" \t\r\n{ \"b\" : [ 1 , 2 ] , \"a\" : null }\n ")) == "{\"b\":[1,2],\"a\":null}");
-  CHECK(json::write(json::Value::array({json::number(1), json::number(2.5), json::number(1e300)})) == "[1,2.5,1e+300]");
+  CHECK(json::write(json::parse(" \t\r\n{ \"b\" : [ 1 , 2 ] , \"a\" : null }\n ")) ==
+        "{\"b\":[1,2],\"a\":null}");
+  CHECK(json::write(json::Value::array({json::number(1), json::number(2.5), json::number(1e300)})) ==
+        "[1,2.5,1e+300]");
   CHECK(json::write(json::number(std::numeric_limits<double>::infinity())) == "null");
   CHECK(json::write(json::number(std::numeric_limits<double>::quiet_NaN())) == "null");
   CHECK(std::signbit(json::parse(json::write(json::number(-0.0))).get<double>()));
 }
 
 TEST_CASE("json: numbers of the top-level object keep their text as written", "[json]") {
-  const json::Document d = json::parse_document(R"({"id": -0.5e1, "n": 12345678901234567890, "z": -0, "x": [1.50]})");
+  const json::Document d =
+      json::parse_document(R"({"id": -0.5e1, "n": 12345678901234567890, "z": -0, "x": [1.50]})");
   CHECK(d.number_text.at("id") == "-0.5e1");
   CHECK(d.number_text.at("n") == "12345678901234567890");
   CHECK(d.number_text.at("z") == "-0");
@@ -98,7 +100,10 @@ TEST_CASE("json: malformed input is rejected with line, column and the problem",
 }
 
 TEST_CASE("json: nesting depth is limited", "[json]") {
-  const auto nested = [](int depth) { return std::string(static_cast<std::size_t>(depth), '[') + std::string(static_cast<std::size_t>(depth), ']'); };
+  const auto nested = [](int depth) {
+    return std::string(static_cast<std::size_t>(depth), '[') +
+           std::string(static_cast<std::size_t>(depth), ']');
+  };
   json::ParseOptions opt;
   opt.max_depth = 64;
   CHECK_NOTHROW(json::parse(nested(64), opt));

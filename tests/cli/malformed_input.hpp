@@ -21,8 +21,8 @@ struct Malformed {
 };
 
 /// read(text) throws for every case; name is the file name it reads under.
-inline void check_malformed(const std::vector<Malformed>& cases, const std::function<void(const std::string&)>& read,
-                            const std::string& name) {
+inline void check_malformed(const std::vector<Malformed>& cases,
+                            const std::function<void(const std::string&)>& read, const std::string& name) {
   for (const Malformed& b : cases) {
     INFO("input:\n" << b.text);
     try {

@@ -91,13 +91,14 @@ TEST_CASE("mesh files: a 0.4-unit piece 150 units from the origin works in float
     CHECK(shape_counts(points, NumberKind::Float).faces == 24);
   }
   // piece against piece: both are built in one frame, re-centred near them
-  const Run r = query({"hull:" + kPieces + "#convex_2", kPieces + "#convex_0", "--number", "float", "--json"});
+  const Run r =
+      query({"hull:" + kPieces + "#convex_2", kPieces + "#convex_0", "--number", "float", "--json"});
   REQUIRE(r.status == 0);
   const json::Value v = json::parse(r.out);
   CHECK(v.at("separation").get<double>() == Approx(0.165).margin(1e-5));
   // touching pieces: the contact points are at the pieces' world position
-  const Run t = query({"hull:" + kPieces + "#convex_2", kPieces + "#convex_0", "--number", "float", "--pose", "0",
-                       "0", "0.165", "--json"});
+  const Run t = query({"hull:" + kPieces + "#convex_2", kPieces + "#convex_0", "--number", "float", "--pose",
+                       "0", "0", "0.165", "--json"});
   REQUIRE(t.status == 0);
   const json::Value w = json::parse(t.out);
   CHECK(std::abs(w.at("separation").get<double>()) <= 1e-4);
@@ -132,7 +133,8 @@ TEST_CASE("mesh files: a small piece far from the origin against a shape at the 
   }
   // and the other way round, with a contact far from the origin: the cube
   // moved next to the piece, touching its face at x = 150
-  const Run t = query({kPieces + "#convex_0", "cube", "--pose", "149", "-37.1", "88.2", "--number", "float", "--json"});
+  const Run t =
+      query({kPieces + "#convex_0", "cube", "--pose", "149", "-37.1", "88.2", "--number", "float", "--json"});
   REQUIRE(t.status == 0);
   const json::Value w = json::parse(t.out);
   CHECK(w.at("overlap").get<bool>());
@@ -187,7 +189,8 @@ TEST_CASE("mesh files: - reads a shape from standard input", "[mesh]") {
   // errors: empty, read twice, not recognisable, an unknown format name, bad content
   CHECK_THAT(query({"-", "cube"}).err, Catch::Contains("standard input: nothing to read"));
   CHECK_THAT(query({"-", "-"}, cube_off).err, Catch::Contains("already read"));
-  CHECK_THAT(query({"-", "cube"}, "hello\n").err, Catch::Contains("cannot tell the format") && Catch::Contains("-:off"));
+  CHECK_THAT(query({"-", "cube"}, "hello\n").err,
+             Catch::Contains("cannot tell the format") && Catch::Contains("-:off"));
   CHECK_THAT(query({"-:dxf", "cube"}, cube_off).err, Catch::Contains("unknown format 'dxf'"));
   CHECK_THAT(query({"-:off", "cube"}, "OFF\n8 6\n1 1\n").err, Catch::Contains("standard input:3: "));
 }

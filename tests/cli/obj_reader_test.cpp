@@ -39,7 +39,8 @@ TEST_CASE("obj: index forms, negative indices and ignored statements all give th
           "f 1/1/1 4/2/1 3/1/1 2/2/1\nf 5//1 6//1 7//1 8//1\nf 1/1 2/2 6/1 5/2\n"
           "f 3 4 8 7 # top\nf 1 5 8 4\nf 2 3 7 6\nl 1 2\np 3\n",
       // negative (relative) indices: -8 is the first of the 8 vertices read so far
-      std::string(kVerts) + "f -8 -5 -6 -7\nf -4 -3 -2 -1\nf -8 -7 -3 -4\nf -6 -5 -1 -2\nf -8 -4 -1 -5\nf -7 -6 -2 -3\n",
+      std::string(kVerts) +
+          "f -8 -5 -6 -7\nf -4 -3 -2 -1\nf -8 -7 -3 -4\nf -6 -5 -1 -2\nf -8 -4 -1 -5\nf -7 -6 -2 -3\n",
       // w = 1 and vertex colours; CRLF
       "v -1 -1 -1 1\r\nv 1 -1 -1 1.0\r\nv 1 1 -1 0.5 0.5 0.5\r\nv -1 1 -1\r\nv -1 -1 1\r\nv 1 -1 1\r\n"
       "v 1 1 1\r\nv -1 1 1\r\nf 1 4 3 2\r\nf 5 6 7 8\r\nf 1 2 6 5\r\nf 3 4 8 7\r\nf 1 5 8 4\r\nf 2 3 7 6\r\n",
@@ -80,11 +81,13 @@ TEST_CASE("obj: malformed files are rejected naming FILE:LINE and the problem", 
       {v + "f 1 2 3.5\n", 9, "bad integer '3.5'"},
       {v + "f 1 2 99999999999999999999\n", 9, "too large"},
   };
-  test::check_malformed(cases, [](const std::string& text) { (void)read(text, "bad.obj"); }, "bad.obj");
+  test::check_malformed(
+      cases, [](const std::string& text) { (void)read(text, "bad.obj"); }, "bad.obj");
 }
 
 TEST_CASE("obj: a missing file is an error naming it", "[obj]") {
-  CHECK_THROWS_WITH(io::read_obj_file("/nonexistent/x.obj"), Catch::StartsWith("/nonexistent/x.obj: cannot open"));
+  CHECK_THROWS_WITH(io::read_obj_file("/nonexistent/x.obj"),
+                    Catch::StartsWith("/nonexistent/x.obj: cannot open"));
 }
 
 TEST_CASE("obj: each 'o' is one object; indices stay global, negative ones relative", "[obj]") {
@@ -108,7 +111,9 @@ TEST_CASE("obj: each 'o' is one object; indices stay global, negative ones relat
   CHECK(objects[1].shape.face_lines.front() == 16);
   // the third reuses the second's vertices through global indices
   CHECK(objects[2].shape.vertices == objects[1].shape.vertices);
-  CHECK(ConvexPolyhedron<double>::from_faces(objects[2].shape.vertices, objects[2].shape.faces).face_count() == 4);
+  CHECK(
+      ConvexPolyhedron<double>::from_faces(objects[2].shape.vertices, objects[2].shape.faces).face_count() ==
+      4);
 
   CHECK(io::select_object(objects, "p.obj", std::string("second")).name == "p.obj#second");
   CHECK(io::select_object(objects, "p.obj", std::string("2")).name == "p.obj#third");

@@ -79,8 +79,10 @@ TEST_CASE("off: accepted quirks give the same shape", "[off]") {
 }
 
 TEST_CASE("off: malformed files are rejected naming FILE:LINE and the problem", "[off]") {
-  const std::string v8 = "-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n";  // lines 3..10
-  const std::string f6 = "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 0 4 7 3\n4 1 2 6 5\n";  // lines 11..16
+  const std::string v8 =
+      "-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n";  // lines 3..10
+  const std::string f6 =
+      "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 0 4 7 3\n4 1 2 6 5\n";  // lines 11..16
   const std::vector<test::Malformed> cases = {
       {"", 1, "empty file"},
       {"# only a comment\n\n", 2, "empty file"},
@@ -107,17 +109,20 @@ TEST_CASE("off: malformed files are rejected naming FILE:LINE and the problem", 
       {"OFF\n8 6 12\n" + v8.substr(0, 24), 5, "expected 8 vertices, found 3"},
       {"OFF\n8 6 12\n" + v8 + "2 0 1\n", 11, "face 0 has 2 vertices; a face needs at least 3"},
       {"OFF\n8 6 12\n" + v8 + "4 0 3 2\n", 11, "face 0 declares 4 vertices but lists 3"},
-      {"OFF\n8 6 12\n" + v8 + "4 0 3 2 1\n4 4 5 6 8\n", 12, "face 1: vertex index 8 is out of range (the file has 8 vertices, indices 0..7)"},
+      {"OFF\n8 6 12\n" + v8 + "4 0 3 2 1\n4 4 5 6 8\n", 12,
+       "face 1: vertex index 8 is out of range (the file has 8 vertices, indices 0..7)"},
       {"OFF\n8 6 12\n" + v8 + "4 0 -3 2 1\n", 11, "vertex index -3 is out of range"},
       {"OFF\n8 6 12\n" + v8 + "4 0 3 2 x\n", 11, "bad integer 'x' for a vertex index of face 0"},
       {"OFF\n8 6 12\n" + v8 + "4 0 3 2 1\n", 11, "expected 6 faces, found 1"},
       {"OFF\n8 6 12\n" + v8 + f6 + "3 0 1 2\n", 17, "unexpected content after the last face"},
       {std::string("OFF\n8 6 12\n-1 -1\0 -1\n", 21), 3, "NUL byte"},
   };
-  test::check_malformed(cases, [](const std::string& text) { (void)read(text, "dir/bad.off"); }, "dir/bad.off");
+  test::check_malformed(
+      cases, [](const std::string& text) { (void)read(text, "dir/bad.off"); }, "dir/bad.off");
 }
 
 TEST_CASE("off: a file that cannot be opened is an error naming it", "[off]") {
-  CHECK_THROWS_WITH(io::read_off_file("/nonexistent/x.off"), Catch::StartsWith("/nonexistent/x.off: cannot open"));
+  CHECK_THROWS_WITH(io::read_off_file("/nonexistent/x.off"),
+                    Catch::StartsWith("/nonexistent/x.off: cannot open"));
   CHECK_THROWS_WITH(io::read_off_file("/"), Catch::Contains("is a directory"));
 }

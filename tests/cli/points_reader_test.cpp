@@ -48,5 +48,6 @@ TEST_CASE("points: malformed files are rejected naming FILE:LINE and the problem
       {"0 inf 0\n", 1, "NaN and infinity are not allowed"},
       {"0 0 -1e309\n", 1, "out of the range"},
   };
-  test::check_malformed(cases, [](const std::string& text) { (void)read(text); }, "p.pts");
+  test::check_malformed(
+      cases, [](const std::string& text) { (void)read(text); }, "p.pts");
 }

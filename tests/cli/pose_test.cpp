@@ -57,6 +57,7 @@ TEST_CASE("pose: bad values are InvalidInput", "[pose]") {
   CHECK_THROWS_AS(Pose::make(Vec3<double>(0, 0, 0), {0, 0, 0, 0}), InvalidInput);
   CHECK_THROWS_WITH(Pose::make(Vec3<double>(0, 0, 0), {0, 0, 0, 0}), Catch::Contains("quaternion is zero"));
   CHECK_THROWS_WITH(Pose::make(Vec3<double>(nan, 0, 0)), Catch::Contains("translation is not finite"));
-  CHECK_THROWS_WITH(Pose::make(Vec3<double>(0, 0, 0), {1, inf, 0, 0}), Catch::Contains("quaternion is not finite"));
+  CHECK_THROWS_WITH(Pose::make(Vec3<double>(0, 0, 0), {1, inf, 0, 0}),
+                    Catch::Contains("quaternion is not finite"));
   CHECK_THROWS_AS(Pose::make(Vec3<double>(0, 0, 0), {1e300, 1e300, 0, 0}), InvalidInput);
 }

@@ -48,8 +48,10 @@ TEST_CASE("query: text output reports overlap, separation, feature, normal and s
 TEST_CASE("query: --json prints one object whose values match run_sat", "[query]") {
   const std::vector<std::vector<std::string>> arg_sets = {
       {"prism:5", "tetra", "--pose", "1.2", "0.3", "-0.4", "0.9", "0.1", "-0.3", "0.2", "--json"},
-      {"--json", "box:1,0.5,0.25", "polygon:6", "--number", "exact", "--algorithm", "brute", "--pose", "0", "0", "0.75"},
-      {"triangle", "cube", "--number=float", "--algorithm=gauss", "--json", "--pose", "0.2", "0.2", "1.5", "1", "1", "0", "0"},
+      {"--json", "box:1,0.5,0.25", "polygon:6", "--number", "exact", "--algorithm", "brute", "--pose", "0",
+       "0", "0.75"},
+      {"triangle", "cube", "--number=float", "--algorithm=gauss", "--json", "--pose", "0.2", "0.2", "1.5",
+       "1", "1", "0", "0"},
   };
   for (const auto& args : arg_sets) {
     INFO(args[0] << " " << args[1]);
@@ -60,25 +62,30 @@ TEST_CASE("query: --json prints one object whose values match run_sat", "[query]
     const json::Value v = json::parse(r.out);
     std::vector<std::string> keys;
     for (const auto& kv : v.items()) keys.push_back(kv.key());
-    CHECK(keys == std::vector<std::string>{"overlap", "separation", "feature", "normal", "number", "algorithm", "policy",
-                                           "stats", "manifold"});
+    CHECK(keys == std::vector<std::string>{"overlap", "separation", "feature", "normal", "number",
+                                           "algorithm", "policy", "stats", "manifold"});
     // recompute with the library entry point
     RunConfig cfg;
     std::optional<Pose> pose;
     std::vector<std::string> shapes;
     for (std::size_t i = 0; i < args.size(); ++i) {
-      if (args[i] == "--number") cfg.number = *parse_number_kind(args[++i]);
-      else if (args[i] == "--number=float") cfg.number = NumberKind::Float;
-      else if (args[i] == "--algorithm") cfg.algorithm = *parse_algorithm_kind(args[++i]);
+      if (args[i] == "--number")
+        cfg.number = *parse_number_kind(args[++i]);
+      else if (args[i] == "--number=float")
+        cfg.number = NumberKind::Float;
+      else if (args[i] == "--algorithm")
+        cfg.algorithm = *parse_algorithm_kind(args[++i]);
       else if (args[i] == "--pose") {
         double x[7] = {0, 0, 0, 1, 0, 0, 0};
         int n = 0;
         const auto is_number = [](const std::string& t) { return !t.empty() && !t.starts_with("--"); };
         while (n < 7 && i + 1 < args.size() && is_number(args[i + 1])) x[n++] = std::stod(args[++i]);
         pose = Pose::make(Vec3<double>(x[0], x[1], x[2]), {x[3], x[4], x[5], x[6]});
-      } else if (!args[i].starts_with("--")) shapes.push_back(args[i]);
+      } else if (!args[i].starts_with("--"))
+        shapes.push_back(args[i]);
     }
-    const RunOutcome ref = run_sat(io::load_shape(shapes[0]), io::load_shape(shapes[1]), pose ? &*pose : nullptr, cfg);
+    const RunOutcome ref =
+        run_sat(io::load_shape(shapes[0]), io::load_shape(shapes[1]), pose ? &*pose : nullptr, cfg);
     CHECK(v.at("overlap").get<bool>() == ref.overlap);
     CHECK(v.at("separation").get<double>() == ref.separation);
     CHECK(v.at("feature").at("type").get<std::string>() == type_name(ref.feature.type));
@@ -139,7 +146,8 @@ TEST_CASE("query: usage errors exit 2 with a message", "[query]") {
 TEST_CASE("query: --help lists the options and the built-in shapes", "[query]") {
   const Run r = query({"--help"});
   CHECK(r.status == 0);
-  for (const char* s : {"--pose", "--number", "--algorithm", "--robust", "--json", "--batch", "box:HX,HY,HZ", "polygon:N"}) {
+  for (const char* s :
+       {"--pose", "--number", "--algorithm", "--robust", "--json", "--batch", "box:HX,HY,HZ", "polygon:N"}) {
     CHECK_THAT(r.out, Catch::Contains(s));
   }
 }
@@ -167,8 +175,10 @@ TEST_CASE("query: files and built-ins give the same answer", "[query]") {
   const std::string off = temp_file("tet.off",
                                     "OFF\n4 4 6\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n"
                                     "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
-  const Run a = query({"cube", off, "--pose", "1.5", "0.5", "0.25", "3", "1", "2", "0.5", "--json", "--number", "exact"});
-  const Run b = query({"cube", "tetra", "--pose", "1.5", "0.5", "0.25", "3", "1", "2", "0.5", "--json", "--number", "exact"});
+  const Run a = query(
+      {"cube", off, "--pose", "1.5", "0.5", "0.25", "3", "1", "2", "0.5", "--json", "--number", "exact"});
+  const Run b = query(
+      {"cube", "tetra", "--pose", "1.5", "0.5", "0.25", "3", "1", "2", "0.5", "--json", "--number", "exact"});
   CHECK(a.status == 0);
   CHECK(a.out == b.out);
   std::filesystem::remove(off);

@@ -48,7 +48,8 @@ TEST_CASE("sat runner: option names", "[runner]") {
   CHECK(parse_algorithm_kind("brute") == AlgorithmKind::Brute);
   CHECK(parse_algorithm_kind("traversal") == AlgorithmKind::Traversal);
   CHECK_FALSE(parse_algorithm_kind("Gauss"));
-  for (auto k : {NumberKind::Float, NumberKind::Double, NumberKind::Exact}) CHECK(parse_number_kind(name(k)) == k);
+  for (auto k : {NumberKind::Float, NumberKind::Double, NumberKind::Exact})
+    CHECK(parse_number_kind(name(k)) == k);
   for (auto k : {AlgorithmKind::Brute, AlgorithmKind::Gauss, AlgorithmKind::Traversal}) {
     CHECK(parse_algorithm_kind(name(k)) == k);
   }
@@ -56,11 +57,14 @@ TEST_CASE("sat runner: option names", "[runner]") {
 
 TEST_CASE("sat runner: configurations this build cannot run are refused with a reason", "[runner]") {
   const auto cube = io::builtin_shape("cube");
-  CHECK_THAT(unsupported_reason(config(NumberKind::Exact, AlgorithmKind::Gauss, true)), Catch::Contains("--robust"));
+  CHECK_THAT(unsupported_reason(config(NumberKind::Exact, AlgorithmKind::Gauss, true)),
+             Catch::Contains("--robust"));
   CHECK_THROWS_AS(run_sat(cube, cube, nullptr, config(NumberKind::Exact, AlgorithmKind::Gauss, true)),
                   std::invalid_argument);
-  CHECK(unsupported_reason(config(NumberKind::Double, AlgorithmKind::Traversal)).empty() == traversal_available());
-  CHECK(unsupported_reason(config(NumberKind::Float, AlgorithmKind::Gauss, true)).empty() == robust_available());
+  CHECK(unsupported_reason(config(NumberKind::Double, AlgorithmKind::Traversal)).empty() ==
+        traversal_available());
+  CHECK(unsupported_reason(config(NumberKind::Float, AlgorithmKind::Gauss, true)).empty() ==
+        robust_available());
   CHECK(unsupported_reason(config(NumberKind::Double, AlgorithmKind::Brute)).empty());
 }
 
@@ -139,7 +143,8 @@ TEST_CASE("sat runner: double and float agree with exact arithmetic away from to
   CHECK(decided > 100);
 }
 
-TEST_CASE("sat runner: the robust policy decides what exact arithmetic decides on the same inputs", "[runner]") {
+TEST_CASE("sat runner: the robust policy decides what exact arithmetic decides on the same inputs",
+          "[runner]") {
   if (!robust_available()) {
     WARN("this build has no robust policy: test not run");
     return;
@@ -194,14 +199,16 @@ TEST_CASE("shape builder: a coordinate beyond float's range is named, not called
       "OFF\n4 4 6\n1 1 1\n1 -1 -1\n-1 1e300 -1\n-1 -1 1\n"
       "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
   const auto d = io::read_off(in, "big.off");
-  CHECK_THROWS_WITH(shape_counts(d, NumberKind::Float),
-                    Catch::StartsWith("big.off: coordinate y of vertex 2 (1e+300) is beyond the range of float"));
+  CHECK_THROWS_WITH(
+      shape_counts(d, NumberKind::Float),
+      Catch::StartsWith("big.off: coordinate y of vertex 2 (1e+300) is beyond the range of float"));
   io::ShapeData pts;
   pts.kind = io::ShapeData::Kind::Points;
   pts.name = "big.pts";
   pts.vertices = {{0, 0, 0}, {4e38, 0, 0}, {0, 4e38, 0}, {0, 0, -4e38}};
-  CHECK_THROWS_WITH(shape_counts(pts, NumberKind::Float),
-                    Catch::StartsWith("big.pts: coordinate x of point 1 (4e+38) is beyond the range of float"));
+  CHECK_THROWS_WITH(
+      shape_counts(pts, NumberKind::Float),
+      Catch::StartsWith("big.pts: coordinate x of point 1 (4e+38) is beyond the range of float"));
   // double holds it: a tetrahedron
   CHECK(shape_counts(pts, NumberKind::Double).faces == 4);
 }

@@ -25,7 +25,6 @@ ConvexPolyhedron<double> built(const io::ShapeData& d) {
   return ConvexPolyhedron<double>::from_faces(d.vertices, d.faces);
 }
 
-
 }  // namespace
 
 TEST_CASE("shape source: built-in names give the shapes of sepax/shapes.hpp", "[shapes]") {
@@ -38,7 +37,8 @@ TEST_CASE("shape source: built-in names give the shapes of sepax/shapes.hpp", "[
       {"box:0.5,2,3e1", shapes::box<double>(0.5, 2, 30)},
       {"prism:7", shapes::prism<double>(7)},
       {"polygon:5", shapes::regular_polygon<double>(5)},
-      {"triangle", shapes::triangle<double>(Vec3<double>(0, 0, 0), Vec3<double>(1, 0, 0), Vec3<double>(0, 1, 0))},
+      {"triangle",
+       shapes::triangle<double>(Vec3<double>(0, 0, 0), Vec3<double>(1, 0, 0), Vec3<double>(0, 1, 0))},
   };
   for (const auto& c : cases) {
     INFO(c.spec);
@@ -86,7 +86,8 @@ TEST_CASE("shape source: files are read by extension", "[shapes]") {
   const std::string off = dir.write("c.OFF",
                                     "OFF\n4 4 6\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n"
                                     "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
-  const std::string obj = dir.write("c.obj", "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
+  const std::string obj =
+      dir.write("c.obj", "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
   const std::string pts = dir.write("c.xyz", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n0 0 0\n");
   const std::string txt = dir.write("c.txt", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");
   const auto a = io::load_shape(off);
@@ -104,7 +105,8 @@ TEST_CASE("shape source: files are read by extension", "[shapes]") {
   CHECK_THROWS_WITH(io::load_shape(dir.write("c.3ds", "solid")), Catch::Contains("known extension"));
   // .stl and .ply are read (soup_reader.hpp): an STL without facets is an error naming it
   CHECK_THROWS_WITH(io::load_shape(dir.write("c.stl", "solid")), Catch::Contains("c.stl: no vertices"));
-  CHECK_THROWS_WITH(io::load_shape((dir.path / "missing.off").string()), Catch::Contains("missing.off: cannot open"));
+  CHECK_THROWS_WITH(io::load_shape((dir.path / "missing.off").string()),
+                    Catch::Contains("missing.off: cannot open"));
   CHECK_THROWS_WITH(io::load_shape(""), Catch::Contains("empty shape argument"));
   // a built-in name wins over a file; ./name reads the file
   CHECK_FALSE(io::is_builtin_shape("./cube"));
@@ -117,7 +119,8 @@ TEST_CASE("shape source: OBJ objects by #NAME or #K, hull:, and - for standard i
   const test::TempDir dir("sepax_shape_source_objects");
   const std::string tet = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\n";
   const std::string faces = "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
-  const std::string two = dir.write("two.obj", "o a\n" + tet + faces + "o b piece\n" + tet + "f -4 -3 -2\nf -4 -1 -3\nf -4 -2 -1\nf -3 -1 -2\n");
+  const std::string two = dir.write("two.obj", "o a\n" + tet + faces + "o b piece\n" + tet +
+                                                   "f -4 -3 -2\nf -4 -1 -3\nf -4 -2 -1\nf -3 -1 -2\n");
   CHECK(io::load_shape(two + "#a").name == two + "#a");
   CHECK(io::load_shape(two + "#b piece").vertices.size() == 4);
   CHECK(io::load_shape(two + "#1").name == two + "#b piece");

@@ -51,8 +51,9 @@ TEST_CASE("soup readers: the ASCII STL, binary STL and PLY cubes of tests/data",
 TEST_CASE("soup readers: a binary PLY and polygons of more than three vertices", "[soup]") {
   // binary little-endian PLY: two quads sharing nothing (a face list's check
   // comes later); the reader only has to return them as written
-  std::string bin = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string bin =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
   const float xyz[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
   bin.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
   bin.push_back(4);
@@ -87,7 +88,8 @@ TEST_CASE("soup readers: malformed files are errors naming the file, never a cra
        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
        "end_header\n0 0 0\n1 0 0\n0 1 0\n",
        "no faces"},
-      {"garbage.stl", "solid x\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 zero\n", "no vertices"},
+      {"garbage.stl", "solid x\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 zero\n",
+       "no vertices"},
       {"empty.stl", "", "no vertices"},
       {"short.stl", std::string(80, ' ') + std::string("\x05\x00\x00\x00", 4) + std::string(20, '\0'),
        "not a readable STL file"},
@@ -104,6 +106,8 @@ TEST_CASE("soup readers: malformed files are errors naming the file, never a cra
       CHECK_THAT(e.what(), Catch::StartsWith(path + ": ") && Catch::Contains(c.problem));
     }
   }
-  CHECK_THROWS_WITH(io::read_ply_file("/nonexistent/x.ply"), Catch::StartsWith("/nonexistent/x.ply: cannot open"));
-  CHECK_THROWS_WITH(io::read_stl_file("/nonexistent/x.stl"), Catch::StartsWith("/nonexistent/x.stl: cannot open"));
+  CHECK_THROWS_WITH(io::read_ply_file("/nonexistent/x.ply"),
+                    Catch::StartsWith("/nonexistent/x.ply: cannot open"));
+  CHECK_THROWS_WITH(io::read_stl_file("/nonexistent/x.stl"),
+                    Catch::StartsWith("/nonexistent/x.stl: cannot open"));
 }

@@ -19,8 +19,9 @@ int main() {
   for (const auto& v : tet.vertices()) moved.push_back(Vec3<Q>(v[0] + Q(2), v[1], v[2]));
   const auto b = tet.with_vertices(moved);
   const auto r = sat::gauss_map(cube, b);
-  std::printf("exact (%s): overlap %d, separation %s / sqrt(%s)\n", std::string(number_traits<Q>::name).c_str(),
-              int(r.overlap), r.separation.num.get_str().c_str(), r.separation.norm2.get_str().c_str());
+  std::printf("exact (%s): overlap %d, separation %s / sqrt(%s)\n",
+              std::string(number_traits<Q>::name).c_str(), int(r.overlap), r.separation.num.get_str().c_str(),
+              r.separation.norm2.get_str().c_str());
   // touching exactly: the maximum separation is exactly zero, which counts as overlap
   return (r.overlap && r.separation.num == 0) ? 0 : 1;
 }

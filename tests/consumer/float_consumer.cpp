@@ -16,7 +16,7 @@ int main() {
   const auto r = sat::brute_force(a, b);
   std::printf("float: overlap %d, separation %g, feature %s\n", int(g.overlap), g.separation_as_double(),
               to_string(g.feature).c_str());
-  const bool ok = !g.overlap && g.separation_as_double() == 0.5 && g.axis[0] == 1.0f &&
-                  g.feature == r.feature;
+  const bool ok =
+      !g.overlap && g.separation_as_double() == 0.5 && g.axis[0] == 1.0f && g.feature == r.feature;
   return ok ? 0 : 1;
 }

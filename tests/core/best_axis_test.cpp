@@ -43,8 +43,8 @@ std::optional<ConvexPolyhedron<T>> random_polygon(std::mt19937& rng, int n, int 
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("side axes: coplanar triangles with a gap are separated by every SAT", "[sat][side]", float,
-                   double) {
+TEMPLATE_TEST_CASE("side axes: coplanar triangles with a gap are separated by every SAT", "[sat][side]",
+                   float, double) {
   using T = TestType;
   const auto c = coplanar_separated_triangles<T>();
   // A = (-2,-2), (2,-2), (0,2); B = A + (10, 0).  A's edge (2,-2)-(0,2) has
@@ -53,7 +53,8 @@ TEMPLATE_TEST_CASE("side axes: coplanar triangles with a gap are separated by ev
   // 12/sqrt 5 (A's vertex (2,-2)): SideA wins the tie in exact arithmetic.
   const double expected = 12 / std::sqrt(5.0);
   const GaussMapWalk wa(c.a), wb(c.b);
-  for (const auto& r : {sat::brute_force(c.a, c.b), sat::gauss_map(c.a, c.b), sat::traversal(c.a, wa, c.b, wb)}) {
+  for (const auto& r :
+       {sat::brute_force(c.a, c.b), sat::gauss_map(c.a, c.b), sat::traversal(c.a, wa, c.b, wb)}) {
     INFO(to_string(r.feature));
     CHECK_FALSE(r.overlap);
     CHECK((r.feature.type == FeatureType::SideA || r.feature.type == FeatureType::SideB));
@@ -95,8 +96,8 @@ TEMPLATE_TEST_CASE("side axes: only for two flat shapes", "[sat][side]", float, 
   CHECK(r.separation_as_double() == 2);
 }
 
-TEMPLATE_TEST_CASE("side axes: random coplanar polygons, every SAT agrees with the 2D SAT", "[sat][side]", float,
-                   double) {
+TEMPLATE_TEST_CASE("side axes: random coplanar polygons, every SAT agrees with the 2D SAT", "[sat][side]",
+                   float, double) {
   using T = TestType;
   std::mt19937 rng(20261121);
   std::uniform_int_distribution<int> off(-10, 10), cnt(3, 9);
@@ -146,7 +147,8 @@ TEMPLATE_TEST_CASE("side axes: a rotated coplanar pair, rounded to T", "[sat][si
   const Eigen::Matrix3d rot = Eigen::AngleAxisd(0.7, Vec3<double>(1, 2, 3).normalized()).toRotationMatrix();
   auto pose = [&](const ConvexPolyhedron<double>& p) {
     std::vector<Vec3<T>> vs;
-    for (const auto& v : p.vertices()) vs.push_back(vec_from_double<T>(Vec3<double>(rot * v + Vec3<double>(3, -1, 2))));
+    for (const auto& v : p.vertices())
+      vs.push_back(vec_from_double<T>(Vec3<double>(rot * v + Vec3<double>(3, -1, 2))));
     return ConvexPolyhedron<T>::polygon(vs);
   };
   const auto a = pose(c.a), b = pose(c.b);

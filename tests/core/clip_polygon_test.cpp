@@ -98,6 +98,6 @@ TEMPLATE_TEST_CASE("weld_polygon removes near-duplicates only", "[clip]", float,
   REQUIRE(q.size() == 4);
   CHECK(q[1].id.b == ShapeFeature::vertex(1));
   CHECK(q[1].next_edge == 99);  // the label of the segment leaving the run
-  weld_polygon(p, T(1e-14));  // tolerance 1e-7: keeps it
+  weld_polygon(p, T(1e-14));    // tolerance 1e-7: keeps it
   CHECK(p.size() == 5);
 }

@@ -37,7 +37,8 @@ ConvexPolyhedron<T> scaled_box(double s, double hx, double hy, double hz) {
 
 /// The properties every manifold must have, whatever the configuration.
 template <Number T>
-void check_invariants(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, const ContactManifold<T>& m) {
+void check_invariants(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b,
+                      const ContactManifold<T>& m) {
   const double ext = std::max(a.extent(), b.extent());
   const double tol = (std::is_same_v<T, float> ? 2e-5 : 1e-11) * ext;
   for (const auto& c : m.points) {
@@ -47,7 +48,8 @@ void check_invariants(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b
     for (int f = 0; f < b.face_count(); ++f)
       CHECK(to_double(T(dot(b.plane(f).normal, c.point_b) - b.plane(f).offset)) <= tol);
     // the separation is measured along the normal between the two points
-    CHECK(to_double(T(dot(m.normal, Vec3<T>(c.point_b - c.point_a)))) == Approx(to_double(c.separation.num)).margin(tol));
+    CHECK(to_double(T(dot(m.normal, Vec3<T>(c.point_b - c.point_a)))) ==
+          Approx(to_double(c.separation.num)).margin(tol));
     // ... and is never deeper than the SAT's minimum penetration
     CHECK(to_double(c.separation) >= to_double(m.separation) - tol);
   }
@@ -94,7 +96,8 @@ TEMPLATE_TEST_CASE("box resting on a box: 4 points at the right depth", "[contac
   CHECK(sat::gauss_map(a, b2).separation_as_double() == Approx(0.0).margin(1e-6));
 }
 
-TEMPLATE_TEST_CASE("box on a larger box rotated by 45 degrees: octagon reduced to 4", "[contact]", float, double) {
+TEMPLATE_TEST_CASE("box on a larger box rotated by 45 degrees: octagon reduced to 4", "[contact]", float,
+                   double) {
   using T = TestType;
   const auto a = shapes::cube<T>(1.0);
   const auto b = moved(shapes::box<T>(0.9, 0.9, 0.5), rot({0, 0, 1}, std::numbers::pi / 4), {0, 0, 1.4});
@@ -149,8 +152,10 @@ TEMPLATE_TEST_CASE("box on a larger box rotated by 45 degrees: octagon reduced t
         for (int l = k + 1; l < 8; ++l) {
           if (i != d && j != d && k != d && l != d) continue;
           ++subsets;
-          best = std::max(best, quad_area({vec_to_double(full.points[i].position), vec_to_double(full.points[j].position),
-                                           vec_to_double(full.points[k].position), vec_to_double(full.points[l].position)}));
+          best = std::max(
+              best,
+              quad_area({vec_to_double(full.points[i].position), vec_to_double(full.points[j].position),
+                         vec_to_double(full.points[k].position), vec_to_double(full.points[l].position)}));
         }
   CHECK(subsets == 35);
   // Float: candidates within the reduction's tie tolerance (contact_area *
@@ -186,8 +191,9 @@ TEMPLATE_TEST_CASE("double-sided triangle on a box face", "[contact]", float, do
   using T = TestType;
   const auto box = shapes::cube<T>(1.0);
   SECTION("small triangle as incident face: its three vertices") {
-    const auto tri = shapes::triangle<T>(vec_from_double<T>({-0.5, -0.5, 0.95}), vec_from_double<T>({0.6, -0.4, 0.95}),
-                                         vec_from_double<T>({0.0, 0.7, 0.95}));
+    const auto tri =
+        shapes::triangle<T>(vec_from_double<T>({-0.5, -0.5, 0.95}), vec_from_double<T>({0.6, -0.4, 0.95}),
+                            vec_from_double<T>({0.0, 0.7, 0.95}));
     const auto m = contact_manifold(box, tri);
     REQUIRE(m.kind == ContactKind::Face);
     CHECK(m.reference_shape == 0);
@@ -203,8 +209,8 @@ TEMPLATE_TEST_CASE("double-sided triangle on a box face", "[contact]", float, do
     check_invariants(box, tri, m);
   }
   SECTION("large triangle as incident face: clipped to the box face's corners") {
-    const auto tri = shapes::triangle<T>(vec_from_double<T>({-3, -2, 0.95}), vec_from_double<T>({3, -2, 0.95}),
-                                         vec_from_double<T>({0, 4, 0.95}));
+    const auto tri = shapes::triangle<T>(vec_from_double<T>({-3, -2, 0.95}),
+                                         vec_from_double<T>({3, -2, 0.95}), vec_from_double<T>({0, 4, 0.95}));
     const auto m = contact_manifold(box, tri);
     REQUIRE(m.kind == ContactKind::Face);
     REQUIRE(m.size() == 4);
@@ -256,8 +262,9 @@ TEMPLATE_TEST_CASE("triangle against triangle", "[contact]", float, double) {
   SECTION("a tilted triangle piercing another") {
     const auto a = shapes::triangle<T>(vec_from_double<T>({-2, -2, 0}), vec_from_double<T>({2, -2, 0}),
                                        vec_from_double<T>({0, 2, 0}));
-    const auto b = shapes::triangle<T>(vec_from_double<T>({-0.3, 0.1, -0.1}), vec_from_double<T>({0.4, -0.2, 0.8}),
-                                       vec_from_double<T>({0.1, 0.5, 0.9}));
+    const auto b =
+        shapes::triangle<T>(vec_from_double<T>({-0.3, 0.1, -0.1}), vec_from_double<T>({0.4, -0.2, 0.8}),
+                            vec_from_double<T>({0.1, 0.5, 0.9}));
     const auto m = contact_manifold(a, b);
     REQUIRE(m.kind != ContactKind::None);
     REQUIRE(m.size() >= 1);
@@ -274,14 +281,18 @@ std::pair<ConvexPolyhedron<T>, ConvexPolyhedron<T>> config(int which, double s) 
   const double r2 = std::sqrt(2.0);
   switch (which) {
     case 0:
-      return {shapes::cube<T>(s), moved(shapes::cube<T>(0.5 * s), Eigen::Matrix3d::Identity(), s * Vec3<double>(0.1, -0.2, 1.375))};
+      return {shapes::cube<T>(s), moved(shapes::cube<T>(0.5 * s), Eigen::Matrix3d::Identity(),
+                                        s * Vec3<double>(0.1, -0.2, 1.375))};
     case 1:
-      return {shapes::cube<T>(s), moved(shapes::box<T>(0.9 * s, 0.9 * s, 0.5 * s), rot({0, 0, 1}, std::numbers::pi / 4), s * Vec3<double>(0, 0, 1.4))};
+      return {shapes::cube<T>(s), moved(shapes::box<T>(0.9 * s, 0.9 * s, 0.5 * s),
+                                        rot({0, 0, 1}, std::numbers::pi / 4), s * Vec3<double>(0, 0, 1.4))};
     case 2:
       return {moved(shapes::cube<T>(s), rot({1, 0, 0}, std::numbers::pi / 4), {0, 0, 0}),
-              moved(shapes::cube<T>(s), rot({0, 1, 0}, std::numbers::pi / 4), s * Vec3<double>(0.1, -0.2, 2 * r2 - 0.1))};
+              moved(shapes::cube<T>(s), rot({0, 1, 0}, std::numbers::pi / 4),
+                    s * Vec3<double>(0.1, -0.2, 2 * r2 - 0.1))};
     case 3:
-      return {shapes::prism<T>(7, s, s), moved(shapes::prism<T>(5, 0.8 * s, 0.5 * s), rot({1, 1, 0}, 0.3), s * Vec3<double>(0.2, 0.1, 1.3))};
+      return {shapes::prism<T>(7, s, s), moved(shapes::prism<T>(5, 0.8 * s, 0.5 * s), rot({1, 1, 0}, 0.3),
+                                               s * Vec3<double>(0.2, 0.1, 1.3))};
     default:
       return {moved(shapes::tetrahedron<T>(s), rot({0, 1, 1}, 0.7), {0, 0, 0}),
               moved(shapes::cube<T>(0.6 * s), rot({1, 0, 1}, 1.1), s * Vec3<double>(0.9, 0.4, 0.5))};
@@ -309,21 +320,24 @@ void check_scaled_manifolds(std::initializer_list<double> scales) {
       const double tol = std::is_same_v<T, float> ? 1e-4 : 1e-9;
       for (int i = 0; i < ms.size(); ++i) {
         CHECK(ms.points[i].depth() / s == Approx(m1.points[i].depth()).margin(tol));
-        CHECK((vec_to_double(ms.points[i].position) / s - vec_to_double(m1.points[i].position)).norm() <= tol);
+        CHECK((vec_to_double(ms.points[i].position) / s - vec_to_double(m1.points[i].position)).norm() <=
+              tol);
       }
       check_invariants(as, bs, ms);
     }
   }
 }
 
-TEMPLATE_TEST_CASE("scale invariance: 1e-3 and 1e3 give the same manifold up to scale", "[contact][scale]", float, double) {
+TEMPLATE_TEST_CASE("scale invariance: 1e-3 and 1e3 give the same manifold up to scale", "[contact][scale]",
+                   float, double) {
   check_scaled_manifolds<TestType>({1e-3, 1e3});
 }
 
 // Extreme scales: squared lengths and cross products leave the range of T
 // here (float: 2^+-55 squared twice is 2^+-220; double: 2^+-400), so this is
 // the scale-safe paths (ConvexPolyhedron planes, scaled_cross, the clip).
-TEMPLATE_TEST_CASE("extreme scales give the same manifold up to scale", "[contact][scale][extreme]", float, double) {
+TEMPLATE_TEST_CASE("extreme scales give the same manifold up to scale", "[contact][scale][extreme]", float,
+                   double) {
   if constexpr (std::is_same_v<TestType, float>)
     check_scaled_manifolds<float>({0x1p-55, 0x1p55, 1e-15, 1e15});
   else
@@ -458,21 +472,28 @@ TEST_CASE("bad input to contact_manifold", "[contact][errors]") {
   CHECK(contact_manifold(a, b, sat).size() == 4);
 }
 
-TEST_CASE("random overlapping pairs: brute force and Gauss map agree, moving B by the depth separates", "[contact][random]") {
+TEST_CASE("random overlapping pairs: brute force and Gauss map agree, moving B by the depth separates",
+          "[contact][random]") {
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> u(-1, 1);
   int overlapping = 0;
   for (int iter = 0; iter < 300; ++iter) {
     auto shape = [&](int k) {
       switch (k % 4) {
-        case 0: return shapes::box<double>(0.5 + 0.5 * std::abs(u(rng)), 0.5 + 0.5 * std::abs(u(rng)), 0.3 + 0.5 * std::abs(u(rng)));
-        case 1: return shapes::prism<double>(3 + iter % 6, 0.8, 0.6);
-        case 2: return shapes::tetrahedron<double>(0.9);
-        default: return shapes::regular_polygon<double>(3 + iter % 5, 1.0);
+        case 0:
+          return shapes::box<double>(0.5 + 0.5 * std::abs(u(rng)), 0.5 + 0.5 * std::abs(u(rng)),
+                                     0.3 + 0.5 * std::abs(u(rng)));
+        case 1:
+          return shapes::prism<double>(3 + iter % 6, 0.8, 0.6);
+        case 2:
+          return shapes::tetrahedron<double>(0.9);
+        default:
+          return shapes::regular_polygon<double>(3 + iter % 5, 1.0);
       }
     };
     const auto a = moved(shape(iter), rot({u(rng), u(rng), u(rng)}, 3 * u(rng)), {0, 0, 0});
-    const auto b = moved(shape(iter / 4 + 1), rot({u(rng), u(rng), u(rng)}, 3 * u(rng)), {u(rng), u(rng), u(rng)});
+    const auto b =
+        moved(shape(iter / 4 + 1), rot({u(rng), u(rng), u(rng)}, 3 * u(rng)), {u(rng), u(rng), u(rng)});
     const auto sg = sat::gauss_map(a, b);
     if (!sg.overlap) continue;
     ++overlapping;
@@ -510,7 +531,8 @@ TEST_CASE("random overlapping pairs: brute force and Gauss map agree, moving B b
   CHECK(overlapping > 50);
 }
 
-TEMPLATE_TEST_CASE("feature ids are stable across frames while the same features touch", "[contact][frames]", float, double) {
+TEMPLATE_TEST_CASE("feature ids are stable across frames while the same features touch", "[contact][frames]",
+                   float, double) {
   using T = TestType;
   const auto a = shapes::box<T>(2.0, 2.0, 1.0);
   std::vector<ContactFeatureId> first;
@@ -520,8 +542,10 @@ TEMPLATE_TEST_CASE("feature ids are stable across frames while the same features
     const auto m = contact_manifold(a, b);
     REQUIRE(m.size() == 4);
     INFO("frame " << frame);
-    if (frame == 0) first = ids_of(m);
-    else CHECK(ids_of(m) == first);
+    if (frame == 0)
+      first = ids_of(m);
+    else
+      CHECK(ids_of(m) == first);
   }
 }
 
@@ -529,7 +553,8 @@ TEMPLATE_TEST_CASE("feature ids are stable across frames while the same features
 #include <sepax/sat_cache.hpp>
 #include <sepax/sat_traversal.hpp>
 
-TEMPLATE_TEST_CASE("a cached query gives the same manifold as a fresh one", "[contact][cache]", float, double) {
+TEMPLATE_TEST_CASE("a cached query gives the same manifold as a fresh one", "[contact][cache]", float,
+                   double) {
   using T = TestType;
   const auto a = shapes::prism<T>(9, 1.0, 0.8);
   SatCache<T> cache;
@@ -538,11 +563,13 @@ TEMPLATE_TEST_CASE("a cached query gives the same manifold as a fresh one", "[co
   int overlapping = 0;
   for (int frame = 0; frame < 60; ++frame) {
     const double t = 0.1 * frame;
-    const auto b = moved(shapes::box<T>(0.5, 0.4, 0.3), rot({std::sin(t), 1, 0.3}, t), {0.8 * std::cos(t), 0.5 * std::sin(t), 0.9 + 0.4 * std::sin(2 * t)});
+    const auto b = moved(shapes::box<T>(0.5, 0.4, 0.3), rot({std::sin(t), 1, 0.3}, t),
+                         {0.8 * std::cos(t), 0.5 * std::sin(t), 0.9 + 0.4 * std::sin(2 * t)});
     for (bool early : {false, true}) {
       SatOptions o;
       o.early_out = early;
-      const auto rc = sat::cached(cache, a, b, [](auto& k, const SatOptions& oo) { return sat::gauss_map_with(k, oo); }, o);
+      const auto rc = sat::cached(
+          cache, a, b, [](auto& k, const SatOptions& oo) { return sat::gauss_map_with(k, oo); }, o);
       const auto rf = sat::traversal(a, b);
       if (!rf.overlap) {
         CHECK_FALSE(rc.overlap);
@@ -565,7 +592,8 @@ TEMPLATE_TEST_CASE("a cached query gives the same manifold as a fresh one", "[co
 }
 #endif
 
-TEMPLATE_TEST_CASE("scale invariance on random overlapping pairs", "[contact][scale][random]", float, double) {
+TEMPLATE_TEST_CASE("scale invariance on random overlapping pairs", "[contact][scale][random]", float,
+                   double) {
   using T = TestType;
   std::mt19937 rng(99);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -577,9 +605,12 @@ TEMPLATE_TEST_CASE("scale invariance on random overlapping pairs", "[contact][sc
     const int ka = iter % 3, kb = (iter / 3) % 3;
     auto make = [&](int k, double s) {
       switch (k) {
-        case 0: return shapes::box<T>(0.7 * s, 0.5 * s, 0.4 * s);
-        case 1: return shapes::prism<T>(6, 0.8 * s, 0.5 * s);
-        default: return shapes::regular_polygon<T>(5, 0.9 * s);
+        case 0:
+          return shapes::box<T>(0.7 * s, 0.5 * s, 0.4 * s);
+        case 1:
+          return shapes::prism<T>(6, 0.8 * s, 0.5 * s);
+        default:
+          return shapes::regular_polygon<T>(5, 0.9 * s);
       }
     };
     const auto a1 = moved(make(ka, 1), ra, {0, 0, 0});
@@ -596,14 +627,15 @@ TEMPLATE_TEST_CASE("scale invariance on random overlapping pairs", "[contact][sc
       REQUIRE(ms.size() == m1.size());
       CHECK(ids_of(ms) == ids_of(m1));
       for (int i = 0; i < ms.size(); ++i)
-        CHECK(ms.points[i].depth() / s == Approx(m1.points[i].depth()).margin(std::is_same_v<T, float> ? 1e-4 : 1e-9));
+        CHECK(ms.points[i].depth() / s ==
+              Approx(m1.points[i].depth()).margin(std::is_same_v<T, float> ? 1e-4 : 1e-9));
     }
   }
   CHECK(checked >= 40);
 }
 
-TEMPLATE_TEST_CASE("closest_segment_points: scale-free, and a zero-length segment is its tail", "[contact][segments]",
-                   float, double) {
+TEMPLATE_TEST_CASE("closest_segment_points: scale-free, and a zero-length segment is its tail",
+                   "[contact][segments]", float, double) {
   using T = TestType;
   using detail::closest_segment_points;
   // two crossing segments: x axis from (-1,0,0), and a segment along y at x = 0.25, z = 1
@@ -611,19 +643,21 @@ TEMPLATE_TEST_CASE("closest_segment_points: scale-free, and a zero-length segmen
   const double big = std::is_same_v<T, float> ? 0x1p60 : 0x1p500;
   for (double k : {1.0, big, 1 / big}) {
     INFO("scale " << k);
-    closest_segment_points(vec_from_double<T>(Vec3<double>(-1, 0, 0) * k), vec_from_double<T>(Vec3<double>(2, 0, 0) * k),
-                           vec_from_double<T>(Vec3<double>(0.25, -1, 1) * k), vec_from_double<T>(Vec3<double>(0, 4, 0) * k), s, t);
+    closest_segment_points(vec_from_double<T>(Vec3<double>(-1, 0, 0) * k),
+                           vec_from_double<T>(Vec3<double>(2, 0, 0) * k),
+                           vec_from_double<T>(Vec3<double>(0.25, -1, 1) * k),
+                           vec_from_double<T>(Vec3<double>(0, 4, 0) * k), s, t);
     CHECK(s == T(0.625));
     CHECK(t == T(0.25));
   }
   // zero-length first segment: the point (0.5, 3, 0) against the x segment from the origin
-  closest_segment_points(vec_from_double<T>({0.5, 3, 0}), Vec3<T>(T(0), T(0), T(0)), vec_from_double<T>({0, 0, 0}),
-                         vec_from_double<T>({2, 0, 0}), s, t);
+  closest_segment_points(vec_from_double<T>({0.5, 3, 0}), Vec3<T>(T(0), T(0), T(0)),
+                         vec_from_double<T>({0, 0, 0}), vec_from_double<T>({2, 0, 0}), s, t);
   CHECK(s == T(0));
   CHECK(t == T(0.25));
   // zero-length second segment
-  closest_segment_points(vec_from_double<T>({0, 0, 0}), vec_from_double<T>({2, 0, 0}), vec_from_double<T>({3, 1, 0}),
-                         Vec3<T>(T(0), T(0), T(0)), s, t);
+  closest_segment_points(vec_from_double<T>({0, 0, 0}), vec_from_double<T>({2, 0, 0}),
+                         vec_from_double<T>({3, 1, 0}), Vec3<T>(T(0), T(0), T(0)), s, t);
   CHECK(s == T(1));
   CHECK(t == T(0));
 }

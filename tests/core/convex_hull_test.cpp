@@ -100,8 +100,8 @@ TEMPLATE_TEST_CASE("hull of cube corners and interior points is the cube", "[hul
   CHECK(max_outside(h, tp) <= 0.0);
 }
 
-TEMPLATE_TEST_CASE("hull of a 3x3x3 lattice merges coplanar faces and drops edge midpoints",
-                   "[hull]", float, double) {
+TEMPLATE_TEST_CASE("hull of a 3x3x3 lattice merges coplanar faces and drops edge midpoints", "[hull]", float,
+                   double) {
   using T = TestType;
   std::vector<Vec3<double>> pts;
   for (int i = 0; i < 3; ++i)
@@ -177,8 +177,7 @@ TEMPLATE_TEST_CASE("coplanar points give a flat double-sided polygon", "[hull]",
   CHECK(g.vertex_count() == 12);
 }
 
-TEMPLATE_TEST_CASE("points within the flat tolerance of a plane give a polygon", "[hull]", float,
-                   double) {
+TEMPLATE_TEST_CASE("points within the flat tolerance of a plane give a polygon", "[hull]", float, double) {
   using T = TestType;
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -197,8 +196,7 @@ TEMPLATE_TEST_CASE("points within the flat tolerance of a plane give a polygon",
   check_valid(s);
 }
 
-TEMPLATE_TEST_CASE("bad input: collinear, too few, duplicates, NaN, Inf", "[hull][errors]", float,
-                   double) {
+TEMPLATE_TEST_CASE("bad input: collinear, too few, duplicates, NaN, Inf", "[hull][errors]", float, double) {
   using T = TestType;
   auto code_of = [](const std::vector<Vec3<T>>& pts) {
     try {
@@ -214,8 +212,7 @@ TEMPLATE_TEST_CASE("bad input: collinear, too few, duplicates, NaN, Inf", "[hull
   CHECK(code_of({a, b}) == ErrorCode::TooFewPoints);
   CHECK(code_of({a, b, a, b, b}) == ErrorCode::TooFewPoints);
   CHECK(code_of({a, a, a, a}) == ErrorCode::TooFewPoints);
-  CHECK(code_of({a, b, c, Vec3<T>(T(3), T(4), T(7)), Vec3<T>(T(1.5), T(2.5), T(4))}) ==
-        ErrorCode::Collinear);
+  CHECK(code_of({a, b, c, Vec3<T>(T(3), T(4), T(7)), Vec3<T>(T(1.5), T(2.5), T(4))}) == ErrorCode::Collinear);
   const T nan = std::numeric_limits<T>::quiet_NaN();
   const T inf = std::numeric_limits<T>::infinity();
   std::vector<Vec3<T>> bad{a, b, c, Vec3<T>(T(0), T(0), T(9)), Vec3<T>(T(1), nan, T(0))};
@@ -329,8 +326,8 @@ double stress_stream(unsigned seed, int count) {
       double max_abs = 0;
       for (const auto& p : pts)
         for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(p[c])));
-      const double rounding = 64 * number_traits<T>::unit_roundoff * max_abs /
-                              (Tolerances<T>::coplanar * h.extent());
+      const double rounding =
+          64 * number_traits<T>::unit_roundoff * max_abs / (Tolerances<T>::coplanar * h.extent());
       worst = std::max(worst, out - rounding);
       CHECK(out <= kHullOutsideBound + rounding);
       // Euclidean: a point within eps of two planes of a thin wedge can be
@@ -365,8 +362,8 @@ double stress_stream(unsigned seed, int count) {
     }
   }
   WARN("seed " << seed << ": solids " << solids << ", flat " << flats << ", rejected " << errors
-               << ", worst point outside " << worst << " x coplanar*extent; worst distance "
-               << worst_dist << "; projected slabs " << projected << ", tents " << tents);
+               << ", worst point outside " << worst << " x coplanar*extent; worst distance " << worst_dist
+               << "; projected slabs " << projected << ", tents " << tents);
   CHECK(solids > (count - errors) / 2);
   CHECK(flats > 0);
   return worst;
@@ -384,8 +381,8 @@ TEMPLATE_TEST_CASE("stress: 1000 hard point sets each give a validated hull or a
 // extent: seed 1 iteration 3074, a cluster of near-duplicates; seed 2
 // iteration 1424, a thin slab, 296 x).  Every set of both streams is now
 // held to the bound.
-TEMPLATE_TEST_CASE("stress: the 2 x 10000 sets that lost points (issue 2) all keep them",
-                   "[hull][stress]", float, double) {
+TEMPLATE_TEST_CASE("stress: the 2 x 10000 sets that lost points (issue 2) all keep them", "[hull][stress]",
+                   float, double) {
   for (unsigned seed : {1u, 2u}) stress_stream<TestType>(seed, 10000);
 }
 
@@ -436,8 +433,8 @@ TEMPLATE_TEST_CASE("slab corners that the repair rounds lost are kept", "[hull][
     double max_abs = 0;
     for (const auto& p : pts)
       for (int k = 0; k < 3; ++k) max_abs = std::max(max_abs, std::abs(to_double(p[k])));
-    const double rounding = 64 * number_traits<T>::unit_roundoff * max_abs /
-                            (Tolerances<T>::coplanar * h.extent());
+    const double rounding =
+        64 * number_traits<T>::unit_roundoff * max_abs / (Tolerances<T>::coplanar * h.extent());
     const double dist = max_distance(h, pts);
     INFO("vertices " << h.vertex_count() << ", farthest point " << dist << ", thickness "
                      << min_face_width(h, pts) << " x coplanar*extent");
@@ -500,8 +497,8 @@ TEMPLATE_TEST_CASE("large hull: local checks agree with the full scans", "[hull]
 // corner of the grid the faces are convex within tolerance yet a vertex counts
 // 0 turns in rounded arithmetic: validation must then decide by the full scan
 // (the certificate is sufficient, not necessary), not refuse a convex hull.
-TEMPLATE_TEST_CASE("large hull: a height-field grid whose corner defeats the winding count", "[hull][large]", float,
-                   double) {
+TEMPLATE_TEST_CASE("large hull: a height-field grid whose corner defeats the winding count", "[hull][large]",
+                   float, double) {
   using T = TestType;
   constexpr int n = 500;
   std::vector<Vec3<T>> pts;
@@ -521,12 +518,14 @@ TEMPLATE_TEST_CASE("large hull: a height-field grid whose corner defeats the win
 
 // A 0.4-unit piece 150 units from the origin: built in its own frame, whose
 // origin makes every subtraction exact, so every world vertex is an input point.
-TEMPLATE_TEST_CASE("far piece: convex_hull_local builds it in its own frame", "[hull][local]", float, double) {
+TEMPLATE_TEST_CASE("far piece: convex_hull_local builds it in its own frame", "[hull][local]", float,
+                   double) {
   using T = TestType;
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-0.2, 0.2);
   std::vector<Vec3<T>> pts;
-  for (int i = 0; i < 200; ++i) pts.push_back(vec_cast<T>(Vec3<double>(150 + u(rng), -150 + u(rng), 150 + u(rng))));
+  for (int i = 0; i < 200; ++i)
+    pts.push_back(vec_cast<T>(Vec3<double>(150 + u(rng), -150 + u(rng), 150 + u(rng))));
   const auto local = convex_hull_local(pts);
   CHECK(local.shape.vertex_count() >= 4);
   CHECK(local.shape.extent() < 1.0);

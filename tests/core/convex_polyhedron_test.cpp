@@ -109,8 +109,8 @@ void check_half_edge_invariants(const ConvexPolyhedron<T>& p) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("validation: non-finite coordinates and too few points", "[polyhedron][errors]",
-                   float, double) {
+TEMPLATE_TEST_CASE("validation: non-finite coordinates and too few points", "[polyhedron][errors]", float,
+                   double) {
   using T = TestType;
   auto v = cube_vertices<T>();
   v[3][1] = std::numeric_limits<T>::quiet_NaN();
@@ -127,8 +127,8 @@ TEMPLATE_TEST_CASE("validation: non-finite coordinates and too few points", "[po
   CHECK(contains(f.message, "2"));
 }
 
-TEMPLATE_TEST_CASE("validation: topology errors name the face, edge or vertex",
-                   "[polyhedron][errors]", float, double) {
+TEMPLATE_TEST_CASE("validation: topology errors name the face, edge or vertex", "[polyhedron][errors]", float,
+                   double) {
   using T = TestType;
   const auto v = cube_vertices<T>();
   // repeated vertex in a face
@@ -196,7 +196,8 @@ TEMPLATE_TEST_CASE("validation: topology errors name the face, edge or vertex",
     two.emplace_back(o - T(1), T(1), T(-1));
     two.emplace_back(o - T(1), T(-1), T(1));
   }
-  r = failure<T>(two, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}, {4, 5, 6}, {4, 7, 5}, {4, 6, 7}, {5, 7, 6}});
+  r = failure<T>(two,
+                 {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}, {4, 5, 6}, {4, 7, 5}, {4, 6, 7}, {5, 7, 6}});
   CHECK(r.code == ErrorCode::BadEuler);
   CHECK(contains(r.message, "8 - 12 + 8"));
 }
@@ -348,7 +349,8 @@ TEMPLATE_TEST_CASE("scale: tolerances stay relative to the extent at every scale
     // it is accepted, beyond it faces 1, 3 and 5 are not planar.
     for (const double r : {Tolerances<T>::planarity / 8, 1e-3}) {
       auto v = cube_vertices<T>();
-      for (auto& q : v) q = Vec3<T>(static_cast<T>(q[0] * s), static_cast<T>(q[1] * s), static_cast<T>(q[2] * s));
+      for (auto& q : v)
+        q = Vec3<T>(static_cast<T>(q[0] * s), static_cast<T>(q[1] * s), static_cast<T>(q[2] * s));
       v[6][2] = static_cast<T>(s * (1 + r));
       const auto f = failure<T>(v, cube_faces);
       if (r < 1e-3) {
@@ -381,13 +383,14 @@ TEST_CASE("scale: mixed magnitudes in one shape (double)", "[polyhedron][scale]"
   }
 }
 
-TEMPLATE_TEST_CASE("scale: out-of-range input gets BadScale naming the problem", "[polyhedron][scale][errors]",
-                   float, double) {
+TEMPLATE_TEST_CASE("scale: out-of-range input gets BadScale naming the problem",
+                   "[polyhedron][scale][errors]", float, double) {
   using T = TestType;
   const double big = static_cast<double>(std::numeric_limits<T>::max()) / 4;
   // coordinates near max: edges and plane offsets would overflow
   auto v = cube_vertices<T>();
-  for (auto& q : v) q = Vec3<T>(static_cast<T>(q[0] * big), static_cast<T>(q[1] * big), static_cast<T>(q[2] * big));
+  for (auto& q : v)
+    q = Vec3<T>(static_cast<T>(q[0] * big), static_cast<T>(q[1] * big), static_cast<T>(q[2] * big));
   auto f = failure<T>(v, cube_faces);
   CHECK(f.code == ErrorCode::BadScale);
   CHECK(contains(f.message, "out of range"));
@@ -395,15 +398,16 @@ TEMPLATE_TEST_CASE("scale: out-of-range input gets BadScale naming the problem",
   // so small that the relative tolerances are subnormal
   const double tiny = static_cast<double>(std::numeric_limits<T>::min()) * 16;
   v = cube_vertices<T>();
-  for (auto& q : v) q = Vec3<T>(static_cast<T>(q[0] * tiny), static_cast<T>(q[1] * tiny), static_cast<T>(q[2] * tiny));
+  for (auto& q : v)
+    q = Vec3<T>(static_cast<T>(q[0] * tiny), static_cast<T>(q[1] * tiny), static_cast<T>(q[2] * tiny));
   f = failure<T>(v, cube_faces);
   CHECK(f.code == ErrorCode::BadScale);
   CHECK(contains(f.message, "too small"));
   CHECK(!contains(f.message, "zero area"));
 }
 
-TEMPLATE_TEST_CASE("scale: with_vertices and convert_from check the new coordinates", "[polyhedron][scale][errors]",
-                   float, double) {
+TEMPLATE_TEST_CASE("scale: with_vertices and convert_from check the new coordinates",
+                   "[polyhedron][scale][errors]", float, double) {
   using T = TestType;
   const auto cube = ConvexPolyhedron<T>::from_faces(cube_vertices<T>(), cube_faces);
   auto code_of = [](auto&& make) {

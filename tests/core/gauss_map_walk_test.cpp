@@ -116,8 +116,9 @@ TEST_CASE("probes depend on the combinatorics only: the same for every pose and 
 TEST_CASE("face chunks: the BFS order in chunks of at most kFaceChunk, no face with its parent",
           "[walk][chunks]") {
   std::mt19937_64 rng(23);
-  std::vector<ConvexPolyhedron<double>> shapes_list = {shapes::cube<double>(1.0), shapes::prism<double>(40, 1.0, 0.5),
-                                                      shapes::regular_polygon<double>(5, 1.0)};
+  std::vector<ConvexPolyhedron<double>> shapes_list = {shapes::cube<double>(1.0),
+                                                       shapes::prism<double>(40, 1.0, 0.5),
+                                                       shapes::regular_polygon<double>(5, 1.0)};
   for (int n : {8, 40, 150, 400}) shapes_list.push_back(test::large_sphere_hull(rng, n));
   for (const auto& p : shapes_list) {
     const GaussMapWalk w(p);
@@ -133,7 +134,8 @@ TEST_CASE("face chunks: the BFS order in chunks of at most kFaceChunk, no face w
     for (std::size_t c = 0; c + 1 < ch.size(); ++c) {
       CHECK(ch[c] < ch[c + 1]);
       CHECK(ch[c + 1] - ch[c] <= GaussMapWalk::kFaceChunk);
-      for (int i = ch[c]; i < ch[c + 1]; ++i) chunk_of[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])] = static_cast<int>(c);
+      for (int i = ch[c]; i < ch[c + 1]; ++i)
+        chunk_of[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])] = static_cast<int>(c);
     }
     for (int i = 1; i < nf; ++i) {
       const int f = order[static_cast<std::size_t>(i)], pf = parent[static_cast<std::size_t>(i)];

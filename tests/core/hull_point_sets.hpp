@@ -207,7 +207,6 @@ inline std::vector<Vec3<double>> random_point_set(std::mt19937& rng, int kind) {
   return p;
 }
 
-
 // The hull benchmark's point sets (bench/hull_bench.cpp, tools/hull_compare.cpp;
 // seed 42): n points on the unit sphere, in the unit ball, in the thin slab
 // [-1, 1]^2 x [-1e-3, 1e-3], or on a cylinder's lateral surface (radius 1,

@@ -40,7 +40,7 @@ TEST_CASE("compare_manifolds: float vs double on the same inputs", "[contact][co
   // a different configuration is told apart
   const auto other = contact_manifold(ad, shifted(shapes::prism<double>(5, 0.6, 0.5), 0.2, 0.1, 1.2));
   const auto e = compare_manifolds(mf, other);
-  CHECK(e.same_ids);  // same features touch ...
+  CHECK(e.same_ids);                // same features touch ...
   CHECK(e.max_depth_error > 0.09);  // ... 0.1 deeper
   CHECK_FALSE(compare_manifolds(md, contact_manifold(ad, shifted(bd, 0, 0, 5))).same_kind);
 }

@@ -29,8 +29,11 @@ std::vector<V> octagon() {
 // without collinear or repeated points; exact for small integers.
 std::vector<V> hull_xy(std::vector<V> q) {
   if (q.empty()) return q;
-  std::sort(q.begin(), q.end(), [](const V& a, const V& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); });
-  auto cr = [](const V& o, const V& a, const V& b) { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
+  std::sort(q.begin(), q.end(),
+            [](const V& a, const V& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); });
+  auto cr = [](const V& o, const V& a, const V& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  };
   std::vector<V> h(2 * q.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < q.size(); ++i) {
@@ -108,7 +111,8 @@ TEST_CASE("reduction keeps up to 4 points as they are", "[reduction]") {
   CHECK(reduce_contact_points(std::vector<V>{}, std::vector<double>{}, up, 0.0, 0.0).empty());
   // four points, even collinear or duplicated ones, are not touched
   std::vector<V> line{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 0, 0}};
-  CHECK(reduce_contact_points(line, std::vector<double>{0, -1, 0, 0}, up, 0.0, 0.0) == std::vector<int>{0, 1, 2, 3});
+  CHECK(reduce_contact_points(line, std::vector<double>{0, -1, 0, 0}, up, 0.0, 0.0) ==
+        std::vector<int>{0, 1, 2, 3});
 }
 
 TEST_CASE("octagon of equal depth: the lowest index and the square, in polygon order", "[reduction]") {
@@ -119,7 +123,8 @@ TEST_CASE("octagon of equal depth: the lowest index and the square, in polygon o
   CHECK(reduce_contact_points(p, std::vector<double>(8, -0.1), up, 0.0, 0.0) == std::vector<int>{0, 2, 4, 6});
 }
 
-TEST_CASE("the deepest point is always kept, first, and the quad is the largest containing it", "[reduction]") {
+TEST_CASE("the deepest point is always kept, first, and the quad is the largest containing it",
+          "[reduction]") {
   const auto p = octagon();
   for (int d = 0; d < 8; ++d) {
     std::vector<double> keys(8, -0.1);
@@ -131,7 +136,8 @@ TEST_CASE("the deepest point is always kept, first, and the quad is the largest 
   }
 }
 
-TEST_CASE("deepest ties: the lowest index (exactly equal keys, and float keys within key_tol)", "[reduction]") {
+TEST_CASE("deepest ties: the lowest index (exactly equal keys, and float keys within key_tol)",
+          "[reduction]") {
   const auto p = octagon();
   std::vector<double> keys(8, 0.0);
   keys[5] = -1;
@@ -142,7 +148,8 @@ TEST_CASE("deepest ties: the lowest index (exactly equal keys, and float keys wi
   CHECK(reduce_contact_points(p, keys, up, 1e-12, 0.0)[0] == 3);
 }
 
-TEST_CASE("maximum area against brute force, convex lattice polygons with collinear points, both scans", "[reduction]") {
+TEST_CASE("maximum area against brute force, convex lattice polygons with collinear points, both scans",
+          "[reduction]") {
   std::mt19937 rng(11);
   std::uniform_int_distribution<int> key(-3, 0);  // few distinct keys: many depth ties
   int tested = 0;
@@ -249,7 +256,8 @@ TEST_CASE("points not in convex position: the general scan, still the maximum", 
         for (int b = a + 1; b < n; ++b)
           for (int c = b + 1; c < n; ++c) {
             if (a == d || b == d || c == d) continue;
-            if (std::array<int, 3>{a, b, c} < mine && hull_area_xy({p[d], p[a], p[b], p[c]}) == kept_area(p, k))
+            if (std::array<int, 3>{a, b, c} < mine &&
+                hull_area_xy({p[d], p[a], p[b], p[c]}) == kept_area(p, k))
               earlier_max = true;
           }
       CHECK_FALSE(earlier_max);

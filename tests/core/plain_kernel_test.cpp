@@ -83,7 +83,8 @@ TEST_CASE("PlainKernel: shapes of very different scales (double)", "[kernel][sca
   for (const double lift : {0.0, 0x1p470}) {
     INFO("lift " << lift);
     const auto small = small_at(lift);
-    for (const auto& r : {sat::brute_force(big, small), sat::gauss_map(big, small), sat::traversal(big, small)}) {
+    for (const auto& r :
+         {sat::brute_force(big, small), sat::gauss_map(big, small), sat::traversal(big, small)}) {
       CHECK(r.overlap == (lift == 0.0));
       CHECK(r.separation_as_double() == lift);
       CHECK(r.feature.type != FeatureType::EdgePair);

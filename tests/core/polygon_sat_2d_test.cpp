@@ -26,8 +26,8 @@ ErrorCode error_of(std::initializer_list<std::pair<double, double>> pts) {
 TEMPLATE_TEST_CASE("polygon2: validation names the problem", "[sat2d]", float, double) {
   using T = TestType;
   CHECK(error_of<T>({{0, 0}, {1, 0}}) == ErrorCode::TooFewPoints);
-  CHECK(error_of<T>({{0, 0}, {1, 0}, {1, 0}, {0, 1}}) == ErrorCode::DegenerateFace);  // duplicate
-  CHECK(error_of<T>({{0, 0}, {0, 1}, {1, 1}, {1, 0}}) == ErrorCode::InwardFaces);     // clockwise
+  CHECK(error_of<T>({{0, 0}, {1, 0}, {1, 0}, {0, 1}}) == ErrorCode::DegenerateFace);            // duplicate
+  CHECK(error_of<T>({{0, 0}, {0, 1}, {1, 1}, {1, 0}}) == ErrorCode::InwardFaces);               // clockwise
   CHECK(error_of<T>({{0, 0}, {2, 0}, {1, 0.25}, {2, 2}, {0, 2}}) == ErrorCode::NonConvexFace);  // reflex
   CHECK(error_of<T>({{0, 0}, {1, 1}, {2, 2}}) == ErrorCode::DegenerateFace);  // collinear: no area
   // pentagram: turns left at every corner but winds twice
@@ -133,12 +133,14 @@ TEMPLATE_TEST_CASE("polygon2: SAT agrees with the projection and geometry oracle
 }
 
 // The case the 3D SATs cannot decide (docs/sat.md): coplanar flat shapes.
-TEMPLATE_TEST_CASE("coplanar_sat decides coplanar polygons in their plane", "[sat2d][coplanar]", float, double) {
+TEMPLATE_TEST_CASE("coplanar_sat decides coplanar polygons in their plane", "[sat2d][coplanar]", float,
+                   double) {
   using T = TestType;
   const auto v = [](double x, double y, double z) { return vec_from_double<T>(Vec3<double>(x, y, z)); };
   // a tilted plane x + y + 2z = 2 (exactly representable points)
   const auto t1 = ConvexPolyhedron<T>::polygon({v(2, 0, 0), v(0, 2, 0), v(0, 0, 1)});
-  const auto far = ConvexPolyhedron<T>::polygon({v(4, 2, -2), v(6, 0, -2), v(6, 2, -3)});  // same plane, apart
+  const auto far =
+      ConvexPolyhedron<T>::polygon({v(4, 2, -2), v(6, 0, -2), v(6, 2, -3)});  // same plane, apart
   const auto near = ConvexPolyhedron<T>::polygon({v(1, 1, 0), v(3, 1, -1), v(1, 3, -1)});  // shares (1,1,0)
   const auto inside = ConvexPolyhedron<T>::polygon({v(0.5, 0.5, 0.5), v(1, 0.5, 0.25), v(0.5, 1, 0.25)});
   // (the 3D SAT says "touching" here in exact arithmetic; in float it depends on rounding)

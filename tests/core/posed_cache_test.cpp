@@ -12,8 +12,8 @@
 using namespace sepax;
 using namespace sepax::test;
 
-TEMPLATE_TEST_CASE("warm posed queries equal fresh ones along coherent sequences (plain)", "[posed][cache]", float,
-                   double) {
+TEMPLATE_TEST_CASE("warm posed queries equal fresh ones along coherent sequences (plain)", "[posed][cache]",
+                   float, double) {
   using T = TestType;
   std::mt19937_64 rng(1821);
   const auto shapes = local_shapes<T>(rng);
@@ -49,7 +49,6 @@ TEMPLATE_TEST_CASE("warm early-out answers decided on a partial posed B equal th
   using T = TestType;
   std::mt19937_64 rng(1825);
   const auto shapes = local_shapes<T>(rng);
-  const WarmCounts n = check_warm_against_reference<policy::Plain>(shapes, rng, 3,
-                                                                   [](auto&&...) {});
+  const WarmCounts n = check_warm_against_reference<policy::Plain>(shapes, rng, 3, [](auto&&...) {});
   check_every_warm_path_taken(n);
 }

@@ -29,8 +29,9 @@ RigidTransform<T> random_pose(std::mt19937_64& rng, double reach) {
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> u(0.0, reach);
   const V3 t = u(rng) * random_unit(rng);
-  return RigidTransform<T>::from_quaternion(g(rng), g(rng), g(rng), g(rng),
-                                            Vec3<T>(from_double<T>(t[0]), from_double<T>(t[1]), from_double<T>(t[2])));
+  return RigidTransform<T>::from_quaternion(
+      g(rng), g(rng), g(rng), g(rng),
+      Vec3<T>(from_double<T>(t[0]), from_double<T>(t[1]), from_double<T>(t[2])));
 }
 
 /// A random exact-rational pose (integer quaternion, dyadic translation).
@@ -42,9 +43,9 @@ RigidTransform<T> random_integer_pose(std::mt19937_64& rng, double reach) {
     w = q(rng), x = q(rng), y = q(rng), z = q(rng);
   } while (w == 0 && x == 0 && y == 0 && z == 0);
   std::uniform_int_distribution<int> c(-static_cast<int>(reach * 64), static_cast<int>(reach * 64));
-  return from_integer_quaternion<T>(w, x, y, z,
-                                    Vec3<T>(from_double<T>(c(rng) / 64.0), from_double<T>(c(rng) / 64.0),
-                                            from_double<T>(c(rng) / 64.0)));
+  return from_integer_quaternion<T>(
+      w, x, y, z,
+      Vec3<T>(from_double<T>(c(rng) / 64.0), from_double<T>(c(rng) / 64.0), from_double<T>(c(rng) / 64.0)));
 }
 
 /// Local shapes of every kind the SATs see: sphere hulls, boxes, a prism
@@ -69,7 +70,8 @@ void require_same_separation(const Separation<T>& x, const Separation<T>& y) {
 /// posed == reference (the pre-posed SAT's result with its axis mapped by
 /// pose_a), every field bit for bit.
 template <class T>
-void require_same_result(const SatResult<T>& posed, const SatResult<T>& ref, const RigidTransform<T>& pose_a) {
+void require_same_result(const SatResult<T>& posed, const SatResult<T>& ref,
+                         const RigidTransform<T>& pose_a) {
   REQUIRE(posed.overlap == ref.overlap);
   REQUIRE(posed.feature == ref.feature);
   require_same_separation(posed.separation, ref.separation);
@@ -103,8 +105,8 @@ std::optional<SatResult<T>> precheck_reference(const PreparedShape<T>& a, const 
 /// pairs per pair of shapes, with and without early_out/margin (the
 /// reference of an early-out query: precheck_reference, else the SAT).
 template <class Policy, Number T, class PoseGen>
-int check_posed_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes, std::mt19937_64& rng, int poses,
-                                  PoseGen&& pose) {
+int check_posed_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes, std::mt19937_64& rng,
+                                  int poses, PoseGen&& pose) {
   std::vector<PreparedShape<T>> prepared;
   for (const auto& s : shapes) prepared.emplace_back(s);
   int checked = 0;
@@ -137,8 +139,10 @@ int check_posed_against_reference(const std::vector<ConvexPolyhedron<T>>& shapes
 template <class T>
 void require_same_derived(const ConvexPolyhedron<T>& p, const ConvexPolyhedron<T>& q) {
   auto same = [](const auto& x, const auto& y) {
-    if constexpr (number_traits<T>::is_exact) return x == y;
-    else return std::memcmp(&x, &y, sizeof(x)) == 0;  // bits (signed zeros, NaN payloads)
+    if constexpr (number_traits<T>::is_exact)
+      return x == y;
+    else
+      return std::memcmp(&x, &y, sizeof(x)) == 0;  // bits (signed zeros, NaN payloads)
   };
   REQUIRE(p.vertex_count() == q.vertex_count());
   REQUIRE(p.face_count() == q.face_count());
@@ -160,7 +164,8 @@ void require_same_derived(const ConvexPolyhedron<T>& p, const ConvexPolyhedron<T
     REQUIRE(std::memcmp(p.lane_edge(k), q.lane_edge(k), sizeof(T) * std::size_t(p.lane_edge_stride())) == 0);
   }
   for (int c = 0; c < 3; ++c) {
-    REQUIRE(std::memcmp(p.lane_vertex(c), q.lane_vertex(c), sizeof(T) * std::size_t(p.lane_vertex_stride())) == 0);
+    REQUIRE(std::memcmp(p.lane_vertex(c), q.lane_vertex(c),
+                        sizeof(T) * std::size_t(p.lane_vertex_stride())) == 0);
   }
   REQUIRE(same(p.centroid(), q.centroid()));
   REQUIRE(same(p.bounds_min(), q.bounds_min()));
@@ -177,8 +182,8 @@ void require_same_derived(const ConvexPolyhedron<T>& p, const ConvexPolyhedron<T
 /// sat::cached_run warm-started like the posed SATs.
 template <class Policy, Number T>
 SatResult<T> cached_reference(SatAlgorithm alg, const PreparedShape<T>& a, const PreparedShape<T>& b,
-                              const RigidTransform<T>& x, const ConvexPolyhedron<T>& bp, const SatOptions& opt,
-                              SatCache<T>& cache) {
+                              const RigidTransform<T>& x, const ConvexPolyhedron<T>& bp,
+                              const SatOptions& opt, SatCache<T>& cache) {
   kernel_t<Policy, T> k(a.polyhedron(), bp);
   if (auto hit = sat::cache_hit(k, cache, opt)) return *hit;
   if (sat::detail::cache_says_near(&cache, opt)) {
@@ -189,16 +194,19 @@ SatResult<T> cached_reference(SatAlgorithm alg, const PreparedShape<T>& a, const
   }
   switch (alg) {
     case SatAlgorithm::brute_force:
-      return sat::cached_run(k, cache, opt,
-                              [](auto& kk, const SatOptions& o, const Feature* s) { return sat::brute_force_with(kk, o, s); });
+      return sat::cached_run(k, cache, opt, [](auto& kk, const SatOptions& o, const Feature* s) {
+        return sat::brute_force_with(kk, o, s);
+      });
     case SatAlgorithm::traversal:
       return sat::cached_run(k, cache, opt, [&](auto& kk, const SatOptions& o, const Feature* s) {
         return sat::traversal_with(kk, a.walk(), b.walk(), o, nullptr, s);
       });
-    case SatAlgorithm::gauss_map: break;
+    case SatAlgorithm::gauss_map:
+      break;
   }
-  return sat::cached_run(k, cache, opt,
-                          [](auto& kk, const SatOptions& o, const Feature* s) { return sat::gauss_map_with(kk, o, s); });
+  return sat::cached_run(k, cache, opt, [](auto& kk, const SatOptions& o, const Feature* s) {
+    return sat::gauss_map_with(kk, o, s);
+  });
 }
 
 /// What check_warm_against_reference saw: cache hits per feature type
@@ -249,12 +257,14 @@ WarmCounts check_warm_against_reference(const std::vector<ConvexPolyhedron<T>>& 
         // the earlier pose: pb moved a little (a coherent step)
         const RigidTransform<T> step = RigidTransform<T>::from_quaternion(
             1.0, 0.01 * g(rng), 0.01 * g(rng), 0.01 * g(rng),
-            Vec3<T>(from_double<T>(0.02 * g(rng)), from_double<T>(0.02 * g(rng)), from_double<T>(0.02 * g(rng))));
+            Vec3<T>(from_double<T>(0.02 * g(rng)), from_double<T>(0.02 * g(rng)),
+                    from_double<T>(0.02 * g(rng))));
         const RigidTransform<T> pb0 = pb * step;
         const RigidTransform<T> x = relative_pose(pa, pb);
         const ConvexPolyhedron<T> bp = posed(shapes[j], x);
         for (SatAlgorithm alg : kSatAlgorithms) {
-          for (const SatOptions opt : {SatOptions{}, SatOptions{true, 0.0}, SatOptions{true, 0.02}, SatOptions{true, 0.3}}) {
+          for (const SatOptions opt :
+               {SatOptions{}, SatOptions{true, 0.0}, SatOptions{true, 0.02}, SatOptions{true, 0.3}}) {
             for (int source = 0; source < 2; ++source) {
               SatCache<T> cache;
               if (source == 0) {
@@ -264,16 +274,23 @@ WarmCounts check_warm_against_reference(const std::vector<ConvexPolyhedron<T>>& 
                 const int fa = shapes[i].face_count(), fb = shapes[j].face_count();
                 const int ea = shapes[i].edge_count(), eb = shapes[j].edge_count();
                 switch (rng() % 3) {
-                  case 0: cache.feature = Feature::face_a(static_cast<int>(rng() % (fa + 1)), 0); break;
-                  case 1: cache.feature = Feature::face_b(0, static_cast<int>(rng() % (fb + 1))); break;
+                  case 0:
+                    cache.feature = Feature::face_a(static_cast<int>(rng() % (fa + 1)), 0);
+                    break;
+                  case 1:
+                    cache.feature = Feature::face_b(0, static_cast<int>(rng() % (fb + 1)));
+                    break;
                   default:
-                    cache.feature = Feature::edges(static_cast<int>(rng() % (ea + 1)), static_cast<int>(rng() % (eb + 1)));
+                    cache.feature = Feature::edges(static_cast<int>(rng() % (ea + 1)),
+                                                   static_cast<int>(rng() % (eb + 1)));
                 }
               }
               SatCache<T> ref_cache = cache;
               INFO("shapes " << i << ", " << j << " pose " << p << " " << to_string(alg) << " early_out "
-                             << opt.early_out << " margin " << opt.margin << " cached " << to_string(cache.feature));
-              const SatResult<T> ref = cached_reference<Policy>(alg, prepared[i], prepared[j], x, bp, opt, ref_cache);
+                             << opt.early_out << " margin " << opt.margin << " cached "
+                             << to_string(cache.feature));
+              const SatResult<T> ref =
+                  cached_reference<Policy>(alg, prepared[i], prepared[j], x, bp, opt, ref_cache);
               const SatResult<T> r = sat::run<Policy>(alg, prepared[i], pa, prepared[j], pb, opt, &cache);
               REQUIRE(cache.hits == ref_cache.hits);
               REQUIRE(cache.misses == ref_cache.misses);
@@ -355,9 +372,11 @@ int check_warm_sequences(const std::vector<ConvexPolyhedron<T>>& shapes, int ste
           early.early_out = true;
           early.margin = 0.02;
           for (std::size_t s = 0; s < poses.size(); ++s) {
-            INFO("shapes " << i << ", " << j << " sequence " << kind << " step " << s << " " << to_string(alg));
+            INFO("shapes " << i << ", " << j << " sequence " << kind << " step " << s << " "
+                           << to_string(alg));
             const auto fresh = sat::run<Policy>(alg, prepared[i], pa, prepared[j], poses[s]);
-            const auto warm = sat::run<Policy>(alg, prepared[i], pa, prepared[j], poses[s], SatOptions{}, &full_cache);
+            const auto warm =
+                sat::run<Policy>(alg, prepared[i], pa, prepared[j], poses[s], SatOptions{}, &full_cache);
             REQUIRE(warm.feature == fresh.feature);
             require_same_separation(warm.separation, fresh.separation);
             REQUIRE(warm.overlap == fresh.overlap);

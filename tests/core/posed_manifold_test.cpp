@@ -15,7 +15,8 @@
 using namespace sepax;
 using namespace sepax::test;
 
-TEMPLATE_TEST_CASE("a posed manifold is the pre-posed manifold mapped to world", "[posed][contact]", float, double) {
+TEMPLATE_TEST_CASE("a posed manifold is the pre-posed manifold mapped to world", "[posed][contact]", float,
+                   double) {
   using T = TestType;
   std::mt19937_64 rng(1811);
   const auto shapes = local_shapes<T>(rng);

@@ -18,8 +18,8 @@ TEMPLATE_TEST_CASE("posed SATs equal the pre-posed SATs bit for bit (plain)", "[
   using T = TestType;
   std::mt19937_64 rng(1801);
   const auto shapes = local_shapes<T>(rng);
-  const int n = check_posed_against_reference<policy::Plain>(shapes, rng, 6,
-                                                             [](std::mt19937_64& g) { return random_pose<T>(g, 1.5); });
+  const int n = check_posed_against_reference<policy::Plain>(
+      shapes, rng, 6, [](std::mt19937_64& g) { return random_pose<T>(g, 1.5); });
   CHECK(n == 7 * 7 * 6 * 3 * 3);
 }
 
@@ -34,9 +34,11 @@ TEST_CASE("posed queries refuse non-rigid poses and bad margins", "[posed]") {
   SatOptions opt;
   opt.early_out = true;
   opt.margin = -1e-3;
-  REQUIRE_THROWS_AS(sat::traversal(a, RigidTransform<double>{}, b, RigidTransform<double>{}, opt), InvalidInput);
+  REQUIRE_THROWS_AS(sat::traversal(a, RigidTransform<double>{}, b, RigidTransform<double>{}, opt),
+                    InvalidInput);
   opt.margin = std::numeric_limits<double>::infinity();
-  REQUIRE_THROWS_AS(sat::gauss_map(a, RigidTransform<double>{}, b, RigidTransform<double>{}, opt), InvalidInput);
+  REQUIRE_THROWS_AS(sat::gauss_map(a, RigidTransform<double>{}, b, RigidTransform<double>{}, opt),
+                    InvalidInput);
 }
 
 TEST_CASE("a posed result is in world coordinates", "[posed]") {

@@ -26,8 +26,8 @@ TEST_CASE("feature order: FaceA < FaceB < EdgePair, then by index", "[sat][featu
   CHECK_FALSE(precedes(Feature::edges(1, 1), Feature::edges(1, 1)));
 }
 
-TEMPLATE_TEST_CASE("brute force: tie-break prefers A's faces, then B's, then edges", "[sat][brute_force][tie]",
-                   float, double) {
+TEMPLATE_TEST_CASE("brute force: tie-break prefers A's faces, then B's, then edges",
+                   "[sat][brute_force][tie]", float, double) {
   using T = TestType;
   // Box on box, exactly touching: A's top face, B's bottom face and the crossing
   // top/bottom edge pairs all give exactly 0.

@@ -21,13 +21,15 @@ namespace {
 struct Path {
   V3 axis, from, to;
   double turns;
-  Eigen::Matrix3d rotation(double s) const { return Eigen::AngleAxisd(turns * 6.283185307179586 * s, axis).toRotationMatrix(); }
+  Eigen::Matrix3d rotation(double s) const {
+    return Eigen::AngleAxisd(turns * 6.283185307179586 * s, axis).toRotationMatrix();
+  }
   V3 position(double s) const { return (1 - s) * from + s * to; }
 };
 
 template <class Run>
-void replay(const ConvexPolyhedron<double>& a, const ConvexPolyhedron<double>& b0, const Path& path, int steps,
-            Run run, std::int64_t& hits, std::int64_t& separated_steps) {
+void replay(const ConvexPolyhedron<double>& a, const ConvexPolyhedron<double>& b0, const Path& path,
+            int steps, Run run, std::int64_t& hits, std::int64_t& separated_steps) {
   SatCache<double> full_cache, eo_cache;
   for (int i = 0; i <= steps; ++i) {
     const double s = static_cast<double>(i) / steps;
@@ -80,16 +82,22 @@ TEST_CASE("cached queries equal fresh queries along smooth paths (double, every 
   std::mt19937_64 rng(99);
   const auto a = test::sphere_hull(rng, 24);
   const std::vector<ConvexPolyhedron<double>> bs{shapes::cube<double>(0.5), test::sphere_hull(rng, 16, 0.6),
-                                                 shapes::regular_polygon<double>(6, 0.7), shapes::prism<double>(10, 0.4, 0.6)};
+                                                 shapes::regular_polygon<double>(6, 0.7),
+                                                 shapes::prism<double>(10, 0.4, 0.6)};
   std::int64_t hits = 0, separated = 0;
   for (const auto& b0 : bs) {
     const GaussMapWalk wa(a), wb(b0);
     for (int p = 0; p < 4; ++p) {
       const Path path{test::random_unit(rng), V3(-3, 0.2 * p, 0.1), V3(3, -0.1 * p, 0.3), 0.5 + 0.25 * p};
-      replay(a, b0, path, 120, [&](auto& k, const SatOptions& o) { return sat::traversal_with(k, wa, wb, o); }, hits,
-             separated);
-      replay(a, b0, path, 40, [](auto& k, const SatOptions& o) { return sat::gauss_map_with(k, o); }, hits, separated);
-      replay(a, b0, path, 15, [](auto& k, const SatOptions& o) { return sat::brute_force_with(k, o); }, hits, separated);
+      replay(
+          a, b0, path, 120, [&](auto& k, const SatOptions& o) { return sat::traversal_with(k, wa, wb, o); },
+          hits, separated);
+      replay(
+          a, b0, path, 40, [](auto& k, const SatOptions& o) { return sat::gauss_map_with(k, o); }, hits,
+          separated);
+      replay(
+          a, b0, path, 15, [](auto& k, const SatOptions& o) { return sat::brute_force_with(k, o); }, hits,
+          separated);
     }
   }
   CHECK(separated > 0);
@@ -101,8 +109,8 @@ TEST_CASE("a stale or foreign cache never changes the answer", "[cache]") {
   const auto b = test::moved(shapes::tetrahedron<double>(0.5), Eigen::Matrix3d::Identity(), V3(3, 0, 0));
   auto run = [](auto& k, const SatOptions& o) { return sat::gauss_map_with(k, o); };
   const auto fresh = sat::gauss_map(a, b);
-  for (const Feature f : {Feature::face_a(99, 0), Feature::face_b(0, -1), Feature::edges(1000, 2), Feature::edges(0, 0),
-                          Feature::face_a(0, 3), Feature::face_b(7, 2)}) {
+  for (const Feature f : {Feature::face_a(99, 0), Feature::face_b(0, -1), Feature::edges(1000, 2),
+                          Feature::edges(0, 0), Feature::face_a(0, 3), Feature::face_b(7, 2)}) {
     SatCache<double> cache;
     cache.valid = true;
     cache.feature = f;

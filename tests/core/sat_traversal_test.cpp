@@ -23,16 +23,36 @@ struct Counting {
   mutable std::int64_t face_queries = 0, heights = 0, arcs = 0, edge_seps = 0;
   const ConvexPolyhedron<FT>& a() const { return k.a(); }
   const ConvexPolyhedron<FT>& b() const { return k.b(); }
-  FaceQuery<FT> face_query_a(int i) const { ++face_queries; return k.face_query_a(i); }
-  FaceQuery<FT> face_query_b(int i) const { ++face_queries; return k.face_query_b(i); }
+  FaceQuery<FT> face_query_a(int i) const {
+    ++face_queries;
+    return k.face_query_a(i);
+  }
+  FaceQuery<FT> face_query_b(int i) const {
+    ++face_queries;
+    return k.face_query_b(i);
+  }
   FaceQuery<FT> side_query_a(int i) const { return k.side_query_a(i); }
   FaceQuery<FT> side_query_b(int i) const { return k.side_query_b(i); }
-  Separation<FT> face_separation_a(int i, int j) const { ++heights; return k.face_separation_a(i, j); }
-  Separation<FT> face_separation_b(int i, int j) const { ++heights; return k.face_separation_b(i, j); }
-  ArcSigns arc_signs(int i, int j) const { ++arcs; return k.arc_signs(i, j); }
+  Separation<FT> face_separation_a(int i, int j) const {
+    ++heights;
+    return k.face_separation_a(i, j);
+  }
+  Separation<FT> face_separation_b(int i, int j) const {
+    ++heights;
+    return k.face_separation_b(i, j);
+  }
+  ArcSigns arc_signs(int i, int j) const {
+    ++arcs;
+    return k.arc_signs(i, j);
+  }
   bool edges_parallel(int i, int j) const { return k.edges_parallel(i, j); }
-  Separation<FT> edge_separation(int i, int j) const { ++edge_seps; return k.edge_separation(i, j); }
-  std::optional<Separation<FT>> edge_separation_full(int i, int j) const { return k.edge_separation_full(i, j); }
+  Separation<FT> edge_separation(int i, int j) const {
+    ++edge_seps;
+    return k.edge_separation(i, j);
+  }
+  std::optional<Separation<FT>> edge_separation_full(int i, int j) const {
+    return k.edge_separation_full(i, j);
+  }
   int compare(const Separation<FT>& x, const Feature& fx, const Separation<FT>& y, const Feature& fy) const {
     return k.compare(x, fx, y, fy);
   }
@@ -175,7 +195,8 @@ TEST_CASE("traversal on boxes: axis-aligned and 90-degree poses, touching (ties 
   const auto c = shapes::cube<double>(0.5);
   std::vector<Eigen::Matrix3d> rots;
   // all 24 rotations of the cube group
-  Eigen::Matrix3d base[3] = {Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity()};
+  Eigen::Matrix3d base[3] = {Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity(),
+                             Eigen::Matrix3d::Identity()};
   base[1] << 0, 0, 1, 1, 0, 0, 0, 1, 0;
   base[2] << 0, 1, 0, 0, 0, 1, 1, 0, 0;
   Eigen::Matrix3d rz, rx;
@@ -204,10 +225,13 @@ TEST_CASE("traversal on boxes: axis-aligned and 90-degree poses, touching (ties 
 
 TEST_CASE("traversal with double-sided polygons against everything", "[traversal]") {
   std::mt19937_64 rng(99);
-  std::vector<ConvexPolyhedron<double>> shapes_list{
-      shapes::regular_polygon<double>(3), shapes::regular_polygon<double>(7, 0.8),
-      shapes::regular_polygon<double>(32, 1.2), shapes::cube<double>(0.6), shapes::tetrahedron<double>(0.7),
-      shapes::prism<double>(12, 0.8, 0.4), test::sphere_hull(rng, 20)};
+  std::vector<ConvexPolyhedron<double>> shapes_list{shapes::regular_polygon<double>(3),
+                                                    shapes::regular_polygon<double>(7, 0.8),
+                                                    shapes::regular_polygon<double>(32, 1.2),
+                                                    shapes::cube<double>(0.6),
+                                                    shapes::tetrahedron<double>(0.7),
+                                                    shapes::prism<double>(12, 0.8, 0.4),
+                                                    test::sphere_hull(rng, 20)};
   std::uniform_real_distribution<double> off(-1.5, 1.5);
   int n = 0;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -330,14 +354,17 @@ TEST_CASE("traversal terminates on adversarial inputs", "[traversal]") {
   }
   // nearly flat and sliver shapes, huge and tiny scales, near-parallel edges
   for (double s : {1e-6, 1.0, 1e6}) {
-    const auto slab = test::moved(shapes::box<double>(s, s, s * 1e-7), test::random_rotation(rng), V3(0, 0, 0));
-    const auto needle = test::moved(shapes::box<double>(s * 1e-7, s * 1e-7, s), test::random_rotation(rng), V3(0, 0, 0));
+    const auto slab =
+        test::moved(shapes::box<double>(s, s, s * 1e-7), test::random_rotation(rng), V3(0, 0, 0));
+    const auto needle =
+        test::moved(shapes::box<double>(s * 1e-7, s * 1e-7, s), test::random_rotation(rng), V3(0, 0, 0));
     run(slab, needle);
     run(needle, slab);
     const auto p = shapes::prism<double>(64, s, s);
     const Eigen::Matrix3d tiny = Eigen::AngleAxisd(1e-12, V3(0, 0, 1)).toRotationMatrix();
     run(p, test::moved(p, tiny, V3(0, 0, 0)));
-    run(shapes::regular_polygon<double>(64, s), test::moved(shapes::regular_polygon<double>(64, s), tiny, V3(0, 0, 0)));
+    run(shapes::regular_polygon<double>(64, s),
+        test::moved(shapes::regular_polygon<double>(64, s), tiny, V3(0, 0, 0)));
   }
 }
 
@@ -378,7 +405,8 @@ TEST_CASE("traversal beyond the inline scratch (more than 1024 faces in total)",
   std::mt19937_64 rng(61);
   const auto a = shapes::prism<double>(600, 1.0, 0.5);
   for (int rep = 0; rep < 3; ++rep) {
-    const auto b = test::moved(shapes::prism<double>(600, 0.8, 0.6), test::random_rotation(rng), V3(0.5, 0.2 * rep, 0.9));
+    const auto b = test::moved(shapes::prism<double>(600, 0.8, 0.6), test::random_rotation(rng),
+                               V3(0.5, 0.2 * rep, 0.9));
     REQUIRE(a.face_count() + b.face_count() > sat::kTraversalInlineFaces);
     const auto t = sat::traversal(a, b);
     check_same(t, sat::gauss_map(a, b), "gauss_map");

@@ -73,8 +73,8 @@ TEMPLATE_TEST_CASE("prism(n)", "[shapes]", float, double) {
   CHECK_THROWS_AS(shapes::prism<T>(2), InvalidInput);
 }
 
-TEMPLATE_TEST_CASE("regular_polygon and triangle are double-sided with exactly opposite normals",
-                   "[shapes]", float, double) {
+TEMPLATE_TEST_CASE("regular_polygon and triangle are double-sided with exactly opposite normals", "[shapes]",
+                   float, double) {
   using T = TestType;
   for (int n : {3, 4, 6, 17, 100}) {
     INFO("n = " << n);

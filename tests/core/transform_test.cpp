@@ -36,8 +36,7 @@ TEMPLATE_TEST_CASE("identity, translation, and a quarter turn", "[transform]", f
   using T = TestType;
   const Vec3<T> p(T(1), T(2), T(3));
   CHECK(RigidTransform<T>::identity().apply(p) == p);
-  CHECK(RigidTransform<T>::translation_by(Vec3<T>(T(1), T(0), T(-1))).apply(p) ==
-        Vec3<T>(T(2), T(2), T(2)));
+  CHECK(RigidTransform<T>::translation_by(Vec3<T>(T(1), T(0), T(-1))).apply(p) == Vec3<T>(T(2), T(2), T(2)));
   const double h = std::sqrt(0.5);
   const auto rz = RigidTransform<T>::from_quaternion(h, 0, 0, h);  // 90 degrees about z
   CHECK(dist(rz.apply(Vec3<T>(T(1), T(0), T(0))), Vec3<T>(T(0), T(1), T(0))) < 1e-6);
@@ -76,13 +75,12 @@ TEMPLATE_TEST_CASE("random rotations: orthogonal, compose, inverse", "[transform
   }
 }
 
-TEMPLATE_TEST_CASE("transformed polyhedra: planes follow, hull commutes with motion",
-                   "[transform]", float, double) {
+TEMPLATE_TEST_CASE("transformed polyhedra: planes follow, hull commutes with motion", "[transform]", float,
+                   double) {
   using T = TestType;
   const double u = number_traits<T>::unit_roundoff;
   const auto box = shapes::box<T>(1.0, 2.0, 0.5);
-  const auto xf = RigidTransform<T>::from_quaternion(0.9, 0.1, -0.3, 0.2,
-                                                     Vec3<T>(T(3), T(-1), T(2)));
+  const auto xf = RigidTransform<T>::from_quaternion(0.9, 0.1, -0.3, 0.2, Vec3<T>(T(3), T(-1), T(2)));
   const auto moved = transformed(box, xf);
   REQUIRE(moved.vertex_count() == box.vertex_count());
   REQUIRE(moved.face_count() == box.face_count());
@@ -130,8 +128,7 @@ TEMPLATE_TEST_CASE("bad quaternions are InvalidInput", "[transform][errors]", fl
     return ErrorCode::Parse;
   };
   CHECK(code([] { RigidTransform<T>::from_quaternion(0, 0, 0, 0); }) == ErrorCode::BadScale);
-  CHECK(code([] { RigidTransform<T>::from_quaternion(std::nan(""), 0, 0, 1); }) ==
-        ErrorCode::NonFinite);
+  CHECK(code([] { RigidTransform<T>::from_quaternion(std::nan(""), 0, 0, 1); }) == ErrorCode::NonFinite);
   CHECK(code([] { RigidTransform<T>::from_quaternion(1, INFINITY, 0, 1); }) == ErrorCode::NonFinite);
   CHECK(code([] { rotation_from_integer_quaternion<T>(0, 0, 0, 0); }) == ErrorCode::BadScale);
   CHECK(code([] { rotation_from_integer_quaternion<T>(1L << 26, 0, 0, 1); }) == ErrorCode::BadScale);

@@ -45,12 +45,14 @@ bool same(const Vec3<T>& x, const Vec3<T>& y) {
 /// float rounding of its vertices; then only the checks that do not depend on
 /// it are made).
 template <Number T>
-void check_exact_invariants(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, const ContactManifold<T>& m,
-                            bool planar = true) {
+void check_exact_invariants(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b,
+                            const ContactManifold<T>& m, bool planar = true) {
   for (const auto& c : m.points) {
     if (planar) {
-      for (int f = 0; f < a.face_count(); ++f) CHECK(dot(a.plane(f).normal, c.point_a) - a.plane(f).offset <= T(0));
-      for (int f = 0; f < b.face_count(); ++f) CHECK(dot(b.plane(f).normal, c.point_b) - b.plane(f).offset <= T(0));
+      for (int f = 0; f < a.face_count(); ++f)
+        CHECK(dot(a.plane(f).normal, c.point_a) - a.plane(f).offset <= T(0));
+      for (int f = 0; f < b.face_count(); ++f)
+        CHECK(dot(b.plane(f).normal, c.point_b) - b.plane(f).offset <= T(0));
     }
     CHECK(dot(m.normal, Vec3<T>(c.point_b - c.point_a)) == c.separation.num);
     CHECK(c.separation.norm2 == m.norm2);
@@ -73,7 +75,8 @@ void check_exact_invariants(const ConvexPolyhedron<T>& a, const ConvexPolyhedron
 /// Moving B by the manifold's depth along its normal leaves the shapes exactly
 /// touching.
 template <Number T>
-void check_resolves_exactly(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, const ContactManifold<T>& m) {
+void check_resolves_exactly(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b,
+                            const ContactManifold<T>& m) {
   const auto b2 = translated(b, m.resolving_translation());
   const auto r = sat::gauss_map(a, b2);
   CHECK(r.overlap);
@@ -83,14 +86,16 @@ void check_resolves_exactly(const ConvexPolyhedron<T>& a, const ConvexPolyhedron
 // Triangular prism along x, top edge (+-1, 0, 1).
 template <Number T>
 ConvexPolyhedron<T> wedge() {
-  std::vector<Vec3<T>> v{{q<T>(-1), q<T>(-1), q<T>(0)}, {q<T>(-1), q<T>(1), q<T>(0)}, {q<T>(-1), q<T>(0), q<T>(1)},
-                         {q<T>(1), q<T>(-1), q<T>(0)},  {q<T>(1), q<T>(1), q<T>(0)},  {q<T>(1), q<T>(0), q<T>(1)}};
+  std::vector<Vec3<T>> v{{q<T>(-1), q<T>(-1), q<T>(0)}, {q<T>(-1), q<T>(1), q<T>(0)},
+                         {q<T>(-1), q<T>(0), q<T>(1)},  {q<T>(1), q<T>(-1), q<T>(0)},
+                         {q<T>(1), q<T>(1), q<T>(0)},   {q<T>(1), q<T>(0), q<T>(1)}};
   return ConvexPolyhedron<T>::from_faces(v, {{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {0, 3, 5, 2}, {1, 2, 5, 4}});
 }
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("exact: box resting on a box", "[contact][exact]", mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("exact: box resting on a box", "[contact][exact]", mpq_class, CGAL::Gmpq,
+                   CGAL::Epeck::FT) {
   using T = TestType;
   const auto a = shapes::cube<T>(1.0);
   const auto b = translated(shapes::cube<T>(0.5), Vec3<T>(q<T>(1, 10), q<T>(-1, 5), q<T>(7, 5)));
@@ -108,8 +113,8 @@ TEMPLATE_TEST_CASE("exact: box resting on a box", "[contact][exact]", mpq_class,
   check_resolves_exactly(a, b, m);
 }
 
-TEMPLATE_TEST_CASE("exact: rotated box on a larger box (rational rotation), every clip point exact", "[contact][exact]",
-                   mpq_class, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("exact: rotated box on a larger box (rational rotation), every clip point exact",
+                   "[contact][exact]", mpq_class, CGAL::Epeck::FT) {
   using T = TestType;
   const auto a = shapes::cube<T>(1.0);
   // rotation about z by atan(3/4): cos 4/5, sin 3/5 (exact)
@@ -136,15 +141,17 @@ TEMPLATE_TEST_CASE("exact: rotated box on a larger box (rational rotation), ever
   }
 }
 
-TEMPLATE_TEST_CASE("exact: the reduced rotated-box octagon has exactly the largest area with the deepest point",
-                   "[contact][exact][reduction]", mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE(
+    "exact: the reduced rotated-box octagon has exactly the largest area with the deepest point",
+    "[contact][exact][reduction]", mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
   using T = TestType;
   const auto a = shapes::cube<T>(1.0);
   // rotation about z by atan(3/4), tilted so that the depths differ: the
   // incident face is a rational plane, the deepest clip point is unique
   const T c = q<T>(4, 5), s = q<T>(3, 5);
   const auto b = map_vertices(shapes::box<T>(0.9, 0.9, 0.5), [&](const Vec3<T>& v) {
-    return Vec3<T>(c * v[0] - s * v[1] + q<T>(1, 20), s * v[0] + c * v[1], v[2] + q<T>(7, 5) + v[0] * q<T>(1, 50));
+    return Vec3<T>(c * v[0] - s * v[1] + q<T>(1, 20), s * v[0] + c * v[1],
+                   v[2] + q<T>(7, 5) + v[0] * q<T>(1, 50));
   });
   ManifoldOptions all;
   all.reduce = false;
@@ -225,12 +232,13 @@ TEMPLATE_TEST_CASE("exact: crossed edges", "[contact][exact]", mpq_class, CGAL::
   check_resolves_exactly(a, b, m);
 }
 
-TEMPLATE_TEST_CASE("exact: double-sided triangle on a box face, triangle against triangle", "[contact][exact]",
-                   mpq_class, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("exact: double-sided triangle on a box face, triangle against triangle",
+                   "[contact][exact]", mpq_class, CGAL::Epeck::FT) {
   using T = TestType;
   const auto box = shapes::cube<T>(1.0);
-  const auto big = shapes::triangle<T>(Vec3<T>(q<T>(-3), q<T>(-2), q<T>(19, 20)), Vec3<T>(q<T>(3), q<T>(-2), q<T>(19, 20)),
-                                       Vec3<T>(q<T>(0), q<T>(4), q<T>(19, 20)));
+  const auto big =
+      shapes::triangle<T>(Vec3<T>(q<T>(-3), q<T>(-2), q<T>(19, 20)), Vec3<T>(q<T>(3), q<T>(-2), q<T>(19, 20)),
+                          Vec3<T>(q<T>(0), q<T>(4), q<T>(19, 20)));
   const auto m = contact_manifold(box, big);
   REQUIRE(m.size() == 4);
   for (const auto& p : m.points) {
@@ -263,10 +271,14 @@ Eigen::Matrix3d random_rotation(std::mt19937& rng) {
 ConvexPolyhedron<double> random_unrotated_shape(std::mt19937& rng, int k) {
   std::uniform_real_distribution<double> u(0.3, 1.0);
   switch (k % 4) {
-    case 0: return shapes::box<double>(u(rng), u(rng), u(rng));
-    case 1: return shapes::prism<double>(3 + k % 5, u(rng), u(rng));
-    case 2: return shapes::tetrahedron<double>(u(rng));
-    default: return shapes::regular_polygon<double>(3 + k % 4, u(rng));
+    case 0:
+      return shapes::box<double>(u(rng), u(rng), u(rng));
+    case 1:
+      return shapes::prism<double>(3 + k % 5, u(rng), u(rng));
+    case 2:
+      return shapes::tetrahedron<double>(u(rng));
+    default:
+      return shapes::regular_polygon<double>(3 + k % 4, u(rng));
   }
 }
 
@@ -311,7 +323,8 @@ double spanned_area(const ContactManifold<T>& m) {
   auto tri = [&](int i, int j, int k) { return std::abs((p[j] - p[i]).cross(p[k] - p[i]).dot(n)); };
   if (p.size() == 3) return tri(0, 1, 2);
   double best = 0;
-  for (const auto& o : {std::array<int, 4>{0, 1, 2, 3}, std::array<int, 4>{0, 2, 1, 3}, std::array<int, 4>{0, 1, 3, 2}}) {
+  for (const auto& o :
+       {std::array<int, 4>{0, 1, 2, 3}, std::array<int, 4>{0, 2, 1, 3}, std::array<int, 4>{0, 1, 3, 2}}) {
     double s = 0;
     for (int i = 0; i < 4; ++i) {
       const auto& u = p[o[i]];
@@ -324,7 +337,8 @@ double spanned_area(const ContactManifold<T>& m) {
 }
 }  // namespace
 
-TEST_CASE("exact: random exactly-rotated overlapping pairs: exact points, depth resolves exactly", "[contact][exact][random]") {
+TEST_CASE("exact: random exactly-rotated overlapping pairs: exact points, depth resolves exactly",
+          "[contact][exact][random]") {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-0.8, 0.8);
   int checked = 0;
@@ -402,7 +416,8 @@ TEST_CASE("exact vs double on the same random overlapping pairs", "[contact][exa
     if (same) {
       ++same_manifold;
       for (int i = 0; i < md.size(); ++i) {
-        CHECK(std::abs(to_double(md.points[i].separation) - to_double(mq.points[i].separation)) <= 1e-12 * ext);
+        CHECK(std::abs(to_double(md.points[i].separation) - to_double(mq.points[i].separation)) <=
+              1e-12 * ext);
         CHECK((md.points[i].position - vec_to_double(mq.points[i].position)).norm() <= 1e-12 * ext);
       }
     } else {
@@ -417,7 +432,8 @@ TEST_CASE("exact vs double on the same random overlapping pairs", "[contact][exa
   CHECK(same_manifold >= compared - 5);
 }
 
-TEMPLATE_TEST_CASE("exact: speculative margin, faces and edges", "[contact][exact][margin]", mpq_class, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("exact: speculative margin, faces and edges", "[contact][exact][margin]", mpq_class,
+                   CGAL::Epeck::FT) {
   using T = TestType;
   const auto a = shapes::cube<T>(1.0);
   // gap 1/16 between A's top face and B's bottom face
@@ -438,9 +454,8 @@ TEMPLATE_TEST_CASE("exact: speculative margin, faces and edges", "[contact][exac
   CHECK(contact_manifold(a, b, sat::gauss_map(a, b), opt).empty());
   // crossed edges 1/8 apart
   const auto w = wedge<T>();
-  const auto w2 = map_vertices(wedge<T>(), [&](const Vec3<T>& v) {
-    return Vec3<T>(v[1] + q<T>(1, 4), v[0], q<T>(17, 8) - v[2]);
-  });
+  const auto w2 = map_vertices(
+      wedge<T>(), [&](const Vec3<T>& v) { return Vec3<T>(v[1] + q<T>(1, 4), v[0], q<T>(17, 8) - v[2]); });
   opt.margin = 0.25;
   const auto me = contact_manifold(w, w2, sat::gauss_map(w, w2), opt);
   REQUIRE(me.kind == ContactKind::Edge);

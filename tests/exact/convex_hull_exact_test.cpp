@@ -18,7 +18,8 @@ namespace {
 
 template <class T>
 Vec3<T> pt(long x, long y, long z, long d = 1) {
-  return Vec3<T>(T(static_cast<int>(x)) / T(static_cast<int>(d)), T(static_cast<int>(y)) / T(static_cast<int>(d)),
+  return Vec3<T>(T(static_cast<int>(x)) / T(static_cast<int>(d)),
+                 T(static_cast<int>(y)) / T(static_cast<int>(d)),
                  T(static_cast<int>(z)) / T(static_cast<int>(d)));
 }
 
@@ -45,8 +46,8 @@ void check_exact_hull(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& 
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("exact hull: cube corners with interior and boundary points", "[hull][exact]",
-                   mpq_class, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("exact hull: cube corners with interior and boundary points", "[hull][exact]", mpq_class,
+                   CGAL::Epeck::FT) {
   using T = TestType;
   std::vector<Vec3<T>> pts;
   for (int i = 0; i < 8; ++i) pts.push_back(pt<T>(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1));
@@ -92,8 +93,8 @@ TEMPLATE_TEST_CASE("exact hull: lattice and random integer grid points", "[hull]
   }
 }
 
-TEMPLATE_TEST_CASE("exact hull of random rational points agrees with the double hull",
-                   "[hull][exact]", mpq_class, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("exact hull of random rational points agrees with the double hull", "[hull][exact]",
+                   mpq_class, CGAL::Epeck::FT) {
   using T = TestType;
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -116,14 +117,14 @@ TEMPLATE_TEST_CASE("exact hull of random rational points agrees with the double 
   }
 }
 
-TEMPLATE_TEST_CASE("exact hull of rational points exactly on a sphere keeps every point",
-                   "[hull][exact]", mpq_class, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("exact hull of rational points exactly on a sphere keeps every point", "[hull][exact]",
+                   mpq_class, CGAL::Epeck::FT) {
   using T = TestType;
   // inverse stereographic projection of rational (a, b): an exact point on
   // the unit sphere; all such points are extreme
   std::vector<Vec3<T>> pts;
-  const int ab[][2] = {{0, 0}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 1}, {2, -1},
-                       {-1, 3}, {3, 2}, {-2, -2}, {5, 1}, {1, -4}, {-3, 1}, {2, 5}};
+  const int ab[][2] = {{0, 0},  {1, 0}, {0, 1},   {-1, 0}, {0, -1}, {1, 1},  {2, -1},
+                       {-1, 3}, {3, 2}, {-2, -2}, {5, 1},  {1, -4}, {-3, 1}, {2, 5}};
   for (const auto& q : ab) {
     const T a(q[0]), b(q[1]), s = a * a + b * b;
     pts.push_back(Vec3<T>(T(2) * a / (s + T(1)), T(2) * b / (s + T(1)), (s - T(1)) / (s + T(1))));
@@ -133,8 +134,8 @@ TEMPLATE_TEST_CASE("exact hull of rational points exactly on a sphere keeps ever
   check_exact_hull(h, pts);
 }
 
-TEMPLATE_TEST_CASE("exact hull: coplanar gives a polygon, collinear and duplicates fail",
-                   "[hull][exact]", mpq_class, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("exact hull: coplanar gives a polygon, collinear and duplicates fail", "[hull][exact]",
+                   mpq_class, CGAL::Epeck::FT) {
   using T = TestType;
   // points exactly on x + 2y + 3z = 6 (a 4x4 grid and interior points)
   std::vector<Vec3<T>> pts;
@@ -164,8 +165,7 @@ TEMPLATE_TEST_CASE("exact hull: coplanar gives a polygon, collinear and duplicat
   for (int i = 0; i < 6; ++i) line.push_back(Vec3<T>(T(i) / T(3), T(1) - T(i) / T(7), T(2 * i)));
   CHECK(code_of(line) == ErrorCode::Collinear);
   // one point 1e-30 off the line: not collinear for exact T
-  line.push_back(Vec3<T>(T(1) / T(3), T(1) - T(1) / T(7), T(2)) +
-                 Vec3<T>(T(0), from_double<T>(1e-30), T(0)));
+  line.push_back(Vec3<T>(T(1) / T(3), T(1) - T(1) / T(7), T(2)) + Vec3<T>(T(0), from_double<T>(1e-30), T(0)));
   const auto tri = convex_hull(line);
   CHECK(tri.is_flat());
   CHECK(code_of({pt<T>(1, 2, 3), pt<T>(1, 2, 3), pt<T>(4, 5, 6)}) == ErrorCode::TooFewPoints);

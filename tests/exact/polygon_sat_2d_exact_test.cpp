@@ -64,7 +64,8 @@ TEMPLATE_TEST_CASE("polygon2 exact: SAT == oracles on random rational polygons",
   CHECK(touching > 0);
 }
 
-TEST_CASE("polygon2: double and exact agree on the same (exactly converted) inputs", "[sat2d][exact][float]") {
+TEST_CASE("polygon2: double and exact agree on the same (exactly converted) inputs",
+          "[sat2d][exact][float]") {
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> cd(-16, 16);
   int same_feature = 0, n = 0;

@@ -26,7 +26,8 @@ TEMPLATE_TEST_CASE("exact box on box", "[sat][exact]", mpq_class, CGAL::Gmpq, CG
   CHECK(r.feature == sat::brute_force(a, b).feature);
 }
 
-TEMPLATE_TEST_CASE("exact: hand-checked configurations", "[sat][exact]", mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("exact: hand-checked configurations", "[sat][exact]", mpq_class, CGAL::Gmpq,
+                   CGAL::Epeck::FT) {
   for (const auto& c : known_cases<TestType>()) {
     check_known(c, sat::brute_force(c.a, c.b));
     check_known(c, sat::gauss_map(c.a, c.b));
@@ -49,7 +50,8 @@ TEMPLATE_TEST_CASE("exact: Gauss map equals brute force on random rational poses
   int overlaps = 0, edge_features = 0;
   for (int it = 0; it < n; ++it) {
     const auto a = apply_pose(shapes_[static_cast<std::size_t>(it) % shapes_.size()], random_pose(rng, 8));
-    const auto b = apply_pose(shapes_[static_cast<std::size_t>(it / 7) % shapes_.size()], random_pose(rng, 8));
+    const auto b =
+        apply_pose(shapes_[static_cast<std::size_t>(it / 7) % shapes_.size()], random_pose(rng, 8));
     const auto bf = sat::brute_force(a, b);
     const auto gm = sat::gauss_map(a, b);
     INFO("pair " << it << ": bf " << to_string(bf.feature) << ", gm " << to_string(gm.feature));
@@ -77,7 +79,8 @@ TEMPLATE_TEST_CASE("exact: tiny, huge and far-from-origin configurations give th
   const T zero(0);
   for (int it = 0; it < n; ++it) {
     const auto a = apply_pose(shapes_[static_cast<std::size_t>(it) % shapes_.size()], random_pose(rng, 6));
-    const auto b = apply_pose(shapes_[static_cast<std::size_t>(it / 3) % shapes_.size()], random_pose(rng, 6));
+    const auto b =
+        apply_pose(shapes_[static_cast<std::size_t>(it / 3) % shapes_.size()], random_pose(rng, 6));
     const auto ref = sat::gauss_map(a, b);
     for (const double s : {1e-4, 1e4}) {
       for (const double off : {0.0, 1e3}) {

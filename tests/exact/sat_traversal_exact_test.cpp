@@ -52,9 +52,8 @@ Vec3<T> vq(int x, int y, int z, int den = 1) {
 
 // integer quaternions: identity, 90 degrees about each axis, 180, the
 // 120-degree body diagonal, rational angles about z and about skew axes
-const int kQuats[][4] = {{1, 0, 0, 0}, {1, 0, 0, 1}, {1, 1, 0, 0}, {1, 0, 1, 0}, {0, 0, 0, 1},
-                         {1, 1, 1, 1}, {2, 0, 0, 1}, {3, 0, 0, 1}, {2, 1, 0, 0}, {3, 1, 2, 1},
-                         {5, 1, 1, 2}, {1, 1, 0, 1}};
+const int kQuats[][4] = {{1, 0, 0, 0}, {1, 0, 0, 1}, {1, 1, 0, 0}, {1, 0, 1, 0}, {0, 0, 0, 1}, {1, 1, 1, 1},
+                         {2, 0, 0, 1}, {3, 0, 0, 1}, {2, 1, 0, 0}, {3, 1, 2, 1}, {5, 1, 1, 2}, {1, 1, 0, 1}};
 
 }  // namespace
 
@@ -85,7 +84,7 @@ TEMPLATE_TEST_CASE("exact traversal on boxes, prisms and tetrahedra at exact rot
                                             shapes::tetrahedron<T>(0.5), shapes::prism<T>(6, 0.5, 0.5)};
   // touching (faces, edges, vertices exactly in contact), overlapping, separated
   const std::vector<Vec3<T>> ts{vq<T>(0, 0, 0), vq<T>(3, 0, 0, 2), vq<T>(3, 2, 0, 2), vq<T>(3, 2, 5, 2),
-                                vq<T>(2, 0, 0), vq<T>(1, 1, 1), vq<T>(5, 3, 1, 4), vq<T>(0, 0, 7, 4)};
+                                vq<T>(2, 0, 0), vq<T>(1, 1, 1),    vq<T>(5, 3, 1, 4), vq<T>(0, 0, 7, 4)};
   sat::TraversalStats total;
   const int nq = std::is_same_v<T, mpq_class> ? 12 : 6;
   for (const auto& a : as)
@@ -103,12 +102,16 @@ TEMPLATE_TEST_CASE("exact traversal on boxes, prisms and tetrahedra at exact rot
 TEMPLATE_TEST_CASE("exact traversal with double-sided polygons against everything", "[traversal][exact]",
                    mpq_class, CGAL::Epeck::FT) {
   using T = TestType;
-  const std::vector<ConvexPolyhedron<T>> polys{shapes::regular_polygon<T>(3, 1.0), shapes::regular_polygon<T>(4, 1.0),
+  const std::vector<ConvexPolyhedron<T>> polys{shapes::regular_polygon<T>(3, 1.0),
+                                               shapes::regular_polygon<T>(4, 1.0),
                                                shapes::regular_polygon<T>(9, 0.75)};
   std::mt19937_64 rng(5);
   const std::vector<ConvexPolyhedron<T>> others{
-      shapes::cube<T>(0.5), shapes::tetrahedron<T>(0.6), shapes::prism<T>(8, 0.5, 0.4),
-      shapes::regular_polygon<T>(4, 0.5), shapes::regular_polygon<T>(5, 0.6),
+      shapes::cube<T>(0.5),
+      shapes::tetrahedron<T>(0.6),
+      shapes::prism<T>(8, 0.5, 0.4),
+      shapes::regular_polygon<T>(4, 0.5),
+      shapes::regular_polygon<T>(5, 0.6),
       ConvexPolyhedron<T>::convert_from(test::sphere_hull(rng, 10, 0.7))};
   const std::vector<Vec3<T>> ts{vq<T>(0, 0, 0), vq<T>(0, 0, 1, 2), vq<T>(1, 0, 0), vq<T>(1, 1, 1, 2),
                                 vq<T>(0, 0, 3, 2)};
@@ -132,9 +135,10 @@ TEMPLATE_TEST_CASE("exact traversal: arcs through Gauss-map vertices", "[travers
   const auto a = shapes::cube<T>(1.0);
   const auto c = shapes::cube<T>(0.5);
   sat::TraversalStats total;
-  for (const auto& q : {std::array<int, 4>{2, 0, 0, 1}, std::array<int, 4>{3, 0, 0, 2}, std::array<int, 4>{2, 1, 0, 0},
-                        std::array<int, 4>{1, 0, 1, 0}}) {
-    for (const auto& t : {vq<T>(0, 0, 0), vq<T>(3, 0, 0, 2), vq<T>(1, 1, 0), vq<T>(0, 0, 3, 2), vq<T>(5, 1, 1, 4)}) {
+  for (const auto& q : {std::array<int, 4>{2, 0, 0, 1}, std::array<int, 4>{3, 0, 0, 2},
+                        std::array<int, 4>{2, 1, 0, 0}, std::array<int, 4>{1, 0, 1, 0}}) {
+    for (const auto& t :
+         {vq<T>(0, 0, 0), vq<T>(3, 0, 0, 2), vq<T>(1, 1, 0), vq<T>(0, 0, 3, 2), vq<T>(5, 1, 1, 4)}) {
       const auto b = test::rotated_exact(c, q[0], q[1], q[2], q[3], t);
       check_exact(a, b, "rational turn", &total);
       check_exact(b, a, "rational turn swapped", &total);
@@ -159,7 +163,8 @@ TEMPLATE_TEST_CASE("exact traversal: arcs through Gauss-map vertices", "[travers
   };
   const auto ta = oriented({vq<T>(0, 0, 0), vq<T>(0, -2, 1), vq<T>(0, -1, -2), vq<T>(-2, 0, 0)});
   const auto tb0 = oriented({vq<T>(0, 0, 0), vq<T>(2, 0, -1), vq<T>(-1, 3, -1), vq<T>(1, 1, 3)});
-  for (const auto& t : {vq<T>(0, 0, 0), vq<T>(1, 0, 0), vq<T>(-1, 1, 0), vq<T>(3, 0, 0), vq<T>(-1, -1, -1, 2)}) {
+  for (const auto& t :
+       {vq<T>(0, 0, 0), vq<T>(1, 0, 0), vq<T>(-1, 1, 0), vq<T>(3, 0, 0), vq<T>(-1, -1, -1, 2)}) {
     const auto tb = test::rotated_exact(tb0, 1, 0, 0, 0, t);
     check_exact(ta, tb, "constructed corner", &total);
     check_exact(tb, ta, "constructed corner swapped", &total);
@@ -185,7 +190,8 @@ TEMPLATE_TEST_CASE("exact cache replay along rigid paths equals fresh queries", 
     SatCache<T> full_cache, eo_cache;
     for (int i = 0; i <= steps; ++i) {
       // B moves from x = -2.5 to x = +2.5 through A while turning about a skew axis
-      const auto b = test::rotated_exact(b0, 4 * steps, i, 2 * i, steps, vq<T>(5 * i - 5 * steps / 2, 1, 1, steps));
+      const auto b =
+          test::rotated_exact(b0, 4 * steps, i, 2 * i, steps, vq<T>(5 * i - 5 * steps / 2, 1, 1, steps));
       const auto fresh = sat::traversal(a, wa, b, wb);
       const auto cached = sat::cached(full_cache, a, b, run(wb));
       CHECK(cached.feature == fresh.feature);
@@ -223,15 +229,17 @@ TEST_CASE("robust float traversal reports the exact brute-force feature", "[trav
     const auto exact = sat::brute_force(qa, qb);
     const auto rt = sat::traversal<policy::Robust>(a, b);
     const auto rg = sat::gauss_map<policy::Robust>(a, b);
-    INFO(what << ": robust traversal " << to_string(rt.feature) << ", exact brute force " << to_string(exact.feature));
+    INFO(what << ": robust traversal " << to_string(rt.feature) << ", exact brute force "
+              << to_string(exact.feature));
     CHECK(rt.feature == exact.feature);
     CHECK(rt.overlap == exact.overlap);
     CHECK(rt.feature == rg.feature);
     CHECK(compare(rt.separation, rg.separation) == 0);
     const auto ft = sat::traversal<policy::Robust>(ConvexPolyhedron<float>::convert_from(a),
                                                    ConvexPolyhedron<float>::convert_from(b));
-    const auto fe = sat::traversal(ConvexPolyhedron<Q>::convert_from(ConvexPolyhedron<float>::convert_from(a)),
-                                   ConvexPolyhedron<Q>::convert_from(ConvexPolyhedron<float>::convert_from(b)));
+    const auto fe =
+        sat::traversal(ConvexPolyhedron<Q>::convert_from(ConvexPolyhedron<float>::convert_from(a)),
+                       ConvexPolyhedron<Q>::convert_from(ConvexPolyhedron<float>::convert_from(b)));
     CHECK(ft.feature == fe.feature);
   };
   for (int it = 0; it < 40; ++it) {
@@ -244,11 +252,11 @@ TEST_CASE("robust float traversal reports the exact brute-force feature", "[trav
   const auto cube = shapes::cube<double>(1.0);
   const auto small = shapes::box<double>(0.5, 0.25, 1.0);
   const auto poly = shapes::regular_polygon<double>(4, 1.0);
-  for (const auto& t : {test::V3(0, 0, 0), test::V3(1.5, 0, 0), test::V3(1.5, 1.25, 0), test::V3(1.5, 1.25, 2.0),
-                        test::V3(0.25, 0.5, 0.75)}) {
+  for (const auto& t : {test::V3(0, 0, 0), test::V3(1.5, 0, 0), test::V3(1.5, 1.25, 0),
+                        test::V3(1.5, 1.25, 2.0), test::V3(0.25, 0.5, 0.75)}) {
     for (int q = 0; q < 6; ++q) {
-      const auto b = test::rotated_exact(small, kQuats[q][0], kQuats[q][1], kQuats[q][2], kQuats[q][3],
-                                         Vec3<double>(t));
+      const auto b =
+          test::rotated_exact(small, kQuats[q][0], kQuats[q][1], kQuats[q][2], kQuats[q][3], Vec3<double>(t));
       check(cube, b, "boxes");
       check(b, cube, "boxes swapped");
       check(poly, b, "polygon");

@@ -107,9 +107,8 @@ TEST_CASE("robust traversal takes the exact traversal's steps (random hulls)", "
   // traversal is the exact brute force.
   CHECK(t.nonconvex_differs == 0);
   WARN("random hulls: " << t.cases << " cases, pruned faces " << t.pruned_faces << " (by a probe "
-                        << t.probe_pruned << "), pruned arcs "
-                        << t.pruned_arcs << " (after a late climb " << t.late_pruned_arcs << "), late climbs "
-                        << t.late);
+                        << t.probe_pruned << "), pruned arcs " << t.pruned_arcs << " (after a late climb "
+                        << t.late_pruned_arcs << "), late climbs " << t.late);
 }
 
 TEST_CASE("robust traversal takes the exact traversal's steps (large hulls: chunked seed tests)",
@@ -128,7 +127,8 @@ TEST_CASE("robust traversal takes the exact traversal's steps (large hulls: chun
                                test::V3(off(rng), off(rng), off(rng)));
     for (const auto* p : {&a, &b}) {
       const GaussMapWalk w(*p);
-      REQUIRE(p->face_count() >= sat::kTraversalMinMeanChunk * (static_cast<int>(w.face_chunks().size()) - 1));
+      REQUIRE(p->face_count() >=
+              sat::kTraversalMinMeanChunk * (static_cast<int>(w.face_chunks().size()) - 1));
     }
     check_pair(a, b, "large pair", t);  // (no exact brute force: minutes at this size)
     check_pair(a, b, "large pair", t, true);
@@ -175,7 +175,7 @@ TEST_CASE("robust traversal takes the exact traversal's steps (float-rotated box
   CHECK(t.pruned_faces > 0);
   CHECK(t.probe_pruned > 0);
   WARN("rotated boxes/prisms: " << t.cases << " cases, pruned faces " << t.pruned_faces << " (by a probe "
-                                << t.probe_pruned << "), pruned arcs "
-                                << t.pruned_arcs << ", exact traversal != exact brute force in "
-                                << t.nonconvex_differs << " (inputs convex only up to rounding)");
+                                << t.probe_pruned << "), pruned arcs " << t.pruned_arcs
+                                << ", exact traversal != exact brute force in " << t.nonconvex_differs
+                                << " (inputs convex only up to rounding)");
 }

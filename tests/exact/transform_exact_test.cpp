@@ -41,8 +41,8 @@ T det(const Eigen::Matrix<T, 3, 3>& r) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("integer-quaternion rotations are exactly orthogonal", "[transform][exact]",
-                   mpq_class, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("integer-quaternion rotations are exactly orthogonal", "[transform][exact]", mpq_class,
+                   CGAL::Epeck::FT) {
   using T = TestType;
   std::mt19937 rng(8);
   std::uniform_int_distribution<int> qi(-1000, 1000);
@@ -62,8 +62,8 @@ TEMPLATE_TEST_CASE("integer-quaternion rotations are exactly orthogonal", "[tran
   }
 }
 
-TEMPLATE_TEST_CASE("from_quaternion for exact T is the exact value of rounded doubles",
-                   "[transform][exact]", mpq_class, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("from_quaternion for exact T is the exact value of rounded doubles", "[transform][exact]",
+                   mpq_class, CGAL::Epeck::FT) {
   using T = TestType;
   // documented: not exactly orthogonal for a generic quaternion
   const auto x = RigidTransform<T>::from_quaternion(0.9, 0.1, -0.3, 0.2);
@@ -77,8 +77,8 @@ TEMPLATE_TEST_CASE("exactly rotated shapes validate exactly", "[transform][exact
                    CGAL::Epeck::FT) {
   using T = TestType;
   const auto xf = from_integer_quaternion<T>(3, -1, 2, 5, Vec3<T>(T(1) / T(3), T(2), T(-5)));
-  for (const auto& shape : {shapes::box<T>(1.0, 2.0, 0.5), shapes::prism<T>(7, 1.0, 2.0),
-                            shapes::tetrahedron<T>(1.0)}) {
+  for (const auto& shape :
+       {shapes::box<T>(1.0, 2.0, 0.5), shapes::prism<T>(7, 1.0, 2.0), shapes::tetrahedron<T>(1.0)}) {
     const auto moved = transformed(shape, xf);
     std::vector<std::vector<int>> faces;
     for (int f = 0; f < moved.face_count(); ++f) faces.push_back(moved.face_vertices(f));

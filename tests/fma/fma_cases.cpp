@@ -104,7 +104,8 @@ P translate(const P& s, double x, double y, double z) {
 
 template <class R>
 std::string decision(const R& r) {
-  return to_string(r.feature) + (r.overlap ? " overlap " : " separated ") + std::to_string(sign(r.separation));
+  return to_string(r.feature) + (r.overlap ? " overlap " : " separated ") +
+         std::to_string(sign(r.separation));
 }
 
 // The plane triples (the vertices that define each face's plane, chosen as the
@@ -154,18 +155,19 @@ void run(const std::string& id, const P& a, const P& b) {
 }  // namespace
 
 int main() {
-  const std::vector<P> zoo{shapes::box<double>(1, 0.5, 0.75),
-                           shapes::tetrahedron<double>(0.75),
-                           shapes::prism<double>(6, 1.0, 0.5),
-                           shapes::prism<double>(16, 0.8, 1.0),
-                           shapes::regular_polygon<double>(5, 1.0),
-                           shapes::triangle<double>(Vec3<double>(0, 0, 0), Vec3<double>(1.5, 0, 0),
-                                                    Vec3<double>(0, 1, 0.25)),
-                           shapes::cube<double>(0.5)};
+  const std::vector<P> zoo{
+      shapes::box<double>(1, 0.5, 0.75),
+      shapes::tetrahedron<double>(0.75),
+      shapes::prism<double>(6, 1.0, 0.5),
+      shapes::prism<double>(16, 0.8, 1.0),
+      shapes::regular_polygon<double>(5, 1.0),
+      shapes::triangle<double>(Vec3<double>(0, 0, 0), Vec3<double>(1.5, 0, 0), Vec3<double>(0, 1, 0.25)),
+      shapes::cube<double>(0.5)};
   // Degenerate cases: exact touching, ties, coplanar and parallel features.
   const auto cube = shapes::cube<double>(1.0);
   const auto tet = shapes::tetrahedron<double>(1.0);
-  const auto tri = shapes::triangle<double>(Vec3<double>(-2, -2, 0), Vec3<double>(2, -2, 0), Vec3<double>(0, 2, 0));
+  const auto tri =
+      shapes::triangle<double>(Vec3<double>(-2, -2, 0), Vec3<double>(2, -2, 0), Vec3<double>(0, 2, 0));
   run("touch-face", cube, translate(cube, 0, 0, 2));
   run("touch-edge", tet, translate(tet, 0, 0, 2));
   run("touch-vertex", cube, translate(cube, 2, 2, 2));

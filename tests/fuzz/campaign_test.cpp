@@ -18,7 +18,8 @@ TEST_CASE("short campaign over every family: no unexplained disagreement", "[fuz
       const FuzzCase c = generate(fam, seed);
       const CaseReport r = check_case_guarded(c);
       for (const auto& x : r.unexplained)
-        UNSCOPED_INFO(fam << " seed " << seed << ": [" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+        UNSCOPED_INFO(fam << " seed " << seed << ": [" << x.comparison << " " << x.config << " " << x.sat
+                          << "] " << x.detail);
       CHECK(r.unexplained_count == 0);
       rep.add(fam, r);
     }
@@ -65,9 +66,10 @@ TEST_CASE("comparisons skipped above size budgets are counted and reported", "[f
   none.float_brute_budget = 0;
   const CaseReport r = check_case_guarded(c, none);
   REQUIRE(r.valid);
-  for (const char* key : {"exact/mpq/brute_force", "exact/gmpq/brute_force", "exact/gmpq/gauss_map", "exact/gmpq/traversal",
-                          "exact/epeck/brute_force", "exact/epeck/gauss_map", "overlap/float_plain/brute_force",
-                          "feature/double_plain/brute_force", "separation/float_robust/brute_force"}) {
+  for (const char* key :
+       {"exact/mpq/brute_force", "exact/gmpq/brute_force", "exact/gmpq/gauss_map", "exact/gmpq/traversal",
+        "exact/epeck/brute_force", "exact/epeck/gauss_map", "overlap/float_plain/brute_force",
+        "feature/double_plain/brute_force", "separation/float_robust/brute_force"}) {
     INFO(key);
     CHECK(r.skipped.count(key) == 1);
   }

@@ -132,8 +132,8 @@ TEST_CASE("decomposition and scanned families: the shapes they imitate", "[fuzz]
   for (std::uint64_t seed = 0; seed < 3; ++seed) {
     const FuzzCase c = generate("scanned", seed);
     CHECK(c.family == "scanned");
-    CHECK(c.a.vertices.size() >= 60);     // a dense hull: most of the 200..2000 noisy points
+    CHECK(c.a.vertices.size() >= 60);  // a dense hull: most of the 200..2000 noisy points
     CHECK(c.a.vertices.size() <= 2000);
-    CHECK(c.b.vertices.size() <= 8);      // a small partner (box or tetrahedron)
+    CHECK(c.b.vertices.size() <= 8);  // a small partner (box or tetrahedron)
   }
 }

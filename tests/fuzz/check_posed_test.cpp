@@ -18,7 +18,8 @@ TEST_CASE("posed, warm and margin comparisons run on every family and explain ev
       const CaseReport r = check_case_guarded(c);
       if (!r.valid) continue;
       for (const auto& x : r.unexplained)
-        UNSCOPED_INFO(fam << " " << i << ": [" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+        UNSCOPED_INFO(fam << " " << i << ": [" << x.comparison << " " << x.config << " " << x.sat << "] "
+                          << x.detail);
       CHECK(r.unexplained_count == 0);
       for (const auto& [k, n] : r.by_config) by[k] += n;
     }

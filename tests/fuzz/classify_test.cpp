@@ -75,9 +75,9 @@ TEST_CASE("classify_overlap and classify_separation", "[fuzz][classify]") {
 }
 
 TEST_CASE("close: ties between exact separations on different axes", "[fuzz][classify]") {
-  const ExactSep a{Q(1), Q(4)};    // 0.5
-  const ExactSep b{Q(2), Q(16)};   // 0.5, different representation
-  const ExactSep c{Q(3), Q(36)};   // 0.5
+  const ExactSep a{Q(1), Q(4)};       // 0.5
+  const ExactSep b{Q(2), Q(16)};      // 0.5, different representation
+  const ExactSep c{Q(3), Q(36)};      // 0.5
   const ExactSep d{Q(51), Q(10000)};  // 0.51
   CHECK(close(a, b, 0));
   CHECK(close(a, c, 0));
@@ -130,12 +130,14 @@ void check_bounds_on_random_triangles(int trials) {
     const double scale = std::ldexp(1.0, ex(rng));
     const Vec3<double> off(u(rng) * 100, u(rng) * 100, u(rng) * 100);
     auto pt = [&] {
-      return Vec3<F>(F((u(rng) + off[0]) * scale), F((u(rng) + off[1]) * scale), F((u(rng) + off[2]) * scale));
+      return Vec3<F>(F((u(rng) + off[0]) * scale), F((u(rng) + off[1]) * scale),
+                     F((u(rng) + off[2]) * scale));
     };
     Vec3<F> p0 = pt(), p1 = pt(), p2 = pt();
     if (t % 3 == 0) {  // sliver triangle: p2 nearly on the line p0 p1
       const double w = u(rng);
-      for (int c = 0; c < 3; ++c) p2[c] = F(double(p0[c]) + w * (double(p1[c]) - double(p0[c])) + 1e-5 * u(rng) * scale);
+      for (int c = 0; c < 3; ++c)
+        p2[c] = F(double(p0[c]) + w * (double(p1[c]) - double(p0[c])) + 1e-5 * u(rng) * scale);
     }
     const Plane<F> pl = plane_through(p0, p1, p2);
     const Vec3<Q> q0 = vec_cast<Q>(p0), q1 = vec_cast<Q>(p1), q2 = vec_cast<Q>(p2);
@@ -198,7 +200,8 @@ void check_orientation_bound(int trials) {
       const bool flat = t % 2 == 0;
       for (int i = 0; i < n; ++i) {
         const double a = 2 * 3.141592653589793 * i / n + 0.3 * u(rng);
-        const Vec3<double> p = flat ? Vec3<double>(std::cos(a), std::sin(a), 0) : Vec3<double>(u(rng), u(rng), u(rng));
+        const Vec3<double> p =
+            flat ? Vec3<double>(std::cos(a), std::sin(a), 0) : Vec3<double>(u(rng), u(rng), u(rng));
         pts.emplace_back(F((p[0] + off[0]) * scale), F((p[1] + off[1]) * scale), F((p[2] + off[2]) * scale));
       }
       return convex_hull(pts);
@@ -265,7 +268,8 @@ TEST_CASE("integer arc signs equal the rational kernel's", "[fuzz][arcs]") {
       const auto arcs = exact_arc_signs(a, b);
       for (int ea = 0; ea < a.edge_count(); ++ea)
         for (int eb = 0; eb < b.edge_count(); ++eb) {
-          const ArcSigns x = k.arc_signs(ea, eb), y = arcs[static_cast<std::size_t>(ea * b.edge_count() + eb)];
+          const ArcSigns x = k.arc_signs(ea, eb),
+                         y = arcs[static_cast<std::size_t>(ea * b.edge_count() + eb)];
           REQUIRE(x.cba == y.cba);
           REQUIRE(x.dba == y.dba);
           REQUIRE(x.adc == y.adc);
@@ -313,14 +317,16 @@ void check_parallel_band(double tol) {
         // exact sine clearly above the tolerance: certainly measured
         const Vec3<Q> a = vec_cast<Q>(A.edge_direction(ea)), b = vec_cast<Q>(B.edge_direction(eb));
         const Q k2 = Q(1.01 * tol) * Q(1.01 * tol);
-        if (squared_norm(cross(a, b)) > k2 * squared_norm(a) * squared_norm(b)) REQUIRE(band == ParallelBand::outside);
+        if (squared_norm(cross(a, b)) > k2 * squared_norm(a) * squared_norm(b))
+          REQUIRE(band == ParallelBand::outside);
       }
   }
   CHECK(skipped > 1000);
   CHECK(measured > 1000);
 }
 
-TEST_CASE("parallel_band: sound for every pair the plain kernel skips, tight above it", "[fuzz][classify][parallel]") {
+TEST_CASE("parallel_band: sound for every pair the plain kernel skips, tight above it",
+          "[fuzz][classify][parallel]") {
   check_parallel_band<float>(1e-4);
   check_parallel_band<double>(1e-8);
   // the guard: tiny or huge edges cannot be shown either way
@@ -335,7 +341,8 @@ TEST_CASE("parallel_band: sound for every pair the plain kernel skips, tight abo
 // the ridge pair (axis z) is a Minkowski face and wins; plain float skips it
 // as parallel (sin < 1e-4) and picks a face.  That must be classified
 // "explained" (float_plain), while double measures the pair and agrees.
-TEST_CASE("check: a winner inside the float parallel skip is explained, not a tie", "[fuzz][classify][parallel]") {
+TEST_CASE("check: a winner inside the float parallel skip is explained, not a tie",
+          "[fuzz][classify][parallel]") {
   const double th = 3e-5, g = 0.25;
   FuzzCase c;
   c.family = "manual";
@@ -343,17 +350,20 @@ TEST_CASE("check: a winner inside the float parallel skip is explained, not a ti
   std::vector<Vec3<double>> b;
   for (const auto& p : a) {
     const Vec3<double> m(p[0], p[1], 2 + g - p[2]);  // upside down, ridge at z = 1 + g
-    b.emplace_back(m[0] * std::cos(th) - m[1] * std::sin(th), m[0] * std::sin(th) + m[1] * std::cos(th), m[2]);
+    b.emplace_back(m[0] * std::cos(th) - m[1] * std::sin(th), m[0] * std::sin(th) + m[1] * std::cos(th),
+                   m[2]);
   }
   c.a = hull_of(a);
   c.b = hull_of(b);
   const CaseReport r = check_case(c);
   REQUIRE(r.valid);
-  for (const auto& x : r.unexplained) UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+  for (const auto& x : r.unexplained)
+    UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
   CHECK(r.unexplained_count == 0);
   CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 1);
   CHECK(r.by_config.at("feature/float_plain")[Klass::tie] == 0);
-  CHECK(r.by_config.at("feature/double_plain")[Klass::agree] == r.by_config.at("feature/double_plain").total());
+  CHECK(r.by_config.at("feature/double_plain")[Klass::agree] ==
+        r.by_config.at("feature/double_plain").total());
 }
 
 // exactly_convex (filtered) against the plain rational plane test on the
@@ -375,7 +385,8 @@ TEST_CASE("exactly_convex equals the rational plane test of the exact image", "[
     return ConvexPolyhedron<float>::from_faces(std::move(v), s.faces);
   };
   int convex = 0, not_convex = 0;
-  for (const std::string fam : {"boxes", "flat", "tetra", "scales", "touching", "perturbed", "sphere", "decomposition"}) {
+  for (const std::string fam :
+       {"boxes", "flat", "tetra", "scales", "touching", "perturbed", "sphere", "decomposition"}) {
     for (std::uint64_t seed = 0; seed < 12; ++seed) {
       const FuzzCase c = generate(fam, seed);
       for (const ShapeSpec* s : {&c.a, &c.b}) {

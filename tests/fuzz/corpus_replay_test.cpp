@@ -26,7 +26,8 @@ TEST_CASE("seed corpus replays without unexplained disagreements", "[fuzz][corpu
       continue;
     }
     REQUIRE(r.valid);
-    for (const auto& x : r.unexplained) UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+    for (const auto& x : r.unexplained)
+      UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
     CHECK(r.unexplained_count == 0);
     CHECK(r.by_comparison.at("overlap").total() > 0);
   }
@@ -54,10 +55,13 @@ TEST_CASE("seed corpus: an injected wrong verdict is unexplained in every case",
   CHECK(checked >= 8);
 }
 
-TEST_CASE("inputs convex only within tolerance: cross-SAT exact differences are nonconvex, same-SAT checks stay strict",
-          "[fuzz][corpus][nonconvex]") {
+TEST_CASE(
+    "inputs convex only within tolerance: cross-SAT exact differences are nonconvex, same-SAT checks stay "
+    "strict",
+    "[fuzz][corpus][nonconvex]") {
   const std::filesystem::path dir = std::filesystem::path(SEPAX_SOURCE_DIR) / "fuzz" / "corpus";
-  for (const char* name : {"22-perturbed-nonconvex-exact-image-1.case", "23-perturbed-nonconvex-exact-image-2.case"}) {
+  for (const char* name :
+       {"22-perturbed-nonconvex-exact-image-1.case", "23-perturbed-nonconvex-exact-image-2.case"}) {
     INFO(name);
     const CaseReport r = check_case_guarded(read_case_file((dir / name).string()));
     REQUIRE(r.valid);
@@ -76,7 +80,8 @@ TEST_CASE("inputs convex only within tolerance: cross-SAT exact differences are 
 
 TEST_CASE("corpus 26: a winner inside the plain float parallel skip is explained, not a tie",
           "[fuzz][corpus][parallel]") {
-  const auto path = std::filesystem::path(SEPAX_SOURCE_DIR) / "fuzz" / "corpus" / "26-flat-near-parallel-skip-explained.case";
+  const auto path = std::filesystem::path(SEPAX_SOURCE_DIR) / "fuzz" / "corpus" /
+                    "26-flat-near-parallel-skip-explained.case";
   const CaseReport r = check_case(read_case_file(path.string()));
   REQUIRE(r.valid);
   CHECK(r.unexplained_count == 0);
@@ -105,24 +110,29 @@ CaseReport replay_corpus(const char* name) {
 CaseReport replay_explained(const char* name) {
   const CaseReport r = replay_corpus(name);
   REQUIRE(r.valid);
-  for (const auto& x : r.unexplained) UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
+  for (const auto& x : r.unexplained)
+    UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
   CHECK(r.unexplained_count == 0);
   return r;
 }
 }  // namespace
 
-TEST_CASE("corpus 32, 33: a flipped float edge axis within its band is explained", "[fuzz][corpus][orientation]") {
+TEST_CASE("corpus 32, 33: a flipped float edge axis within its band is explained",
+          "[fuzz][corpus][orientation]") {
   for (const char* name : {"32-flat-flipped-edge-axis.case", "33-flat-flipped-edge-axis-beats-face.case"}) {
     INFO(name);
     const CaseReport r = replay_explained(name);
     // plain float orients at least one edge axis the other way, within (8)
     CHECK(r.by_config.at("axis_side/float_plain")[Klass::explained] >= 1);
     // the robust configurations orient every axis as exact arithmetic does
-    CHECK(r.by_config.at("axis_side/float_robust")[Klass::agree] == r.by_config.at("axis_side/float_robust").total());
-    CHECK(r.by_config.at("axis_side/double_robust")[Klass::agree] == r.by_config.at("axis_side/double_robust").total());
+    CHECK(r.by_config.at("axis_side/float_robust")[Klass::agree] ==
+          r.by_config.at("axis_side/float_robust").total());
+    CHECK(r.by_config.at("axis_side/double_robust")[Klass::agree] ==
+          r.by_config.at("axis_side/double_robust").total());
     // Gauss map and traversal report the flipped pair: explained, not a tie
     CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 2);
-    CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
+    CHECK(r.by_config.at("feature/float_robust")[Klass::agree] ==
+          r.by_config.at("feature/float_robust").total());
   }
 }
 
@@ -130,7 +140,8 @@ TEST_CASE("corpus 34: a pair the float brute force accepts within its support to
           "[fuzz][corpus][support]") {
   const CaseReport r = replay_explained("34-brute-support-tolerance-accepts.case");
   CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 1);
-  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
+  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] ==
+        r.by_config.at("feature/float_robust").total());
 }
 
 TEST_CASE("corpus 35: the plain float traversal takes a crossing its arc test accepts at a rounded end tie",
@@ -139,16 +150,19 @@ TEST_CASE("corpus 35: the plain float traversal takes a crossing its arc test ac
   // (the plain float traversal's own answer is asserted in
   // tests/core/sat_traversal_test.cpp); the robust runs report exact
   // arithmetic's feature in every SAT
-  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
+  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] ==
+        r.by_config.at("feature/float_robust").total());
 }
 
-TEST_CASE("corpus 37: the plain float traversal with a flat shape does not skip a crossing at a rounded start tie",
-          "[fuzz][corpus][traversal]") {
+TEST_CASE(
+    "corpus 37: the plain float traversal with a flat shape does not skip a crossing at a rounded start tie",
+    "[fuzz][corpus][traversal]") {
   const CaseReport r = replay_explained("37-flat-plain-traversal-start-tie-rounded.case");
   // (the plain float traversal's own answer is asserted in
   // tests/core/sat_traversal_test.cpp); the robust runs report exact
   // arithmetic's feature in every SAT
-  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] == r.by_config.at("feature/float_robust").total());
+  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] ==
+        r.by_config.at("feature/float_robust").total());
 }
 
 TEST_CASE("corpus 36: a float reduction around another deepest point (tied within the weld) is a tie",

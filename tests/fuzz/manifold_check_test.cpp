@@ -42,7 +42,8 @@ std::pair<ConvexPolyhedron<float>, ConvexPolyhedron<float>> crossed_cubes() {
 }
 }  // namespace
 
-TEST_CASE("manifold comparison on the corpus: compared, nothing unexplained, bounds not vacuous", "[fuzz][manifold]") {
+TEST_CASE("manifold comparison on the corpus: compared, nothing unexplained, bounds not vacuous",
+          "[fuzz][manifold]") {
   Counts total;
   std::map<std::string, Counts> details;
   double max_depth = 0, max_pos = 0;
@@ -50,7 +51,8 @@ TEST_CASE("manifold comparison on the corpus: compared, nothing unexplained, bou
     INFO(f);
     const CaseReport r = check_case(read_case_file(f));
     REQUIRE(r.valid);
-    for (const auto& x : r.unexplained) UNSCOPED_INFO("[" << x.comparison << " " << x.config << "] " << x.detail);
+    for (const auto& x : r.unexplained)
+      UNSCOPED_INFO("[" << x.comparison << " " << x.config << "] " << x.detail);
     CHECK(r.unexplained_count == 0);
     const auto it = r.by_comparison.find("manifold");
     REQUIRE(it != r.by_comparison.end());
@@ -74,16 +76,18 @@ TEST_CASE("manifold comparison on the corpus: compared, nothing unexplained, bou
   CHECK(max_pos >= 1e-4);
 }
 
-TEST_CASE("float loses the clipped point of an exact touching contact: exact_zero, not agree", "[fuzz][manifold]") {
-  const CaseReport r =
-      check_case(read_case_file(std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/28-touching-float-support-fallback.case"));
+TEST_CASE("float loses the clipped point of an exact touching contact: exact_zero, not agree",
+          "[fuzz][manifold]") {
+  const CaseReport r = check_case(
+      read_case_file(std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/28-touching-float-support-fallback.case"));
   REQUIRE(r.valid);
   CHECK(r.unexplained_count == 0);
   CHECK(r.by_config.at("manifold/float_robust")[Klass::exact_zero] == 1);
   CHECK(r.by_config.at("manifold/gmpq")[Klass::agree] == 1);
 }
 
-TEST_CASE("edge contact: agrees, and a float depth off by more than its bound is unexplained", "[fuzz][manifold]") {
+TEST_CASE("edge contact: agrees, and a float depth off by more than its bound is unexplained",
+          "[fuzz][manifold]") {
   const auto [a, b] = crossed_cubes();
   const auto aq = ConvexPolyhedron<Q>::convert_from(a), bq = ConvexPolyhedron<Q>::convert_from(b);
   const auto rq = sat::gauss_map(aq, bq);
@@ -140,7 +144,8 @@ TEST_CASE("a float SAT feature other than the exact one is not compared", "[fuzz
 
 TEST_CASE("the report: manifold table and the --json 'manifold' key", "[fuzz][manifold]") {
   Report rep;
-  rep.add("corpus", check_case(read_case_file(std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/08-box-on-box-touching.case")));
+  rep.add("corpus", check_case(read_case_file(std::string(SEPAX_SOURCE_DIR) +
+                                              "/fuzz/corpus/08-box-on-box-touching.case")));
   std::ostringstream js, tx;
   print_json(js, rep);
   print_text(tx, rep);

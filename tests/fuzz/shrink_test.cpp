@@ -110,12 +110,14 @@ TEST_CASE("shrink: pose simplification un-rotates B and rounds its offset", "[fu
     auto conv = [](const ShapeSpec& s) {  // the exact image of the float polyhedron, as check_case builds it
       std::vector<Vec3<float>> v;
       for (const auto& p : s.vertices) v.push_back(vec_from_double<float>(p));
-      return ConvexPolyhedron<mpq_class>::convert_from(ConvexPolyhedron<float>::from_faces(std::move(v), s.faces));
+      return ConvexPolyhedron<mpq_class>::convert_from(
+          ConvexPolyhedron<float>::from_faces(std::move(v), s.faces));
     };
     return sign(sat::gauss_map(conv(x.a), conv(x.b)).separation);
   };
   const FailurePredicate fails = [&](const FuzzCase& x) {
-    return builds(x.a) && builds(x.b) && x.a.vertices.size() == 8 && x.b.vertices.size() == 8 && exact_sep(x) > 0;
+    return builds(x.a) && builds(x.b) && x.a.vertices.size() == 8 && x.b.vertices.size() == 8 &&
+           exact_sep(x) > 0;
   };
   REQUIRE(fails(c));
   ShrinkStats st;
@@ -138,7 +140,8 @@ TEST_CASE("shrink: pose simplification un-rotates B and rounds its offset", "[fu
       for (int k = 0; k < 3; ++k) CHECK(std::ldexp(v[k], 4) == std::nearbyint(std::ldexp(v[k], 4)));
 }
 
-TEST_CASE("shrink: the step budget is respected, and a passing case is returned unchanged", "[fuzz][shrink]") {
+TEST_CASE("shrink: the step budget is respected, and a passing case is returned unchanged",
+          "[fuzz][shrink]") {
   FuzzCase c;
   c.a = blob(3, 30, 1.0, V(0, 0, 0), {});
   c.b = blob(4, 30, 1.0, V(1, 0, 0), {});

@@ -42,10 +42,12 @@ TEST_CASE("Rng is splitmix64, and its integer and real mappings are the document
   CHECK(Rng(5).uniform_int(4, 4) == 4);
   // the full int range (n = 2^32) is a valid request
   Rng d(11);
-  for (int i = 0; i < 10; ++i) (void)d.uniform_int(std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+  for (int i = 0; i < 10; ++i)
+    (void)d.uniform_int(std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
 }
 
-TEST_CASE("generated coordinates are pinned: the same seed gives the same cases on every platform", "[fuzz][random]") {
+TEST_CASE("generated coordinates are pinned: the same seed gives the same cases on every platform",
+          "[fuzz][random]") {
   // These values were produced by g++/libstdc++ and agree bit for bit with
   // clang++/libc++ (the generators use no std distribution, and every
   // expression with several draws is sequenced).  A change here changes every

@@ -47,8 +47,8 @@ TEMPLATE_TEST_CASE("vertex tree: every vertex it skips is at most the limit abov
         }
         std::vector<int> ids;
         for (int i = 0; i < static_cast<int>(pts.size()); ++i) ids.push_back(i);
-        const sepax::hull::detail::VertexTree<T> tree(ids,
-                                                      [&](int v) { return pts[static_cast<std::size_t>(v)]; });
+        const sepax::hull::detail::VertexTree<T> tree(
+            ids, [&](int v) { return pts[static_cast<std::size_t>(v)]; });
         std::uniform_int_distribution<int> pick(0, static_cast<int>(pts.size()) - 1);
         for (int trial = 0; trial < 200; ++trial) {
           const auto& a = pts[static_cast<std::size_t>(pick(rng))];

@@ -83,8 +83,8 @@ TEST_CASE("cgal adapters: exact number conversion never rounds", "[cgal]") {
   CHECK(cgal::to_mpq(cgal::convert_number<CGAL::Gmpq>(cgal::convert_number<Epeck::FT>(tiny))) == tiny);
 }
 
-TEMPLATE_TEST_CASE("cgal adapters: round trips keep vertices, faces and loops", "[cgal]", mpq_class, CGAL::Gmpq,
-                   Epeck::FT) {
+TEMPLATE_TEST_CASE("cgal adapters: round trips keep vertices, faces and loops", "[cgal]", mpq_class,
+                   CGAL::Gmpq, Epeck::FT) {
   using T = TestType;
   const std::vector<ConvexPolyhedron<T>> shapes_{
       shapes::cube<T>(1.0), shapes::prism<T>(7, 1.0, 0.5), shapes::tetrahedron<T>(0.3),
@@ -134,7 +134,8 @@ TEST_CASE("cgal adapters: a triangulated mesh is rejected by validation, naming 
   }
 }
 
-TEMPLATE_TEST_CASE("cgal hull: cube lattice gives the cube with 6 quads", "[cgal][hull]", mpq_class, Epeck::FT) {
+TEMPLATE_TEST_CASE("cgal hull: cube lattice gives the cube with 6 quads", "[cgal][hull]", mpq_class,
+                   Epeck::FT) {
   using T = TestType;
   std::vector<Vec3<T>> pts;
   for (int x = 0; x < 3; ++x)
@@ -151,9 +152,10 @@ TEMPLATE_TEST_CASE("cgal hull: cube lattice gives the cube with 6 quads", "[cgal
 TEST_CASE("cgal hull: points in the middle of edges and faces are removed", "[cgal][hull]") {
   using T = mpq_class;
   // a tetrahedron with extra points on its edges and faces and duplicates
-  std::vector<Vec3<T>> pts{{T(0), T(0), T(0)}, {T(4), T(0), T(0)}, {T(0), T(4), T(0)}, {T(0), T(0), T(4)},
-                           {T(2), T(0), T(0)}, {T(2), T(2), T(0)}, {T(1), T(1), T(0)}, {T(1), T(1), T(2)},
-                           {T(4), T(0), T(0)}, {T(0), T(1, 3), T(11, 3)}};
+  std::vector<Vec3<T>> pts{{T(0), T(0), T(0)},       {T(4), T(0), T(0)}, {T(0), T(4), T(0)},
+                           {T(0), T(0), T(4)},       {T(2), T(0), T(0)}, {T(2), T(2), T(0)},
+                           {T(1), T(1), T(0)},       {T(1), T(1), T(2)}, {T(4), T(0), T(0)},
+                           {T(0), T(1, 3), T(11, 3)}};
   const auto h = cgal::exact_hull(pts);
   CHECK(h.vertex_count() == 4);
   CHECK(h.face_count() == 4);
@@ -214,7 +216,7 @@ TEMPLATE_TEST_CASE("cgal hull: coplanar input gives a flat polygon", "[cgal][hul
     CHECK(dot(h.plane(0).normal, p) == h.plane(0).offset);
   }
   CHECK_THROWS_AS(cgal::exact_hull(std::vector<Vec3<T>>{Vec3<T>(T(0), T(0), T(0)), Vec3<T>(T(1), T(1), T(1)),
-                                                         Vec3<T>(T(2), T(2), T(2))}),
+                                                        Vec3<T>(T(2), T(2), T(2))}),
                   InvalidInput);
   try {
     (void)cgal::exact_hull(std::vector<Vec3<T>>{Vec3<T>(T(0), T(0), T(0)), Vec3<T>(T(0), T(0), T(0)),

@@ -73,7 +73,8 @@ TEST_CASE("core_expr: same features as mpq on random rational poses", "[core_exp
   std::mt19937 rng(3);
   for (int it = 0; it < 16; ++it) {
     const auto pa = random_pose(rng, 8), pb = random_pose(rng, 8);
-    const std::size_t ia = static_cast<std::size_t>(it) % ze.size(), ib = static_cast<std::size_t>(it / 3) % ze.size();
+    const std::size_t ia = static_cast<std::size_t>(it) % ze.size(),
+                      ib = static_cast<std::size_t>(it / 3) % ze.size();
     const auto ae = apply_pose(ze[ia], pa), be = apply_pose(ze[ib], pb);
     const auto aq = apply_pose(zq[ia], pa), bq = apply_pose(zq[ib], pb);
     const auto rq = sat::gauss_map(aq, bq);

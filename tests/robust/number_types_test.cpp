@@ -76,7 +76,8 @@ TEST_CASE("GMP rationals convert to the nearest double", "[robust][number_types]
     truncated_differs += r.get_d() != p / q;
   }
   CHECK(truncated_differs > 100);  // the test can tell the two apart
-  CHECK(sepax::number_traits<mpq_class>::to_double(mpq_class(1e308) * 4) == std::numeric_limits<double>::infinity());
+  CHECK(sepax::number_traits<mpq_class>::to_double(mpq_class(1e308) * 4) ==
+        std::numeric_limits<double>::infinity());
 }
 
 TEST_CASE("exact separations convert to double without spurious overflow", "[robust][number_types]") {
@@ -89,7 +90,9 @@ TEST_CASE("exact separations convert to double without spurious overflow", "[rob
   // num and norm2 beyond double's range, the value not: 1e308 and 1e200
   CHECK(to_double(Separation<Q>{Q(1e308) * 4, Q(16)}) == 1e308);
   // (a few roundings: within 2 ulp)
-  auto near = [](double v, double want) { return std::abs(v - want) <= 4 * std::numeric_limits<double>::epsilon() * std::abs(want); };
+  auto near = [](double v, double want) {
+    return std::abs(v - want) <= 4 * std::numeric_limits<double>::epsilon() * std::abs(want);
+  };
   const Q big = Q(1e200) * Q(1e200) * Q(1e200) * Q(1e200);  // norm2 ~ 1e800, num ~ 1e600
   CHECK(near(to_double(Separation<Q>{Q(1e200) * Q(1e200) * Q(1e200), big}), 1e200));
   CHECK(near(to_double(Separation<Q>{-Q(1e200) * Q(1e200) * Q(1e200), big}), -1e200));

@@ -65,14 +65,16 @@ void check(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0, const Vec3<F
 
 template <class F>
 F ulp_step(F x, int k) {
-  for (int i = 0; i < std::abs(k); ++i) x = std::nextafter(x, k > 0 ? std::numeric_limits<F>::infinity() : -std::numeric_limits<F>::infinity());
+  for (int i = 0; i < std::abs(k); ++i)
+    x = std::nextafter(x, k > 0 ? std::numeric_limits<F>::infinity() : -std::numeric_limits<F>::infinity());
   return x;
 }
 
 template <class F>
 Vec3<F> rnd(std::mt19937_64& rng, double scale) {
   std::uniform_real_distribution<double> u(-1, 1);
-  return Vec3<F>(static_cast<F>(u(rng) * scale), static_cast<F>(u(rng) * scale), static_cast<F>(u(rng) * scale));
+  return Vec3<F>(static_cast<F>(u(rng) * scale), static_cast<F>(u(rng) * scale),
+                 static_cast<F>(u(rng) * scale));
 }
 
 }  // namespace
@@ -87,14 +89,15 @@ TEMPLATE_TEST_CASE("orient_sign: random inputs at many scales", "[orientation]",
     // must give up there (the exact stage decides); elsewhere it decides.
     Counts& c = (scale >= 1e-30 && scale <= 1e30) ? in_range : n;
     for (int i = 0; i < 2000; ++i) {
-      check(rnd<F>(rng, scale), rnd<F>(rng, scale), rnd<F>(rng, scale), rnd<F>(rng, scale), rnd<F>(rng, scale),
-            rnd<F>(rng, scale), c);
+      check(rnd<F>(rng, scale), rnd<F>(rng, scale), rnd<F>(rng, scale), rnd<F>(rng, scale),
+            rnd<F>(rng, scale), rnd<F>(rng, scale), c);
     }
   }
   CHECK(in_range.filtered > in_range.total * 99 / 100);
 }
 
-TEMPLATE_TEST_CASE("orient_sign: exact zeros (c = a + b, collinear, coplanar)", "[orientation]", float, double) {
+TEMPLATE_TEST_CASE("orient_sign: exact zeros (c = a + b, collinear, coplanar)", "[orientation]", float,
+                   double) {
   using F = TestType;
   std::mt19937_64 rng(2);
   std::uniform_int_distribution<int> small(-1000, 1000);
@@ -174,7 +177,8 @@ TEST_CASE("orient_sign: subnormal and mixed-magnitude inputs", "[orientation]") 
   const Vec3<double> z(0, 0, 0);
   check(z, Vec3<double>(tiny, 0, 0), z, Vec3<double>(0, tiny, 0), z, Vec3<double>(0, 0, tiny), n);
   check(z, Vec3<double>(1e300, 0, 0), z, Vec3<double>(0, 1e-300, 0), z, Vec3<double>(0, 0, tiny), n);
-  check(z, Vec3<double>(1e-200, 1e-200, 0), z, Vec3<double>(1e-200, 1e-200, tiny), z, Vec3<double>(0, 0, 1e-160), n);
+  check(z, Vec3<double>(1e-200, 1e-200, 0), z, Vec3<double>(1e-200, 1e-200, tiny), z,
+        Vec3<double>(0, 0, 1e-160), n);
   check(z, Vec3<double>(1e200, 1e200, 1e200), z, Vec3<double>(1e200, 1e200, 1e-200), z,
         Vec3<double>(-1e200, 1e200, 3), n);
   const float ft = std::numeric_limits<float>::denorm_min();

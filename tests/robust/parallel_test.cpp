@@ -30,7 +30,8 @@ struct Counts {
 template <class F>
 void check(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0, const Vec3<F>& b1, Counts& n) {
   const bool want = oracle(a0, a1, b0, b1);
-  INFO("a0 " << a0.transpose() << " a1 " << a1.transpose() << " b0 " << b0.transpose() << " b1 " << b1.transpose());
+  INFO("a0 " << a0.transpose() << " a1 " << a1.transpose() << " b0 " << b0.transpose() << " b1 "
+             << b1.transpose());
   REQUIRE(parallel(a0, a1, b0, b1) == want);
   REQUIRE(parallel_exact(a0, a1, b0, b1) == want);
   REQUIRE(parallel(b0, b1, a0, a1) == want);
@@ -41,7 +42,8 @@ void check(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0, const Vec3<F
 template <class F>
 Vec3<F> rnd(std::mt19937_64& rng, double scale) {
   std::uniform_real_distribution<double> u(-1, 1);
-  return Vec3<F>(static_cast<F>(u(rng) * scale), static_cast<F>(u(rng) * scale), static_cast<F>(u(rng) * scale));
+  return Vec3<F>(static_cast<F>(u(rng) * scale), static_cast<F>(u(rng) * scale),
+                 static_cast<F>(u(rng) * scale));
 }
 
 }  // namespace
@@ -72,7 +74,8 @@ TEMPLATE_TEST_CASE("parallel: exact and near-parallel directions", "[parallel]",
       // axis-aligned integer edges, as in boxes and prisms
       const F s = static_cast<F>(scale);
       check(Vec3<F>(F(small(rng)) * s, F(1) * s, F(2) * s), Vec3<F>(F(small(rng)) * s, F(1) * s, F(2) * s),
-            Vec3<F>(F(3) * s, F(small(rng)) * s, F(-1) * s), Vec3<F>(F(small(rng)) * s, F(small(rng)) * s, F(-1) * s), n);
+            Vec3<F>(F(3) * s, F(small(rng)) * s, F(-1) * s),
+            Vec3<F>(F(small(rng)) * s, F(small(rng)) * s, F(-1) * s), n);
     }
   }
   CHECK(n.parallel > n.total / 10);  // scaled copies and zero-length edges (2 of 6 checks) are parallel

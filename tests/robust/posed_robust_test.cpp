@@ -49,54 +49,59 @@ void on_pose_pairs(std::mt19937_64& rng, int random_poses, Check&& check) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("robust posed SATs equal the pre-posed SATs bit for bit", "[posed][robust]", float, double) {
+TEMPLATE_TEST_CASE("robust posed SATs equal the pre-posed SATs bit for bit", "[posed][robust]", float,
+                   double) {
   using T = TestType;
   std::mt19937_64 rng(1802);
   const auto shapes = local_shapes<T>(rng);
-  const int n = check_posed_against_reference<policy::Robust>(shapes, rng, 4,
-                                                              [](std::mt19937_64& g) { return random_pose<T>(g, 1.5); });
+  const int n = check_posed_against_reference<policy::Robust>(
+      shapes, rng, 4, [](std::mt19937_64& g) { return random_pose<T>(g, 1.5); });
   CHECK(n == 7 * 7 * 4 * 3 * 3);
 }
 
-TEMPLATE_TEST_CASE("robust posed decisions are the exact decisions on (A, posed(B, X))", "[posed][robust]", float,
-                   double) {
+TEMPLATE_TEST_CASE("robust posed decisions are the exact decisions on (A, posed(B, X))", "[posed][robust]",
+                   float, double) {
   using T = TestType;
   std::mt19937_64 rng(1803);
   int checked = 0;
   std::int64_t fallbacks = 0;
-  on_pose_pairs<T>(rng, 3, [&](const ConvexPolyhedron<T>& a, const PreparedShape<T>& pa_, const RigidTransform<T>& pa,
-                               const ConvexPolyhedron<T>& b, const PreparedShape<T>& pb_, const RigidTransform<T>& pb) {
-    const auto x = relative_pose(pa, pb);
-    const auto bp = posed(b, x);
-    const auto ea = ConvexPolyhedron<mpq_class>::convert_from(a);
-    const auto eb = ConvexPolyhedron<mpq_class>::convert_from(bp);
-    const auto exact = sat::gauss_map(ea, eb);
-    const auto moved = sat::traversal<policy::Robust>(a, transformed(b, x));
-    for (SatAlgorithm alg : kSatAlgorithms) {
-      const auto r = sat::run<policy::Robust>(alg, pa_, pa, pb_, pb);
-      INFO(to_string(alg) << ": robust " << to_string(r.feature) << " " << r.separation_as_double() << ", exact "
-                          << to_string(exact.feature) << " " << exact.separation_as_double());
-      REQUIRE(r.feature == exact.feature);
-      REQUIRE(r.overlap == exact.overlap);
-      REQUIRE(sign(r.separation) == sign(exact.separation));
-      REQUIRE(r.feature == moved.feature);
-      REQUIRE(r.overlap == moved.overlap);
-      fallbacks += r.stats.exact_fallbacks;
-      ++checked;
-    }
-  });
+  on_pose_pairs<T>(
+      rng, 3,
+      [&](const ConvexPolyhedron<T>& a, const PreparedShape<T>& pa_, const RigidTransform<T>& pa,
+          const ConvexPolyhedron<T>& b, const PreparedShape<T>& pb_, const RigidTransform<T>& pb) {
+        const auto x = relative_pose(pa, pb);
+        const auto bp = posed(b, x);
+        const auto ea = ConvexPolyhedron<mpq_class>::convert_from(a);
+        const auto eb = ConvexPolyhedron<mpq_class>::convert_from(bp);
+        const auto exact = sat::gauss_map(ea, eb);
+        const auto moved = sat::traversal<policy::Robust>(a, transformed(b, x));
+        for (SatAlgorithm alg : kSatAlgorithms) {
+          const auto r = sat::run<policy::Robust>(alg, pa_, pa, pb_, pb);
+          INFO(to_string(alg) << ": robust " << to_string(r.feature) << " " << r.separation_as_double()
+                              << ", exact " << to_string(exact.feature) << " "
+                              << exact.separation_as_double());
+          REQUIRE(r.feature == exact.feature);
+          REQUIRE(r.overlap == exact.overlap);
+          REQUIRE(sign(r.separation) == sign(exact.separation));
+          REQUIRE(r.feature == moved.feature);
+          REQUIRE(r.overlap == moved.overlap);
+          fallbacks += r.stats.exact_fallbacks;
+          ++checked;
+        }
+      });
   CHECK(checked == (7 * 7 * 3 + 12) * 3);
   CHECK(fallbacks > 0);  // the resting boxes tie exactly: the exact stage ran
 }
 
-TEMPLATE_TEST_CASE("exact posed SATs: bit for bit the pre-posed SATs, and the exact world answer under rational poses",
-                   "[posed][exact]", mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE(
+    "exact posed SATs: bit for bit the pre-posed SATs, and the exact world answer under rational poses",
+    "[posed][exact]", mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
   using T = TestType;
   std::mt19937_64 rng(1804);
   const auto shapes = local_shapes<T>(rng);
   // random rational poses: posed == pre-posed (posed(B, X) is transformed(B, X) for exact T)
-  check_posed_against_reference<policy::Plain>(shapes, rng, 1,
-                                               [](std::mt19937_64& g) { return random_integer_pose<T>(g, 1.5); });
+  check_posed_against_reference<policy::Plain>(
+      shapes, rng, 1, [](std::mt19937_64& g) { return random_integer_pose<T>(g, 1.5); });
   std::vector<PreparedShape<T>> prepared;
   for (const auto& s : shapes) prepared.emplace_back(s);
   int checked = 0;
@@ -212,16 +217,16 @@ TEST_CASE("robust margin: an edge-pair separation against a margin within its er
   CHECK(decided > 10);
 }
 
-TEMPLATE_TEST_CASE("warm robust posed queries equal fresh ones along coherent sequences", "[posed][cache][robust]",
-                   float, double) {
+TEMPLATE_TEST_CASE("warm robust posed queries equal fresh ones along coherent sequences",
+                   "[posed][cache][robust]", float, double) {
   using T = TestType;
   std::mt19937_64 rng(1823);
   const auto shapes = local_shapes<T>(rng);
   CHECK(check_warm_sequences<policy::Robust>(shapes, 40) == 7 * 7 * 3 * 3 * 40);
 }
 
-TEMPLATE_TEST_CASE("warm exact posed queries equal fresh ones along coherent sequences", "[posed][cache][exact]",
-                   mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
+TEMPLATE_TEST_CASE("warm exact posed queries equal fresh ones along coherent sequences",
+                   "[posed][cache][exact]", mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
   using T = TestType;
   std::mt19937_64 rng(1824);
   std::vector<ConvexPolyhedron<T>> shapes{ConvexPolyhedron<T>::convert_from(large_sphere_hull(rng, 8)),
@@ -230,16 +235,18 @@ TEMPLATE_TEST_CASE("warm exact posed queries equal fresh ones along coherent seq
   CHECK(check_warm_sequences<policy::Plain>(shapes, 10) == 4 * 4 * 3 * 3 * 10);
 }
 
-TEMPLATE_TEST_CASE("warm robust early-out answers decided on a partial posed B equal those on the full B, and "
-                   "separate exactly beyond the margin",
-                   "[posed][cache][robust]", float, double) {
+TEMPLATE_TEST_CASE(
+    "warm robust early-out answers decided on a partial posed B equal those on the full B, and "
+    "separate exactly beyond the margin",
+    "[posed][cache][robust]", float, double) {
   using T = TestType;
   std::mt19937_64 rng(1826);
   const auto shapes = local_shapes<T>(rng);
   int exact_checked = 0;
   const WarmCounts n = check_warm_against_reference<policy::Robust>(
       shapes, rng, 3,
-      [&](std::size_t i, std::size_t, const ConvexPolyhedron<T>& bp, const SatOptions& opt, const SatResult<T>& r) {
+      [&](std::size_t i, std::size_t, const ConvexPolyhedron<T>& bp, const SatOptions& opt,
+          const SatResult<T>& r) {
         // the early-out answer's feature (a cache hit or the margin
         // pre-check), re-evaluated by the mpq kernel on the exact images of
         // (A, B'), separates by more than the margin
@@ -286,8 +293,10 @@ void check_warm_margin_ties() {
   // A's top face (+z) and B's bottom face (-z; B turns about z only)
   int top = -1, bottom = -1;
   for (int f = 0; f < box.face_count(); ++f) {
-    if (box.plane(f).normal[2] > T(0) && box.plane(f).normal[0] == T(0) && box.plane(f).normal[1] == T(0)) top = f;
-    if (box.plane(f).normal[2] < T(0) && box.plane(f).normal[0] == T(0) && box.plane(f).normal[1] == T(0)) bottom = f;
+    if (box.plane(f).normal[2] > T(0) && box.plane(f).normal[0] == T(0) && box.plane(f).normal[1] == T(0))
+      top = f;
+    if (box.plane(f).normal[2] < T(0) && box.plane(f).normal[0] == T(0) && box.plane(f).normal[1] == T(0))
+      bottom = f;
   }
   REQUIRE(top >= 0);
   REQUIRE(bottom >= 0);

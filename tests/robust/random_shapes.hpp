@@ -63,13 +63,18 @@ ConvexPolyhedron<T> random_sphere_hull(std::mt19937_64& rng, int n, double radiu
           for (int l = 0; l < n; ++l) {
             if (l == i || l == j || l == k) continue;
             const int s = robust::orient3d(pts[i], pts[j], pts[k], pts[l]);
-            if (s > 0) ++pos;
-            else if (s < 0) ++neg;
-            else degenerate = true;
+            if (s > 0)
+              ++pos;
+            else if (s < 0)
+              ++neg;
+            else
+              degenerate = true;
             if (pos && neg) break;
           }
-          if (pos == 0) faces.push_back({i, j, k});
-          else if (neg == 0) faces.push_back({i, k, j});
+          if (pos == 0)
+            faces.push_back({i, j, k});
+          else if (neg == 0)
+            faces.push_back({i, k, j});
         }
       }
     }

@@ -66,7 +66,8 @@ bool agrees_with_exact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& 
   t.fallbacks += r.stats.exact_fallbacks;
   const int es = sign(e.separation);
   (es == 0 ? t.touching : es < 0 ? t.overlapping : t.separated) += 1;
-  if (!(p.feature == e.feature) || p.overlap != e.overlap || sign_of(p.separation.num) != es) ++t.plain_differs;
+  if (!(p.feature == e.feature) || p.overlap != e.overlap || sign_of(p.separation.num) != es)
+    ++t.plain_differs;
   const bool ok = r.feature == e.feature && r.overlap == e.overlap && sign_of(r.separation.num) == es &&
                   r.stats.minkowski_faces == e.stats.minkowski_faces;
   if (!ok) {
@@ -167,8 +168,9 @@ TEMPLATE_TEST_CASE("robust = exact: boxes against boxes (ties, touching, paralle
   }
   CHECK(failures == 0);
   CHECK(t.touching > 0);
-  WARN(number_traits<T>::name << ": " << t.runs << " runs (" << t.touching << " exactly touching), exact fallbacks "
-                              << t.fallbacks << ", plain differed in " << t.plain_differs);
+  WARN(number_traits<T>::name << ": " << t.runs << " runs (" << t.touching
+                              << " exactly touching), exact fallbacks " << t.fallbacks
+                              << ", plain differed in " << t.plain_differs);
 }
 
 TEMPLATE_TEST_CASE("robust = exact: polygons on box faces, across edges, coplanar", "[robust][kernel]", float,
@@ -212,8 +214,9 @@ TEMPLATE_TEST_CASE("robust = exact: polygons on box faces, across edges, coplana
   }
   CHECK(failures == 0);
   CHECK(t.touching > 0);
-  WARN(number_traits<T>::name << ": " << t.runs << " runs (" << t.touching << " exactly touching), exact fallbacks "
-                              << t.fallbacks << ", plain differed in " << t.plain_differs);
+  WARN(number_traits<T>::name << ": " << t.runs << " runs (" << t.touching
+                              << " exactly touching), exact fallbacks " << t.fallbacks
+                              << ", plain differed in " << t.plain_differs);
 }
 
 // Coplanar polygons with gaps between them in the plane: only the side axes
@@ -253,7 +256,7 @@ TEMPLATE_TEST_CASE("robust = exact: coplanar polygons with gaps (side axes)", "[
     }
   }
   CHECK(failures == 0);
-  CHECK(side > 30);      // gaps in the plane were drawn and separated
+  CHECK(side > 30);                   // gaps in the plane were drawn and separated
   CHECK(t.separated > 2 * side - 1);  // (both SATs count each case)
   CHECK(t.touching > 0);
 }
@@ -277,8 +280,8 @@ TEMPLATE_TEST_CASE("robust = exact: prisms with many parallel edges", "[robust][
                               << ", plain differed in " << t.plain_differs);
 }
 
-TEMPLATE_TEST_CASE("robust is needed: plain float differs from exact where robust does not", "[robust][kernel]",
-                   float, double) {
+TEMPLATE_TEST_CASE("robust is needed: plain float differs from exact where robust does not",
+                   "[robust][kernel]", float, double) {
   // A random tetrahedron A and B = -A + t (point reflection, exact).  Along
   // the inward normal of each face of A, the three vertices of B's copy of
   // that face are exactly tied: the exact support vertex is the lowest index
@@ -300,7 +303,8 @@ TEMPLATE_TEST_CASE("robust is needed: plain float differs from exact where robus
       continue;
     }
     std::vector<Vec3<T>> w;
-    const Vec3<T> shift = v3<T>(std::round(u(rng) * 8) / 4, std::round(u(rng) * 8) / 4, std::round(u(rng) * 8) / 4);
+    const Vec3<T> shift =
+        v3<T>(std::round(u(rng) * 8) / 4, std::round(u(rng) * 8) / 4, std::round(u(rng) * 8) / 4);
     for (const auto& x : a.vertices()) w.push_back(Vec3<T>(shift - x));
     // point reflection reverses orientation: list the faces the other way round
     const auto b = ConvexPolyhedron<T>::from_faces(w, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
@@ -370,8 +374,9 @@ TEMPLATE_TEST_CASE("robust batched arc test = exact arc test, pair by pair", "[r
     const auto ha = random_sphere_hull<T>(rng, n);
     const auto hb = random_sphere_hull<T>(rng, n);
     for (double scale : {1.0, 1e-4, 1e4}) {
-      cases.emplace_back(posed(ha, random_rotation(rng), Vec3<double>(0, 0, 0), scale),
-                         posed(hb, random_rotation(rng), Vec3<double>(u(rng), u(rng), u(rng)) * scale, scale));
+      cases.emplace_back(
+          posed(ha, random_rotation(rng), Vec3<double>(0, 0, 0), scale),
+          posed(hb, random_rotation(rng), Vec3<double>(u(rng), u(rng), u(rng)) * scale, scale));
     }
   }
   // beyond 2^60: lanes_bounded() is false, every pair takes minkowski_face
@@ -429,8 +434,8 @@ void for_each_edge_pair(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>&
     for (int eb = 0; eb < b.edge_count(); ++eb) f(ke, k, ea, eb);
 }
 
-TEMPLATE_TEST_CASE("robust edges_parallel = exact parallelism, pair by pair", "[robust][kernel][parallel]", float,
-                   double) {
+TEMPLATE_TEST_CASE("robust edges_parallel = exact parallelism, pair by pair", "[robust][kernel][parallel]",
+                   float, double) {
   using T = TestType;
   std::vector<std::pair<ConvexPolyhedron<T>, ConvexPolyhedron<T>>> cases;
   const auto box = shapes::box<T>(1.0, 1.0, 1.0);
@@ -440,9 +445,10 @@ TEMPLATE_TEST_CASE("robust edges_parallel = exact parallelism, pair by pair", "[
   // for eps = 0; tiny eps make the T cross product tiny or zero
   for (T eps : {T(0), std::numeric_limits<T>::denorm_min(), std::numeric_limits<T>::min(), T(0x1p-60),
                 T(0x1p-30), std::numeric_limits<T>::epsilon(), T(0.25)}) {
-    cases.emplace_back(box, ConvexPolyhedron<T>::polygon({v3<T>(-0.5, 0, 1), v3<T>(0.5, eps, 1), v3<T>(0, 1, 1)}));
-    cases.emplace_back(ConvexPolyhedron<T>::polygon({v3<T>(3, 1, -2), v3<T>(4, T(1) + eps, -2), v3<T>(3, 2, -2)}),
-                       box);
+    cases.emplace_back(box,
+                       ConvexPolyhedron<T>::polygon({v3<T>(-0.5, 0, 1), v3<T>(0.5, eps, 1), v3<T>(0, 1, 1)}));
+    cases.emplace_back(
+        ConvexPolyhedron<T>::polygon({v3<T>(3, 1, -2), v3<T>(4, T(1) + eps, -2), v3<T>(3, 2, -2)}), box);
   }
   // exactly parallel edges p0p1 and 3p0 3p1 (all exact in T) whose T
   // differences round (the edge spans more bits than T holds), so the T cross
@@ -469,8 +475,9 @@ TEMPLATE_TEST_CASE("robust edges_parallel = exact parallelism, pair by pair", "[
     const auto ha = random_sphere_hull<T>(rng, n);
     const auto hb = random_sphere_hull<T>(rng, n);
     for (double scale : {1.0, 1e-4, 1e4}) {
-      cases.emplace_back(posed(ha, random_rotation(rng), Vec3<double>(0, 0, 0), scale),
-                         posed(hb, random_rotation(rng), Vec3<double>(u(rng), u(rng), u(rng)) * scale, scale));
+      cases.emplace_back(
+          posed(ha, random_rotation(rng), Vec3<double>(0, 0, 0), scale),
+          posed(hb, random_rotation(rng), Vec3<double>(u(rng), u(rng), u(rng)) * scale, scale));
     }
     // a hull against its own translate: every edge has an exactly parallel partner
     cases.emplace_back(ha, translated(ha, v3<T>(0.5, 0.25, 0)));
@@ -560,8 +567,9 @@ void check_estimates(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b,
   const auto r = gauss ? sat::gauss_map_with(kc, opt) : sat::brute_force_with(kc, opt);
   const auto f = gauss ? sat::gauss_map_with(kf, opt) : sat::brute_force_with(kf, opt);
   const auto e = gauss ? sat::gauss_map(ae, be, opt) : sat::brute_force(ae, be, opt);
-  bool ok = r.feature == e.feature && r.overlap == e.overlap && sign_of(r.separation.num) == sign(e.separation) &&
-            r.early_out == e.early_out && r.stats.face_axes == e.stats.face_axes;
+  bool ok = r.feature == e.feature && r.overlap == e.overlap &&
+            sign_of(r.separation.num) == sign(e.separation) && r.early_out == e.early_out &&
+            r.stats.face_axes == e.stats.face_axes;
   ok = ok && r.feature == f.feature && r.separation.num == f.separation.num && r.early_out == f.early_out &&
        r.stats.face_axes == f.stats.face_axes && r.stats.edge_pairs == f.stats.edge_pairs &&
        r.stats.minkowski_faces == f.stats.minkowski_faces &&
@@ -583,14 +591,16 @@ void check_estimates(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b,
       if (!certified && c >= 0) ok = false;  // skipped, but not exactly below the result
       if (c == 0) {
         if (!certified) ok = false;  // a tie must get the exact vertex
-        const Feature ff = side == 0 ? Feature::face_a(i, q.support_vertex) : Feature::face_b(q.support_vertex, i);
+        const Feature ff =
+            side == 0 ? Feature::face_a(i, q.support_vertex) : Feature::face_b(q.support_vertex, i);
         if (!(ff == e.feature)) ++t.ties_checked;
       }
     }
   }
   if (!ok) {
     ++t.mismatches;
-    INFO("T = " << number_traits<T>::name << (gauss ? " gauss_map" : " brute_force") << " early_out " << early_out);
+    INFO("T = " << number_traits<T>::name << (gauss ? " gauss_map" : " brute_force") << " early_out "
+                << early_out);
     INFO("A: " << describe(a));
     INFO("B: " << describe(b));
     INFO("estimating " << to_string(r.feature) << " sep " << r.separation_as_double() << " fallbacks "
@@ -609,8 +619,8 @@ void check_estimates(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b,
 // from): within kReportedAxisError of the exact unit direction and oriented
 // as exact arithmetic orients it, also for nearly parallel edges whose T
 // cross product points anywhere.
-TEMPLATE_TEST_CASE("robust edge-pair axis: near the exact direction, exactly oriented", "[robust][kernel][axis]",
-                   float, double) {
+TEMPLATE_TEST_CASE("robust edge-pair axis: near the exact direction, exactly oriented",
+                   "[robust][kernel][axis]", float, double) {
   using T = TestType;
   std::vector<std::pair<ConvexPolyhedron<T>, ConvexPolyhedron<T>>> cases;
   // two triangles whose first edges make an angle theta, one above the other
@@ -671,7 +681,8 @@ TEMPLATE_TEST_CASE("robust face estimates: within their bound of the exact face 
           const FaceEstimate<T> est = side == 0 ? k.face_estimate_a(f) : k.face_estimate_b(f);
           const auto q = side == 0 ? k.face_query_a(f) : k.face_query_b(f);
           const double h = to_double((side == 0 ? ke.face_query_a(f) : ke.face_query_b(f)).separation);
-          const Feature feat = side == 0 ? Feature::face_a(f, q.support_vertex) : Feature::face_b(q.support_vertex, f);
+          const Feature feat =
+              side == 0 ? Feature::face_a(f, q.support_vertex) : Feature::face_b(q.support_vertex, f);
           // the bound of the certified value; h is the exact value within
           // about an ulp of double (long double for the difference)
           const long double diff = std::fabs(static_cast<long double>(est.separation.num) - h);
@@ -681,8 +692,8 @@ TEMPLATE_TEST_CASE("robust face estimates: within their bound of the exact face 
           // the certified value is within the same bound of h: the two are
           // within twice the bound of each other (equal where the float argmin
           // is the support vertex and the value not snapped)
-          const bool same = std::fabs(static_cast<long double>(q.separation.num) - est.separation.num) <=
-                            2 * est.error;
+          const bool same =
+              std::fabs(static_cast<long double>(q.separation.num) - est.separation.num) <= 2 * est.error;
           ++checked;
           if (!in || !same) {
             ++outside;
@@ -771,8 +782,9 @@ TEST_CASE("robust edge-pair prefilter: certainly below, checked exactly", "[robu
     for (double scale : {1.0, 1e-4, 1e4}) {
       for (double far : {0.0, 1e3}) {  // far: both shapes 1000 sizes from the origin
         const Vec3<double> o(far * scale, -0.5 * far * scale, 0.25 * far * scale);
-        cases.emplace_back(posed(ha, random_rotation(rng), o, scale),
-                           posed(hb, random_rotation(rng), o + Vec3<double>(u(rng), u(rng), u(rng)) * scale, scale));
+        cases.emplace_back(
+            posed(ha, random_rotation(rng), o, scale),
+            posed(hb, random_rotation(rng), o + Vec3<double>(u(rng), u(rng), u(rng)) * scale, scale));
         near_origin.push_back(far == 0);
       }
     }
@@ -822,7 +834,8 @@ TEST_CASE("robust edge-pair prefilter: certainly below, checked exactly", "[robu
           // exact: s* < L = best - err, i.e. num < L sqrt(den); L < 0 whenever it
           // can say true
           const mpq_class l = mpq_class(static_cast<double>(best)) - mpq_class(err);
-          const bool exact_below = !parallel && sgn(l) < 0 && sgn(se.num) < 0 && se.num * se.num > l * l * se.norm2;
+          const bool exact_below =
+              !parallel && sgn(l) < 0 && sgn(se.num) < 0 && se.num * se.num > l * l * se.norm2;
           if (below && !exact_below) {
             ++wrong;
             INFO("pair " << ea << "," << eb << " s* ~ " << s << " best " << best << " err " << err);

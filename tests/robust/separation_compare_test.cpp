@@ -13,7 +13,9 @@ using namespace sepax::robust;
 
 namespace {
 
-Vec3<mpq_class> q(const Vec3<double>& v) { return Vec3<mpq_class>(mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2])); }
+Vec3<mpq_class> q(const Vec3<double>& v) {
+  return Vec3<mpq_class>(mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2]));
+}
 
 Separation<mpq_class> face_oracle(const Vec3<double>& p0, const Vec3<double>& p1, const Vec3<double>& p2,
                                   const Vec3<double>& p) {
@@ -67,8 +69,10 @@ TEST_CASE("compare_exact: same separation at different scales is a tie", "[separ
   // different N but the same height for p = (0,0,2).
   const Vec3<double> o(0, 0, 0), x(1, 0, 0), y(0, 1, 0), x3(3, 0, 0), y3(0, 3, 0), p(0, 0, 2);
   CHECK(compare_exact(face_separation_poly(o, x, y, p), face_separation_poly(o, x3, y3, p)) == 0);
-  CHECK(compare_exact(face_separation_poly(o, x, y, p), face_separation_poly(o, x3, y3, Vec3<double>(0, 0, 2.0000000000000004))) == -1);
-  CHECK(compare_exact(face_separation_poly(o, x, y, Vec3<double>(0, 0, -1)), face_separation_poly(o, x3, y3, Vec3<double>(0, 0, -1.0000000000000002))) == 1);
+  CHECK(compare_exact(face_separation_poly(o, x, y, p),
+                      face_separation_poly(o, x3, y3, Vec3<double>(0, 0, 2.0000000000000004))) == -1);
+  CHECK(compare_exact(face_separation_poly(o, x, y, Vec3<double>(0, 0, -1)),
+                      face_separation_poly(o, x3, y3, Vec3<double>(0, 0, -1.0000000000000002))) == 1);
 }
 
 namespace {

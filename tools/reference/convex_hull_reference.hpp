@@ -97,7 +97,6 @@
 #include <sepax/tolerances.hpp>
 #include <sepax/vec3.hpp>
 
-
 namespace sepax::reference {
 
 /// float/double: how far outside its hull an input point may be, in units of
@@ -344,8 +343,7 @@ class Builder {
   // within eps of two planes of a thin wedge can be far beyond its edge);
   // returns the largest of either in units of eps, and in height the
   // largest height alone.
-  double outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside,
-                        double& height) const {
+  double outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside, double& height) const {
     double max_abs = 0;
     for (std::size_t i = 0; i < pts_.size(); ++i)
       for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(X(static_cast<int>(i))[c])));
@@ -563,7 +561,8 @@ class Builder {
       const double tl2 = squared_norm(tn);
       if (tl2 > 0) {
         for (std::size_t i = 0; i < v.size(); ++i) {
-          if (static_cast<int>(i) == tri[0] || static_cast<int>(i) == tri[1] || static_cast<int>(i) == tri[2]) continue;
+          if (static_cast<int>(i) == tri[0] || static_cast<int>(i) == tri[1] || static_cast<int>(i) == tri[2])
+            continue;
           const Vec3<double> x(vec_to_double(v[i]) - vec_to_double(centre_));
           const Vec3<double> y(x - (dot(tn, Vec3<double>(x - p0)) / tl2) * tn);
           v[i] = Vec3<T>(vec_cast<T>(y) + centre_);
@@ -617,8 +616,7 @@ class Builder {
   // face (inside).  (Not "below every face plane": the plane of a tiny face
   // is poorly determined far from it, and a point deep inside can be above
   // it.)  A flat polygon is always measured to its polygon.
-  static double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
-                                 const Vec3<double>& x) {
+  static double polygon_distance(const std::vector<PolygonFace>& faces, bool flat, const Vec3<double>& x) {
     double best = 1e300;
     bool above = false;  // above a face at the nearest distance (within rounding)
     for (const auto& fc : faces) {
@@ -663,9 +661,8 @@ class Builder {
       }
     }
     if (in_.size() < 3) {
-      throw InvalidInput(ErrorCode::TooFewPoints,
-                         "convex_hull: needs at least 3 distinct points, got " +
-                             std::to_string(in_.size()) + " points");
+      throw InvalidInput(ErrorCode::TooFewPoints, "convex_hull: needs at least 3 distinct points, got " +
+                                                      std::to_string(in_.size()) + " points");
     }
     Vec3<T> lo = in_[0], hi = in_[0];
     for (const auto& p : in_) {
@@ -684,9 +681,8 @@ class Builder {
       if (!std::isfinite(extent_) || !std::isfinite(extent_ * extent_ * extent_ * 8.0) ||
           !number_traits<T>::is_finite(static_cast<T>(extent_ * extent_ * 4.0))) {
         throw InvalidInput(ErrorCode::BadScale,
-                           "convex_hull: the point set's extent " + format_number(extent_) +
-                               " overflows " + std::string(number_traits<T>::name) +
-                               " in plane computations");
+                           "convex_hull: the point set's extent " + format_number(extent_) + " overflows " +
+                               std::string(number_traits<T>::name) + " in plane computations");
       }
       // Decisions are made on coordinates relative to the box centre.
       const T two(2);
@@ -745,8 +741,8 @@ class Builder {
     }
     if (pts_.size() < 3) {
       throw InvalidInput(ErrorCode::TooFewPoints,
-                         "convex_hull: needs at least 3 distinct points, got " +
-                             std::to_string(pts_.size()) + " after merging duplicates" +
+                         "convex_hull: needs at least 3 distinct points, got " + std::to_string(pts_.size()) +
+                             " after merging duplicates" +
                              (exact ? "" : " (points closer than the weld tolerance)"));
     }
   }
@@ -788,8 +784,7 @@ class Builder {
 
   std::optional<ConvexPolyhedron<T>> build(const std::vector<int>& active, std::vector<int>& reject) {
     if (active.size() < 3) {
-      throw InvalidInput(ErrorCode::TooFewPoints,
-                         "convex_hull: fewer than 3 distinct points remain");
+      throw InvalidInput(ErrorCode::TooFewPoints, "convex_hull: fewer than 3 distinct points remain");
     }
     // Farthest pair among the extreme points of each axis.
     std::array<int, 6> ext{};
@@ -830,9 +825,8 @@ class Builder {
       if (!collinear) collinear = number_traits<T>::sqrt(best_c) <= flat_ * length(ab);
     }
     if (collinear) {
-      throw InvalidInput(ErrorCode::Collinear,
-                         "convex_hull: all points lie on one line" +
-                             std::string(exact ? "" : " (within the flat tolerance)"));
+      throw InvalidInput(ErrorCode::Collinear, "convex_hull: all points lie on one line" +
+                                                   std::string(exact ? "" : " (within the flat tolerance)"));
     }
     // Point farthest from plane abc.
     const Plane<T> base = plane_through(Q(a), Q(b), Q(c));
@@ -1040,8 +1034,8 @@ class Builder {
     return -1;
   }
 
-  std::optional<ConvexPolyhedron<T>> solid(const std::vector<int>& active, int a, int b, int c,
-                                           int d, std::vector<int>& reject) {
+  std::optional<ConvexPolyhedron<T>> solid(const std::vector<int>& active, int a, int b, int c, int d,
+                                           std::vector<int>& reject) {
     tris_.clear();
     // Orient the tetrahedron so that its faces point outward.
     if (height(plane_through(Q(a), Q(b), Q(c)), d) > T(0)) std::swap(b, c);
@@ -1213,11 +1207,11 @@ class Builder {
   // ---- merging triangles into faces -------------------------------------------
 
   struct Group {
-    std::vector<int> verts;  // sorted welded point indices
-    Vec3<T> area = Vec3<T>(T(0), T(0), T(0));  // float: sum of triangle cross products
+    std::vector<int> verts;                        // sorted welded point indices
+    Vec3<T> area = Vec3<T>(T(0), T(0), T(0));      // float: sum of triangle cross products
     Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};  // (initialised: groups_ copies Group{})
-    bool degenerate = false;  // a single zero-area triangle
-    std::vector<int> splits;  // sorted ids of the split faces its triangles came from
+    bool degenerate = false;                       // a single zero-area triangle
+    std::vector<int> splits;                       // sorted ids of the split faces its triangles came from
   };
 
   // Groups holding triangles of the same split face may not merge again.
@@ -1514,8 +1508,7 @@ class Builder {
         }
         if (ok) continue;
         // the point opposite the longest side of triangle (pa, pb, pc)
-        const T lab = squared_norm(e1), lbc = squared_norm(e2),
-                lca = squared_norm(Vec3<T>(Q(pa) - Q(pc)));
+        const T lab = squared_norm(e1), lbc = squared_norm(e2), lca = squared_norm(Vec3<T>(Q(pa) - Q(pc)));
         int mid = pb;
         if (lab >= lbc && lab >= lca) mid = pc;
         if (lbc >= lab && lbc >= lca) mid = pa;
@@ -1600,45 +1593,45 @@ class Builder {
       (void)y;
       return false;
     } else {
-    if (!any_pinned_) return false;
-    const Group& gx = groups_[sz(x)];
-    const Group& gy = groups_[sz(y)];
-    std::vector<int> shared;
-    std::set_intersection(gx.verts.begin(), gx.verts.end(), gy.verts.begin(), gy.verts.end(),
-                          std::back_inserter(shared));
-    auto group = [&](int t) {
-      const int g = find(t);
-      return g == y ? x : g;
-    };
-    for (int v : shared) {
-      if (!pinned_[sz(v)]) continue;
-      std::vector<int> gs;
-      for (int t : star_[sz(v)]) gs.push_back(group(t));
-      std::sort(gs.begin(), gs.end());
-      gs.erase(std::unique(gs.begin(), gs.end()), gs.end());
-      if (gs.size() == 1) return true;  // it would be inside a face
-      if (gs.size() != 2) continue;
-      // its neighbours along the boundary between the two faces
-      std::vector<int> ends;
-      for (int t : star_[sz(v)]) {
-        const Tri& tr = tris_[sz(t)];
-        for (int i = 0; i < 3; ++i) {
-          const int u = tr.v[sz(i)], w = tr.v[sz((i + 1) % 3)];
-          if (u != v) continue;
-          if (group(t) != group(tr.nb[sz(i)])) ends.push_back(w);
+      if (!any_pinned_) return false;
+      const Group& gx = groups_[sz(x)];
+      const Group& gy = groups_[sz(y)];
+      std::vector<int> shared;
+      std::set_intersection(gx.verts.begin(), gx.verts.end(), gy.verts.begin(), gy.verts.end(),
+                            std::back_inserter(shared));
+      auto group = [&](int t) {
+        const int g = find(t);
+        return g == y ? x : g;
+      };
+      for (int v : shared) {
+        if (!pinned_[sz(v)]) continue;
+        std::vector<int> gs;
+        for (int t : star_[sz(v)]) gs.push_back(group(t));
+        std::sort(gs.begin(), gs.end());
+        gs.erase(std::unique(gs.begin(), gs.end()), gs.end());
+        if (gs.size() == 1) return true;  // it would be inside a face
+        if (gs.size() != 2) continue;
+        // its neighbours along the boundary between the two faces
+        std::vector<int> ends;
+        for (int t : star_[sz(v)]) {
+          const Tri& tr = tris_[sz(t)];
+          for (int i = 0; i < 3; ++i) {
+            const int u = tr.v[sz(i)], w = tr.v[sz((i + 1) % 3)];
+            if (u != v) continue;
+            if (group(t) != group(tr.nb[sz(i)])) ends.push_back(w);
+          }
+          for (int i = 0; i < 3; ++i) {
+            const int u = tr.v[sz(i)], w = tr.v[sz((i + 1) % 3)];
+            if (w != v) continue;
+            if (group(t) != group(tr.nb[sz(i)])) ends.push_back(u);
+          }
         }
-        for (int i = 0; i < 3; ++i) {
-          const int u = tr.v[sz(i)], w = tr.v[sz((i + 1) % 3)];
-          if (w != v) continue;
-          if (group(t) != group(tr.nb[sz(i)])) ends.push_back(u);
-        }
+        std::sort(ends.begin(), ends.end());
+        ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+        if (ends.size() != 2) continue;
+        if (segment_distance(v, ends[0], ends[1]) > far_tol * to_double(eps_)) return true;
       }
-      std::sort(ends.begin(), ends.end());
-      ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
-      if (ends.size() != 2) continue;
-      if (segment_distance(v, ends[0], ends[1]) > far_tol * to_double(eps_)) return true;
-    }
-    return false;
+      return false;
     }
   }
 
@@ -1659,8 +1652,7 @@ class Builder {
     std::vector<int> ids;
     if (folds.empty()) return ids;
     std::unordered_map<int, int> plain;  // group -> plain unsplit triangles
-    for (int f : live)
-      plain[find(f)] += !is_zero(tris_[sz(f)].pl.normal) && nomerge_[sz(f)] == 0;
+    for (int f : live) plain[find(f)] += !is_zero(tris_[sz(f)].pl.normal) && nomerge_[sz(f)] == 0;
     auto bend = [&](int g) {
       const Group& gr = groups_[sz(g)];
       double d = 0;
@@ -1809,8 +1801,8 @@ class Builder {
   // plane triple has its apex at the first vertex: for a twisted sliver
   // quad, one start gives a plane all four vertices are within tolerance of,
   // another does not) is started at the first corner that passes instead.
-  void prevalidate(std::vector<std::vector<int>>& loops, std::vector<int>& reject,
-                   bool flat = false, std::vector<std::pair<int, int>>* merges = nullptr,
+  void prevalidate(std::vector<std::vector<int>>& loops, std::vector<int>& reject, bool flat = false,
+                   std::vector<std::pair<int, int>>* merges = nullptr,
                    const std::vector<int>* loop_group = nullptr, std::vector<int>* split = nullptr) {
     std::vector<int> used;
     for (const auto& l : loops) used.insert(used.end(), l.begin(), l.end());
@@ -1837,55 +1829,56 @@ class Builder {
     std::map<std::pair<int, int>, int> edge_face;
     for (std::size_t f = 0; f < loops.size(); ++f) {
       const auto& l = loops[f];
-      for (std::size_t i = 0; i < l.size(); ++i) edge_face[{l[i], l[(i + 1) % l.size()]}] = static_cast<int>(f);
+      for (std::size_t i = 0; i < l.size(); ++i)
+        edge_face[{l[i], l[(i + 1) % l.size()]}] = static_cast<int>(f);
     }
     std::vector<char> bad(loops.size(), 0);
     for (std::size_t f = 0; f < loops.size(); ++f) {
-     for (std::size_t rot = 0; rot < (flat ? 1 : loops[f].size()); ++rot) {
-      std::vector<int> l = loops[f];
-      std::rotate(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(rot), l.end());
-      std::vector<Vec3<T>> pts;
-      for (int v : l) pts.push_back(X(v));
-      auto t = plane_triple(pts);
-      if (flat && f == 1) {  // the back face reuses the front triple, reversed
-        std::vector<Vec3<T>> front;
-        for (int v : loops[0]) front.push_back(X(v));
-        const auto t0 = plane_triple(front);
+      for (std::size_t rot = 0; rot < (flat ? 1 : loops[f].size()); ++rot) {
+        std::vector<int> l = loops[f];
+        std::rotate(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(rot), l.end());
+        std::vector<Vec3<T>> pts;
+        for (int v : l) pts.push_back(X(v));
+        auto t = plane_triple(pts);
+        if (flat && f == 1) {  // the back face reuses the front triple, reversed
+          std::vector<Vec3<T>> front;
+          for (int v : loops[0]) front.push_back(X(v));
+          const auto t0 = plane_triple(front);
+          const std::size_t n = l.size();
+          // loops[1] is loops[0] reversed: position i there is n-1-i here
+          t = {static_cast<int>(n - 1 - sz(t0[0])), static_cast<int>(n - 1 - sz(t0[2])),
+               static_cast<int>(n - 1 - sz(t0[1]))};
+        }
+        const Plane<T> pl = plane_through(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]);
+        if (rot == 0) planes.push_back(pl);
+        auto h = [&](int v) { return T(dot(pl.normal, X(v)) - pl.offset); };
+        bool ok = !is_zero(pl.normal);
+        if constexpr (!exact) {  // (validation: aspect > sliver; here with a factor 2 margin)
+          ok = ok && detail::triangle_aspect(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]) >
+                         2 * Tolerances<T>::sliver;
+        }
+        const bool shape_ok = ok;
+        for (int v : l) ok = ok && abs_of(h(v)) <= plan_tol;
+        for (int v : used) ok = ok && h(v) <= conv_tol;
+        // corners as validation sees them: no reflex turn about this normal
         const std::size_t n = l.size();
-        // loops[1] is loops[0] reversed: position i there is n-1-i here
-        t = {static_cast<int>(n - 1 - sz(t0[0])), static_cast<int>(n - 1 - sz(t0[2])),
-             static_cast<int>(n - 1 - sz(t0[1]))};
+        for (std::size_t i = 0; i < n && ok; ++i) {
+          const Vec3<T> ab(X(l[i]) - X(l[(i + n - 1) % n]));
+          const Vec3<T> bc(X(l[(i + 1) % n]) - X(l[i]));
+          const T lab = length(ab);
+          ok = lab > T(0) && !(dot(pl.normal, cross(ab, bc)) < -(conv_tol * lab));
+        }
+        if (ok) {
+          bad[f] = 0;
+          loops[f] = std::move(l);
+          planes[f] = pl;
+          break;
+        }
+        if (rot == 0) {
+          bad[f] = 1;
+          if (shape_ok && split != nullptr) split->push_back(static_cast<int>(f));
+        }
       }
-      const Plane<T> pl = plane_through(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]);
-      if (rot == 0) planes.push_back(pl);
-      auto h = [&](int v) { return T(dot(pl.normal, X(v)) - pl.offset); };
-      bool ok = !is_zero(pl.normal);
-      if constexpr (!exact) {  // (validation: aspect > sliver; here with a factor 2 margin)
-        ok = ok && detail::triangle_aspect(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]) >
-                       2 * Tolerances<T>::sliver;
-      }
-      const bool shape_ok = ok;
-      for (int v : l) ok = ok && abs_of(h(v)) <= plan_tol;
-      for (int v : used) ok = ok && h(v) <= conv_tol;
-      // corners as validation sees them: no reflex turn about this normal
-      const std::size_t n = l.size();
-      for (std::size_t i = 0; i < n && ok; ++i) {
-        const Vec3<T> ab(X(l[i]) - X(l[(i + n - 1) % n]));
-        const Vec3<T> bc(X(l[(i + 1) % n]) - X(l[i]));
-        const T lab = length(ab);
-        ok = lab > T(0) && !(dot(pl.normal, cross(ab, bc)) < -(conv_tol * lab));
-      }
-      if (ok) {
-        bad[f] = 0;
-        loops[f] = std::move(l);
-        planes[f] = pl;
-        break;
-      }
-      if (rot == 0) {
-        bad[f] = 1;
-        if (shape_ok && split != nullptr) split->push_back(static_cast<int>(f));
-      }
-     }
     }
     if (split != nullptr) {
       std::erase_if(*split, [&](int f) { return !bad[sz(f)]; });
@@ -1913,13 +1906,12 @@ class Builder {
       reject.push_back(least_significant(loops[f]));
     }
     if (any && 16.0 * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::planarity * ext) {
-      throw InvalidInput(
-          ErrorCode::BadScale,
-          "convex_hull: the points are up to " + std::to_string(max_abs) +
-              " from the origin, too far for " + std::string(number_traits<T>::name) +
-              " to resolve a shape of extent " + std::to_string(ext) +
-              " within the validation tolerance; build the hull near the origin and move it "
-              "with a RigidTransform, or use double");
+      throw InvalidInput(ErrorCode::BadScale,
+                         "convex_hull: the points are up to " + std::to_string(max_abs) +
+                             " from the origin, too far for " + std::string(number_traits<T>::name) +
+                             " to resolve a shape of extent " + std::to_string(ext) +
+                             " within the validation tolerance; build the hull near the origin and move it "
+                             "with a RigidTransform, or use double");
     }
     std::sort(reject.begin(), reject.end());
     reject.erase(std::unique(reject.begin(), reject.end()), reject.end());
@@ -1930,8 +1922,7 @@ class Builder {
     try {
       return make();
     } catch (const InvalidInput& e) {
-      throw std::logic_error(std::string("convex_hull: the hull failed validation (a bug): ") +
-                             e.what());
+      throw std::logic_error(std::string("convex_hull: the hull failed validation (a bug): ") + e.what());
     }
   }
 
@@ -1943,15 +1934,15 @@ class Builder {
   std::vector<Vec3<T>> q_;  // welded point, local coordinates
   std::vector<Tri> tris_;
   std::vector<int> parent_;
-  std::vector<int> active_;  // the points of the current build
+  std::vector<int> active_;                     // the points of the current build
   std::array<int, 4> simplex_{-1, -1, -1, -1};  // the first build's initial simplex
-  Vec3<T> base_normal_;      // normal of its initial triangle
+  Vec3<T> base_normal_;                         // normal of its initial triangle
   std::vector<Group> groups_;
   std::vector<char> pinned_;  // float: points a repair round put back
   bool any_pinned_ = false;
-  std::vector<char> out_vertex_;  // vertices of the last output
+  std::vector<char> out_vertex_;        // vertices of the last output
   std::vector<std::vector<int>> star_;  // float: vertex -> live triangles around it
-  std::vector<int> nomerge_;  // triangle -> id of the face it was split from (0: none)
+  std::vector<int> nomerge_;            // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
   bool tent_ = true;  // float: may try tent_hull (not in the second build)
 };
@@ -1971,4 +1962,4 @@ ConvexPolyhedron<T> convex_hull(const std::vector<Vec3<T>>& points) {
   return convex_hull<T>(std::span<const Vec3<T>>(points.data(), points.size()));
 }
 
-}  // namespace sepax
+}  // namespace sepax::reference

@@ -49,10 +49,10 @@ struct HullPolyhedron {
         tree.may_exceed(p.plane(f), conv_tol, [&](int v) {
           const T h = p.height(f, p.vertex(v));
           if (h > conv_tol) {
-            ConvexPolyhedron<T>::fail(ErrorCode::NotConvex,
-                                      "not convex: vertex " + std::to_string(v) + " is " +
-                                          std::to_string(to_double(h)) + " above the plane of face " +
-                                          std::to_string(f));
+            ConvexPolyhedron<T>::fail(ErrorCode::NotConvex, "not convex: vertex " + std::to_string(v) +
+                                                                " is " + std::to_string(to_double(h)) +
+                                                                " above the plane of face " +
+                                                                std::to_string(f));
           }
         });
       }

@@ -79,8 +79,8 @@ bool is_supported(int shape_type);
 struct ShapeKey {
   int type = -1;
   float scaling[3] = {0, 0, 0};
-  float size[3] = {0, 0, 0};       // box: half extents with margin
-  const void* points = nullptr;    // hull / point cloud: the point array
+  float size[3] = {0, 0, 0};     // box: half extents with margin
+  const void* points = nullptr;  // hull / point cloud: the point array
   int point_count = 0;
   friend bool operator==(const ShapeKey&, const ShapeKey&) = default;
 };
@@ -120,16 +120,16 @@ class ShapeCache {
 /// Counters over every pair of one CreateFunc (a snapshot; the live
 /// counters are atomic, so a multithreaded dispatcher may update them).
 struct Counters {
-  std::int64_t queries = 0;        // SAT queries run
-  std::int64_t early_outs = 0;     // queries that stopped beyond the margin
-  std::int64_t culled = 0;         // steps of pairs whose bounding spheres are beyond the margin (no query)
-  std::int64_t kept = 0;           // steps that re-evaluated the kept face instead of a query
-  std::int64_t kept_apart = 0;     // steps still beyond the margin by the last query's answer (no query)
-  std::int64_t manifolds = 0;      // manifolds built
-  std::int64_t points = 0;         // points written
-  std::int64_t id_matches = 0;     // points that replaced the point with their ids
-  std::int64_t errors = 0;         // queries sepax refused (InvalidInput): manifold cleared
-  std::int64_t fallback_pairs = 0; // pairs handed to Bullet's algorithm at creation
+  std::int64_t queries = 0;         // SAT queries run
+  std::int64_t early_outs = 0;      // queries that stopped beyond the margin
+  std::int64_t culled = 0;          // steps of pairs whose bounding spheres are beyond the margin (no query)
+  std::int64_t kept = 0;            // steps that re-evaluated the kept face instead of a query
+  std::int64_t kept_apart = 0;      // steps still beyond the margin by the last query's answer (no query)
+  std::int64_t manifolds = 0;       // manifolds built
+  std::int64_t points = 0;          // points written
+  std::int64_t id_matches = 0;      // points that replaced the point with their ids
+  std::int64_t errors = 0;          // queries sepax refused (InvalidInput): manifold cleared
+  std::int64_t fallback_pairs = 0;  // pairs handed to Bullet's algorithm at creation
   std::string last_error;
 };
 

@@ -45,10 +45,11 @@ bool same_bits(const SatResult<T>& x, const SatResult<T>& y) {
 /// separations).
 template <class T>
 bool same_bits(const ContactManifold<T>& x, const ContactManifold<T>& y) {
-  if (x.kind != y.kind || !(x.feature == y.feature) || !same_bits(x.normal, y.normal) || !same_bits(x.norm2, y.norm2) ||
-      !same_bits(x.separation, y.separation) || x.reference_shape != y.reference_shape ||
-      x.reference_face != y.reference_face || x.incident_face != y.incident_face ||
-      x.support_fallback != y.support_fallback || x.points.size() != y.points.size())
+  if (x.kind != y.kind || !(x.feature == y.feature) || !same_bits(x.normal, y.normal) ||
+      !same_bits(x.norm2, y.norm2) || !same_bits(x.separation, y.separation) ||
+      x.reference_shape != y.reference_shape || x.reference_face != y.reference_face ||
+      x.incident_face != y.incident_face || x.support_fallback != y.support_fallback ||
+      x.points.size() != y.points.size())
     return false;
   for (std::size_t i = 0; i < x.points.size(); ++i) {
     const auto &p = x.points[i], &q = y.points[i];

@@ -17,23 +17,25 @@
 namespace sepax::fuzz {
 
 struct FamilyStats {
-  std::int64_t cases = 0;      // checked
-  std::int64_t rejected = 0;   // generated shapes the float validation rejected
+  std::int64_t cases = 0;     // checked
+  std::int64_t rejected = 0;  // generated shapes the float validation rejected
   std::int64_t unexplained = 0;
-  std::map<std::string, std::int64_t> skipped;  // "comparison/config/sat" -> comparisons not made (size budgets)
+  std::map<std::string, std::int64_t>
+      skipped;  // "comparison/config/sat" -> comparisons not made (size budgets)
 };
 
 struct Report {
-  std::int64_t cases = 0;      // checked cases (not counting rejected ones)
+  std::int64_t cases = 0;  // checked cases (not counting rejected ones)
   std::int64_t rejected = 0;
   double seconds = 0;
   std::uint64_t seed = 0;
   std::map<std::string, FamilyStats> families;
   std::map<std::string, Counts> comparisons;
   std::map<std::string, Counts> by_config;
-  std::map<std::string, std::int64_t> skipped;  // "comparison/config/sat" -> comparisons not made (size budgets)
-  std::map<std::string, Counts> details;   // sub-comparisons (CaseReport::details)
-  std::map<std::string, double> maxima;    // largest error/bound ratios (CaseReport::maxima)
+  std::map<std::string, std::int64_t>
+      skipped;                            // "comparison/config/sat" -> comparisons not made (size budgets)
+  std::map<std::string, Counts> details;  // sub-comparisons (CaseReport::details)
+  std::map<std::string, double> maxima;   // largest error/bound ratios (CaseReport::maxima)
   std::vector<std::string> reproducers;
   std::vector<Finding> findings;  // first few unexplained findings
   std::int64_t unexplained() const;
@@ -49,22 +51,22 @@ void print_json(std::ostream& out, const Report& r);
 
 /// What `sepax fuzz` runs (parsed by the sepax program, src/commands/fuzz_command.cpp).
 struct CampaignOptions {
-  double seconds = 30;           ///< campaign length when cases == 0
-  std::uint64_t cases = 0;       ///< generated cases (checked + rejected); 0: run for `seconds`
-  std::uint64_t seed = 1;        ///< campaign seed
-  std::vector<std::string> families;  ///< generator families in turn; empty: all (family_names())
+  double seconds = 30;                       ///< campaign length when cases == 0
+  std::uint64_t cases = 0;                   ///< generated cases (checked + rejected); 0: run for `seconds`
+  std::uint64_t seed = 1;                    ///< campaign seed
+  std::vector<std::string> families;         ///< generator families in turn; empty: all (family_names())
   std::string out_dir = "fuzz-reproducers";  ///< reproducers (and decoded --bytes inputs)
-  bool out_given = false;        ///< out_dir was given (replay --bytes writes decoded cases only then)
-  ShrinkOptions shrink;          ///< budget per shrunk finding (max_steps 0: no shrinking)
-  int shrink_max = 5;            ///< findings shrunk per run
-  bool json = false;             ///< report as one JSON object instead of text
-  bool quiet = false;            ///< no progress or per-file lines on stderr
-  bool replay = false;           ///< replay `replay_files` instead of generating cases
+  bool out_given = false;  ///< out_dir was given (replay --bytes writes decoded cases only then)
+  ShrinkOptions shrink;    ///< budget per shrunk finding (max_steps 0: no shrinking)
+  int shrink_max = 5;      ///< findings shrunk per run
+  bool json = false;       ///< report as one JSON object instead of text
+  bool quiet = false;      ///< no progress or per-file lines on stderr
+  bool replay = false;     ///< replay `replay_files` instead of generating cases
   std::vector<std::string> replay_files;  ///< .case files or directories of them
-  bool bytes = false;            ///< replay files are libFuzzer inputs
-  bool shrink_replays = false;   ///< shrink unexplained replayed cases too
-  bool inject_fault = false;     ///< replay with CheckOptions::inject_fault (checks the checker)
-  int jobs = 0;                  ///< parallel workers; 0: all cores
+  bool bytes = false;                     ///< replay files are libFuzzer inputs
+  bool shrink_replays = false;            ///< shrink unexplained replayed cases too
+  bool inject_fault = false;              ///< replay with CheckOptions::inject_fault (checks the checker)
+  int jobs = 0;                           ///< parallel workers; 0: all cores
 };
 
 /// Runs a campaign (or a replay) and prints its report to `out`; progress,

@@ -93,19 +93,19 @@ struct Finding {
 };
 
 struct CaseReport {
-  bool valid = false;            // false: the shapes were rejected (InvalidInput)
+  bool valid = false;  // false: the shapes were rejected (InvalidInput)
   std::string reject_reason;
   std::map<std::string, Counts> by_comparison;
   std::map<std::string, Counts> by_config;  // "comparison/config"
   std::vector<Finding> unexplained;         // at most a few per comparison
   std::int64_t unexplained_count = 0;
-  std::vector<std::string> configs_run;     // "config/sat"
+  std::vector<std::string> configs_run;  // "config/sat"
   /// Comparisons not made because a run was above a size budget
   /// (CheckOptions), as "comparison/config/sat" -> count.  Reported, never
   /// silently dropped.
   std::map<std::string, std::int64_t> skipped;
-  std::map<std::string, Counts> details;    // sub-comparisons, e.g. "manifold.points" (check_manifold.hpp)
-  std::map<std::string, double> maxima;     // largest error/bound ratios, e.g. "manifold.depth"
+  std::map<std::string, Counts> details;  // sub-comparisons, e.g. "manifold.points" (check_manifold.hpp)
+  std::map<std::string, double> maxima;   // largest error/bound ratios, e.g. "manifold.depth"
 };
 
 struct CheckOptions {

@@ -66,8 +66,8 @@ struct CaseGaussMaps {
 /// Gauss-map results already computed (CaseGaussMaps).
 void check_manifolds(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
                      const ConvexPolyhedron<mpq_class>& Aq, const ConvexPolyhedron<mpq_class>& Bq,
-                     const SatResult<mpq_class>& exact_sat, const CaseGaussMaps& given, const CheckOptions& opt,
-                     CaseReport& rep);
+                     const SatResult<mpq_class>& exact_sat, const CaseGaussMaps& given,
+                     const CheckOptions& opt, CaseReport& rep);
 
 /// One float configuration against the exact manifolds, with the float SAT
 /// result given (the core of check_manifolds, for tests): records under the
@@ -81,7 +81,8 @@ Klass check_manifold_float(const ConvexPolyhedron<float>& Af, const ConvexPolyhe
 /// The report's "manifold" section as a text table (its JSON value is
 /// written by print_json, campaign.hpp).
 void print_manifold_text(std::ostream& out, const std::map<std::string, Counts>& comparisons,
-                         const std::map<std::string, Counts>& by_config, const std::map<std::string, Counts>& details,
+                         const std::map<std::string, Counts>& by_config,
+                         const std::map<std::string, Counts>& details,
                          const std::map<std::string, double>& maxima);
 
 }  // namespace sepax::fuzz

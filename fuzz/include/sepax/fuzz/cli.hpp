@@ -28,8 +28,8 @@
 namespace sepax::fuzz {
 
 struct AuditOptions {
-  bool use_double = false;  ///< audit double instead of float
-  bool json = false;        ///< one JSON object instead of the text report
+  bool use_double = false;    ///< audit double instead of float
+  bool json = false;          ///< one JSON object instead of the text report
   bool inject_fault = false;  ///< CheckOptions::inject_fault (checks the checker)
 };
 

@@ -234,7 +234,8 @@ struct ParallelSkip {
   static double tol() { return double(static_cast<F>(Tolerances<F>::parallel)); }
   static double sine_bound() {
     const double u = u_of<F>(), t = tol();
-    return (t * std::sqrt((1 + gamma(9, u)) * (1 + 0x1p-23) / (1 - gamma(3, u))) + std::sqrt(2.0) * gamma(2, u)) *
+    return (t * std::sqrt((1 + gamma(9, u)) * (1 + 0x1p-23) / (1 - gamma(3, u))) +
+            std::sqrt(2.0) * gamma(2, u)) *
            (1 + 0x1p-23) * kSlack;
   }
   // eta = 2^-150 (float), 2^-1075 (double); the guard limits 2^80 eta, 2^50 eta.
@@ -264,7 +265,8 @@ inline double side_bound(const Vec3<F>& uvec, const Vec3<F>& t, const Vec3<F>& v
 /// (7) the bound of the side axis of edge e of p against every vertex of q
 /// (the side query's minimum), delta_n the bound (1) of edge_face(e, 0)'s normal.
 template <class F>
-inline double side_axis_bound(const ConvexPolyhedron<F>& p, int e, const ConvexPolyhedron<F>& q, double delta_n) {
+inline double side_axis_bound(const ConvexPolyhedron<F>& p, int e, const ConvexPolyhedron<F>& q,
+                              double delta_n) {
   const Vec3<F>& dir = p.edge_direction(e);
   const Vec3<F>& n = p.edge_normal(e, 0);
   const double du = delta_side<F>(dir, n, delta_n);
@@ -292,8 +294,8 @@ inline double orientation_bound(const Vec3<F>& n, const Vec3<F>& wa, const Vec3<
   const double eta = double(std::numeric_limits<F>::denorm_min());  // >= eta
   const Vec3<double> nd = d(n), ad = d(wa), bd = d(wb);
   const double dots = abs_dot(nd, ad) + abs_dot(nd, bd);
-  return ((gamma(3, u) + u * (1 + gamma(3, u))) * dots + (delta_n + u / (1 - u)) * (norm(ad) + norm(bd)) + ca +
-          cb + 8 * eta) *
+  return ((gamma(3, u) + u * (1 + gamma(3, u))) * dots + (delta_n + u / (1 - u)) * (norm(ad) + norm(bd)) +
+          ca + cb + 8 * eta) *
          kSlack;
 }
 

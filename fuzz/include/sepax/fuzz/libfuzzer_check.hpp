@@ -19,7 +19,8 @@ inline void check_or_abort(const FuzzCase& c) {
   const CaseReport r = check_case_guarded(c, opt);
   if (r.unexplained_count > 0) {
     for (const auto& f : r.unexplained)
-      std::fprintf(stderr, "[%s %s %s] %s\n", f.comparison.c_str(), f.config.c_str(), f.sat.c_str(), f.detail.c_str());
+      std::fprintf(stderr, "[%s %s %s] %s\n", f.comparison.c_str(), f.config.c_str(), f.sat.c_str(),
+                   f.detail.c_str());
     std::abort();
   }
 }

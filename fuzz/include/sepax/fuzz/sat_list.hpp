@@ -34,7 +34,8 @@ inline std::vector<Sat> all_sats() {
 }
 
 template <class Policy, class T>
-SatResult<T> run_sat(Sat s, const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, const SatOptions& opt = {}) {
+SatResult<T> run_sat(Sat s, const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b,
+                     const SatOptions& opt = {}) {
   return sat::run<Policy>(s, a, b, opt);
 }
 

@@ -48,14 +48,14 @@
 namespace sepax::fuzz {
 
 struct ShrinkOptions {
-  int max_steps = 300;       ///< predicate evaluations
-  double max_seconds = 60;   ///< wall clock
+  int max_steps = 300;      ///< predicate evaluations
+  double max_seconds = 60;  ///< wall clock
 };
 
 struct ShrinkStats {
-  int steps = 0;              ///< predicate evaluations
-  int kept = 0;               ///< steps that kept a simpler case
-  bool out_of_budget = false; ///< stopped by max_steps or max_seconds, not by a round without progress
+  int steps = 0;               ///< predicate evaluations
+  int kept = 0;                ///< steps that kept a simpler case
+  bool out_of_budget = false;  ///< stopped by max_steps or max_seconds, not by a round without progress
   double seconds = 0;
   std::vector<std::string> log;  ///< one line per kept step, e.g. "remove 4 vertices of A (12 -> 8)"
 };
@@ -90,6 +90,7 @@ std::string shrunk_path(const std::string& original_path, const std::string& out
 /// (`origin`) and the shrink log as comments.  Returns false (and writes
 /// nothing) when r has no unexplained finding.
 bool write_shrunk_reproducer(const std::string& path, const std::string& origin, const FuzzCase& c,
-                             const CaseReport& r, const ShrinkOptions& opt = {}, ShrinkStats* stats = nullptr);
+                             const CaseReport& r, const ShrinkOptions& opt = {},
+                             ShrinkStats* stats = nullptr);
 
 }  // namespace sepax::fuzz

@@ -34,8 +34,8 @@ int worker_count(int jobs);
 /// Generate and check case `index` of a campaign.  Never throws: invalid
 /// shapes are a rejected case, any other exception an "internal_error"
 /// finding (as check_case_guarded).
-CaseOutcome run_case(const std::vector<std::string>& families, std::uint64_t campaign_seed, std::uint64_t index,
-                     const CheckOptions& opt = {});
+CaseOutcome run_case(const std::vector<std::string>& families, std::uint64_t campaign_seed,
+                     std::uint64_t index, const CheckOptions& opt = {});
 
 /// Run indices 0, 1, 2, ... while more(index) is true (called by the workers
 /// before they take an index; indices are taken in increasing order, so the

@@ -50,7 +50,8 @@ struct LessXYZ {
 
 inline int find(std::vector<int>& parent, int x) {
   while (parent[static_cast<std::size_t>(x)] != x) {
-    parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+    parent[static_cast<std::size_t>(x)] =
+        parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
     x = parent[static_cast<std::size_t>(x)];
   }
   return x;
@@ -67,7 +68,8 @@ ConvexPolyhedron<T> exact_hull(const std::vector<Vec3<T>>& points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     for (int c = 0; c < 3; ++c)
       if (!number_traits<T>::is_finite(points[i][c]))
-        throw InvalidInput(ErrorCode::NonFinite, "point " + std::to_string(i) + " has a non-finite coordinate");
+        throw InvalidInput(ErrorCode::NonFinite,
+                           "point " + std::to_string(i) + " has a non-finite coordinate");
     const P3 p(convert_number<FT>(points[i][0]), convert_number<FT>(points[i][1]),
                convert_number<FT>(points[i][2]));
     if (index.emplace(p, static_cast<int>(pts.size())).second) {
@@ -75,7 +77,9 @@ ConvexPolyhedron<T> exact_hull(const std::vector<Vec3<T>>& points) {
       src.push_back(static_cast<int>(i));
     }
   }
-  const auto out_point = [&](int distinct) { return points[static_cast<std::size_t>(src[static_cast<std::size_t>(distinct)])]; };
+  const auto out_point = [&](int distinct) {
+    return points[static_cast<std::size_t>(src[static_cast<std::size_t>(distinct)])];
+  };
   if (pts.size() < 3)
     throw InvalidInput(ErrorCode::TooFewPoints,
                        "a hull needs at least 3 distinct points, got " + std::to_string(pts.size()));
@@ -95,7 +99,8 @@ ConvexPolyhedron<T> exact_hull(const std::vector<Vec3<T>>& points) {
     std::iota(order.begin(), order.end(), 0);
     const auto cu = [&](int i) { return pts[static_cast<std::size_t>(i)].cartesian(u); };
     const auto cw = [&](int i) { return pts[static_cast<std::size_t>(i)].cartesian(w); };
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return cu(a) < cu(b) || (cu(a) == cu(b) && cw(a) < cw(b)); });
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return cu(a) < cu(b) || (cu(a) == cu(b) && cw(a) < cw(b)); });
     const auto turn = [&](int o, int a, int b) {  // sign of the 2D cross (a-o) x (b-o)
       return CGAL::sign(FT((cu(a) - cu(o)) * (cw(b) - cw(o)) - (cw(a) - cw(o)) * (cu(b) - cu(o))));
     };
@@ -138,7 +143,8 @@ ConvexPolyhedron<T> exact_hull(const std::vector<Vec3<T>>& points) {
     const P3& c = sm.point(sm.target(sm.next(h)));
     const P3& d = sm.point(sm.target(sm.next(o)));
     if (CGAL::coplanar(a, b, c, d)) {
-      const int x = hull_detail::find(parent, fid.at(sm.face(h))), y = hull_detail::find(parent, fid.at(sm.face(o)));
+      const int x = hull_detail::find(parent, fid.at(sm.face(h))),
+                y = hull_detail::find(parent, fid.at(sm.face(o)));
       if (x != y) parent[static_cast<std::size_t>(x)] = y;
     }
   }

@@ -98,7 +98,8 @@ T round_up(double x) {
   const T t = static_cast<T>(x);
   if (!(t >= T(0))) [[unlikely]]
     return static_cast<double>(t) < x ? std::nextafter(t, std::numeric_limits<T>::infinity()) : t;
-  return std::bit_cast<T>(static_cast<Bits>(std::bit_cast<Bits>(t) + static_cast<Bits>(static_cast<double>(t) < x)));
+  return std::bit_cast<T>(
+      static_cast<Bits>(std::bit_cast<Bits>(t) + static_cast<Bits>(static_cast<double>(t) < x)));
 }
 
 }  // namespace detail

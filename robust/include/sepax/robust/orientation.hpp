@@ -37,11 +37,11 @@ inline constexpr int kUncertain = 2;
 
 /// Stage 1 only: sign of det[A, B, C] for the difference vectors given as
 /// endpoints, or kUncertain.  Never wrong when it returns a sign.
-inline int orient_filter(double a0x, double a0y, double a0z, double a1x, double a1y, double a1z,
-                         double b0x, double b0y, double b0z, double b1x, double b1y, double b1z,
-                         double c0x, double c0y, double c0z, double c1x, double c1y, double c1z) {
-  const FilteredSign s = orientation_filter(a0x, a0y, a0z, a1x, a1y, a1z, b0x, b0y, b0z, b1x, b1y, b1z, c0x, c0y,
-                                            c0z, c1x, c1y, c1z);
+inline int orient_filter(double a0x, double a0y, double a0z, double a1x, double a1y, double a1z, double b0x,
+                         double b0y, double b0z, double b1x, double b1y, double b1z, double c0x, double c0y,
+                         double c0z, double c1x, double c1y, double c1z) {
+  const FilteredSign s = orientation_filter(a0x, a0y, a0z, a1x, a1y, a1z, b0x, b0y, b0z, b1x, b1y, b1z, c0x,
+                                            c0y, c0z, c1x, c1y, c1z);
   if (!s.certain) return kUncertain;
   return s.det > 0 ? 1 : -1;
 }
@@ -49,7 +49,7 @@ inline int orient_filter(double a0x, double a0y, double a0z, double a1x, double 
 /// Stage 2 only: the exact sign, from the coordinates.
 template <class F>
 SEPAX_ROBUST_COLD int orient_sign_exact(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0,
-                             const Vec3<F>& b1, const Vec3<F>& c0, const Vec3<F>& c1) {
+                                        const Vec3<F>& b1, const Vec3<F>& c0, const Vec3<F>& c1) {
   const auto a = exact_diff(a1, a0);
   const auto b = exact_diff(b1, b0);
   const auto c = exact_diff(c1, c0);
@@ -63,8 +63,8 @@ inline int orient_sign(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0, 
                        const Vec3<F>& c0, const Vec3<F>& c1, std::int64_t* fallbacks = nullptr) {
   static_assert(std::is_same_v<F, float> || std::is_same_v<F, double>,
                 "orient_sign is for float and double coordinates");
-  const int s = orient_filter(a0[0], a0[1], a0[2], a1[0], a1[1], a1[2], b0[0], b0[1], b0[2],
-                              b1[0], b1[1], b1[2], c0[0], c0[1], c0[2], c1[0], c1[1], c1[2]);
+  const int s = orient_filter(a0[0], a0[1], a0[2], a1[0], a1[1], a1[2], b0[0], b0[1], b0[2], b1[0], b1[1],
+                              b1[2], c0[0], c0[1], c0[2], c1[0], c1[1], c1[2]);
   if (s != kUncertain) return s;
   if (fallbacks) ++*fallbacks;
   return orient_sign_exact(a0, a1, b0, b1, c0, c1);

@@ -46,8 +46,8 @@ inline constexpr double kParallelUnderflow = 0x1p-1070;
 // FMA contraction cannot change it.
 inline bool difference_is_exact(double a, double b, double& d) {
   d = a - b;
-  const double bv = a - d;        // the part of b that made it into d
-  const double av = d + bv;       // the part of a that made it into d
+  const double bv = a - d;   // the part of b that made it into d
+  const double av = d + bv;  // the part of a that made it into d
   const double eb = bv - b;
   const double ea = a - av;
   return ea + eb == 0.0 && std::isfinite(d);
@@ -79,7 +79,8 @@ inline bool parallel_filter_maybe(const double a[3], const double b[3]) {
 
 /// Exact: (a1 - a0) x (b1 - b0) == 0, evaluated in ExactFloat only.
 template <class F>
-SEPAX_ROBUST_COLD bool parallel_exact(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0, const Vec3<F>& b1) {
+SEPAX_ROBUST_COLD bool parallel_exact(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0,
+                                      const Vec3<F>& b1) {
   const auto c = exact_cross(exact_diff(a1, a0), exact_diff(b1, b0));
   return exact_sign(c[0]) == 0 && exact_sign(c[1]) == 0 && exact_sign(c[2]) == 0;
 }
@@ -118,12 +119,10 @@ SEPAX_ROBUST_COLD bool parallel_stage2(const Vec3<F>& a0, const Vec3<F>& a1, con
     // Stage 2: (A x B)_x = A_y B_z - A_z B_y is zero iff the two (exact)
     // products are equal; compared directly, so no rounding is involved.
     double p[6];
-    const bool prods_exact = detail::product_is_exact(a[1], b[2], p[0]) &&
-                             detail::product_is_exact(a[2], b[1], p[1]) &&
-                             detail::product_is_exact(a[2], b[0], p[2]) &&
-                             detail::product_is_exact(a[0], b[2], p[3]) &&
-                             detail::product_is_exact(a[0], b[1], p[4]) &&
-                             detail::product_is_exact(a[1], b[0], p[5]);
+    const bool prods_exact =
+        detail::product_is_exact(a[1], b[2], p[0]) && detail::product_is_exact(a[2], b[1], p[1]) &&
+        detail::product_is_exact(a[2], b[0], p[2]) && detail::product_is_exact(a[0], b[2], p[3]) &&
+        detail::product_is_exact(a[0], b[1], p[4]) && detail::product_is_exact(a[1], b[0], p[5]);
     if (prods_exact) return p[0] == p[1] && p[2] == p[3] && p[4] == p[5];
   }
   return parallel_exact(a0, a1, b0, b1);

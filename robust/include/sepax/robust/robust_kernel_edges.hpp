@@ -371,7 +371,8 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
   // monotonically), and either way the decision is the exact one.  On a
   // convex shape a vertex that is not extreme along n has a neighbour farther
   // along n, so most edges off the extremes are ruled out here.
-  void rule_out_by_neighbours(const P& p, const Vec3<T>& n, int e, double w, bool& at_max, bool& at_min) const {
+  void rule_out_by_neighbours(const P& p, const Vec3<T>& n, int e, double w, bool& at_max,
+                              bool& at_min) const {
     const int tail = p.edge_tail(e), head = p.edge_head(e);
     const double ref = static_cast<double>(dot(n, p.vertex(tail)));
     for (const int v : {tail, head}) {
