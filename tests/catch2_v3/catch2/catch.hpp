@@ -5,7 +5,7 @@
 // tests use that v3 moved:
 //   Approx                    v3: Catch::Approx
 //   Catch::Contains(string)   v3: Catch::Matchers::ContainsSubstring
-//   Catch::StartsWith, ...    v3: only in Catch::Matchers
+//   Catch::StartsWith, Catch::Matches (regex), ...   v3: only in Catch::Matchers
 //   Catch::Matchers::Contains(string literal): v3's Contains is the range
 //                             matcher; a non-template overload for strings
 //                             is preferred to it.
@@ -31,5 +31,6 @@ Matchers::StringContainsMatcher Contains(S&& substring, CaseSensitive cs = CaseS
 }
 using Matchers::EndsWith;
 using Matchers::Equals;
+using Matchers::Matches;
 using Matchers::StartsWith;
 }  // namespace Catch
