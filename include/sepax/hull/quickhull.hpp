@@ -16,7 +16,6 @@
 #include <array>
 #include <cstddef>
 #include <optional>
-#include <ranges>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -117,12 +116,29 @@ inline int Builder<T>::new_tri(int p0, int p1, int p2) {
   return static_cast<int>(tris_.size()) - 1;
 }
 
+// The face indices [first, last) as a range for assign_among (std::views::iota
+// does not compile with clang 14 on libstdc++ 12's <ranges>).
+struct FaceIndexRange {
+  struct iterator {
+    int i;
+    int operator*() const { return i; }
+    iterator& operator++() {
+      ++i;
+      return *this;
+    }
+    bool operator!=(const iterator& o) const { return i != o.i; }
+  };
+  int first, last;
+  iterator begin() const { return {first}; }
+  iterator end() const { return {last}; }
+};
+
 // Assign p to the conflict list of the first of faces [first, end) it is
 // outside (Traits::classify); float T: otherwise keep it on the face it is
 // highest above, within eps (Traits::NearFace).
 template <Number T>
 inline void Builder<T>::assign(int p, int first) {
-  assign_among(p, std::views::iota(first, static_cast<int>(tris_.size())));
+  assign_among(p, FaceIndexRange{first, static_cast<int>(tris_.size())});
 }
 
 // assign over the faces listed (ascending; those no longer alive are passed over).
