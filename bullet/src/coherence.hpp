@@ -35,6 +35,8 @@
 
 namespace sepax::bullet {
 
+/// The kept face holds while B moved at most this fraction of the contact
+/// choice's tolerance (x kAbsTolerance x the smaller extent), dimensionless.
 inline constexpr double kKeepMotion = 0.5;
 /// Relative slack for the rounding of the posed images and of the double
 /// evaluations below (float images: a few units of 2^-24 of the coordinates).
