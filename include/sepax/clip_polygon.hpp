@@ -1,27 +1,17 @@
 // sepax/clip_polygon.hpp
 //
-// Sutherland-Hodgman clipping of a convex polygon against one plane, keeping
+// Sutherland-Hodgman clipping of a convex polygon (the incident face) against
+// one plane (a side plane of the reference face, contact_manifold.hpp), keeping
 // the part on the inner side (dot(normal, x) - offset <= 0), with the features
-// that made every output vertex.
-//
-// The polygon being clipped is the *incident* face; the planes are the side
-// planes of the *reference* face (contact_manifold.hpp).  Each vertex carries
-//   * id.a:  its feature on the reference side (Face = not cut yet, Edge(s) =
-//            on side plane s, Vertex(c) = the reference corner c),
-//   * id.b:  its feature on the incident side (Vertex(v), Edge(e), Face(G)),
-//   * the label of the segment from it to the next vertex: an incident edge,
-//     or a side plane of the reference face (the segment a previous clip
-//     created along that plane).
-// A cut of an incident edge e by side plane s gives {Edge(s), Edge(e)}; a cut
-// of a segment lying on side plane s' by side plane s gives the reference
-// corner between s' and s: {Vertex(c), Face(G)}.
-//
-// Arithmetic: the intersection parameter t = d_a / (d_a - d_b) is a quotient of
-// plane heights, so for exact T every output point is exact (no sqrt, no
-// rounding).  A vertex exactly on the plane is kept and produces no extra
-// intersection point, so exact clipping never duplicates a point; float
-// clipping can produce near-duplicates, which weld_polygon removes with a
-// tolerance the caller scales by the shapes' extent.
+// that made every output vertex (ClipVertex):
+//   * a cut of an incident edge e by side plane s gives {Edge(s), Edge(e)};
+//   * a cut of a segment lying on side plane s' by side plane s gives the
+//     reference corner between s' and s: {Vertex(c), Face(G)}.
+// For exact T every output point is exact (t = d_a / (d_a - d_b), a quotient of
+// plane heights) and never duplicated (a vertex exactly on the plane is kept
+// and makes no intersection point); float clipping can produce near-duplicates,
+// which weld_polygon removes with a tolerance the caller scales by the shapes'
+// extent.
 #pragma once
 
 #include "small_vector.hpp"
@@ -34,8 +24,16 @@
 
 namespace sepax {
 
+/// A vertex of the clipped polygon with the features that made it:
+///   * id.a:  its feature on the reference side (Face = not cut yet, Edge(s) =
+///            on side plane s, Vertex(c) = the reference corner c),
+///   * id.b:  its feature on the incident side (Vertex(v), Edge(e), Face(G)),
+///   * the label of the segment from it to the next vertex: an incident edge,
+///     or a side plane of the reference face (the segment a previous clip
+///     created along that plane).
 template <class T>
 struct ClipVertex {
+  /// The point, in the frame of the clipped polygon.
   Vec3<T> point;
   /// a: reference-side feature, b: incident-side feature.
   ContactFeatureId id;

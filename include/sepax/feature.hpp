@@ -9,18 +9,10 @@
 //   SideA:    a = edge of A,              b = support vertex of B
 //   SideB:    a = support vertex of A,    b = edge of B
 //
-// Side axes exist only when A and B are both flat (double-sided polygons):
-// the in-plane outward normal of a polygon edge, edge direction x face
-// normal.  For two polygons in one plane every 3D candidate axis above is the
-// common plane normal (separation 0), and the side axes are what separates
-// polygons with a gap between them (see best_axis.hpp, scan_side_axes).
-//
-// Tie-break rule (the same for every T and every SAT): among candidate axes
-// with exactly equal separation, the one whose feature comes first in
-//   FaceA (by face index)  <  FaceB (by face index)  <  EdgePair (by edge of A, then edge of B)
-//     <  SideA (by edge of A)  <  SideB (by edge of B)
-// wins.  The support vertex is not part of the order: it is a function of the
-// axis (the lowest-index vertex among the exactly deepest ones).
+// Side axes (only when A and B are both flat) are described on FeatureType;
+// the tie-break rule, the same for every T and every SAT, on precedes:
+// among exactly equal separations, FaceA < FaceB < EdgePair < SideA < SideB,
+// each by index.
 #pragma once
 
 #include <cstdint>
@@ -29,6 +21,12 @@
 
 namespace sepax {
 
+/// The kind of a candidate axis.  Side axes exist only when A and B are both
+/// flat (double-sided polygons): the in-plane outward normal of a polygon
+/// edge, edge direction x face normal.  For two polygons in one plane every 3D
+/// candidate axis is the common plane normal (separation 0), and the side axes
+/// are what separates polygons with a gap between them (see best_axis.hpp,
+/// scan_side_axes).
 enum class FeatureType : std::uint8_t { FaceA = 0, FaceB = 1, EdgePair = 2, SideA = 3, SideB = 4 };
 
 struct Feature {
@@ -60,7 +58,13 @@ struct Feature {
   }
 };
 
-/// True when x comes strictly before y in the tie-break order.
+/// True when x comes strictly before y in the tie-break order.  The rule (the
+/// same for every T and every SAT): among candidate axes with exactly equal
+/// separation, the one whose feature comes first in
+///   FaceA (by face index)  <  FaceB (by face index)  <  EdgePair (by edge of A, then edge of B)
+///     <  SideA (by edge of A)  <  SideB (by edge of B)
+/// wins.  The support vertex is not part of the order: it is a function of the
+/// axis (the lowest-index vertex among the exactly deepest ones).
 inline bool precedes(const Feature& x, const Feature& y) {
   return std::make_tuple(static_cast<int>(x.type), x.primary(), x.secondary()) <
          std::make_tuple(static_cast<int>(y.type), y.primary(), y.secondary());

@@ -3,26 +3,15 @@
 // GaussMapWalk: the per-hull data the traversal SAT (sat_traversal.hpp) walks
 // on, precomputed once per hull.  It depends only on the combinatorics of the
 // polyhedron (never on coordinates or on T), so one GaussMapWalk serves every
-// pose of a hull: a with_vertices() copy, or the exact image made by
-// convert_from(), has the same walk data.
-//
-// Contents (structure of arrays, all int):
-//   * vertex adjacency in CSR form: for vertex v, entries
-//     [adj_begin(v), adj_end(v)) hold one outgoing half-edge h of v each, the
-//     neighbour origin(h ^ 1) and the undirected edge h >> 1 -- the fan the
-//     hill climbs and the arc walk scan;
-//   * half-edge origin / face / next / prev (the face loops, for walking the
-//     vertices of one face);
-//   * a breadth-first order of the faces over face adjacency, with each face's
-//     parent in that tree (-1 for the root): the traversal computes a face's
-//     support vertex by hill-climbing from its parent's support vertex;
-//     that order cut into chunks that hold no face with its parent;
-//   * probe_count(V) probe vertices spread over the vertex graph (farthest
-//     point sampling by edge hops): before the traversal climbs for a face of
-//     the other shape, it looks for a probe below the best candidate so far,
-//     which prunes the face without a climb (sat_traversal.hpp, step 1).
-//     They are chosen from the graph alone, so they too are the same for
-//     every pose and number type.
+// pose of a hull and its exact image (convert_from()).  Contents (structure of
+// arrays, all int; each described on its member):
+//   * vertex adjacency in CSR form (the fan the hill climbs and the arc walk
+//     scan);
+//   * half-edge origin / face / next / prev (the face loops);
+//   * a breadth-first order of the faces over face adjacency with each face's
+//     parent, cut into chunks that hold no face with its parent;
+//   * probe_count(V) probe vertices spread over the vertex graph, which prune
+//     a face of the other shape without a climb.
 #pragma once
 
 #include <vector>
@@ -32,6 +21,23 @@
 
 namespace sepax {
 
+/// The traversal's walk data of one hull:
+///   * vertex adjacency in CSR form: for vertex v, entries
+///     [adj_begin(v), adj_end(v)) hold one outgoing half-edge h of v each, the
+///     neighbour origin(h ^ 1) and the undirected edge h >> 1 -- the fan the
+///     hill climbs and the arc walk scan;
+///   * half-edge origin / face / next / prev (the face loops, for walking the
+///     vertices of one face);
+///   * a breadth-first order of the faces over face adjacency, with each face's
+///     parent in that tree (-1 for the root): the traversal computes a face's
+///     support vertex by hill-climbing from its parent's support vertex;
+///     that order cut into chunks that hold no face with its parent;
+///   * probe_count(V) probe vertices spread over the vertex graph (farthest
+///     point sampling by edge hops): before the traversal climbs for a face of
+///     the other shape, it looks for a probe below the best candidate so far,
+///     which prunes the face without a climb (sat_traversal.hpp, step 1).
+///     They are chosen from the graph alone, so they too are the same for
+///     every pose and number type.
 class GaussMapWalk {
  public:
   GaussMapWalk() = default;

@@ -1,52 +1,18 @@
 // sepax/manifold_reduction.hpp
 //
-// reduce_contact_points: choose at most four of a face contact's points: the
-// deepest point, and the three others that maximise the area of the convex
-// hull of the four, seen along the contact normal.  Exact rule, deterministic:
-//
-//   1. d: the deepest point (smallest key).  Ties: the lowest index.
-//   2. The area objective of a set S of points is H(S) = the doubled area of
-//      conv(S) projected along `normal`, times |normal|:
-//        H(a, b, c)    = |T(a, b, c)|,                 T(a,b,c) = ((b-a) x (c-a)) . normal
-//        H(a, b, c, e) = (|T(abc)| + |T(abe)| + |T(ace)| + |T(bce)|) / 2
-//      The second formula is the hull area of ANY four points: in convex
-//      position the two diagonals split the quad into two pairs of triangles
-//      (the four areas sum to twice the quad); when one point lies in the
-//      triangle of the other three, the three triangles at it sum to the big
-//      one.  Products and sums only: exact for exact T, no sqrt.
-//   3. M4 = max H(d, a, b, c) over the triples of other points.  The chosen
-//      triple is the one with the lexicographically smallest sorted index
-//      triple among the maximal ones.
-//   4. Degenerate sets (only when more than 4 points were given):
-//        * M4 <= M3 + area_tol, M3 = max H(d, a, b) over pairs: a fourth point
-//          adds no area (every point lies on the boundary of the best triangle,
-//          e.g. duplicates): the best triangle (same tie rule);
-//        * M3 <= area_tol (all points on a line through d): d and the extreme
-//          points of the line (the point farthest from d, then the point
-//          farthest from that one unless d itself is as far: d is an end);
-//        * every point within sqrt(area_tol) of d: d alone.
-//   Up to 4 points are returned unchanged (all indices, in input order).
-//
-// Cost.  The clipped points of a face contact are a convex polygon in input
-// (clip) order, up to duplicates and collinear points.  When the points are in
-// weakly convex position in input order (checked exactly for exact T: every
-// turn and every fan triangle from d has the same sign or is zero), every
-// 4-subset d < j < k < l in cyclic order from d is a weakly convex quad with
-// H = T(d,j,k) + T(d,k,l) (oriented), and for a fixed middle vertex k the best
-// j in (d, k) and the best l in (k, d) are independent: an O(n^2) scan.
-// Otherwise (float rounding, or points not from a convex clip) an O(n^3) scan
-// of all triples with the general formula; n is small.  Both scans maximise the
-// same quantity and use the same tie rule, so they choose the same points.
-//
-// Float.  For float T pass key_tol / area_tol (relative to the shapes' extent,
-// tolerances.hpp): values within the tolerance of the maximum (minimum key)
-// count as ties and the tie rule decides, so rounding does not change a choice
-// between (nearly) equal candidates when a configuration is scaled.  For exact
-// T pass 0 for both: the maximum is exact.  Without a (near-)tie the float
-// choice is the exact choice on the same points.
-//
-// Output order: d first, then the others in cyclic input order after d (for a
-// convex polygon: the hull order of the kept quad).
+// reduce_contact_points: at most four of a face contact's points, by an exact,
+// deterministic rule (each step is explained on the function that does it):
+//   1. d, the deepest point (smallest key; ties: the lowest index);
+//   2. the three others that maximise H, the area of the hull of the four seen
+//      along the contact normal (contact_hull_area2; ties: the smallest sorted
+//      index triple);
+//   3. degenerate sets: the best triangle, the ends of a line, or d alone;
+//   4. the scan: O(n^2) when the points are in weakly convex order
+//      (weakly_convex_sequence), else O(n^3) over all triples; both find the
+//      same maximum with the same tie rule.
+// Up to four points are returned unchanged.  Float T takes near-tie tolerances
+// relative to the shapes' extent (tolerances.hpp); exact T takes 0 and is exact.
+// Output order: d first, then the others in cyclic input order after d.
 #pragma once
 
 #include <algorithm>
@@ -85,8 +51,15 @@ inline bool lex_less(std::array<int, 3> x, std::array<int, 3> y) {
 
 /// The reduction's area objective H of the points `idx` (2 to 4 indices into
 /// `points`): the doubled area of their convex hull seen along `normal`, times
-/// |normal| (see the header comment).  Exact for exact T.  Used by the tests
-/// and the fuzzer to evaluate a kept set.
+/// |normal|.  Exact for exact T.  Used by the tests and the fuzzer to evaluate
+/// a kept set.
+///   H(a, b, c)    = |T(a, b, c)|,                 T(a,b,c) = ((b-a) x (c-a)) . normal
+///   H(a, b, c, e) = (|T(abc)| + |T(abe)| + |T(ace)| + |T(bce)|) / 2
+/// The second formula is the hull area of ANY four points: in convex position
+/// the two diagonals split the quad into two pairs of triangles (the four
+/// areas sum to twice the quad); when one point lies in the triangle of the
+/// other three, the three triangles at it sum to the big one.  Products and
+/// sums only: exact for exact T, no sqrt.
 template <Number T>
 T contact_hull_area2(const std::vector<Vec3<T>>& points, const std::vector<int>& idx, const Vec3<T>& normal) {
   auto P = [&](std::size_t i) -> const Vec3<T>& { return points[static_cast<std::size_t>(idx[i])]; };
@@ -143,10 +116,44 @@ bool weakly_convex_sequence(const Points& points, const Seq& q, const Vec3<T>& n
   return true;
 }
 
-/// Indices (into `points`) of the kept points: the deepest first (see the
-/// header comment).  `keys[i]` orders depth: smaller = deeper.  `key_tol`,
-/// `area_tol`: float near-tie tolerances (a key, an H value); 0 for exact T.
-/// `force_general`: always use the O(n^3) scan (tests compare both scans).
+/// Indices (into `points`) of the kept points, the deepest first.  `keys[i]`
+/// orders depth: smaller = deeper.  `key_tol`, `area_tol`: float near-tie
+/// tolerances (a key, an H value); 0 for exact T.  `force_general`: always use
+/// the O(n^3) scan (tests compare both scans).
+///
+/// The rule:
+///   1. d: the deepest point (smallest key).  Ties: the lowest index.
+///   2. M4 = max H(d, a, b, c) over the triples of other points
+///      (contact_hull_area2).  The chosen triple is the one with the
+///      lexicographically smallest sorted index triple among the maximal ones.
+///   3. Degenerate sets (only when more than 4 points were given):
+///        * M4 <= M3 + area_tol, M3 = max H(d, a, b) over pairs: a fourth point
+///          adds no area (every point lies on the boundary of the best
+///          triangle, e.g. duplicates): the best triangle (same tie rule);
+///        * M3 <= area_tol (all points on a line through d): d and the extreme
+///          points of the line (the point farthest from d, then the point
+///          farthest from that one unless d itself is as far: d is an end);
+///        * every point within sqrt(area_tol) of d: d alone.
+///   Up to 4 points are returned unchanged (all indices, in input order).
+///
+/// Cost.  The clipped points of a face contact are a convex polygon in input
+/// (clip) order, up to duplicates and collinear points.  When the points are
+/// in weakly convex position in input order (checked exactly for exact T:
+/// every turn and every fan triangle from d has the same sign or is zero),
+/// every 4-subset d < j < k < l in cyclic order from d is a weakly convex quad
+/// with H = T(d,j,k) + T(d,k,l) (oriented), and for a fixed middle vertex k the
+/// best j in (d, k) and the best l in (k, d) are independent: an O(n^2) scan.
+/// Otherwise (float rounding, or points not from a convex clip) an O(n^3) scan
+/// of all triples with the general formula; n is small.  Both scans maximise
+/// the same quantity and use the same tie rule, so they choose the same points.
+///
+/// Float.  Values within key_tol / area_tol of the maximum (minimum key) count
+/// as ties and the tie rule decides, so rounding does not change a choice
+/// between (nearly) equal candidates when a configuration is scaled.  Without
+/// a (near-)tie the float choice is the exact choice on the same points.
+///
+/// Output order: d first, then the others in cyclic input order after d (for a
+/// convex polygon: the hull order of the kept quad).
 ///
 /// reduce_contact_points_into is the same with any containers: points and
 /// keys indexable with size(), out with clear() and push_back() (the kept

@@ -60,9 +60,10 @@ Vec3<T> exact_centre(std::span<const std::vector<Vec3<T>>> point_sets) {
 
 /// Whether points, moved by -c, are near enough to the origin for T to
 /// resolve them as a shape: their largest |coordinate| at most half of
-/// planarity * extent / (16 u), the bound beyond which the hull builder (and
-/// validation) cannot resolve a shape's planes (sepax/tolerances.hpp: about
-/// 40 extents for float, 2e5 for double).  Always true for exact T.
+/// planarity * extent / (kHullFarRounding u), the bound beyond which the hull
+/// builder (and validation) cannot resolve a shape's planes
+/// (sepax/tolerances.hpp: about 40 extents for float, 2e5 for double); the
+/// half leaves room for the coordinates' own rounding.  Always true for exact T.
 template <Number T>
 bool resolvable_around(const std::vector<Vec3<T>>& points, const Vec3<T>& c) {
   if constexpr (number_traits<T>::is_exact) {
@@ -80,7 +81,8 @@ bool resolvable_around(const std::vector<Vec3<T>>& points, const Vec3<T>& c) {
       }
     }
     const double extent = std::sqrt(squared_norm(Vec3<double>(hi - lo)));
-    return far <= Tolerances<T>::planarity / (32 * number_traits<T>::unit_roundoff) * extent;
+    return far <=
+           Tolerances<T>::planarity / (2 * kHullFarRounding * number_traits<T>::unit_roundoff) * extent;
   }
 }
 

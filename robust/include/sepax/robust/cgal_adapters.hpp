@@ -2,30 +2,15 @@
 //
 // ConvexPolyhedron<T>  <->  CGAL polygon meshes (CGAL::Surface_mesh<Point_3> and
 // CGAL::Polyhedron_3<K>), both directions, faces kept as polygons (no
-// triangulation), for any sepax number type T and any CGAL kernel K.
-//
-//   to_cgal_mesh<Mesh>(P)        a new Mesh (Surface_mesh<K::Point_3> or
-//                                Polyhedron_3<K>) with P's vertices in P's
-//                                order and one polygon per face of P, in P's
-//                                face order and loop order.
-//   from_cgal_mesh<T>(mesh)      ConvexPolyhedron<T>::from_faces on the mesh's
-//                                vertices and faces: validated, so a mesh that
-//                                is not a convex polyhedron with maximal faces
-//                                (e.g. a triangulated hull with coplanar
-//                                neighbours: use cgal_hull.hpp) gets
-//                                InvalidInput naming the problem.
-//
+// triangulation), for any sepax number type T and any CGAL kernel K:
+//   to_cgal_mesh<Mesh>(P)      P's vertices and faces, in P's order;
+//   from_cgal_mesh<T>(mesh)    ConvexPolyhedron<T>::from_faces (validated);
+//   convert_number<To>(x)      exact where the target can hold the value:
+//                              float/double -> anything, exact -> exact (through
+//                              GMP mpq, never through double); exact -> float /
+//                              double rounds to nearest.
 // A flat ConvexPolyhedron (double-sided polygon) becomes a two-face closed mesh
 // (the polygon and its reverse), which both CGAL meshes represent.
-//
-// Numbers (convert_number<To>(x)):
-//   * float/double -> anything: exact (every double is a rational).
-//   * exact -> exact (mpq_class, CGAL::Gmpq, CGAL::Lazy_exact_nt<ET> e.g.
-//     Epeck::FT, in any combination): exact, through the rational value
-//     (GMP mpq), never through double.
-//   * exact -> float/double: rounds to nearest (CGAL::to_double).  Allowed so
-//     that an exact mesh can be brought to a float ConvexPolyhedron, which is
-//     then validated in float with the tolerances of tolerances.hpp.
 #pragma once
 
 #include <CGAL/Gmpq.h>
@@ -104,7 +89,14 @@ To from_mpq(const mpq_class& q) {
   }
 }
 
-/// x as a To: exact unless To is float/double and x is not (see header).
+/// x as a To:
+///   * float/double -> anything: exact (every double is a rational);
+///   * exact -> exact (mpq_class, CGAL::Gmpq, CGAL::Lazy_exact_nt<ET> e.g.
+///     Epeck::FT, in any combination): exact, through the rational value
+///     (GMP mpq), never through double;
+///   * exact -> float/double: rounds to nearest (CGAL::to_double), so that an
+///     exact mesh can be brought to a float ConvexPolyhedron, which is then
+///     validated in float with the tolerances of tolerances.hpp.
 template <class To, class From>
 To convert_number(const From& x) {
   if constexpr (std::is_same_v<To, From>) {
@@ -126,7 +118,9 @@ template <class Mesh>
 using mesh_point_t = typename boost::property_traits<
     typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>::value_type;
 
-/// ConvexPolyhedron<T> -> Mesh (Surface_mesh<Point_3> or Polyhedron_3<K>).
+/// ConvexPolyhedron<T> -> Mesh (Surface_mesh<K::Point_3> or Polyhedron_3<K>):
+/// P's vertices in P's order and one polygon per face of P, in P's face order
+/// and loop order.
 template <class Mesh, Number T>
 Mesh to_cgal_mesh(const ConvexPolyhedron<T>& p) {
   using Point = mesh_point_t<Mesh>;
@@ -152,7 +146,10 @@ Mesh to_cgal_mesh(const ConvexPolyhedron<T>& p) {
   return m;
 }
 
-/// Mesh -> ConvexPolyhedron<T>, validated (throws InvalidInput).  Vertices in
+/// Mesh -> ConvexPolyhedron<T>, validated (throws InvalidInput): a mesh that
+/// is not a convex polyhedron with maximal faces (e.g. a triangulated hull
+/// with coplanar neighbours: use cgal_hull.hpp) gets InvalidInput naming the
+/// problem.  Vertices in
 /// the mesh's vertex order, faces in its face order, loops as in the mesh.
 template <Number T, class Mesh>
 ConvexPolyhedron<T> from_cgal_mesh(const Mesh& m) {

@@ -3,24 +3,16 @@
 // cgal::exact_hull<T, K>(points): the convex hull of a point set as a
 // validated ConvexPolyhedron<T>, computed with CGAL::convex_hull_3 in an exact
 // CGAL kernel K (default CGAL::Epeck), every decision exact:
-//
-//   1. points converted to K exactly (cgal_adapters.hpp: never through double
-//      for exact T); exact duplicates merged; fewer than 3 distinct points ->
-//      InvalidInput(TooFewPoints); all on one line -> InvalidInput(Collinear);
-//      NaN/infinity (float T) -> InvalidInput(NonFinite).
-//   2. all points exactly coplanar -> a flat double-sided polygon: the 2D hull
-//      (monotone chain, exact orientation tests, collinear boundary points
-//      dropped) in the projection that drops the normal's largest coordinate.
-//   3. otherwise CGAL::convex_hull_3 into a triangulated Surface_mesh; adjacent
-//      triangles that are exactly coplanar are merged into one face (maximal
-//      faces); each face's boundary loop is extracted; vertices left in the
-//      middle of an edge (exactly collinear with their loop neighbours) and
-//      vertices inside merged faces are removed.
+//   1. points converted to K exactly (never through double for exact T);
+//      exact duplicates merged; bad input refused (InvalidInput);
+//   2. all points exactly coplanar -> a flat double-sided polygon (2D hull);
+//   3. otherwise CGAL::convex_hull_3, exactly coplanar triangles merged into
+//      maximal faces, boundary loops extracted, collinear and interior
+//      vertices removed;
 //   4. ConvexPolyhedron<T>::from_faces on the ORIGINAL input coordinates of the
 //      surviving points (nothing is rounded or moved), so the result validates.
-//
 // For float/double T the combinatorics are those of the exact hull of the
-// float points (converted exactly), the output keeps the float coordinates.
+// float points (converted exactly); the output keeps the float coordinates.
 #pragma once
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -58,6 +50,20 @@ inline int find(std::vector<int>& parent, int x) {
 }
 }  // namespace hull_detail
 
+/// The steps of the header comment, in detail:
+///   1. points converted to K exactly (cgal_adapters.hpp: never through double
+///      for exact T); exact duplicates merged; fewer than 3 distinct points ->
+///      InvalidInput(TooFewPoints); all on one line -> InvalidInput(Collinear);
+///      NaN/infinity (float T) -> InvalidInput(NonFinite).
+///   2. all points exactly coplanar -> a flat double-sided polygon: the 2D hull
+///      (monotone chain, exact orientation tests, collinear boundary points
+///      dropped) in the projection that drops the normal's largest coordinate.
+///   3. otherwise CGAL::convex_hull_3 into a triangulated Surface_mesh; adjacent
+///      triangles that are exactly coplanar are merged into one face (maximal
+///      faces); each face's boundary loop is extracted; vertices left in the
+///      middle of an edge (exactly collinear with their loop neighbours) and
+///      vertices inside merged faces are removed.
+///   4. ConvexPolyhedron<T>::from_faces on the original input coordinates.
 template <Number T, class K = CGAL::Epeck>
 ConvexPolyhedron<T> exact_hull(const std::vector<Vec3<T>>& points) {
   using P3 = typename K::Point_3;

@@ -3,7 +3,8 @@
 // The robust kernel's error model, in one place (RobustKernel's filters use
 // nothing else):
 //   1. ErrorConstants<T>: u, η, γ_k (gamma<T>), the (1 + 1e-6) margin, as
-//      compile-time constants.
+//      compile-time constants (the notation and what the margin covers: on
+//      ErrorConstants).
 //   2. Per-shape terms: the padded extent D_P, the normal error δ_P
 //      (normal_error), the centroid error C_P (centroid_error).
 //   3. The bound of a unit axis fl(normalize(fl(e1 x e2))) from its ratio
@@ -12,17 +13,8 @@
 //   4. QueryBounds<T>: one named field per bound a query's filters compare
 //      with, each computed in O(1) from the two shapes' terms, its derivation
 //      on the field.
-// Notation: M_P max |coordinate| of P (exact); D_P bbox diagonal of P; D bbox
-// diagonal of A ∪ B (|p - q| <= D for any two vertices); N_f the exact cross
-// product of face f's plane triple, n_f its stored unit normal.
-// Every bound is computed in double and multiplied by the margin (1 + 1e-6),
-// which covers the rounding of the bound computation itself (relative
-// 1e-15), the (1 + γ_4) factors for float (relative 3e-7) and the absolute
-// underflow terms of the normalisation (<= √3 η / |Ñ| with |Ñ|^2 >= 2^40 times
-// the smallest normal T, far below 1e-6 γ_4; smaller cross products get no
-// bound: always exact).  Overflow or NaN anywhere in a bound makes it infinite
-// or the comparison false: the decision goes exact.  FMA contraction only
-// removes roundings, so every bound holds with and without it.
+// Every bound holds with and without FMA contraction (contraction only
+// removes roundings).
 #pragma once
 
 #include <bit>
@@ -113,6 +105,18 @@ T round_up(double x) {
 /// would have (√2 and √3 are the correctly rounded std::numbers constants,
 /// what std::sqrt(2.0) and std::sqrt(3.0) return).  Runtime code uses these
 /// members, never the expressions.
+///
+/// Notation: M_P max |coordinate| of P (exact); D_P bbox diagonal of P; D bbox
+/// diagonal of A ∪ B (|p - q| <= D for any two vertices); N_f the exact cross
+/// product of face f's plane triple, n_f its stored unit normal.
+/// Every bound is computed in double and multiplied by the margin (1 + 1e-6),
+/// which covers the rounding of the bound computation itself (relative
+/// 1e-15), the (1 + γ_4) factors for float (relative 3e-7) and the absolute
+/// underflow terms of the normalisation (<= √3 η / |Ñ| with |Ñ|^2 >= 2^40 times
+/// the smallest normal T, far below 1e-6 γ_4; smaller cross products get no
+/// bound: always exact).  Overflow or NaN anywhere in a bound makes it infinite
+/// or the comparison false: the decision goes exact.  FMA contraction only
+/// removes roundings, so every bound holds with and without it.
 template <RobustFloat T>
 struct ErrorConstants {
   /// u, the unit roundoff of T.

@@ -3,23 +3,16 @@
 // (P1) The exact sign of a 3x3 determinant of difference vectors
 //
 //     orient_sign(a0, a1, b0, b1, c0, c1) = sign det[a1 - a0, b1 - b0, c1 - c0]
-//                                         = sign (a1 - a0) . ((b1 - b0) x (c1 - c0))
 //
-// for float or double points.  orient3d(p, q, r, s) = sign det[q-p, r-p, s-p] is
-// the case a0 = b0 = c0.  Every sign the SATs decide reduces to this (face
-// heights N.(p - v_i) with N the plane triple's cross product, arc signs
-// N.(head - tail), edge separation signs (eA x eB).(pB - pA), projection
-// comparisons).
-//
-// Two stages:
-//   1. a semi-static filter in double (derivation below) that decides almost
-//      every call with ~30 flops;
+// for float or double points (orient3d(p, q, r, s) is the case a0 = b0 = c0).
+// Every sign the SATs decide reduces to this (face heights, arc signs, edge
+// separation signs, projection comparisons).  Two stages:
+//   1. a semi-static filter in double that decides almost every call with ~30
+//      flops (its derivation: sepax/orientation_filter.hpp, core, double only,
+//      shared with the hull's exact-type predicates);
 //   2. when the filter cannot decide, an exact evaluation with ExactFloat
 //      (exact_float.hpp) from the coordinates.
 // The result is exact for all finite inputs, with or without FMA contraction.
-//
-// The filter and its derivation: sepax/orientation_filter.hpp (core, double
-// only), shared with the hull's exact-type predicates.
 #pragma once
 
 #include <cmath>

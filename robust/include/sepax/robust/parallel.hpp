@@ -7,26 +7,14 @@
 // for float or double points (a zero-length direction is parallel to
 // everything, as the exact cross product says).  Three stages:
 //   1. a filter in double that proves the cross product NON-zero (the common
-//      answer) with ~25 flops (derivation below);
+//      answer) with ~25 flops;
 //   2. an exact test without multi-precision when every difference and every
 //      product is exact in double (error-free transformations: TwoSum for the
 //      differences, fma residuals for the products).  This decides the usual
 //      exactly-parallel inputs (boxes, prisms, axis-aligned edges) cheaply;
 //   3. otherwise the exact cross product in ExactFloat.
 //
-// ---- Filter derivation ------------------------------------------------------
-// u = 2^-53, round to nearest.  With A = a1 - a0, B = b1 - b0 exact and Ã, B̃ the
-// rounded differences, component x of the cross product is computed as
-//     c_x = fl(fl(Ã_y B̃_z) - fl(Ã_z B̃_y)).
-// Each of its two terms meets 2 roundings of differences, 1 of the product and
-// 1 of the subtraction (fewer when contracted to an fma):
-//     |c_x - (A x B)_x| <= γ_4 Q_x,   Q_x = |A_y B_z| + |A_z B_y|.
-// The computed Q̃_x (rounded differences, 2 products, 1 addition, all terms
-// >= 0) satisfies Q̃_x >= (1-u)^4 Q_x, so the error is <= 4u(1+9u) Q̃_x.  The
-// bound fl(5u Q̃_x + g) (<= 2 roundings down) exceeds 4u(1+9u)Q̃_x + g(1-u)^2.
-// Underflow: each product may lose <= η/2 (η = 2^-1074), <= η per component;
-// g = 2^-1070 = 16η covers it.  If |c_x| > bound for some x, then (A x B)_x != 0.
-// Overflow or NaN make every comparison false: stages 2-3 decide.
+// The filter's bound is derived on parallel_filter_maybe.
 #pragma once
 
 #include <cmath>
@@ -66,6 +54,20 @@ inline bool product_is_exact(double x, double y, double& p) {
 
 /// Stage 1: returns false ("certainly not parallel") or kUncertain-style true
 /// ("could be parallel").  Exposed for tests.
+///
+/// Derivation of the bound (kParallelRel, kParallelUnderflow):
+/// u = 2^-53, round to nearest.  With A = a1 - a0, B = b1 - b0 exact and Ã, B̃ the
+/// rounded differences, component x of the cross product is computed as
+///     c_x = fl(fl(Ã_y B̃_z) - fl(Ã_z B̃_y)).
+/// Each of its two terms meets 2 roundings of differences, 1 of the product and
+/// 1 of the subtraction (fewer when contracted to an fma):
+///     |c_x - (A x B)_x| <= γ_4 Q_x,   Q_x = |A_y B_z| + |A_z B_y|.
+/// The computed Q̃_x (rounded differences, 2 products, 1 addition, all terms
+/// >= 0) satisfies Q̃_x >= (1-u)^4 Q_x, so the error is <= 4u(1+9u) Q̃_x.  The
+/// bound fl(5u Q̃_x + g) (<= 2 roundings down) exceeds 4u(1+9u)Q̃_x + g(1-u)^2.
+/// Underflow: each product may lose <= η/2 (η = 2^-1074), <= η per component;
+/// g = 2^-1070 = 16η covers it.  If |c_x| > bound for some x, then (A x B)_x != 0.
+/// Overflow or NaN make every comparison false: stages 2-3 decide.
 inline bool parallel_filter_maybe(const double a[3], const double b[3]) {
   const double pyz = a[1] * b[2], pzy = a[2] * b[1];
   const double pzx = a[2] * b[0], pxz = a[0] * b[2];

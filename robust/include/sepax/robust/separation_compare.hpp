@@ -1,33 +1,19 @@
 // sepax/robust/separation_compare.hpp
 //
-// (P3) Exact separations and their exact comparison.
-//
-// A candidate axis' separation is num / sqrt(norm2) with num and norm2
-// polynomials in the input coordinates (separation.hpp):
+// (P3) Exact separations and their exact comparison, in three stages:
+//   1. the robust kernel compares its float/double separation values with a
+//      per-feature error bound (robust_kernel_values.hpp) and comes here only
+//      when two candidates are closer than the bounds;
+//   2. compare_interval: the same polynomials in interval arithmetic;
+//   3. compare_exact: the polynomials in ExactFloat, compared without sqrt or
+//      division (compare_by_signs).
+// A separation is num / sqrt(norm2) (separation.hpp):
 //   face f (plane triple p0, p1, p2) against point p:
 //       N = (p1 - p0) x (p2 - p0),  num = N . (p - p0),  norm2 = |N|^2
 //   edge pair (eA = hA - tA, eB = hB - tB), orientation sigma = +-1:
 //       n = eA x eB,  num = sigma * n . (pB - pA),  norm2 = |n|^2
-// ExactSeparation holds them exactly (ExactFloat, exact_float.hpp), and
-// compare_exact orders two of them exactly without sqrt or division:
-//   signs first; equal non-zero signs: num1^2 * norm2_2  vs  num2^2 * norm2_1,
-//   reversed when both are negative.
-// This is the same rule as sepax::compare for rationals, so a decision made
-// here is the decision PlainKernel<mpq_class> makes on the same values.
-//
-// The filter for (P3) lives where the approximate values already exist: the
-// robust kernel compares its float/double separation values with a
-// per-feature error bound (robust_kernel.hpp) and only comes here when the two
-// candidates are closer than the bounds.
-//
-// Stage 2, before the exact stage: the same num and norm2 in interval
-// arithmetic (compare_interval).  The kernel's bounds are per shape pair and
-// sized for the worst-conditioned face (about 1e-5 of the shapes' size for
-// float hulls of random points), so two distinct candidates closer than that
-// reach here now and then (1 to 2 queries in 64 on sphere16 hulls); their
-// intervals, of width about 1e-15 of the values, separate them without GMP.
-// Only exact ties (and values whose intervals overflow or underflow) go on
-// to the exact stage.
+// The rule is sepax::compare's for rationals, so a decision made here is the
+// decision PlainKernel<mpq_class> makes on the same values.
 #pragma once
 
 #include <CGAL/FPU.h>
@@ -70,7 +56,9 @@ inline int compare_by_signs(const SeparationPoly<N>& a, const SeparationPoly<N>&
   return sa > 0 ? mag : -mag;
 }
 
-/// -1, 0, +1 as a < b, a == b, a > b (as real numbers num / sqrt(norm2)).
+/// Stage 3: -1, 0, +1 as a < b, a == b, a > b (as real numbers
+/// num / sqrt(norm2)), exactly: signs first; equal non-zero signs:
+/// num1^2 * norm2_2  vs  num2^2 * norm2_1, reversed when both are negative.
 /// Requires norm2 > 0 for both.
 inline int compare_exact(const ExactSeparation& a, const ExactSeparation& b) {
   return compare_by_signs(a, b, [](const ExactFloat& x) { return exact_sign(x); });
@@ -96,7 +84,13 @@ inline SeparationPoly<N> edge_separation_poly(const Vec3<F>& ta, const Vec3<F>& 
   return {num, exact_dot(n, n)};
 }
 
-/// Stage 2: compare_exact's rule on enclosures.  make_a and make_b build the
+/// Stage 2: compare_exact's rule on enclosures.  The kernel's bounds are per
+/// shape pair and sized for the worst-conditioned face (about 1e-5 of the
+/// shapes' size for float hulls of random points), so two distinct candidates
+/// closer than that reach here now and then (1 to 2 queries in 64 on sphere16
+/// hulls); their intervals, of width about 1e-15 of the values, separate them
+/// without GMP.  Only exact ties (and values whose intervals overflow or
+/// underflow) go on to the exact stage.  make_a and make_b build the
 /// two IntervalSeparations (face_separation_poly / edge_separation_poly with
 /// N = IntervalFloat); they run inside the rounding scope opened here.
 /// Returns -1, 0, +1 only when the enclosures decide (0 only when both
