@@ -25,7 +25,7 @@ namespace sepax::fuzz {
 
 std::int64_t Report::unexplained() const {
   std::int64_t n = 0;
-  for (const auto& [k, c] : comparisons) n += c[Klass::unexplained];
+  for (const auto& [k, c] : comparisons) n += c[Classification::unexplained];
   return n;
 }
 
@@ -77,11 +77,11 @@ std::string write_reproducer(const std::string& dir, const FuzzCase& c, const Ca
 
 namespace {
 
-// Counts as {"agree": n, "exact_zero": n, ...} in Klass order.
+// Counts as {"agree": n, "exact_zero": n, ...} in Classification order.
 nlohmann::ordered_json counts_json(const Counts& c) {
   nlohmann::ordered_json o = nlohmann::ordered_json::object();
-  for (int k = 0; k < kKlassCount; ++k)
-    o[klass_name(static_cast<Klass>(k))] = c.n[static_cast<std::size_t>(k)];
+  for (int k = 0; k < kClassificationCount; ++k)
+    o[classification_name(static_cast<Classification>(k))] = c.n[static_cast<std::size_t>(k)];
   return o;
 }
 
@@ -165,10 +165,12 @@ void print_text(std::ostream& out, const Report& r) {
     out << line;
     for (const auto& [name, c] : m) {
       std::snprintf(line, sizeof line, "  %-30s %12lld %10lld %10lld %8lld %11lld %9lld\n", name.c_str(),
-                    static_cast<long long>(c[Klass::agree]), static_cast<long long>(c[Klass::exact_zero]),
-                    static_cast<long long>(c[Klass::explained]), static_cast<long long>(c[Klass::tie]),
-                    static_cast<long long>(c[Klass::unexplained]),
-                    static_cast<long long>(c[Klass::nonconvex]));
+                    static_cast<long long>(c[Classification::agree]),
+                    static_cast<long long>(c[Classification::exact_zero]),
+                    static_cast<long long>(c[Classification::explained]),
+                    static_cast<long long>(c[Classification::tie]),
+                    static_cast<long long>(c[Classification::unexplained]),
+                    static_cast<long long>(c[Classification::nonconvex]));
       out << line;
     }
   };

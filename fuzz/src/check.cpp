@@ -25,19 +25,19 @@
 
 namespace sepax::fuzz {
 
-const char* klass_name(Klass k) {
+const char* classification_name(Classification k) {
   switch (k) {
-    case Klass::agree:
+    case Classification::agree:
       return "agree";
-    case Klass::exact_zero:
+    case Classification::exact_zero:
       return "exact_zero";
-    case Klass::explained:
+    case Classification::explained:
       return "explained";
-    case Klass::tie:
+    case Classification::tie:
       return "tie";
-    case Klass::unexplained:
+    case Classification::unexplained:
       return "unexplained";
-    case Klass::nonconvex:
+    case Classification::nonconvex:
       return "nonconvex";
   }
   return "?";
@@ -116,31 +116,31 @@ bool close(const Separation<Q>& x, const Separation<Q>& y, double bound) {
   return sign_sep_diff(x, y, b) <= 0 && sign_sep_diff(y, x, b) <= 0;
 }
 
-Klass classify_sign(int float_sign, const ExactSep& exact, double bound, bool exact_decisions) {
+Classification classify_sign(int float_sign, const ExactSep& exact, double bound, bool exact_decisions) {
   const int es = sign(exact);
-  if (float_sign == es) return Klass::agree;
-  if (exact_decisions) return Klass::unexplained;
-  if (es == 0) return Klass::exact_zero;
-  return within(0.0, exact, bound) ? Klass::explained : Klass::unexplained;
+  if (float_sign == es) return Classification::agree;
+  if (exact_decisions) return Classification::unexplained;
+  if (es == 0) return Classification::exact_zero;
+  return within(0.0, exact, bound) ? Classification::explained : Classification::unexplained;
 }
 
-Klass classify_overlap(bool float_overlap, bool exact_overlap, const ExactSep& exact_max, double bound,
-                       bool exact_decisions) {
-  if (float_overlap == exact_overlap) return Klass::agree;
-  if (exact_decisions) return Klass::unexplained;
-  if (sign(exact_max) == 0) return Klass::exact_zero;
-  return within(0.0, exact_max, bound) ? Klass::explained : Klass::unexplained;
+Classification classify_overlap(bool float_overlap, bool exact_overlap, const ExactSep& exact_max,
+                                double bound, bool exact_decisions) {
+  if (float_overlap == exact_overlap) return Classification::agree;
+  if (exact_decisions) return Classification::unexplained;
+  if (sign(exact_max) == 0) return Classification::exact_zero;
+  return within(0.0, exact_max, bound) ? Classification::explained : Classification::unexplained;
 }
 
-Klass classify_separation(double sf, const ExactSep& exact_max, bool same_axis, double bf, double be,
-                          bool exact_decisions) {
-  if (cmp_rational_sep(mpq_class(sf), exact_max) == 0) return Klass::agree;
+Classification classify_separation(double sf, const ExactSep& exact_max, bool same_axis, double bf, double be,
+                                   bool exact_decisions) {
+  if (cmp_rational_sep(mpq_class(sf), exact_max) == 0) return Classification::agree;
   if (same_axis) {
-    if (!within(sf, exact_max, bf)) return Klass::unexplained;
-    return sign(exact_max) == 0 ? Klass::exact_zero : Klass::explained;
+    if (!within(sf, exact_max, bf)) return Classification::unexplained;
+    return sign(exact_max) == 0 ? Classification::exact_zero : Classification::explained;
   }
-  if (exact_decisions) return Klass::unexplained;
-  return within(sf, exact_max, bf + be) ? Klass::tie : Klass::unexplained;
+  if (exact_decisions) return Classification::unexplained;
+  return within(sf, exact_max, bf + be) ? Classification::tie : Classification::unexplained;
 }
 
 namespace {
@@ -165,7 +165,7 @@ struct Exact {
   // plane through its plane triple, every vertex on or below every face)?
   // When it is not, each SAT is checked against the exact run of the same
   // SAT (ref_by_sat, filled by the mpq pass), and cross-SAT differences are
-  // classified Klass::nonconvex (see check.hpp).
+  // classified Classification::nonconvex (see check.hpp).
   bool convex = true;
   std::array<std::optional<SatResult<Q>>, 3> ref_by_sat;
 
@@ -517,7 +517,7 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
     own = exact_value(E, sat, ff);
   }
   if (!within(sf, *own, bf)) return fail("its value is outside its bound of its feature's exact value");
-  if (classify_overlap(r.overlap, sign(*own) <= 0, *own, bf, false) == Klass::unexplained)
+  if (classify_overlap(r.overlap, sign(*own) <= 0, *own, bf, false) == Classification::unexplained)
     return fail("its overlap verdict is not the one its feature's value implies");
   // (ii) and (iii), candidate by candidate
   std::string bad;
@@ -624,18 +624,18 @@ void check_margins(const FloatSide<F>& S, Sat sat, const SatResult<F>& full, con
     const SatResult<F> r = run_sat<Policy>(sat, S.A, S.B, o);
     const Q qm(m);
     const bool exact_beyond = cmp_rational_sep(qm, R.separation) < 0;  // exact max separation > m
-    Klass k = Klass::agree;
+    Classification k = Classification::agree;
     std::string why;
     if (!r.early_out) {
       if (!same_bits(r, full)) {
-        k = Klass::unexplained;
+        k = Classification::unexplained;
         why = "without an early exit the result is not the full result";
       } else if (exact_beyond) {
         // it found no axis beyond the margin, exact arithmetic has one
-        k = exact_decisions ? Klass::unexplained
+        k = exact_decisions ? Classification::unexplained
             : close(R.separation, Separation<Q>{qm, Q(1)}, S.bound(sat, full.feature) + be)
-                ? Klass::explained
-                : Klass::unexplained;
+                ? Classification::explained
+                : Classification::unexplained;
         why = "no early exit, but the exact maximum separation is beyond the margin";
       }
     } else {
@@ -643,24 +643,24 @@ void check_margins(const FloatSide<F>& S, Sat sat, const SatResult<F>& full, con
       const double bf = S.bound(sat, r.feature);
       const bool exact_feature_beyond = cmp_rational_sep(qm, xf) < 0;
       if (r.overlap) {
-        k = Klass::unexplained;
+        k = Classification::unexplained;
         why = "an early exit that reports overlap";
       } else if (exact_decisions) {
         if (!exact_feature_beyond || !exact_beyond) {
-          k = Klass::unexplained;
+          k = Classification::unexplained;
           why = "an early exit at a feature whose exact separation is not beyond the margin";
         }
       } else if (!(r.separation_as_double() > m)) {
-        k = Klass::unexplained;
+        k = Classification::unexplained;
         why = "an early exit whose float separation is not beyond the margin";
       } else if (r.feature == full.feature && same_bits(r.separation, full.separation)) {
         // the full result's feature and value: classified by the feature and
         // separation comparisons (its own decisions included)
       } else if (!plain_value_within(S, sat, r.feature, r.separation_as_double(), xf, bf)) {
-        k = Klass::unexplained;
+        k = Classification::unexplained;
         why = "an early exit whose float separation is not within its bound of its feature's exact value";
       } else if (!exact_feature_beyond) {
-        k = Klass::explained;  // the float value is beyond, the exact one within its bound of it
+        k = Classification::explained;  // the float value is beyond, the exact one within its bound of it
       }
     }
     rec.add("margin", cfg, sat_name(sat), cls(k), [&] {
@@ -693,7 +693,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
         const ArcSigns& es = E.arcs[static_cast<std::size_t>(ea * EB + eb)];
         const int f4[4] = {fs.cba, fs.dba, fs.adc, fs.bdc};
         const int e4[4] = {es.cba, es.dba, es.adc, es.bdc};
-        Klass worst = Klass::agree;
+        Classification worst = Classification::agree;
         for (int i = 0; i < 4; ++i) {
           if (f4[i] == e4[i]) {
             ++agree_signs;
@@ -712,7 +712,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
               bounds::arc_bound<F>(nf, df, (b_normal ? S.deltaB : S.deltaA)[static_cast<std::size_t>(face)]);
           // adc and bdc are negated dot products (sat_kernel.hpp)
           const Q signed_te = b_normal ? te : Q(-te);
-          const Klass k2 =
+          const Classification k2 =
               classify_sign(f4[i], Separation<Q>{signed_te, squared_norm(Ne)}, bnd, exact_decisions);
           worst = std::max(worst, k2);
           rec.add("arc_sign", cfg, "kernel", k2, [&] {
@@ -727,8 +727,8 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
         if (fs.minkowski_face() == es.minkowski_face()) {
           ++agree_verdicts;
         } else {
-          if (worst == Klass::agree)
-            worst = Klass::unexplained;  // cannot happen: verdict is a function of the signs
+          if (worst == Classification::agree)
+            worst = Classification::unexplained;  // cannot happen: verdict is a function of the signs
           rec.add("minkowski_face", cfg, "kernel", worst, [&] {
             std::ostringstream s;
             s << "edge pair (" << ea << "," << eb << "): " << cfg << " says "
@@ -748,21 +748,21 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
           ++agree_sides;
           continue;
         }
-        const Klass ks = exact_decisions                  ? Klass::unexplained
-                         : S.orientation_may_flip(ea, eb) ? Klass::explained
-                                                          : Klass::unexplained;
+        const Classification ks = exact_decisions                  ? Classification::unexplained
+                                  : S.orientation_may_flip(ea, eb) ? Classification::explained
+                                                                   : Classification::unexplained;
         rec.add("axis_side", cfg, "kernel", ks, [&] {
           std::ostringstream s;
           s << "edge pair (" << ea << "," << eb << "): " << cfg
             << " orients the edge axis the other way from exact arithmetic"
-            << (ks == Klass::explained ? ", within the bound (8)" : ", outside the bound (8)");
+            << (ks == Classification::explained ? ", within the bound (8)" : ", outside the bound (8)");
           return s.str();
         });
       }
     }
-    rec.add("arc_sign", cfg, "kernel", Klass::agree, nullptr, agree_signs);
-    rec.add("minkowski_face", cfg, "kernel", Klass::agree, nullptr, agree_verdicts);
-    rec.add("axis_side", cfg, "kernel", Klass::agree, nullptr, agree_sides);
+    rec.add("arc_sign", cfg, "kernel", Classification::agree, nullptr, agree_signs);
+    rec.add("minkowski_face", cfg, "kernel", Classification::agree, nullptr, agree_verdicts);
+    rec.add("axis_side", cfg, "kernel", Classification::agree, nullptr, agree_sides);
   }
   // ---- every SAT ----
   for (Sat sat : all_sats()) {
@@ -779,7 +779,9 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     const Feature& fe = R.feature;
     const Separation<Q>& se = R.separation;
     const bool crosses = E.cross_sat(sat);
-    auto cls = [crosses](Klass k) { return (crosses && k == Klass::unexplained) ? Klass::nonconvex : k; };
+    auto cls = [crosses](Classification k) {
+      return (crosses && k == Classification::unexplained) ? Classification::nonconvex : k;
+    };
     SatResult<F> r = run_sat<Policy>(sat, A, B);
     if (opt.inject_fault && exact_decisions && sat == Sat::gauss_map && std::is_same_v<F, float>)
       r.overlap = !r.overlap;  // CheckOptions::inject_fault
@@ -791,11 +793,11 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     const Separation<Q> xf = exact_value(E, sat, ff);
     // The usual rules first: the float measured what exact arithmetic
     // measured, every value within its bound.
-    Klass ko = classify_overlap(r.overlap, R.overlap, se, bf + be, exact_decisions);
-    Klass kf = Klass::agree;
+    Classification ko = classify_overlap(r.overlap, R.overlap, se, bf + be, exact_decisions);
+    Classification kf = Classification::agree;
     if (!(ff == fe)) {
       if (exact_decisions) {
-        kf = Klass::unexplained;
+        kf = Classification::unexplained;
       } else if (same_axis(ff, fe) && (ff.type == FeatureType::SideA || ff.type == FeatureType::SideB)) {
         // same side axis, different support vertex: their exact heights
         const bool on_a = ff.type == FeatureType::SideA;
@@ -804,7 +806,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
         const CPQ& q = on_a ? E.B : E.A;
         const Separation<Q> h1 = exact_side_height(p, e, q, on_a ? ff.b : ff.a);
         const Separation<Q> h2 = exact_side_height(p, e, q, on_a ? fe.b : fe.a);
-        kf = close(h1, h2, 2 * bf) ? Klass::tie : Klass::unexplained;
+        kf = close(h1, h2, 2 * bf) ? Classification::tie : Classification::unexplained;
       } else if (same_axis(ff, fe)) {
         // same face, different support vertex: compare the two vertices' exact heights
         const bool on_a = ff.type == FeatureType::FaceA;
@@ -812,12 +814,12 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
             on_a ? E.k->face_separation_a(ff.a, ff.b) : E.k->face_separation_b(ff.b, ff.a);
         const Separation<Q> h2 =
             on_a ? E.k->face_separation_a(fe.a, fe.b) : E.k->face_separation_b(fe.b, fe.a);
-        kf = close(h1, h2, 2 * bf) ? Klass::tie : Klass::unexplained;
+        kf = close(h1, h2, 2 * bf) ? Classification::tie : Classification::unexplained;
       } else {
-        kf = close(xf, se, bf + be) ? Klass::tie : Klass::unexplained;
+        kf = close(xf, se, bf + be) ? Classification::tie : Classification::unexplained;
       }
     }
-    Klass ks = classify_separation(sf, se, same_axis(ff, fe), bf, be, exact_decisions);
+    Classification ks = classify_separation(sf, se, same_axis(ff, fe), bf, be, exact_decisions);
     // Then, for a plain run, its kernel's own decisions (decision_check): a
     // difference that follows from decisions each within its band is explained.
     // When its kernel did not measure the exact winner as exact arithmetic
@@ -831,12 +833,13 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
           k.edges_parallel(fe.a, fe.b) || (sat != Sat::brute_force && orientation_flipped(k, E, fe));
     }
     std::optional<DecisionCheck> dc;
-    if (!exact_decisions && (winner_unmeasured || ko == Klass::unexplained || kf == Klass::unexplained ||
-                             ks == Klass::unexplained)) {
+    if (!exact_decisions && (winner_unmeasured || ko == Classification::unexplained ||
+                             kf == Classification::unexplained || ks == Classification::unexplained)) {
       dc = decision_check<F, Policy>(S, sat, r, bf);
-      const Klass by_decisions = dc->ok ? Klass::explained : Klass::unexplained;
-      for (Klass* k : {&ko, &kf, &ks})
-        if (*k == Klass::unexplained || (winner_unmeasured && *k != Klass::agree)) *k = by_decisions;
+      const Classification by_decisions = dc->ok ? Classification::explained : Classification::unexplained;
+      for (Classification* k : {&ko, &kf, &ks})
+        if (*k == Classification::unexplained || (winner_unmeasured && *k != Classification::agree))
+          *k = by_decisions;
     }
     auto describe = [&](const char* what) {
       return [&, what] {
@@ -886,7 +889,9 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
       same = same && sepax::compare(r.separation, R.separation) == 0;
       if (!E.convex) E.ref_by_sat[static_cast<std::size_t>(sat)] = r;
     }
-    const Klass k = same ? Klass::agree : (!E.convex && crosses) ? Klass::nonconvex : Klass::unexplained;
+    const Classification k = same                     ? Classification::agree
+                             : (!E.convex && crosses) ? Classification::nonconvex
+                                                      : Classification::unexplained;
     rec.add("exact", cfg, sat_name(sat), k, [&] {
       std::ostringstream s;
       s << cfg << " " << sat_name(sat) << ": overlap=" << r.overlap << " feature " << to_string(r.feature)
@@ -1045,8 +1050,8 @@ CaseReport check_case_guarded(const FuzzCase& c, const CheckOptions& opt) {
     // check_case as a rejection): a finding like an unexplained disagreement.
     CaseReport r;
     r.valid = true;
-    r.by_comparison["internal_error"].add(Klass::unexplained);
-    r.by_config["internal_error/-"].add(Klass::unexplained);
+    r.by_comparison["internal_error"].add(Classification::unexplained);
+    r.by_config["internal_error/-"].add(Classification::unexplained);
     r.unexplained.push_back({"internal_error", "-", "-", std::string("exception: ") + e.what()});
     r.unexplained_count = 1;
     return r;

@@ -329,16 +329,16 @@ struct Recorder {
   CaseReport& rep;
   const CheckOptions& opt;
   int kept = 0;
-  void aspect(const std::string& name, Klass k) { rep.details["manifold." + name].add(k); }
+  void aspect(const std::string& name, Classification k) { rep.details["manifold." + name].add(k); }
   void ratio(const std::string& name, double r) {
     if (!std::isfinite(r)) return;
     double& m = rep.maxima["manifold." + name];
     m = std::max(m, r);
   }
-  void final(const std::string& cfg, Klass k, const std::function<std::string()>& detail) {
+  void final(const std::string& cfg, Classification k, const std::function<std::string()>& detail) {
     rep.by_comparison["manifold"].add(k);
     rep.by_config["manifold/" + cfg].add(k);
-    if (k == Klass::unexplained) {
+    if (k == Classification::unexplained) {
       ++rep.unexplained_count;
       if (kept++ < opt.max_findings) rep.unexplained.push_back({"manifold", cfg, "gauss_map", detail()});
     }
@@ -417,7 +417,7 @@ struct FloatCheck {
     return kInf;
   }
 
-  Klass run(const SatResult<F>& r) {
+  Classification run(const SatResult<F>& r) {
     const ContactManifold<Q>& me = E.all;
     ManifoldOptions all_opt;
     all_opt.reduce = false;
@@ -428,20 +428,20 @@ struct FloatCheck {
       const double b = sat_bound(r.feature);
       why << "one manifold is empty: " << cfg << " " << mf.size() << " points, exact " << me.size()
           << " (exact separation " << num(to_double(E.sat.separation)) << ", bound " << num(b) << ")";
-      Klass k = sign(E.sat.separation) == 0        ? Klass::exact_zero
-                : within(0.0, E.sat.separation, b) ? Klass::explained
-                                                   : Klass::unexplained;
+      Classification k = sign(E.sat.separation) == 0        ? Classification::exact_zero
+                         : within(0.0, E.sat.separation, b) ? Classification::explained
+                                                            : Classification::unexplained;
       rec.aspect("points", k);
       return k;
     }
     if (mf.empty()) {
-      rec.aspect("points", Klass::agree);
-      return Klass::agree;
+      rec.aspect("points", Classification::agree);
+      return Classification::agree;
     }
     if (mf.kind != me.kind) {
       why << "kind " << to_string(mf.kind) << " vs exact " << to_string(me.kind);
-      rec.aspect("points", Klass::unexplained);
-      return Klass::unexplained;
+      rec.aspect("points", Classification::unexplained);
+      return Classification::unexplained;
     }
     if (mf.kind == ContactKind::Edge) return edge(r, mf);
     if (mf.kind == ContactKind::Face) return face(mf, mr);
@@ -451,43 +451,44 @@ struct FloatCheck {
   // ---- a contact kind this comparison has no bounds for (e.g. a side
   // contact of coplanar polygons): ids and count only; a difference is
   // exact_zero when the exact SAT separation is exactly 0, else unexplained.
-  Klass other_kind(const ContactManifold<F>& mf) {
+  Classification other_kind(const ContactManifold<F>& mf) {
     const auto& me = E.all;
-    rec.rep.details["manifold.values_not_compared"].add(Klass::agree);
+    rec.rep.details["manifold.values_not_compared"].add(Classification::agree);
     bool same = mf.size() == me.size();
     for (int i = 0; same && i < mf.size(); ++i)
       same = mf.points[static_cast<std::size_t>(i)].id == me.points[static_cast<std::size_t>(i)].id;
     if (same) {
-      rec.aspect("points", Klass::agree);
-      return Klass::agree;
+      rec.aspect("points", Classification::agree);
+      return Classification::agree;
     }
     why << to_string(mf.kind) << " contact ids " << ids_string(mf) << " vs exact " << ids_string(me);
-    const Klass k = sign(E.sat.separation) == 0 ? Klass::exact_zero : Klass::unexplained;
+    const Classification k =
+        sign(E.sat.separation) == 0 ? Classification::exact_zero : Classification::unexplained;
     rec.aspect("points", k);
     return k;
   }
 
   // ---- edge contact (M7) ----
-  Klass edge(const SatResult<F>& r, const ContactManifold<F>& mf) {
+  Classification edge(const SatResult<F>& r, const ContactManifold<F>& mf) {
     const auto& me = E.all;
     if (mf.size() != 1 || me.size() != 1 || !(mf.points[0].id == me.points[0].id)) {
       why << "edge contact ids " << ids_string(mf) << " vs exact " << ids_string(me);
-      rec.aspect("points", Klass::unexplained);
-      return Klass::unexplained;
+      rec.aspect("points", Classification::unexplained);
+      return Classification::unexplained;
     }
-    rec.aspect("points", Klass::agree);
+    rec.aspect("points", Classification::agree);
     const auto& c = mf.points[0];
     const auto& ce = me.points[0];
     // depth: the SAT separation
     const double bs = sat_bound(r.feature);
     const double sf = to_double(c.separation);
-    Klass k = Klass::agree;
+    Classification k = Classification::agree;
     const bool depth_ok = within(sf, ce.separation, bs);
-    rec.aspect("depth", depth_ok ? Klass::agree : Klass::unexplained);
+    rec.aspect("depth", depth_ok ? Classification::agree : Classification::unexplained);
     if (!depth_ok) {
       why << "edge contact depth " << num(-sf) << " vs exact " << num(-to_double(ce.separation)) << " bound "
           << num(bs) << "; ";
-      k = Klass::unexplained;
+      k = Classification::unexplained;
     }
     // position
     const int ea = r.feature.a, eb = r.feature.b;
@@ -523,17 +524,17 @@ struct FloatCheck {
     const bool pos_ok = !std::isfinite(ex) || d2 <= Q(ex) * Q(ex);
     rec.ratio("position", std::sqrt(d2.get_d()) / ex);
     rec.ratio("depth", std::abs(sf - to_double(ce.separation)) / bs);
-    rec.aspect("position", pos_ok ? Klass::agree : Klass::unexplained);
+    rec.aspect("position", pos_ok ? Classification::agree : Classification::unexplained);
     if (!pos_ok) {
       why << "edge contact position error " << num(std::sqrt(d2.get_d())) << " > bound " << num(ex);
-      k = Klass::unexplained;
+      k = Classification::unexplained;
     }
-    rec.aspect("reduction", Klass::agree);
+    rec.aspect("reduction", Classification::agree);
     return k;
   }
 
   // ---- face contact (M1)-(M6), (M8) ----
-  Klass face(const ContactManifold<F>& mf, const ContactManifold<F>& mr) {
+  Classification face(const ContactManifold<F>& mf, const ContactManifold<F>& mr) {
     const auto& me = E.all;
     const bool ref_a = mf.reference_shape == 0;
     const ConvexPolyhedron<F>& R = ref_a ? A : B;
@@ -545,8 +546,8 @@ struct FloatCheck {
     const int rf = mf.reference_face;
     if (me.reference_shape != mf.reference_shape || me.reference_face != rf) {
       why << "reference face differs with the same SAT feature";
-      rec.aspect("incident_face", Klass::unexplained);
-      return Klass::unexplained;
+      rec.aspect("incident_face", Classification::unexplained);
+      return Classification::unexplained;
     }
     const double dn = delta_n(R, nlenR, rf);
     // -- incident face --
@@ -565,11 +566,11 @@ struct FloatCheck {
       why << "incident face " << gf << " vs exact " << ge << " (exact anti-parallelism "
           << num(to_double(score_e(gf))) << " vs " << num(to_double(score_e(ge))) << ", bounds "
           << num(bound(gf)) << " + " << num(bound(ge)) << ")";
-      const Klass k = t ? Klass::tie : Klass::unexplained;
+      const Classification k = t ? Classification::tie : Classification::unexplained;
       rec.aspect("incident_face", k);
       return k;
     }
-    rec.aspect("incident_face", Klass::agree);
+    rec.aspect("incident_face", Classification::agree);
     const int inc = mf.incident_face;
     // -- replay both clips --
     const double ext = std::min(A.extent(), B.extent());
@@ -580,7 +581,7 @@ struct FloatCheck {
     // A cut of a segment lying within its bound of a side plane has no finite
     // bound (M4): counted, so that vacuous comparisons are visible.
     if (rpf.infinite || !std::isfinite(rpf.rho))
-      rec.rep.details["manifold.ill_conditioned"].add(Klass::agree);
+      rec.rep.details["manifold.ill_conditioned"].add(Classification::agree);
     // -- the kept points with their bounds (M5), (M6) --
     const Vec3<F>& n = R.plane(rf).normal;
     const V nd = vd(n), p0 = vd(R.plane_points(rf)[0]);
@@ -630,8 +631,8 @@ struct FloatCheck {
     if (!same_replay) {
       why << "internal: the clip replay does not reproduce contact_manifold (" << mf.size()
           << " points, replay " << kept.size() << ")";
-      rec.aspect("points", Klass::unexplained);
-      return Klass::unexplained;
+      rec.aspect("points", Classification::unexplained);
+      return Classification::unexplained;
     }
     // -- match by id --
     std::vector<int> match(static_cast<std::size_t>(mf.size()), -1);
@@ -654,7 +655,7 @@ struct FloatCheck {
     bool same_ids = mf.size() == me.size() && !fallback_differs;
     for (int i = 0; same_ids && i < mf.size(); ++i) same_ids = match[static_cast<std::size_t>(i)] == i;
     // -- matched points: depth and position within their bounds --
-    Klass kvals = Klass::agree;
+    Classification kvals = Classification::agree;
     for (int i = 0; i < mf.size(); ++i) {
       const int j = match[static_cast<std::size_t>(i)];
       if (j < 0) continue;
@@ -667,7 +668,7 @@ struct FloatCheck {
         if (!within(sf, ce.separation, kb.es)) {
           why << "point " << to_string(c.id) << " depth " << num(-sf) << " vs exact "
               << num(-to_double(ce.separation)) << " beyond bound " << num(kb.es) << "; ";
-          kvals = Klass::unexplained;
+          kvals = Classification::unexplained;
         }
       }
       if (std::isfinite(kb.ex)) {
@@ -676,13 +677,13 @@ struct FloatCheck {
         if (d2 > Q(kb.ex) * Q(kb.ex)) {
           why << "point " << to_string(c.id) << " position error " << num(std::sqrt(d2.get_d()))
               << " beyond bound " << num(kb.ex) << "; ";
-          kvals = Klass::unexplained;
+          kvals = Classification::unexplained;
         }
       }
     }
     rec.aspect("depth_position", kvals);
     // -- unmatched points: at a boundary up to the bounds? --
-    Klass kpts = Klass::agree;
+    Classification kpts = Classification::agree;
     if (!same_ids) {
       std::vector<V> fpoly, epoly;
       for (const auto& v : rpf.poly) fpoly.push_back(vd(v.point));
@@ -760,7 +761,9 @@ struct FloatCheck {
         for (const auto& v : rpe.poly)
           if ((vd(v.point) - x).norm() <= tol && exact_zero_at(v.point, v.id)) ez = true;
       }
-      kpts = !all_ok ? Klass::unexplained : ez ? Klass::exact_zero : Klass::explained;
+      kpts = !all_ok ? Classification::unexplained
+             : ez    ? Classification::exact_zero
+                     : Classification::explained;
       why << "clipped points differ: " << cfg << " " << ids_string(mf) << " vs exact " << ids_string(me);
       if (!all_ok) why << "; not near any boundary: " << first_bad;
       why << " (largest position bound " << num(ep_max) << ", height bound as distance " << num(rpf.rho)
@@ -773,7 +776,7 @@ struct FloatCheck {
       why << "support-vertex safety net: " << cfg << " " << mf.support_fallback << ", exact "
           << me.support_fallback << "; ";
     // -- the reduction --
-    Klass kred = Klass::agree;
+    Classification kred = Classification::agree;
     bool same_red = mr.size() == E.red.size();
     for (int i = 0; same_red && i < mr.size(); ++i)
       same_red = mr.points[static_cast<std::size_t>(i)].id == E.red.points[static_cast<std::size_t>(i)].id;
@@ -781,7 +784,8 @@ struct FloatCheck {
       if (!same_ids) {
         kred = kpts;  // different clipped points: the reduction follows
       } else {
-        kred = reduction_tie(mf, mr, kept, dn, es_max, ext) ? Klass::tie : Klass::unexplained;
+        kred =
+            reduction_tie(mf, mr, kept, dn, es_max, ext) ? Classification::tie : Classification::unexplained;
         why << "reduction " << ids_string(mr) << " vs exact " << ids_string(E.red) << "; ";
       }
     }
@@ -858,19 +862,19 @@ struct FloatCheck {
 };
 
 template <class F>
-Klass check_with(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, const ExactSide& E,
-                 const std::string& cfg, Recorder& rec, const SatResult<F>& r) {
+Classification check_with(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, const ExactSide& E,
+                          const std::string& cfg, Recorder& rec, const SatResult<F>& r) {
   if (!(r.feature == E.sat.feature)) {
-    rec.rep.details["manifold.skipped_feature_differs"].add(Klass::agree);
-    return Klass::agree;
+    rec.rep.details["manifold.skipped_feature_differs"].add(Classification::agree);
+    return Classification::agree;
   }
   FloatCheck<F> fc{A, B, E, cfg, rec};
-  Klass k;
+  Classification k;
   try {
     k = fc.run(r);
   } catch (const std::logic_error& e) {
     fc.why << "exception: " << e.what();
-    k = Klass::unexplained;
+    k = Classification::unexplained;
   }
   rec.final(cfg, k, [&] { return fc.why.str(); });
   return k;
@@ -921,15 +925,16 @@ void check_gmpq(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>
       why << "gmpq manifold (" << (pass ? "reduced" : "all points") << ") " << ids_string(m)
           << " differs from mpq " << ids_string(me);
   }
-  rec.final("gmpq", same ? Klass::agree : Klass::unexplained, [&] { return why.str(); });
+  rec.final("gmpq", same ? Classification::agree : Classification::unexplained, [&] { return why.str(); });
 }
 
 void counts_line(std::ostream& out, const std::string& name, const Counts& c) {
   char line[200];
-  std::snprintf(line, sizeof line, "  %-34s %10lld %10lld %10lld %8lld %11lld\n", name.c_str(),
-                static_cast<long long>(c[Klass::agree]), static_cast<long long>(c[Klass::exact_zero]),
-                static_cast<long long>(c[Klass::explained]), static_cast<long long>(c[Klass::tie]),
-                static_cast<long long>(c[Klass::unexplained]));
+  std::snprintf(
+      line, sizeof line, "  %-34s %10lld %10lld %10lld %8lld %11lld\n", name.c_str(),
+      static_cast<long long>(c[Classification::agree]), static_cast<long long>(c[Classification::exact_zero]),
+      static_cast<long long>(c[Classification::explained]), static_cast<long long>(c[Classification::tie]),
+      static_cast<long long>(c[Classification::unexplained]));
   out << line;
 }
 
@@ -953,10 +958,10 @@ void check_manifolds(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<f
 #endif
 }
 
-Klass check_manifold_float(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
-                           const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq,
-                           const SatResult<Q>& exact_sat, const SatResult<float>& float_sat,
-                           const CheckOptions& opt, CaseReport& rep) {
+Classification check_manifold_float(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
+                                    const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq,
+                                    const SatResult<Q>& exact_sat, const SatResult<float>& float_sat,
+                                    const CheckOptions& opt, CaseReport& rep) {
   Recorder rec{rep, opt};
   const ExactSide E = make_exact(Aq, Bq, exact_sat);
   return check_with<float>(Af, Bf, E, "float_given", rec, float_sat);

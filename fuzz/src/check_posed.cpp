@@ -149,7 +149,7 @@ void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, co
     SatResult<F> local = run_sat<Policy>(sat, A, Bp);
     const Vec3<F> local_axis = local.axis;
     local.axis = xa.rotate(local_axis);
-    rec.add("posed", cfg, sn, same_bits(r, local) ? Klass::agree : Klass::unexplained, [&] {
+    rec.add("posed", cfg, sn, same_bits(r, local) ? Classification::agree : Classification::unexplained, [&] {
       return describe("posed query differs from the query on (A, posed(B, X))", cfg, sat, r, local);
     });
     if (sat == Sat::gauss_map) {
@@ -163,12 +163,14 @@ void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, co
       }
       ml.normal = r.axis;
       const ContactManifold<F> m = contact_manifold(pa, xa, pb, xb, r);
-      rec.add("posed", cfg, "manifold", same_bits(m, ml) ? Klass::agree : Klass::unexplained, [&] {
-        return cfg +
-               ": the posed contact manifold differs from the manifold of (A, posed(B, X)) mapped to world "
-               "(" +
-               std::to_string(m.size()) + " against " + std::to_string(ml.size()) + " points)";
-      });
+      rec.add("posed", cfg, "manifold",
+              same_bits(m, ml) ? Classification::agree : Classification::unexplained, [&] {
+                return cfg +
+                       ": the posed contact manifold differs from the manifold of (A, posed(B, X)) mapped to "
+                       "world "
+                       "(" +
+                       std::to_string(m.size()) + " against " + std::to_string(ml.size()) + " points)";
+              });
     }
     // robust: exact decisions on the posed input
     if (robust) {
@@ -179,7 +181,7 @@ void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, co
         const SatResult<Q> e = run_sat<policy::Plain>(sat, *Aq, *Bq);
         const bool ok =
             r.overlap == e.overlap && r.feature == e.feature && sign(r.separation) == sign(e.separation);
-        rec.add("posed_exact", cfg, sn, ok ? Klass::agree : Klass::unexplained, [&] {
+        rec.add("posed_exact", cfg, sn, ok ? Classification::agree : Classification::unexplained, [&] {
           std::ostringstream s;
           s << cfg << " " << sn << " posed: overlap=" << r.overlap << " feature " << to_string(r.feature)
             << "; mpq on the exact posed input: overlap=" << e.overlap << " feature " << to_string(e.feature)
@@ -199,7 +201,7 @@ void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, co
       o.early_out = early;
       o.margin = early ? 0.02 * extent : 0.0;
       SatCache<F> cache;
-      Klass worst = Klass::agree;
+      Classification worst = Classification::agree;
       std::string why;
       for (int k = 0; k <= Poses::kWarmSteps; ++k) {
         const RigidTransform<F> xk = P.b<F>(k);
@@ -210,8 +212,8 @@ void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, co
         const bool ok = !early ? same_bits(warm, fresh)
                                : warm.overlap == fresh.overlap && warm.early_out == fresh.early_out &&
                                      (fresh.early_out || same_bits(warm, fresh));
-        if (!ok && worst == Klass::agree) {
-          worst = Klass::unexplained;
+        if (!ok && worst == Classification::agree) {
+          worst = Classification::unexplained;
           why = describe(early ? "warm query with an early exit differs from the fresh one"
                                : "warm query differs from the fresh one",
                          cfg, sat, warm, fresh) +
@@ -246,10 +248,11 @@ void posed_rational(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<fl
     const SatResult<Q> w = run_sat<policy::Plain>(sat, Aw, Bw);
     const bool ok = p.overlap == w.overlap && p.feature == w.feature &&
                     sepax::compare(p.separation, w.separation) == 0 && p.axis == w.axis;
-    rec.add("posed_rational", "mpq", sat_name(sat), ok ? Klass::agree : Klass::unexplained, [&] {
-      return describe("posed query at exact rational poses differs from the exactly moved shapes", "mpq", sat,
-                      p, w);
-    });
+    rec.add("posed_rational", "mpq", sat_name(sat), ok ? Classification::agree : Classification::unexplained,
+            [&] {
+              return describe("posed query at exact rational poses differs from the exactly moved shapes",
+                              "mpq", sat, p, w);
+            });
   }
 }
 

@@ -36,8 +36,8 @@ CaseOutcome run_case(const std::vector<std::string>& families, std::uint64_t cam
     // logic_error).  A finding, like an unexplained disagreement.
     o.r = CaseReport{};
     o.r.valid = true;
-    o.r.by_comparison["internal_error"].add(Klass::unexplained);
-    o.r.by_config["internal_error/" + o.family].add(Klass::unexplained);
+    o.r.by_comparison["internal_error"].add(Classification::unexplained);
+    o.r.by_config["internal_error/" + o.family].add(Classification::unexplained);
     o.r.unexplained.push_back({"internal_error", o.family, "-", e.what()});
     o.r.unexplained_count = 1;
   }

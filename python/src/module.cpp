@@ -598,9 +598,9 @@ struct CaseReportPy {
 
 py::dict counts_dict(const fuzz::Counts& c) {
   py::dict d;
-  for (int k = 0; k < fuzz::kKlassCount; ++k) {
-    const auto klass = static_cast<fuzz::Klass>(k);
-    d[fuzz::klass_name(klass)] = c[klass];
+  for (int k = 0; k < fuzz::kClassificationCount; ++k) {
+    const auto cls = static_cast<fuzz::Classification>(k);
+    d[fuzz::classification_name(cls)] = c[cls];
   }
   return d;
 }

@@ -26,17 +26,17 @@ TEST_CASE("posed, warm and margin comparisons run on every family and explain ev
   }
   for (const char* cfg : {"float_plain", "double_plain", "float_robust", "double_robust"}) {
     INFO(cfg);
-    CHECK(by["posed/" + std::string(cfg)][Klass::agree] > 0);
-    CHECK(by["warm/" + std::string(cfg)][Klass::agree] > 0);
+    CHECK(by["posed/" + std::string(cfg)][Classification::agree] > 0);
+    CHECK(by["warm/" + std::string(cfg)][Classification::agree] > 0);
     CHECK(by["margin/" + std::string(cfg)].total() > 0);
   }
   // robust: exact decisions on the posed input, and exact rational poses
-  CHECK(by["posed_exact/float_robust"][Klass::agree] > 0);
-  CHECK(by["posed_exact/double_robust"][Klass::agree] > 0);
-  CHECK(by["posed_rational/mpq"][Klass::agree] > 0);
+  CHECK(by["posed_exact/float_robust"][Classification::agree] > 0);
+  CHECK(by["posed_exact/double_robust"][Classification::agree] > 0);
+  CHECK(by["posed_rational/mpq"][Classification::agree] > 0);
   // robust margins decide exactly: never merely explained
-  CHECK(by["margin/float_robust"][Klass::explained] == 0);
-  CHECK(by["margin/double_robust"][Klass::explained] == 0);
+  CHECK(by["margin/float_robust"][Classification::explained] == 0);
+  CHECK(by["margin/double_robust"][Classification::explained] == 0);
 }
 
 TEST_CASE("posed comparisons: budgets skip and count, the option turns them off", "[fuzz][posed]") {

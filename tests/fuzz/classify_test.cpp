@@ -24,19 +24,19 @@ TEST_CASE("classify_sign: agree, exact zero, explained, unexplained", "[fuzz][cl
   const ExactSep tiny{Q(-1, 1000000), Q(1)};  // -1e-6 on a unit axis
   const ExactSep zero{Q(0), Q(4)};
   const ExactSep big{Q(-1), Q(1)};
-  CHECK(classify_sign(-1, tiny, 1e-3, false) == Klass::agree);
-  CHECK(classify_sign(+1, tiny, 1e-3, false) == Klass::explained);
-  CHECK(classify_sign(+1, tiny, 1e-7, false) == Klass::unexplained);
-  CHECK(classify_sign(+1, zero, 0.0, false) == Klass::exact_zero);
-  CHECK(classify_sign(0, zero, 0.0, false) == Klass::agree);
-  CHECK(classify_sign(+1, big, 0.5, false) == Klass::unexplained);
+  CHECK(classify_sign(-1, tiny, 1e-3, false) == Classification::agree);
+  CHECK(classify_sign(+1, tiny, 1e-3, false) == Classification::explained);
+  CHECK(classify_sign(+1, tiny, 1e-7, false) == Classification::unexplained);
+  CHECK(classify_sign(+1, zero, 0.0, false) == Classification::exact_zero);
+  CHECK(classify_sign(0, zero, 0.0, false) == Classification::agree);
+  CHECK(classify_sign(+1, big, 0.5, false) == Classification::unexplained);
   // the robust policy claims exact signs: no excuse
-  CHECK(classify_sign(+1, tiny, 1e-3, true) == Klass::unexplained);
-  CHECK(classify_sign(+1, zero, 1e-3, true) == Klass::unexplained);
+  CHECK(classify_sign(+1, tiny, 1e-3, true) == Classification::unexplained);
+  CHECK(classify_sign(+1, zero, 1e-3, true) == Classification::unexplained);
   // unnormalised exact value: num / sqrt(norm2) = -3 / sqrt(9e12) = -1e-6
   const ExactSep scaled{Q(-3), Q("9000000000000")};
-  CHECK(classify_sign(+1, scaled, 1.0000001e-6, false) == Klass::explained);
-  CHECK(classify_sign(+1, scaled, 0.9999999e-6, false) == Klass::unexplained);
+  CHECK(classify_sign(+1, scaled, 1.0000001e-6, false) == Classification::explained);
+  CHECK(classify_sign(+1, scaled, 0.9999999e-6, false) == Classification::unexplained);
 }
 
 TEST_CASE("within and cmp_rational_sep are exact at the boundary", "[fuzz][classify]") {
@@ -58,20 +58,20 @@ TEST_CASE("classify_overlap and classify_separation", "[fuzz][classify]") {
   const ExactSep touching{Q(0), Q(1)};
   const ExactSep near{Q(1, 1000000000), Q(1)};  // 1e-9: separated
   const ExactSep far{Q(1, 10), Q(1)};
-  CHECK(classify_overlap(true, true, far, 0, false) == Klass::agree);
-  CHECK(classify_overlap(false, true, touching, 0, false) == Klass::exact_zero);
-  CHECK(classify_overlap(true, false, near, 1e-8, false) == Klass::explained);
-  CHECK(classify_overlap(true, false, far, 1e-8, false) == Klass::unexplained);
-  CHECK(classify_overlap(true, false, near, 1e-8, true) == Klass::unexplained);
+  CHECK(classify_overlap(true, true, far, 0, false) == Classification::agree);
+  CHECK(classify_overlap(false, true, touching, 0, false) == Classification::exact_zero);
+  CHECK(classify_overlap(true, false, near, 1e-8, false) == Classification::explained);
+  CHECK(classify_overlap(true, false, far, 1e-8, false) == Classification::unexplained);
+  CHECK(classify_overlap(true, false, near, 1e-8, true) == Classification::unexplained);
 
-  CHECK(classify_separation(0.5, ExactSep{Q(1), Q(4)}, true, 0, 0, false) == Klass::agree);
-  CHECK(classify_separation(0.1 + 1e-12, far, true, 1e-11, 0, false) == Klass::explained);
-  CHECK(classify_separation(0.1 + 1e-12, far, true, 1e-13, 0, false) == Klass::unexplained);
-  CHECK(classify_separation(1e-12, touching, true, 1e-11, 0, false) == Klass::exact_zero);
+  CHECK(classify_separation(0.5, ExactSep{Q(1), Q(4)}, true, 0, 0, false) == Classification::agree);
+  CHECK(classify_separation(0.1 + 1e-12, far, true, 1e-11, 0, false) == Classification::explained);
+  CHECK(classify_separation(0.1 + 1e-12, far, true, 1e-13, 0, false) == Classification::unexplained);
+  CHECK(classify_separation(1e-12, touching, true, 1e-11, 0, false) == Classification::exact_zero);
   // a different feature: tie within the two bounds
-  CHECK(classify_separation(0.1 + 1e-12, far, false, 6e-13, 6e-13, false) == Klass::tie);
-  CHECK(classify_separation(0.1 + 1e-12, far, false, 4e-13, 4e-13, false) == Klass::unexplained);
-  CHECK(classify_separation(0.1 + 1e-12, far, false, 1, 1, true) == Klass::unexplained);
+  CHECK(classify_separation(0.1 + 1e-12, far, false, 6e-13, 6e-13, false) == Classification::tie);
+  CHECK(classify_separation(0.1 + 1e-12, far, false, 4e-13, 4e-13, false) == Classification::unexplained);
+  CHECK(classify_separation(0.1 + 1e-12, far, false, 1, 1, true) == Classification::unexplained);
 }
 
 TEST_CASE("close: ties between exact separations on different axes", "[fuzz][classify]") {
@@ -360,9 +360,9 @@ TEST_CASE("check: a winner inside the float parallel skip is explained, not a ti
   for (const auto& x : r.unexplained)
     UNSCOPED_INFO("[" << x.comparison << " " << x.config << " " << x.sat << "] " << x.detail);
   CHECK(r.unexplained_count == 0);
-  CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 1);
-  CHECK(r.by_config.at("feature/float_plain")[Klass::tie] == 0);
-  CHECK(r.by_config.at("feature/double_plain")[Klass::agree] ==
+  CHECK(r.by_config.at("feature/float_plain")[Classification::explained] >= 1);
+  CHECK(r.by_config.at("feature/float_plain")[Classification::tie] == 0);
+  CHECK(r.by_config.at("feature/double_plain")[Classification::agree] ==
         r.by_config.at("feature/double_plain").total());
 }
 

@@ -67,13 +67,13 @@ TEST_CASE(
     REQUIRE(r.valid);
     CHECK(r.unexplained_count == 0);
     // the exact brute force and the exact Gauss map differ on this input ...
-    CHECK(r.by_comparison.at("exact")[Klass::nonconvex] >= 1);
+    CHECK(r.by_comparison.at("exact")[Classification::nonconvex] >= 1);
     // ... but every float and robust configuration agrees with the exact run
     // of the same SAT: none of their comparisons needed the nonconvex class.
     for (const auto& [key, counts] : r.by_config) {
       if (key.rfind("exact/", 0) == 0) continue;
       INFO(key);
-      CHECK(counts[Klass::nonconvex] == 0);
+      CHECK(counts[Classification::nonconvex] == 0);
     }
   }
 }
@@ -86,15 +86,15 @@ TEST_CASE("corpus 26: a winner inside the plain float parallel skip is explained
   REQUIRE(r.valid);
   CHECK(r.unexplained_count == 0);
   const Counts& ff = r.by_config.at("feature/float_plain");
-  CHECK(ff[Klass::explained] >= 2);  // gauss_map and traversal skip the winning pair
-  CHECK(ff[Klass::tie] == 0);
+  CHECK(ff[Classification::explained] >= 2);  // gauss_map and traversal skip the winning pair
+  CHECK(ff[Classification::tie] == 0);
   // the side axes of the two flat shapes find the gap: the float separation
   // is the exact winner's value, within the bound of the side feature
   const Counts& fs = r.by_config.at("separation/float_plain");
-  CHECK(fs[Klass::unexplained] == 0);
-  CHECK(fs[Klass::agree] + fs[Klass::explained] == fs.total());
+  CHECK(fs[Classification::unexplained] == 0);
+  CHECK(fs[Classification::agree] + fs[Classification::explained] == fs.total());
   const Counts& fd = r.by_config.at("feature/double_plain");
-  CHECK(fd[Klass::agree] == fd.total());  // double measures the pair (sin ~ 5e-6 > 1e-8)
+  CHECK(fd[Classification::agree] == fd.total());  // double measures the pair (sin ~ 5e-6 > 1e-8)
 }
 
 // The plain kernel's own decisions (check.cpp decision_check): a flipped
@@ -123,15 +123,15 @@ TEST_CASE("corpus 32, 33: a flipped float edge axis within its band is explained
     INFO(name);
     const CaseReport r = replay_explained(name);
     // plain float orients at least one edge axis the other way, within (8)
-    CHECK(r.by_config.at("axis_side/float_plain")[Klass::explained] >= 1);
+    CHECK(r.by_config.at("axis_side/float_plain")[Classification::explained] >= 1);
     // the robust configurations orient every axis as exact arithmetic does
-    CHECK(r.by_config.at("axis_side/float_robust")[Klass::agree] ==
+    CHECK(r.by_config.at("axis_side/float_robust")[Classification::agree] ==
           r.by_config.at("axis_side/float_robust").total());
-    CHECK(r.by_config.at("axis_side/double_robust")[Klass::agree] ==
+    CHECK(r.by_config.at("axis_side/double_robust")[Classification::agree] ==
           r.by_config.at("axis_side/double_robust").total());
     // Gauss map and traversal report the flipped pair: explained, not a tie
-    CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 2);
-    CHECK(r.by_config.at("feature/float_robust")[Klass::agree] ==
+    CHECK(r.by_config.at("feature/float_plain")[Classification::explained] >= 2);
+    CHECK(r.by_config.at("feature/float_robust")[Classification::agree] ==
           r.by_config.at("feature/float_robust").total());
   }
 }
@@ -139,8 +139,8 @@ TEST_CASE("corpus 32, 33: a flipped float edge axis within its band is explained
 TEST_CASE("corpus 34: a pair the float brute force accepts within its support tolerance is explained",
           "[fuzz][corpus][support]") {
   const CaseReport r = replay_explained("34-brute-support-tolerance-accepts.case");
-  CHECK(r.by_config.at("feature/float_plain")[Klass::explained] >= 1);
-  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] ==
+  CHECK(r.by_config.at("feature/float_plain")[Classification::explained] >= 1);
+  CHECK(r.by_config.at("feature/float_robust")[Classification::agree] ==
         r.by_config.at("feature/float_robust").total());
 }
 
@@ -150,7 +150,7 @@ TEST_CASE("corpus 35: the plain float traversal takes a crossing its arc test ac
   // (the plain float traversal's own answer is asserted in
   // tests/core/sat_traversal_test.cpp); the robust runs report exact
   // arithmetic's feature in every SAT
-  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] ==
+  CHECK(r.by_config.at("feature/float_robust")[Classification::agree] ==
         r.by_config.at("feature/float_robust").total());
 }
 
@@ -161,7 +161,7 @@ TEST_CASE(
   // (the plain float traversal's own answer is asserted in
   // tests/core/sat_traversal_test.cpp); the robust runs report exact
   // arithmetic's feature in every SAT
-  CHECK(r.by_config.at("feature/float_robust")[Klass::agree] ==
+  CHECK(r.by_config.at("feature/float_robust")[Classification::agree] ==
         r.by_config.at("feature/float_robust").total());
 }
 
@@ -169,5 +169,5 @@ TEST_CASE("corpus 36: a float reduction around another deepest point (tied withi
           "[fuzz][corpus][manifold]") {
   const CaseReport r = replay_explained("36-perturbed-reduction-deepest-tie.case");
   // the reduction differs from the exact one and is classified as a tie
-  CHECK(r.details.at("manifold.reduction")[Klass::tie] >= 1);
+  CHECK(r.details.at("manifold.reduction")[Classification::tie] >= 1);
 }

@@ -61,13 +61,13 @@ TEST_CASE("manifold comparison on the corpus: compared, nothing unexplained, bou
     if (r.maxima.count("manifold.depth")) max_depth = std::max(max_depth, r.maxima.at("manifold.depth"));
     if (r.maxima.count("manifold.position")) max_pos = std::max(max_pos, r.maxima.at("manifold.position"));
   }
-  CHECK(total[Klass::unexplained] == 0);
-  CHECK(total[Klass::agree] >= 80);
-  CHECK(total[Klass::exact_zero] >= 1);  // 28-touching-float-support-fallback
+  CHECK(total[Classification::unexplained] == 0);
+  CHECK(total[Classification::agree] >= 80);
+  CHECK(total[Classification::exact_zero] >= 1);  // 28-touching-float-support-fallback
   CHECK(details["manifold.points"].total() > 0);
   CHECK(details["manifold.depth_position"].total() > 0);
   CHECK(details["manifold.reduction"].total() > 0);
-  CHECK(details["manifold.support_fallback"][Klass::exact_zero] >= 1);
+  CHECK(details["manifold.support_fallback"][Classification::exact_zero] >= 1);
   // every compared depth and position was within its bound, and the bounds
   // are not absurdly loose on these cases
   CHECK(max_depth <= 1.0);
@@ -82,8 +82,8 @@ TEST_CASE("float loses the clipped point of an exact touching contact: exact_zer
       read_case_file(std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/28-touching-float-support-fallback.case"));
   REQUIRE(r.valid);
   CHECK(r.unexplained_count == 0);
-  CHECK(r.by_config.at("manifold/float_robust")[Klass::exact_zero] == 1);
-  CHECK(r.by_config.at("manifold/gmpq")[Klass::agree] == 1);
+  CHECK(r.by_config.at("manifold/float_robust")[Classification::exact_zero] == 1);
+  CHECK(r.by_config.at("manifold/gmpq")[Classification::agree] == 1);
 }
 
 TEST_CASE("edge contact: agrees, and a float depth off by more than its bound is unexplained",
@@ -96,28 +96,28 @@ TEST_CASE("edge contact: agrees, and a float depth off by more than its bound is
   REQUIRE(rf.feature == rq.feature);
   {
     CaseReport rep;
-    CHECK(check_manifold_float(a, b, aq, bq, rq, rf, CheckOptions{}, rep) == Klass::agree);
+    CHECK(check_manifold_float(a, b, aq, bq, rq, rf, CheckOptions{}, rep) == Classification::agree);
     CHECK(rep.unexplained.empty());
-    CHECK(rep.details["manifold.position"][Klass::agree] == 1);
-    CHECK(rep.details["manifold.depth"][Klass::agree] == 1);
+    CHECK(rep.details["manifold.position"][Classification::agree] == 1);
+    CHECK(rep.details["manifold.depth"][Classification::agree] == 1);
   }
   // one float ulp at the depth's magnitude is within the bound ...
   {
     auto r2 = rf;
     r2.separation.num = std::nextafter(r2.separation.num, 1.0f);
     CaseReport rep;
-    CHECK(check_manifold_float(a, b, aq, bq, rq, r2, CheckOptions{}, rep) == Klass::agree);
+    CHECK(check_manifold_float(a, b, aq, bq, rq, r2, CheckOptions{}, rep) == Classification::agree);
   }
   // ... 1e-3 is not
   {
     auto r2 = rf;
     r2.separation.num += 1e-3f;
     CaseReport rep;
-    CHECK(check_manifold_float(a, b, aq, bq, rq, r2, CheckOptions{}, rep) == Klass::unexplained);
+    CHECK(check_manifold_float(a, b, aq, bq, rq, r2, CheckOptions{}, rep) == Classification::unexplained);
     REQUIRE(rep.unexplained.size() == 1);
     CHECK(rep.unexplained[0].comparison == "manifold");
     CHECK(rep.unexplained[0].detail.find("depth") != std::string::npos);
-    CHECK(rep.by_config["manifold/float_given"][Klass::unexplained] == 1);
+    CHECK(rep.by_config["manifold/float_given"][Classification::unexplained] == 1);
   }
 }
 
@@ -132,12 +132,12 @@ TEST_CASE("a float SAT feature other than the exact one is not compared", "[fuzz
   auto rf = sat::gauss_map(a, b);
   REQUIRE(rf.feature == rq.feature);
   CaseReport rep;
-  CHECK(check_manifold_float(a, b, aq, bq, rq, rf, CheckOptions{}, rep) == Klass::agree);
-  CHECK(rep.by_comparison["manifold"][Klass::agree] == 1);
-  CHECK(rep.details["manifold.points"][Klass::agree] == 1);
+  CHECK(check_manifold_float(a, b, aq, bq, rq, rf, CheckOptions{}, rep) == Classification::agree);
+  CHECK(rep.by_comparison["manifold"][Classification::agree] == 1);
+  CHECK(rep.details["manifold.points"][Classification::agree] == 1);
   rf.feature.b = (rf.feature.b + 1) % b.vertex_count();
   CaseReport rep2;
-  CHECK(check_manifold_float(a, b, aq, bq, rq, rf, CheckOptions{}, rep2) == Klass::agree);
+  CHECK(check_manifold_float(a, b, aq, bq, rq, rf, CheckOptions{}, rep2) == Classification::agree);
   CHECK(rep2.by_comparison["manifold"].total() == 0);
   CHECK(rep2.details["manifold.skipped_feature_differs"].total() == 1);
 }

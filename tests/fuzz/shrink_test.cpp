@@ -190,7 +190,7 @@ TEST_CASE("shrink: end to end through the real checker", "[fuzz][shrink]") {
   auto has_tie = [](const FuzzCase& x) {
     const CaseReport r = check_case_guarded(x);
     const auto it = r.by_config.find("feature/float_plain");
-    return r.valid && it != r.by_config.end() && it->second[Klass::tie] > 0;
+    return r.valid && it != r.by_config.end() && it->second[Classification::tie] > 0;
   };
   FuzzCase c;
   bool found = false;

@@ -32,18 +32,18 @@ bool close(const ExactSep& x, const ExactSep& y, double bound);
 /// quantity: agree / exact_zero / explained (|exact| <= bound) / unexplained.
 /// exact_decisions: the configuration claims exact signs (robust policy): any
 /// difference is unexplained.
-Klass classify_sign(int float_sign, const ExactSep& exact, double bound, bool exact_decisions);
+Classification classify_sign(int float_sign, const ExactSep& exact, double bound, bool exact_decisions);
 
 /// Overlap verdicts: a difference is exact_zero when the exact maximum
 /// separation is exactly 0, explained when it is within `bound` of 0.
-Klass classify_overlap(bool float_overlap, bool exact_overlap, const ExactSep& exact_max, double bound,
-                       bool exact_decisions);
+Classification classify_overlap(bool float_overlap, bool exact_overlap, const ExactSep& exact_max,
+                                double bound, bool exact_decisions);
 
 /// The reported separation sf against the exact optimum.  same_axis: the float
 /// chose the exact optimum's axis (its bound is bf); otherwise a different
 /// feature, and the combined bound bf + be applies (classified as a tie).
-Klass classify_separation(double sf, const ExactSep& exact_max, bool same_axis, double bf, double be,
-                          bool exact_decisions);
+Classification classify_separation(double sf, const ExactSep& exact_max, bool same_axis, double bf, double be,
+                                   bool exact_decisions);
 
 /// Could the plain kernel of F have skipped the edge pair (da, db) as parallel
 /// (error_bounds.hpp (6))?  outside: certainly not, the pair was measured;

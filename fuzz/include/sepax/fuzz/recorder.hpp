@@ -17,11 +17,11 @@ struct Recorder {
   CaseReport& rep;
   const CheckOptions& opt;
   std::map<std::string, int> kept;
-  void add(const std::string& cmp, const std::string& cfg, const std::string& sat, Klass k,
+  void add(const std::string& cmp, const std::string& cfg, const std::string& sat, Classification k,
            const std::function<std::string()>& detail, std::int64_t times = 1) {
     rep.by_comparison[cmp].add(k, times);
     rep.by_config[cmp + "/" + cfg].add(k, times);
-    if (k == Klass::unexplained) {
+    if (k == Classification::unexplained) {
       rep.unexplained_count += times;
       if (kept[cmp]++ < opt.max_findings) rep.unexplained.push_back({cmp, cfg, sat, detail()});
     }
