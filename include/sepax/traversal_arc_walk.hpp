@@ -176,12 +176,15 @@ class TraversalArcWalk : public TraversalClimb<K> {
       if (exit_edge >= 0) {
         // The crossing's normal n lies on the arc and B's support along it is
         // the crossed edge (both ends): its separation is n.(v - a_tail) for
-        // the vertex v just entered, bounded as in arc_below_best.
+        // the vertex v just entered.  When v's heights over both end faces
+        // are exactly below the best, arc_below_best's bound with x = v holds
+        // for every n on the arc, not only this crossing's: every Minkowski
+        // face left on the arc is exactly below the best, and the walk ends.
         if (crossing_below_best(f0, f1, v)) {
           ++ts_.pruned_crossings;
-        } else if (pair(ea, exit_edge)) {
-          return true;
+          return false;
         }
+        if (pair(ea, exit_edge)) return true;
         entry = exit_edge;
         continue;
       }
