@@ -147,6 +147,7 @@ inline constexpr double kAdjacentCoplanarFraction = 0.25;
 // | kHullHeightSafe             | 32    | half the bound: a result's heights it may reach                  |
 // | kHullMeasureReach           | 65    | a point this far below a face no longer climbs past it           |
 // | kHullMaxRepairs             | 8     | repair passes, each rebuilding with the lost points pinned       |
+// | kHullMaxEyeVisits           | 4     | float: times a point may be the eye; then it is dropped (repair) |
 // | kHullPlaneRoundingSlack     | 8     | x u max|x|: rounding of a plane height on input coordinates      |
 // | kHullDeepInsideSlack        | 4     | x that slack: a deep-inside point clears every height's rounding |
 // | kHullDeepInsidePlanarity    | 2     | x planarity x extent: validated plane against Newell plane       |
@@ -181,6 +182,12 @@ inline constexpr double kHullHeightSafe = kHullOutsideBound / 2;
 inline constexpr double kHullMeasureReach = kHullOutsideBound + 1;
 /// Repair passes (each rebuilds the hull with the lost points pinned), count.
 inline constexpr int kHullMaxRepairs = 8;
+/// Float T: how many times one point may be quickhull's eye in one build.  A vertex a later step
+/// removes is tested again like any other point (float: it may be outside by rounding) and can
+/// become the eye again; without a limit two such points can replace each other forever.  A point
+/// over the limit is dropped like an eye with a non-simple horizon; the repair passes measure it.
+/// Exact T never re-uses an eye (every eye is an extreme point of the input).  A count.
+inline constexpr int kHullMaxEyeVisits = 4;
 /// Rounding slack of a plane height evaluated on input coordinates, x u max|x|.
 inline constexpr double kHullPlaneRoundingSlack = 8;
 /// A point is deep inside when it clears this many plane-rounding slacks, dimensionless.

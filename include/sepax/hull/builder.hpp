@@ -179,6 +179,7 @@ class Builder {
   bool shadow_ = false;                      // exact T: every welded coordinate is exactly a double
   std::vector<std::array<int, 3>> horizon_;  // scratch, per eye
   std::vector<int> degree_;                  // scratch, per welded point
+  std::vector<int> eye_visits_;              // times each welded point was the eye (kHullMaxEyeVisits)
   std::vector<int> nomerge_;                 // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
   bool tent_;  // float: may try tent_hull (not in a tent's own build)

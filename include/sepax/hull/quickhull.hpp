@@ -244,6 +244,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<in
   tris_.clear();
   live_faces_.clear();
   live_made_ = 0;
+  eye_visits_.assign(q_.size(), 0);
   // Orient the tetrahedron so that its faces point outward.
   if (height(plane_through(local_point(a), local_point(b), local_point(c)), d) > T(0)) std::swap(b, c);
   const int t0 = new_tri(a, b, c);  // d below
@@ -285,6 +286,12 @@ inline void Builder<T>::expand() {
     const std::size_t best = Traits::farthest(*this, static_cast<int>(fi), cf);
     const int eye = cf[best];
     cf.erase(cf.begin() + static_cast<std::ptrdiff_t>(best));
+    if (++eye_visits_[as_index(eye)] > kHullMaxEyeVisits) {
+      // Float only: the point was removed from the surface and re-entered it
+      // more than kHullMaxEyeVisits times (rounding); drop it as below.
+      Traits::rounding_case("a point became the eye again and again (a bug)");
+      continue;
+    }
     // visible region: connected faces the eye is strictly above
     for (int t : touched) mark[as_index(t)] = 0;  // 0 unknown, 1 visible, 2 not visible
     mark.resize(tris_.size(), 0);
