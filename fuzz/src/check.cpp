@@ -601,8 +601,9 @@ bool plain_value_within(const FloatSide<F>& S, Sat sat, const Feature& f, double
 //     exact value within its bound of it);
 //   * robust: it exits early exactly when the exact maximum separation is
 //     greater than the margin (decided in rationals); plain: when it does not
-//     agree with that, the exact maximum is within the bounds of the margin
-//     (explained) or the difference is unexplained.
+//     agree with that, the full result's own value is not beyond the margin
+//     or the exact maximum is within the bounds of the margin (explained),
+//     or the difference is unexplained.
 // Margins: 0, half and twice the exact separation (when positive), and 2 % of
 // the shapes' extent (an engine's speculative margin).
 template <class F, class Policy, class Cls>
@@ -631,9 +632,16 @@ void check_margins(const FloatSide<F>& S, Sat sat, const SatResult<F>& full, con
         k = Classification::unexplained;
         why = "without an early exit the result is not the full result";
       } else if (exact_beyond) {
-        // it found no axis beyond the margin, exact arithmetic has one
+        // it found no axis beyond the margin, exact arithmetic has one.
+        // Plain: explained when the full result's own value is not beyond
+        // the margin either (the margin run did what its full run implies;
+        // how that full result differs from the exact one is classified by
+        // the feature and separation comparisons, e.g. a winning pair inside
+        // the parallel-edge skip), or when the exact maximum is within the
+        // bounds of the margin.
         k = exact_decisions ? Classification::unexplained
-            : close(R.separation, Separation<Q>{qm, Q(1)}, S.bound(sat, full.feature) + be)
+            : !(full.separation_as_double() > m) ||
+                    close(R.separation, Separation<Q>{qm, Q(1)}, S.bound(sat, full.feature) + be)
                 ? Classification::explained
                 : Classification::unexplained;
         why = "no early exit, but the exact maximum separation is beyond the margin";

@@ -24,8 +24,13 @@ CaseOutcome run_case(const std::vector<std::string>& families, std::uint64_t cam
   CaseOutcome o;
   o.index = index;
   o.family = families[static_cast<std::size_t>(index % families.size())];
+  // The case's family and seed first: when generate itself fails, the
+  // reproducer (with no shapes) still names the call that failed,
+  // generate(family, seed).
+  o.c.family = o.family;
+  o.c.seed = case_seed(campaign_seed, index);
   try {
-    o.c = generate(o.family, case_seed(campaign_seed, index));
+    o.c = generate(o.family, o.c.seed);
     o.r = check_case_guarded(o.c, opt);
   } catch (const InvalidInput& e) {
     o.r = CaseReport{};
