@@ -24,16 +24,32 @@ namespace sepax {
 
 // The planes from the plane triples, then everything after them.  With
 // eager_conditioning (float/double), normal_conditioning() is computed in
-// the same pass from the plane triples' differences and cross products
-// (the value compute_normal_conditioning() gives, bit for bit: the same
-// expressions and the same scan, NormalConditioningScan).
+// the same pass (compute_planes).
 template <Number T>
 inline void ConvexPolyhedron<T>::compute_derived(bool eager_conditioning, bool with_bounds) {
+  compute_planes(eager_conditioning);
+  compute_edge_data();
+  if (with_bounds) compute_bounds();
+}
+
+// The planes from the plane triples.  With eager_conditioning
+// (float/double), normal_conditioning() is computed in the same pass from
+// the plane triples' differences and cross products (the value
+// compute_normal_conditioning() gives, bit for bit: the same expressions
+// and the same scan, NormalConditioningScan); otherwise it is reset (computed
+// on first use).  Returns, for float/double, whether every normal component
+// is within 2^60 in magnitude (compute_lanes' bound; false for NaN) and
+// whether every offset is finite, tested without a branch per value.
+template <Number T>
+inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_planes(
+    bool eager_conditioning) {
   const auto nf = faces_.size();
   planes_.resize(nf);
   [[maybe_unused]] NormalConditioningScan scan;
   [[maybe_unused]] const bool cond =
       eager_conditioning && (std::is_same_v<T, float> || std::is_same_v<T, double>);
+  PlanesInRange in_range;
+  [[maybe_unused]] bool nb = true, of = true;
   for (std::size_t f = 0; f < nf; ++f) {
     if (f == 1 && nf == 2) {
       // Flat shape: the back face's plane is exactly the front one negated.
@@ -48,17 +64,22 @@ inline void ConvexPolyhedron<T>::compute_derived(bool eager_conditioning, bool w
     const Vec3<T>& v0 = vertex(t[0]);
     const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
     const Vec3<T> c(cross(e1, e2));
-    planes_[f] = plane_through_cross(v0, e1, e2, c);
+    const Plane<T> pl = plane_through_cross(v0, e1, e2, c);
+    planes_[f] = pl;
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
       if (cond) scan.add(e1, e2, c);
+      const T big = T(0x1p60);
+      nb &= std::abs(pl.normal[0]) <= big && std::abs(pl.normal[1]) <= big && std::abs(pl.normal[2]) <= big;
+      of &= std::abs(pl.offset) <= std::numeric_limits<T>::max();
     }
   }
   normal_conditioning_.reset();  // new coordinates: computed again on first use
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     if (cond) normal_conditioning_.store(scan.result());
+    in_range.normals_bounded = nb;  // the back face of a flat shape: the front one negated
+    in_range.offsets_finite = of;
   }
-  compute_edge_data();
-  if (with_bounds) compute_bounds();
+  return in_range;
 }
 
 // Everything after the planes: per-edge arrays and lanes.  Reuses the
@@ -92,6 +113,13 @@ inline void ConvexPolyhedron<T>::compute_bounds() {
       if (v[c] > bmax_[c]) bmax_[c] = v[c];
     }
   }
+  finish_bounds(sum);
+}
+
+// compute_bounds() after its pass over the vertices: bmin_, bmax_ are set
+// and sum is the sequential sum of the vertices (from zero, in index order).
+template <Number T>
+inline void ConvexPolyhedron<T>::finish_bounds(const Vec3<T>& sum) {
   const T n = from_double<T>(static_cast<double>(vertices_.size()));  // exact for any count < 2^53
   if (!vertices_.empty()) centroid_ = Vec3<T>(sum[0] / n, sum[1] / n, sum[2] / n);
   double d2 = 0;
@@ -220,30 +248,12 @@ inline void ConvexPolyhedron<T>::compute_lanes() {
   lane_edge_stride_ = lane_vertex_stride_ = 0;
   lanes_bounded_ = false;
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-    auto padded = [](int n) { return (n + kLanePad - 1) / kLanePad * kLanePad; };
-    lane_edge_stride_ = padded(edge_count());
-    lane_vertex_stride_ = padded(vertex_count());
-    const auto es = static_cast<std::size_t>(lane_edge_stride_);
+    size_lanes();
     const auto vs = static_cast<std::size_t>(lane_vertex_stride_);
-    const auto ne = static_cast<std::size_t>(edge_count());
     const auto nv = static_cast<std::size_t>(vertex_count());
-    lanes_.resize(9 * es + 3 * vs);
-    T* const l = lanes_.data();
+    bool ok = write_edge_lanes();
     const T big = T(0x1p60);
-    bool ok = true;
-    for (std::size_t e = 0; e < ne; ++e) {
-      const Vec3<T>& n0 = edge_n0_[e];
-      const Vec3<T>& n1 = edge_n1_[e];
-      const Vec3<T>& d = edge_dirs_[e];
-      for (std::size_t c = 0; c < 3; ++c) {
-        l[c * es + e] = n0[static_cast<int>(c)];
-        l[(3 + c) * es + e] = T(-n1[static_cast<int>(c)]);
-        l[(6 + c) * es + e] = d[static_cast<int>(c)];
-        ok &= std::abs(d[static_cast<int>(c)]) <= big;
-      }
-    }
-    for (std::size_t k = 0; k < 9; ++k) std::fill(l + k * es + ne, l + (k + 1) * es, T(0));
-    T* const lv = l + 9 * es;
+    T* const lv = lanes_.data() + 9 * static_cast<std::size_t>(lane_edge_stride_);
     for (std::size_t v = 0; v < nv; ++v) {
       for (std::size_t c = 0; c < 3; ++c) {
         const T x = vertices_[v][static_cast<int>(c)];
@@ -259,6 +269,42 @@ inline void ConvexPolyhedron<T>::compute_lanes() {
   } else {
     lanes_.clear();
   }
+}
+
+// Float/double: the lane strides for the current counts, and lanes_ sized
+// for them (9 edge arrays, then 3 vertex arrays; values not written).
+template <Number T>
+inline void ConvexPolyhedron<T>::size_lanes() {
+  auto padded = [](int n) { return (n + kLanePad - 1) / kLanePad * kLanePad; };
+  lane_edge_stride_ = padded(edge_count());
+  lane_vertex_stride_ = padded(vertex_count());
+  lanes_.resize(9 * static_cast<std::size_t>(lane_edge_stride_) +
+                3 * static_cast<std::size_t>(lane_vertex_stride_));
+}
+
+// Float/double, lanes_ sized (size_lanes): the 9 edge lane arrays from the
+// per-edge arrays, the padding zeroed.  Returns whether every edge
+// direction component has |x| <= 2^60 (false for NaN).
+template <Number T>
+inline bool ConvexPolyhedron<T>::write_edge_lanes() {
+  const auto es = static_cast<std::size_t>(lane_edge_stride_);
+  const auto ne = static_cast<std::size_t>(edge_count());
+  T* const l = lanes_.data();
+  const T big = T(0x1p60);
+  bool ok = true;
+  for (std::size_t e = 0; e < ne; ++e) {
+    const Vec3<T>& n0 = edge_n0_[e];
+    const Vec3<T>& n1 = edge_n1_[e];
+    const Vec3<T>& d = edge_dirs_[e];
+    for (std::size_t c = 0; c < 3; ++c) {
+      l[c * es + e] = n0[static_cast<int>(c)];
+      l[(3 + c) * es + e] = T(-n1[static_cast<int>(c)]);
+      l[(6 + c) * es + e] = d[static_cast<int>(c)];
+      ok &= std::abs(d[static_cast<int>(c)]) <= big;
+    }
+  }
+  for (std::size_t k = 0; k < 9; ++k) std::fill(l + k * es + ne, l + (k + 1) * es, T(0));
+  return ok;
 }
 
 // Signed distance-like value of p above plane f: exact N.(p - v_i) for exact
