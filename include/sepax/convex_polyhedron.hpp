@@ -305,25 +305,36 @@ class ConvexPolyhedron {
       const T inf = std::numeric_limits<T>::infinity();
       // bounds from +-infinity: the first vertex sets both (compute_bounds
       // starts from it and compares it with itself: the same values)
-      Vec3<T> lo(inf, inf, inf), hi(-inf, -inf, -inf), sum(T(0), T(0), T(0));
+      // per coordinate in registers (x, y, z spelled out: a loop over the
+      // coordinates kept them in memory)
+      T lo0 = inf, lo1 = inf, lo2 = inf, hi0 = -inf, hi1 = -inf, hi2 = -inf;
+      T s0 = T(0), s1 = T(0), s2 = T(0);
       bool finite = true;
       for (std::size_t i = 0; i < nv; ++i) {
         const Vec3<T> v = point(src.vertices_[i]);
         vertices_[i] = v;
-        sum = Vec3<T>(sum + v);
-        for (int c = 0; c < 3; ++c) {
-          const T x = v[c];
-          lv[static_cast<std::size_t>(c) * vs + i] = x;
-          finite &= std::abs(x) <= tmax;  // false for NaN and infinities
-          lo[c] = x < lo[c] ? x : lo[c];
-          hi[c] = x > hi[c] ? x : hi[c];
-        }
+        const T x = v[0], y = v[1], z = v[2];
+        s0 = s0 + x;
+        s1 = s1 + y;
+        s2 = s2 + z;
+        lv[i] = x;
+        lv[vs + i] = y;
+        lv[2 * vs + i] = z;
+        finite &= std::abs(x) <= tmax;  // false for NaN and infinities
+        finite &= std::abs(y) <= tmax;
+        finite &= std::abs(z) <= tmax;
+        lo0 = x < lo0 ? x : lo0;
+        lo1 = y < lo1 ? y : lo1;
+        lo2 = z < lo2 ? z : lo2;
+        hi0 = x > hi0 ? x : hi0;
+        hi1 = y > hi1 ? y : hi1;
+        hi2 = z > hi2 ? z : hi2;
       }
       for (std::size_t c = 0; c < 3; ++c) std::fill(lv + c * vs + nv, lv + (c + 1) * vs, T(0));
       if (!finite || nv < 3) check_coordinates();  // throws, naming the vertex
-      bmin_ = lo;
-      bmax_ = hi;
-      finish_bounds(sum);
+      bmin_ = Vec3<T>(lo0, lo1, lo2);
+      bmax_ = Vec3<T>(hi0, hi1, hi2);
+      finish_bounds(Vec3<T>(s0, s1, s2));
     } else {
       for (std::size_t i = 0; i < nv; ++i) vertices_[i] = point(src.vertices_[i]);
       check_coordinates();
@@ -345,14 +356,7 @@ class ConvexPolyhedron {
   /// other planes, edges and the lanes are stale).
   void derive_rigid_part(std::span<const int> faces, std::span<const int> edges) {
     [[maybe_unused]] NormalConditioningScan scan;
-    auto derive = [&](int f) {
-      const auto& t = faces_[static_cast<std::size_t>(f)].plane_vertices;
-      const Vec3<T>& v0 = vertex(t[0]);
-      const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
-      const Vec3<T> c(cross(e1, e2));
-      planes_[static_cast<std::size_t>(f)] = plane_through_cross(v0, e1, e2, c);
-      if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) scan.add(e1, e2, c);
-    };
+    auto derive = [&](int f) { planes_[static_cast<std::size_t>(f)] = plane_of_triple(f, &scan); };
     if (is_flat()) {
       derive(0);  // the back face: the front one negated (compute_derived)
       planes_[1] = Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)};
@@ -603,6 +607,7 @@ class ConvexPolyhedron {
   }
   double compute_normal_conditioning() const;
   struct NormalConditioningScan;
+  Plane<T> plane_of_triple(int f, NormalConditioningScan* scan) const;
   void compute_lanes();
   T height(int f, const Vec3<T>& p) const;
   T height_tolerance(double rel) const;

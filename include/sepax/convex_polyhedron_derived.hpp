@@ -60,14 +60,9 @@ inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_
       planes_[1] = Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)};
       continue;
     }
-    const auto& t = faces_[f].plane_vertices;
-    const Vec3<T>& v0 = vertex(t[0]);
-    const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
-    const Vec3<T> c(cross(e1, e2));
-    const Plane<T> pl = plane_through_cross(v0, e1, e2, c);
+    const Plane<T> pl = plane_of_triple(static_cast<int>(f), cond ? &scan : nullptr);
     planes_[f] = pl;
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-      if (cond) scan.add(e1, e2, c);
       const T big = T(0x1p60);
       nb &= std::abs(pl.normal[0]) <= big && std::abs(pl.normal[1]) <= big && std::abs(pl.normal[2]) <= big;
       of &= std::abs(pl.offset) <= std::numeric_limits<T>::max();
@@ -99,6 +94,56 @@ inline void ConvexPolyhedron<T>::compute_edge_data() {
     edge_n1_[e] = planes_[static_cast<std::size_t>(h1.face)].normal;
   }
   compute_lanes();
+}
+
+// The plane of face f through its plane triple (v0, v1, v2), with scan (if
+// not null) given the face's term of normal_conditioning().  The values of
+// plane_through(v0, v1, v2) and of NormalConditioningScan::add(e1, e2, c),
+// bit for bit: e1 = v1 - v0, e2 = v2 - v0, c = cross(e1, e2), the normal
+// c / sqrt(c.c) (scaled_cross's rescaled c where c.c leaves the safe range),
+// the offset dot(n, v0), every dot product left to right as dot() evaluates
+// it.  Float/double on scalars (the Vec3 expressions cost a third more here,
+// the hottest loop of posing); other T through plane_through_cross.  Every
+// plane a ConvexPolyhedron stores is computed here (compute_planes,
+// derive_rigid_part).
+template <Number T>
+inline Plane<T> ConvexPolyhedron<T>::plane_of_triple(int f, NormalConditioningScan* scan) const {
+  const auto& t = faces_[static_cast<std::size_t>(f)].plane_vertices;
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    const T* p0 = vertex(t[0]).data();
+    const T* p1 = vertex(t[1]).data();
+    const T* p2 = vertex(t[2]).data();
+    const T a0 = p0[0], a1 = p0[1], a2 = p0[2];
+    const T u0 = p1[0] - a0, u1 = p1[1] - a1, u2 = p1[2] - a2;  // e1
+    const T w0 = p2[0] - a0, w1 = p2[1] - a1, w2 = p2[2] - a2;  // e2
+    const T c0 = u1 * w2 - u2 * w1, c1 = u2 * w0 - u0 * w2, c2 = u0 * w1 - u1 * w0;
+    T n0 = c0, n1 = c1, n2 = c2;
+    T s = c0 * c0;
+    s = s + c1 * c1;
+    s = s + c2 * c2;
+    if (!detail::safe_squared_norm(s)) [[unlikely]] {
+      const Vec3<T> n = scaled_cross(Vec3<T>(u0, u1, u2), Vec3<T>(w0, w1, w2), Vec3<T>(c0, c1, c2));
+      n0 = n[0], n1 = n[1], n2 = n[2];
+      s = n0 * n0;
+      s = s + n1 * n1;
+      s = s + n2 * n2;
+    }
+    const T len = std::sqrt(s);
+    if (len > T(0)) n0 = n0 / len, n1 = n1 / len, n2 = n2 / len;
+    T off = n0 * a0;
+    off = off + n1 * a1;
+    off = off + n2 * a2;
+    if (scan != nullptr) {
+      auto sq = [](double x, double y, double z) { return x * x + y * y + z * z; };
+      scan->add_squares(sq(u0, u1, u2), sq(w0, w1, w2), sq(c0, c1, c2));
+    }
+    return Plane<T>{Vec3<T>(n0, n1, n2), off};
+  } else {
+    (void)scan;
+    const Vec3<T>& v0 = vertex(t[0]);
+    const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
+    return plane_through_cross(v0, e1, e2, Vec3<T>(cross(e1, e2)));
+  }
 }
 
 // From the vertices alone: bounds, centroid, extent, max |coordinate|.
@@ -210,9 +255,12 @@ struct ConvexPolyhedron<T>::NormalConditioningScan {
       const double x = v[0], y = v[1], z = v[2];
       return x * x + y * y + z * z;
     };
-    const double nc2 = sq(n);
+    add_squares(sq(e1), sq(e2), sq(n));
+  }
+  // add() given |ẽ1|^2, |ẽ2|^2 and |Ñ|^2 in double (x*x + y*y + z*z).
+  void add_squares(double e1sq, double e2sq, double nc2) {
     if constexpr (std::is_same_v<T, float>) {
-      const double num = sq(e1) * sq(e2);
+      const double num = e1sq * e2sq;
       bad |= !(nc2 > kNormalTinySquared && nc2 <= std::numeric_limits<double>::max() &&
                num <= std::numeric_limits<double>::max());
       const bool larger = num * wden > wnum * nc2;
@@ -221,7 +269,7 @@ struct ConvexPolyhedron<T>::NormalConditioningScan {
     } else {
       double r2 = std::numeric_limits<double>::infinity();
       if (nc2 > kNormalTinySquared && std::isfinite(nc2)) {
-        r2 = sq(e1) / nc2 * sq(e2);
+        r2 = e1sq / nc2 * e2sq;
         if (!std::isfinite(r2)) r2 = std::numeric_limits<double>::infinity();
       }
       if (r2 > worst) worst = r2;

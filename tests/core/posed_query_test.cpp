@@ -3,7 +3,9 @@
 // the pre-posed pair (A, posed(B, relative_pose(pose_a, pose_b))), axis
 // mapped to world; margins and bad poses.
 #include <cstring>
+#include <limits>
 #include <random>
+#include <span>
 
 #include <catch2/catch.hpp>
 
@@ -80,4 +82,67 @@ TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[po
     }
   }
   CHECK(checked == 3 * int(locals.size()));
+}
+
+// The posed traversal, brute force and manifold pose B without its edge lane
+// arrays (only sat::gauss_map reads them): every other array, lanes_bounded()
+// and the conditioning must be bit for bit those of transformed(B, X), and a
+// later request with the edge lanes must complete them to the full image, at
+// the same pose and after a check's partial image.
+TEMPLATE_TEST_CASE("posing without the edge lanes, then with them", "[posed]", float, double) {
+  using T = TestType;
+  std::mt19937_64 rng(1803);
+  const auto locals = local_shapes<T>(rng);
+  std::vector<PreparedShape<T>> prepared;
+  for (const auto& s : locals) prepared.emplace_back(s);
+  int checked = 0;
+  for (int round = 0; round < 3; ++round) {
+    for (std::size_t i = 0; i < prepared.size(); ++i) {
+      const auto x = random_pose<T>(rng, 2.0);
+      const ConvexPolyhedron<T> reference = transformed(locals[i], x);
+      if (round == 1) {
+        // a check's partial image first (one plane), then the rest
+        const int f = 0;
+        prepared[i].posed_part_scratch(x, std::span<const int>(&f, 1), std::span<const int>());
+      }
+      require_same_derived(prepared[i].posed_scratch(x, false), reference, false);
+      require_same_derived(prepared[i].posed_scratch(x, true), reference);
+      require_same_derived(prepared[i].posed_scratch(x, false), reference);  // kept
+      ++checked;
+    }
+  }
+  CHECK(checked == 3 * int(locals.size()));
+}
+
+// Posing checks B's image as with_vertices checks new vertices: a pose that
+// puts a coordinate out of T's range or makes it NaN is refused with the
+// same error code (BadScale, NonFinite) by the fused pass over the vertices,
+// and the scratch is usable afterwards.
+TEMPLATE_TEST_CASE("posing refuses an image out of range like with_vertices", "[posed]", float, double) {
+  using T = TestType;
+  const ConvexPolyhedron<T> box = shapes::box<T>(0.5, 0.25, 1.0);
+  const PreparedShape<T> b(box);
+  auto code_of = [](auto&& f) {
+    try {
+      f();
+    } catch (const InvalidInput& e) {
+      return e.code();
+    }
+    FAIL("no InvalidInput");
+    return ErrorCode::BadScale;
+  };
+  const T big = std::numeric_limits<T>::max() / 4;
+  const T inf = std::numeric_limits<T>::infinity();
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  for (const T t : {big, T(-big), inf, nan}) {
+    RigidTransform<T> x;
+    x.translation = Vec3<T>(T(0), t, T(0));
+    const ErrorCode expected = code_of([&] { (void)transformed(box, x); });
+    CHECK(expected == (t == big || t == -big ? ErrorCode::BadScale : ErrorCode::NonFinite));
+    CHECK(code_of([&] { (void)b.posed_scratch(x); }) == expected);
+    CHECK(code_of([&] { (void)b.posed_scratch(x, false); }) == expected);
+    CHECK(code_of([&] { (void)posed(box, x); }) == expected);
+    const RigidTransform<T> ok;
+    require_same_derived(b.posed_scratch(ok), transformed(box, ok));
+  }
 }
