@@ -256,9 +256,10 @@ class ConvexPolyhedron {
   /// point and states the formula): src's topology and plane triples, the
   /// vertices point(v) for every vertex of src, and everything else
   /// recomputed from them exactly as with_vertices does (bit for bit the same
-  /// planes, edge arrays, lanes and bounds), in one pass per array, with
-  /// normal_conditioning() computed along with the planes (the robust kernel
-  /// asks for it on every posed query).  The topology is copied from src
+  /// planes, edge arrays, lanes and bounds), in one pass over the vertices,
+  /// one over the faces and one over the edges (assign_rigid_vertices,
+  /// finish_rigid_image), with normal_conditioning() computed along with the
+  /// planes (the robust kernel asks for it on every posed query).  The topology is copied from src
   /// unless same_topology says *this already holds it.  Reuses the capacity
   /// of *this: no allocation once it has held a shape at least as large.
   /// Throws as with_vertices does (NonFinite, BadScale).

@@ -105,9 +105,11 @@ inline void ConvexPolyhedron<T>::compute_edge_data() {
 // it.  Float/double on scalars (the Vec3 expressions cost a third more here,
 // the hottest loop of posing); other T through plane_through_cross.  Every
 // plane a ConvexPolyhedron stores is computed here (compute_planes,
-// derive_rigid_part).
+// derive_rigid_part).  Inlined into its loops (as a call it cost a fifth
+// more per face).
 template <Number T>
-inline Plane<T> ConvexPolyhedron<T>::plane_of_triple(int f, NormalConditioningScan* scan) const {
+[[gnu::always_inline]] inline Plane<T> ConvexPolyhedron<T>::plane_of_triple(
+    int f, NormalConditioningScan* scan) const {
   const auto& t = faces_[static_cast<std::size_t>(f)].plane_vertices;
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     const T* p0 = vertex(t[0]).data();
