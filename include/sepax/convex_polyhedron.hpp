@@ -256,9 +256,10 @@ class ConvexPolyhedron {
   /// point and states the formula): src's topology and plane triples, the
   /// vertices point(v) for every vertex of src, and everything else
   /// recomputed from them exactly as with_vertices does (bit for bit the same
-  /// planes, edge arrays, lanes and bounds), in one pass per array, with
-  /// normal_conditioning() computed along with the planes (the robust kernel
-  /// asks for it on every posed query).  The topology is copied from src
+  /// planes, edge arrays, lanes and bounds), in one pass over the vertices,
+  /// one over the faces and one over the edges (assign_rigid_vertices,
+  /// finish_rigid_image), with normal_conditioning() computed along with the
+  /// planes (the robust kernel asks for it on every posed query).  The topology is copied from src
   /// unless same_topology says *this already holds it.  Reuses the capacity
   /// of *this: no allocation once it has held a shape at least as large.
   /// Throws as with_vertices does (NonFinite, BadScale).
@@ -273,9 +274,13 @@ class ConvexPolyhedron {
   /// the topology (unless same_topology), the vertices point(v), the bounds,
   /// centroid, extent and max |coordinate| (the values assign_rigid_image
   /// gives), and the range checks on them (NonFinite, BadScale).  The result
-  /// is a *partial* image: planes, per-edge arrays and lanes are not set
-  /// (lanes_bounded() is false, normal_conditioning() +infinity) until
+  /// is a *partial* image: planes, per-edge arrays and edge lanes are not
+  /// set (lanes_bounded() is false, normal_conditioning() +infinity) until
   /// derive_rigid_part (some of them) or finish_rigid_image (all of them).
+  /// Float/double: one pass over the vertices computes each image point,
+  /// writes it and its vertex lanes, and adds it to the bounds, the sum and
+  /// the finiteness test (the values compute_bounds and compute_lanes give,
+  /// bit for bit: the same sequential sum, the same comparisons).
   template <class Point>
   void assign_rigid_vertices(const ConvexPolyhedron& src, bool same_topology, Point&& point) {
     if (!same_topology) {
@@ -284,9 +289,8 @@ class ConvexPolyhedron {
       fan_start_ = src.fan_start_;
       fan_ = src.fan_;
     }
-    vertices_.resize(src.vertices_.size());
-    for (std::size_t i = 0; i < vertices_.size(); ++i) vertices_[i] = point(src.vertices_[i]);
-    check_coordinates();
+    const std::size_t nv = src.vertices_.size();
+    vertices_.resize(nv);
     planes_.resize(faces_.size());
     const auto ne = static_cast<std::size_t>(edge_count());
     edge_dirs_.resize(ne);
@@ -294,7 +298,49 @@ class ConvexPolyhedron {
     edge_n1_.resize(ne);
     lanes_bounded_ = false;
     normal_conditioning_.store(std::numeric_limits<double>::infinity());
-    compute_bounds();
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      size_lanes();
+      const auto vs = static_cast<std::size_t>(lane_vertex_stride_);
+      T* const lv = lanes_.data() + 9 * static_cast<std::size_t>(lane_edge_stride_);
+      const T tmax = std::numeric_limits<T>::max();
+      const T inf = std::numeric_limits<T>::infinity();
+      // bounds from +-infinity: the first vertex sets both (compute_bounds
+      // starts from it and compares it with itself: the same values)
+      // per coordinate in registers (x, y, z spelled out: a loop over the
+      // coordinates kept them in memory)
+      T lo0 = inf, lo1 = inf, lo2 = inf, hi0 = -inf, hi1 = -inf, hi2 = -inf;
+      T s0 = T(0), s1 = T(0), s2 = T(0);
+      bool finite = true;
+      for (std::size_t i = 0; i < nv; ++i) {
+        const Vec3<T> v = point(src.vertices_[i]);
+        vertices_[i] = v;
+        const T x = v[0], y = v[1], z = v[2];
+        s0 = s0 + x;
+        s1 = s1 + y;
+        s2 = s2 + z;
+        lv[i] = x;
+        lv[vs + i] = y;
+        lv[2 * vs + i] = z;
+        finite &= std::abs(x) <= tmax;  // false for NaN and infinities
+        finite &= std::abs(y) <= tmax;
+        finite &= std::abs(z) <= tmax;
+        lo0 = x < lo0 ? x : lo0;
+        lo1 = y < lo1 ? y : lo1;
+        lo2 = z < lo2 ? z : lo2;
+        hi0 = x > hi0 ? x : hi0;
+        hi1 = y > hi1 ? y : hi1;
+        hi2 = z > hi2 ? z : hi2;
+      }
+      for (std::size_t c = 0; c < 3; ++c) std::fill(lv + c * vs + nv, lv + (c + 1) * vs, T(0));
+      if (!finite || nv < 3) check_coordinates();  // throws, naming the vertex
+      bmin_ = Vec3<T>(lo0, lo1, lo2);
+      bmax_ = Vec3<T>(hi0, hi1, hi2);
+      finish_bounds(Vec3<T>(s0, s1, s2));
+    } else {
+      for (std::size_t i = 0; i < nv; ++i) vertices_[i] = point(src.vertices_[i]);
+      check_coordinates();
+      compute_bounds();
+    }
     if constexpr (!number_traits<T>::is_exact) {
       if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
       check_range(false);
@@ -311,14 +357,7 @@ class ConvexPolyhedron {
   /// other planes, edges and the lanes are stale).
   void derive_rigid_part(std::span<const int> faces, std::span<const int> edges) {
     [[maybe_unused]] NormalConditioningScan scan;
-    auto derive = [&](int f) {
-      const auto& t = faces_[static_cast<std::size_t>(f)].plane_vertices;
-      const Vec3<T>& v0 = vertex(t[0]);
-      const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
-      const Vec3<T> c(cross(e1, e2));
-      planes_[static_cast<std::size_t>(f)] = plane_through_cross(v0, e1, e2, c);
-      if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) scan.add(e1, e2, c);
-    };
+    auto derive = [&](int f) { planes_[static_cast<std::size_t>(f)] = plane_of_triple(f, &scan); };
     if (is_flat()) {
       derive(0);  // the back face: the front one negated (compute_derived)
       planes_[1] = Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)};
@@ -339,10 +378,33 @@ class ConvexPolyhedron {
 
   /// Step 2 of assign_rigid_image after assign_rigid_vertices: every plane,
   /// per-edge array, lane and normal_conditioning(), and the plane checks;
-  /// *this is then bit for bit what assign_rigid_image gives.
-  void finish_rigid_image() {
-    compute_derived(true, false);
-    check_new_range();
+  /// *this is then bit for bit what assign_rigid_image gives.  Float/double:
+  /// one pass over the faces (plane, conditioning scan, range of the normals
+  /// and offsets) and one over the edges (per-edge arrays and their edge
+  /// lanes, range of the directions).  edge_lanes = false leaves the 9 edge
+  /// lane arrays unwritten (only sat::gauss_map's batched arc test reads
+  /// them, simd::arc_candidates) and everything else, lanes_bounded()
+  /// included, as with them; finish_rigid_edge_lanes() writes them later.
+  void finish_rigid_image(bool edge_lanes = true) {
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      const PlanesInRange pr = compute_planes(true);
+      // extent and coordinates were checked with the vertices; a plane that
+      // is not finite is refused by check_range (which passes otherwise)
+      if (!(pr.normals_bounded && pr.offsets_finite)) check_range();
+      const bool edges_bounded = edge_lanes ? derive_rigid_edges<true>() : derive_rigid_edges<false>();
+      // compute_lanes' bound: normals, directions and vertices within 2^60
+      // (max_abs_ is the largest |vertex coordinate|, exactly)
+      lanes_bounded_ = pr.normals_bounded && edges_bounded && max_abs_ <= 0x1p60;
+    } else {
+      compute_derived(true, false);
+      check_new_range();
+    }
+  }
+
+  /// After finish_rigid_image(false): the edge lane arrays, as
+  /// finish_rigid_image(true) writes them.
+  void finish_rigid_edge_lanes() {
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) write_edge_lanes();
   }
 
   // ---- sizes ----
@@ -500,10 +562,53 @@ class ConvexPolyhedron {
   // Derived data (convex_polyhedron_derived.hpp): planes, per-edge arrays,
   // lanes, bounds and normal_conditioning() from the vertices and topology.
   void compute_derived(bool eager_conditioning = false, bool with_bounds = true);
+  struct PlanesInRange {
+    bool normals_bounded = false;  // every normal component |x| <= 2^60
+    bool offsets_finite = false;
+  };
+  PlanesInRange compute_planes(bool eager_conditioning);
   void compute_edge_data();
   void compute_bounds();
+  void finish_bounds(const Vec3<T>& sum);
+  void size_lanes();
+  bool write_edge_lanes();
+  // The per-edge arrays of a rigid image (finish_rigid_image) from its
+  // vertices and planes, and with kLanes their edge lanes (lanes_ sized);
+  // returns whether every direction component has |x| <= 2^60.
+  template <bool kLanes>
+  bool derive_rigid_edges() {
+    const auto ne = static_cast<std::size_t>(edge_count());
+    const auto es = static_cast<std::size_t>(lane_edge_stride_);
+    T* const l = lanes_.data();
+    const T big = T(0x1p60);
+    bool ok = true;
+    for (std::size_t e = 0; e < ne; ++e) {
+      const HalfEdge& h0 = half_edges_[2 * e];
+      const HalfEdge& h1 = half_edges_[2 * e + 1];
+      const Vec3<T> d(vertex(h1.origin) - vertex(h0.origin));  // edge_direction(e)
+      const Vec3<T>& n0 = planes_[static_cast<std::size_t>(h0.face)].normal;
+      const Vec3<T>& n1 = planes_[static_cast<std::size_t>(h1.face)].normal;
+      edge_dirs_[e] = d;
+      edge_n0_[e] = n0;
+      edge_n1_[e] = n1;
+      for (int c = 0; c < 3; ++c) {
+        ok &= std::abs(d[c]) <= big;
+        if constexpr (kLanes) {
+          const auto k = static_cast<std::size_t>(c);
+          l[k * es + e] = n0[c];
+          l[(3 + k) * es + e] = T(-n1[c]);
+          l[(6 + k) * es + e] = d[c];
+        }
+      }
+    }
+    if constexpr (kLanes) {
+      for (std::size_t k = 0; k < 9; ++k) std::fill(l + k * es + ne, l + (k + 1) * es, T(0));
+    }
+    return ok;
+  }
   double compute_normal_conditioning() const;
   struct NormalConditioningScan;
+  Plane<T> plane_of_triple(int f, NormalConditioningScan* scan) const;
   void compute_lanes();
   T height(int f, const Vec3<T>& p) const;
   T height_tolerance(double rel) const;

@@ -24,16 +24,32 @@ namespace sepax {
 
 // The planes from the plane triples, then everything after them.  With
 // eager_conditioning (float/double), normal_conditioning() is computed in
-// the same pass from the plane triples' differences and cross products
-// (the value compute_normal_conditioning() gives, bit for bit: the same
-// expressions and the same scan, NormalConditioningScan).
+// the same pass (compute_planes).
 template <Number T>
 inline void ConvexPolyhedron<T>::compute_derived(bool eager_conditioning, bool with_bounds) {
+  compute_planes(eager_conditioning);
+  compute_edge_data();
+  if (with_bounds) compute_bounds();
+}
+
+// The planes from the plane triples.  With eager_conditioning
+// (float/double), normal_conditioning() is computed in the same pass from
+// the plane triples' differences and cross products (the value
+// compute_normal_conditioning() gives, bit for bit: the same expressions
+// and the same scan, NormalConditioningScan); otherwise it is reset (computed
+// on first use).  Returns, for float/double, whether every normal component
+// is within 2^60 in magnitude (compute_lanes' bound; false for NaN) and
+// whether every offset is finite, tested without a branch per value.
+template <Number T>
+inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_planes(
+    bool eager_conditioning) {
   const auto nf = faces_.size();
   planes_.resize(nf);
   [[maybe_unused]] NormalConditioningScan scan;
   [[maybe_unused]] const bool cond =
       eager_conditioning && (std::is_same_v<T, float> || std::is_same_v<T, double>);
+  PlanesInRange in_range;
+  [[maybe_unused]] bool nb = true, of = true;
   for (std::size_t f = 0; f < nf; ++f) {
     if (f == 1 && nf == 2) {
       // Flat shape: the back face's plane is exactly the front one negated.
@@ -44,21 +60,21 @@ inline void ConvexPolyhedron<T>::compute_derived(bool eager_conditioning, bool w
       planes_[1] = Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)};
       continue;
     }
-    const auto& t = faces_[f].plane_vertices;
-    const Vec3<T>& v0 = vertex(t[0]);
-    const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
-    const Vec3<T> c(cross(e1, e2));
-    planes_[f] = plane_through_cross(v0, e1, e2, c);
+    const Plane<T> pl = plane_of_triple(static_cast<int>(f), cond ? &scan : nullptr);
+    planes_[f] = pl;
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-      if (cond) scan.add(e1, e2, c);
+      const T big = T(0x1p60);
+      nb &= std::abs(pl.normal[0]) <= big && std::abs(pl.normal[1]) <= big && std::abs(pl.normal[2]) <= big;
+      of &= std::abs(pl.offset) <= std::numeric_limits<T>::max();
     }
   }
   normal_conditioning_.reset();  // new coordinates: computed again on first use
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     if (cond) normal_conditioning_.store(scan.result());
+    in_range.normals_bounded = nb;  // the back face of a flat shape: the front one negated
+    in_range.offsets_finite = of;
   }
-  compute_edge_data();
-  if (with_bounds) compute_bounds();
+  return in_range;
 }
 
 // Everything after the planes: per-edge arrays and lanes.  Reuses the
@@ -80,6 +96,58 @@ inline void ConvexPolyhedron<T>::compute_edge_data() {
   compute_lanes();
 }
 
+// The plane of face f through its plane triple (v0, v1, v2), with scan (if
+// not null) given the face's term of normal_conditioning().  The values of
+// plane_through(v0, v1, v2) and of NormalConditioningScan::add(e1, e2, c),
+// bit for bit: e1 = v1 - v0, e2 = v2 - v0, c = cross(e1, e2), the normal
+// c / sqrt(c.c) (scaled_cross's rescaled c where c.c leaves the safe range),
+// the offset dot(n, v0), every dot product left to right as dot() evaluates
+// it.  Float/double on scalars (the Vec3 expressions cost a third more here,
+// the hottest loop of posing); other T through plane_through_cross.  Every
+// plane a ConvexPolyhedron stores is computed here (compute_planes,
+// derive_rigid_part).  Inlined into its loops (as a call it cost a fifth
+// more per face).
+template <Number T>
+[[gnu::always_inline]] inline Plane<T> ConvexPolyhedron<T>::plane_of_triple(
+    int f, NormalConditioningScan* scan) const {
+  const auto& t = faces_[static_cast<std::size_t>(f)].plane_vertices;
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    const T* p0 = vertex(t[0]).data();
+    const T* p1 = vertex(t[1]).data();
+    const T* p2 = vertex(t[2]).data();
+    const T a0 = p0[0], a1 = p0[1], a2 = p0[2];
+    const T u0 = p1[0] - a0, u1 = p1[1] - a1, u2 = p1[2] - a2;  // e1
+    const T w0 = p2[0] - a0, w1 = p2[1] - a1, w2 = p2[2] - a2;  // e2
+    const T c0 = u1 * w2 - u2 * w1, c1 = u2 * w0 - u0 * w2, c2 = u0 * w1 - u1 * w0;
+    T n0 = c0, n1 = c1, n2 = c2;
+    T s = c0 * c0;
+    s = s + c1 * c1;
+    s = s + c2 * c2;
+    if (!detail::safe_squared_norm(s)) [[unlikely]] {
+      const Vec3<T> n = scaled_cross(Vec3<T>(u0, u1, u2), Vec3<T>(w0, w1, w2), Vec3<T>(c0, c1, c2));
+      n0 = n[0], n1 = n[1], n2 = n[2];
+      s = n0 * n0;
+      s = s + n1 * n1;
+      s = s + n2 * n2;
+    }
+    const T len = std::sqrt(s);
+    if (len > T(0)) n0 = n0 / len, n1 = n1 / len, n2 = n2 / len;
+    T off = n0 * a0;
+    off = off + n1 * a1;
+    off = off + n2 * a2;
+    if (scan != nullptr) {
+      auto sq = [](double x, double y, double z) { return x * x + y * y + z * z; };
+      scan->add_squares(sq(u0, u1, u2), sq(w0, w1, w2), sq(c0, c1, c2));
+    }
+    return Plane<T>{Vec3<T>(n0, n1, n2), off};
+  } else {
+    (void)scan;
+    const Vec3<T>& v0 = vertex(t[0]);
+    const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
+    return plane_through_cross(v0, e1, e2, Vec3<T>(cross(e1, e2)));
+  }
+}
+
 // From the vertices alone: bounds, centroid, extent, max |coordinate|.
 template <Number T>
 inline void ConvexPolyhedron<T>::compute_bounds() {
@@ -92,6 +160,13 @@ inline void ConvexPolyhedron<T>::compute_bounds() {
       if (v[c] > bmax_[c]) bmax_[c] = v[c];
     }
   }
+  finish_bounds(sum);
+}
+
+// compute_bounds() after its pass over the vertices: bmin_, bmax_ are set
+// and sum is the sequential sum of the vertices (from zero, in index order).
+template <Number T>
+inline void ConvexPolyhedron<T>::finish_bounds(const Vec3<T>& sum) {
   const T n = from_double<T>(static_cast<double>(vertices_.size()));  // exact for any count < 2^53
   if (!vertices_.empty()) centroid_ = Vec3<T>(sum[0] / n, sum[1] / n, sum[2] / n);
   double d2 = 0;
@@ -182,9 +257,12 @@ struct ConvexPolyhedron<T>::NormalConditioningScan {
       const double x = v[0], y = v[1], z = v[2];
       return x * x + y * y + z * z;
     };
-    const double nc2 = sq(n);
+    add_squares(sq(e1), sq(e2), sq(n));
+  }
+  // add() given |ẽ1|^2, |ẽ2|^2 and |Ñ|^2 in double (x*x + y*y + z*z).
+  void add_squares(double e1sq, double e2sq, double nc2) {
     if constexpr (std::is_same_v<T, float>) {
-      const double num = sq(e1) * sq(e2);
+      const double num = e1sq * e2sq;
       bad |= !(nc2 > kNormalTinySquared && nc2 <= std::numeric_limits<double>::max() &&
                num <= std::numeric_limits<double>::max());
       const bool larger = num * wden > wnum * nc2;
@@ -193,7 +271,7 @@ struct ConvexPolyhedron<T>::NormalConditioningScan {
     } else {
       double r2 = std::numeric_limits<double>::infinity();
       if (nc2 > kNormalTinySquared && std::isfinite(nc2)) {
-        r2 = sq(e1) / nc2 * sq(e2);
+        r2 = e1sq / nc2 * e2sq;
         if (!std::isfinite(r2)) r2 = std::numeric_limits<double>::infinity();
       }
       if (r2 > worst) worst = r2;
@@ -220,30 +298,12 @@ inline void ConvexPolyhedron<T>::compute_lanes() {
   lane_edge_stride_ = lane_vertex_stride_ = 0;
   lanes_bounded_ = false;
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-    auto padded = [](int n) { return (n + kLanePad - 1) / kLanePad * kLanePad; };
-    lane_edge_stride_ = padded(edge_count());
-    lane_vertex_stride_ = padded(vertex_count());
-    const auto es = static_cast<std::size_t>(lane_edge_stride_);
+    size_lanes();
     const auto vs = static_cast<std::size_t>(lane_vertex_stride_);
-    const auto ne = static_cast<std::size_t>(edge_count());
     const auto nv = static_cast<std::size_t>(vertex_count());
-    lanes_.resize(9 * es + 3 * vs);
-    T* const l = lanes_.data();
+    bool ok = write_edge_lanes();
     const T big = T(0x1p60);
-    bool ok = true;
-    for (std::size_t e = 0; e < ne; ++e) {
-      const Vec3<T>& n0 = edge_n0_[e];
-      const Vec3<T>& n1 = edge_n1_[e];
-      const Vec3<T>& d = edge_dirs_[e];
-      for (std::size_t c = 0; c < 3; ++c) {
-        l[c * es + e] = n0[static_cast<int>(c)];
-        l[(3 + c) * es + e] = T(-n1[static_cast<int>(c)]);
-        l[(6 + c) * es + e] = d[static_cast<int>(c)];
-        ok &= std::abs(d[static_cast<int>(c)]) <= big;
-      }
-    }
-    for (std::size_t k = 0; k < 9; ++k) std::fill(l + k * es + ne, l + (k + 1) * es, T(0));
-    T* const lv = l + 9 * es;
+    T* const lv = lanes_.data() + 9 * static_cast<std::size_t>(lane_edge_stride_);
     for (std::size_t v = 0; v < nv; ++v) {
       for (std::size_t c = 0; c < 3; ++c) {
         const T x = vertices_[v][static_cast<int>(c)];
@@ -259,6 +319,42 @@ inline void ConvexPolyhedron<T>::compute_lanes() {
   } else {
     lanes_.clear();
   }
+}
+
+// Float/double: the lane strides for the current counts, and lanes_ sized
+// for them (9 edge arrays, then 3 vertex arrays; values not written).
+template <Number T>
+inline void ConvexPolyhedron<T>::size_lanes() {
+  auto padded = [](int n) { return (n + kLanePad - 1) / kLanePad * kLanePad; };
+  lane_edge_stride_ = padded(edge_count());
+  lane_vertex_stride_ = padded(vertex_count());
+  lanes_.resize(9 * static_cast<std::size_t>(lane_edge_stride_) +
+                3 * static_cast<std::size_t>(lane_vertex_stride_));
+}
+
+// Float/double, lanes_ sized (size_lanes): the 9 edge lane arrays from the
+// per-edge arrays, the padding zeroed.  Returns whether every edge
+// direction component has |x| <= 2^60 (false for NaN).
+template <Number T>
+inline bool ConvexPolyhedron<T>::write_edge_lanes() {
+  const auto es = static_cast<std::size_t>(lane_edge_stride_);
+  const auto ne = static_cast<std::size_t>(edge_count());
+  T* const l = lanes_.data();
+  const T big = T(0x1p60);
+  bool ok = true;
+  for (std::size_t e = 0; e < ne; ++e) {
+    const Vec3<T>& n0 = edge_n0_[e];
+    const Vec3<T>& n1 = edge_n1_[e];
+    const Vec3<T>& d = edge_dirs_[e];
+    for (std::size_t c = 0; c < 3; ++c) {
+      l[c * es + e] = n0[static_cast<int>(c)];
+      l[(3 + c) * es + e] = T(-n1[static_cast<int>(c)]);
+      l[(6 + c) * es + e] = d[static_cast<int>(c)];
+      ok &= std::abs(d[static_cast<int>(c)]) <= big;
+    }
+  }
+  for (std::size_t k = 0; k < 9; ++k) std::fill(l + k * es + ne, l + (k + 1) * es, T(0));
+  return ok;
 }
 
 // Signed distance-like value of p above plane f: exact N.(p - v_i) for exact

@@ -192,9 +192,11 @@ std::optional<SatResult<T>> margin_precheck(const PreparedShape<T>& a, const Pre
 }
 
 /// The posed query: B moved into A's frame, the kernel built on (A, B'),
-/// run(k) the SAT, the axis mapped to world.  With early_out and a valid
+/// run(k) the SAT, the axis mapped to world.  kEdgeLanes: run reads B's
+/// edge lane arrays (sat::gauss_map's batched arc test); the others run on
+/// B' without them (PreparedShape::posed_scratch).  With early_out and a valid
 /// cache, the cached feature is checked first on a partial B' (warm_hit).
-template <class Policy, Number T, class Run>
+template <class Policy, bool kEdgeLanes, Number T, class Run>
 SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pose_a,
                          const PreparedShape<T>& b, const RigidTransform<T>& pose_b, const SatOptions& opt,
                          SatCache<T>* cache, Run&& run) {
@@ -217,7 +219,7 @@ SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pos
       }
     }
   }
-  const ConvexPolyhedron<T>& bp = b.posed_scratch(x);
+  const ConvexPolyhedron<T>& bp = b.posed_scratch(x, kEdgeLanes);
   kernel_t<Policy, T> k(a.polyhedron(), bp);
   SatResult<T> r = cache ? cached_run(k, *cache, opt, run) : run(k, opt, nullptr);
   r.axis = pose_a.rotate(r.axis);
@@ -231,10 +233,10 @@ template <class Policy = policy::Plain, Number T>
 SatResult<T> traversal(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
                        const RigidTransform<T>& pose_b, const SatOptions& opt = {},
                        SatCache<T>* cache = nullptr) {
-  return detail::posed_query<Policy>(a, pose_a, b, pose_b, opt, cache,
-                                     [&](auto& k, const SatOptions& o, const Feature* seed) {
-                                       return traversal_with(k, a.walk(), b.walk(), o, nullptr, seed);
-                                     });
+  return detail::posed_query<Policy, false>(a, pose_a, b, pose_b, opt, cache,
+                                            [&](auto& k, const SatOptions& o, const Feature* seed) {
+                                              return traversal_with(k, a.walk(), b.walk(), o, nullptr, seed);
+                                            });
 }
 
 /// Posed Gauss-map SAT (see the header comment).
@@ -242,7 +244,7 @@ template <class Policy = policy::Plain, Number T>
 SatResult<T> gauss_map(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
                        const RigidTransform<T>& pose_b, const SatOptions& opt = {},
                        SatCache<T>* cache = nullptr) {
-  return detail::posed_query<Policy>(
+  return detail::posed_query<Policy, true>(
       a, pose_a, b, pose_b, opt, cache,
       [](auto& k, const SatOptions& o, const Feature* seed) { return gauss_map_with(k, o, seed); });
 }
@@ -252,7 +254,7 @@ template <class Policy = policy::Plain, Number T>
 SatResult<T> brute_force(const PreparedShape<T>& a, const RigidTransform<T>& pose_a,
                          const PreparedShape<T>& b, const RigidTransform<T>& pose_b,
                          const SatOptions& opt = {}, SatCache<T>* cache = nullptr) {
-  return detail::posed_query<Policy>(
+  return detail::posed_query<Policy, false>(
       a, pose_a, b, pose_b, opt, cache,
       [](auto& k, const SatOptions& o, const Feature* seed) { return brute_force_with(k, o, seed); });
 }
@@ -319,8 +321,8 @@ ContactManifold<T> contact_manifold(const PreparedShape<T>& a, const RigidTransf
   check_options(opt);
   if (a.polyhedron().empty())
     throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape A is empty (moved from)");
-  return detail::posed_manifold_on(a.polyhedron(), pose_a, b.posed_scratch(relative_pose(pose_a, pose_b)), r,
-                                   opt);
+  return detail::posed_manifold_on(a.polyhedron(), pose_a,
+                                   b.posed_scratch(relative_pose(pose_a, pose_b), false), r, opt);
 }
 
 }  // namespace sepax

@@ -51,7 +51,8 @@ namespace detail {
 /// The per-thread scratch a posed query moves B into (see the header).
 template <Number T>
 struct PoseScratch {
-  enum Stage { kNone, kVertices, kFull };
+  // kNoEdgeLanes: all of B' but its edge lane arrays (finish_rigid_image(false))
+  enum Stage { kNone, kVertices, kNoEdgeLanes, kFull };
   ConvexPolyhedron<T> poly;
   std::uint64_t serial = 0;  // PreparedShape::serial() of the shape poly holds (0: none)
   Stage stage = kNone;       // poly is that shape at pose x: its vertices (a partial image), or all of it
@@ -188,22 +189,24 @@ class PreparedShape {
 
   /// This shape moved by x (posing.hpp's posed(polyhedron(), x), bit for
   /// bit) in this thread's scratch; valid until the thread's next posed
-  /// query or posed_scratch call.  No allocation once the thread's scratch
-  /// has held a shape at least this large.  Throws InvalidInput for an
-  /// empty (moved-from) shape or a non-rigid x (posing.hpp).
-  const ConvexPolyhedron<T>& posed_scratch(const RigidTransform<T>& x) const {
+  /// query or posed_scratch call.  edge_lanes = false: everything but the
+  /// edge lane arrays, which only sat::gauss_map's batched arc test reads
+  /// (ConvexPolyhedron::finish_rigid_image); the posed traversal, brute
+  /// force and manifold ask for that.  No allocation once the thread's
+  /// scratch has held a shape at least this large.  Throws InvalidInput for
+  /// an empty (moved-from) shape or a non-rigid x (posing.hpp).
+  const ConvexPolyhedron<T>& posed_scratch(const RigidTransform<T>& x, bool edge_lanes = true) const {
     auto& s = detail::pose_scratch<T>();
-    if (s.serial == serial_ && s.stage != S::kNone && detail::same_pose(s.x, x)) {
-      if (s.stage == S::kFull) return s.poly;
-      // the vertices are there (a check of a posed query's): finish them
+    if (!(s.serial == serial_ && s.stage != S::kNone && detail::same_pose(s.x, x))) pose_vertices(s, x);
+    // the vertices are there (a check of a posed query's, or this call): finish them
+    if (s.stage == S::kVertices) {
       s.stage = S::kNone;
-      s.poly.finish_rigid_image();
+      s.poly.finish_rigid_image(edge_lanes);
+      s.stage = edge_lanes ? S::kFull : S::kNoEdgeLanes;
+    } else if (s.stage == S::kNoEdgeLanes && edge_lanes) {
+      s.poly.finish_rigid_edge_lanes();
       s.stage = S::kFull;
-      return s.poly;
     }
-    pose_vertices(s, x);
-    s.poly.finish_rigid_image();
-    s.stage = S::kFull;
     return s.poly;
   }
 
@@ -220,7 +223,7 @@ class PreparedShape {
                                                 std::span<const int> edges) const {
     auto& s = detail::pose_scratch<T>();
     if (s.serial == serial_ && s.stage != S::kNone && detail::same_pose(s.x, x)) {
-      if (s.stage == S::kFull)
+      if (s.stage == S::kFull || s.stage == S::kNoEdgeLanes)
         return s.poly;  // every plane is there (derive_rigid_part would narrow its bound)
     } else {
       pose_vertices(s, x);
