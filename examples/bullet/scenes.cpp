@@ -35,7 +35,7 @@ constexpr double kDt = 1.0 / 60.0;
 /// The solver settings every scene runs with, the same for both algorithms
 /// (docs/bullet.md, "World settings").
 struct SolverSettings {
-  int iterations = 50;
+  int iterations = 1000;
   bool two_friction_directions = true;
 };
 SolverSettings g_solver;
@@ -83,7 +83,8 @@ struct World {
       // Bullet's default mode has one friction direction per point: along the
       // sliding velocity, or below 3.5e-4 m/s a fixed tangent (btPlaneSpace1),
       // which leaves the other tangent frictionless at rest.
-      si.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS | SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION;
+      si.m_solverMode |=
+          SOLVER_USE_2_FRICTION_DIRECTIONS | SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION;
     }
     if (use_sepax) {
       sepax_cf = std::make_unique<sepax::bullet::CreateFunc>(config);
