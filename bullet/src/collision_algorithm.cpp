@@ -236,7 +236,8 @@ bool same_ids(const btManifoldPoint& x, const btManifoldPoint& y) {
 
 /// Writes the world-space manifold m of (w0, w1) into `man` (see the header):
 /// points built as btManifoldResult::addContactPoint builds them, matched to
-/// the manifold's points by their feature ids.  Returns the id matches.
+/// the manifold's points by their feature ids, else by position.  Returns
+/// the id matches.
 int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
                  const btCollisionObjectWrapper* w1, const ContactManifold<float>& m) {
   const btCollisionObject* o0 = w0->getCollisionObject();
@@ -290,35 +291,58 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
   }
 
   const bool new_collision = man.getNumContacts() == 0;
-  // Points whose features left the contact go (backwards: removal moves the
-  // last point into the hole, which has been looked at already).
-  for (int i = man.getNumContacts() - 1; i >= 0; --i) {
-    bool kept = false;
-    for (int j = 0; j < count && !kept; ++j) kept = same_ids(man.getContactPoint(i), fresh[j]);
-    if (!kept) man.removeContactPoint(i);
-  }
+  // Each new point takes the stored point with its ids (its warm start);
+  // a new point whose ids no stored point has takes, as Bullet's
+  // getCacheEntry does, the nearest remaining stored point within the
+  // threshold (local point on body 1).  Ids change where a feature of the
+  // clip changes at the same place (a vertex of B crossing a side plane of
+  // A's face, for equal boxes exactly on it): the point, and the impulse
+  // the solver has accumulated there, stays.
+  const int stored = man.getNumContacts();
+  int from[MANIFOLD_CACHE_SIZE] = {-1, -1, -1, -1};  // the stored point each new point replaces
+  bool used[MANIFOLD_CACHE_SIZE] = {false, false, false, false};
   int matches = 0;
-  bool taken[MANIFOLD_CACHE_SIZE] = {false, false, false, false};
+  for (int j = 0; j < count; ++j) {
+    for (int i = 0; i < stored && from[j] < 0; ++i) {
+      if (!used[i] && same_ids(man.getContactPoint(i), fresh[j])) from[j] = i;
+    }
+    if (from[j] >= 0) {
+      used[from[j]] = true;
+      ++matches;
+    }
+  }
+  for (int j = 0; j < count; ++j) {
+    if (from[j] >= 0) continue;
+    btScalar nearest = threshold * threshold;
+    for (int i = 0; i < stored; ++i) {
+      if (used[i]) continue;
+      const btScalar d2 = (man.getContactPoint(i).m_localPointB - fresh[j].m_localPointB).length2();
+      if (d2 < nearest) {
+        nearest = d2;
+        from[j] = i;
+      }
+    }
+    if (from[j] >= 0) used[from[j]] = true;
+  }
+  for (int j = 0; j < count; ++j) {
+    if (from[j] >= 0) man.replaceContactPoint(fresh[j], from[j]);
+  }
+  // Stored points no new point took go (backwards: removal moves the last
+  // point into the hole, which has been looked at already).
+  for (int i = stored - 1; i >= 0; --i) {
+    if (!used[i]) man.removeContactPoint(i);
+  }
+  for (int j = 0; j < count; ++j) {
+    if (from[j] < 0) man.addManifoldPoint(fresh[j]);
+  }
   const bool custom =
       (o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK;
-  for (int j = 0; j < count; ++j) {
-    int at = -1;
-    for (int i = 0; i < man.getNumContacts() && at < 0; ++i) {
-      if (!taken[i] && same_ids(man.getContactPoint(i), fresh[j])) at = i;
-    }
-    if (at >= 0) {
-      man.replaceContactPoint(fresh[j], at);
-      ++matches;
-    } else {
-      at = man.addManifoldPoint(fresh[j]);
-    }
-    taken[at] = true;
-    if (gContactAddedCallback && custom) {
-      const btCollisionObjectWrapper* x0 = swapped ? w1 : w0;
-      const btCollisionObjectWrapper* x1 = swapped ? w0 : w1;
-      const btManifoldPoint& q = fresh[j];
-      (*gContactAddedCallback)(man.getContactPoint(at), x0, q.m_partId0, q.m_index0, x1, q.m_partId1,
-                               q.m_index1);
+  if (gContactAddedCallback && custom) {
+    const btCollisionObjectWrapper* x0 = swapped ? w1 : w0;
+    const btCollisionObjectWrapper* x1 = swapped ? w0 : w1;
+    for (int i = 0; i < man.getNumContacts(); ++i) {
+      btManifoldPoint& q = man.getContactPoint(i);
+      (*gContactAddedCallback)(q, x0, q.m_partId0, q.m_index0, x1, q.m_partId1, q.m_index1);
     }
   }
   if (gContactStartedCallback && new_collision && man.getNumContacts() > 0) gContactStartedCallback(&man);

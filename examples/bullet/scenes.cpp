@@ -2,7 +2,8 @@
 // collision algorithms and with sepax's (sepax::bullet), same world settings,
 // 60 Hz fixed steps.  docs/bullet.md describes the scenes and the metrics.
 //
-//   sepax_bullet_scenes [--short] [--algorithm bullet|sepax|both] [SCENE...]
+//   sepax_bullet_scenes [--short] [--algorithm bullet|sepax|both] [--iterations N]
+//                       [--one-friction-direction] [SCENE...]
 //   scenes: stack pyramid dice plates pile slope (default: all)
 //
 // --short runs 0.5 s of settling and 1 s of rest (for ctest) and checks: no
@@ -30,6 +31,14 @@
 namespace {
 
 constexpr double kDt = 1.0 / 60.0;
+
+/// The solver settings every scene runs with, the same for both algorithms
+/// (docs/bullet.md, "World settings").
+struct SolverSettings {
+  int iterations = 1000;
+  bool two_friction_directions = true;
+};
+SolverSettings g_solver;
 
 /// btCollisionDispatcher timing its narrowphase (every pair's algorithm,
 /// manifold updates included).
@@ -68,6 +77,15 @@ struct World {
 
   explicit World(bool use_sepax) {
     world.setGravity(btVector3(0, -9.81f, 0));
+    btContactSolverInfo& si = world.getSolverInfo();
+    si.m_numIterations = g_solver.iterations;
+    if (g_solver.two_friction_directions) {
+      // Bullet's default mode has one friction direction per point: along the
+      // sliding velocity, or below 3.5e-4 m/s a fixed tangent (btPlaneSpace1),
+      // which leaves the other tangent frictionless at rest.
+      si.m_solverMode |=
+          SOLVER_USE_2_FRICTION_DIRECTIONS | SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION;
+    }
     if (use_sepax) {
       sepax_cf = std::make_unique<sepax::bullet::CreateFunc>(config);
       sepax::bullet::register_algorithm(dispatcher, *sepax_cf);
@@ -367,9 +385,18 @@ int main(int argc, char** argv) {
       short_mode = true;
     } else if (a == "--algorithm" && i + 1 < argc) {
       algo = argv[++i];
+    } else if (a == "--iterations" && i + 1 < argc) {
+      g_solver.iterations = std::atoi(argv[++i]);
+      if (g_solver.iterations < 1) {
+        std::fprintf(stderr, "--iterations needs a positive count\n");
+        return 2;
+      }
+    } else if (a == "--one-friction-direction") {
+      g_solver.two_friction_directions = false;
     } else if (a == "--help" || a == "-h") {
       std::printf(
-          "usage: %s [--short] [--algorithm bullet|sepax|both] [stack pyramid dice plates pile slope]\n",
+          "usage: %s [--short] [--algorithm bullet|sepax|both] [--iterations N] [--one-friction-direction]\n"
+          "          [stack pyramid dice plates pile slope]\n",
           argv[0]);
       return 0;
     } else {

@@ -123,6 +123,52 @@ TEST_CASE("bullet: the algorithm keeps a point's accumulated impulse when its fe
   CHECK(p.cf->counters().id_matches == 4);
 }
 
+TEST_CASE("bullet: a point whose features changed keeps the impulse of the stored point at its place") {
+  btBoxShape floor(btVector3(5, 0.5f, 5)), box(btVector3(0.5f, 0.5f, 0.5f));
+  Pair p(&floor, &box, at(0, -0.5f, 0), at(0, 0.49f, 0), true);
+  auto* m = const_cast<btPersistentManifold*>(p.manifold());
+  REQUIRE(m);
+  REQUIRE(m->getNumContacts() == 4);
+  const btScalar threshold = m->getContactBreakingThreshold();
+  // The stored points get ids no new point has (as when a vertex of B
+  // crosses a side plane of A's face and the clip names the point by an
+  // edge); point 3 is also moved farther than the threshold from where the
+  // new point will be.
+  std::vector<btVector3> where;
+  for (int i = 0; i < 4; ++i) {
+    auto& q = m->getContactPoint(i);
+    q.m_appliedImpulse = static_cast<btScalar>(i + 1);
+    q.m_index0 += 100;
+    q.m_index1 += 100;
+    if (i == 3) q.m_localPointB += btVector3(2 * threshold, 0, 0);
+    where.push_back(q.m_localPointB);
+  }
+  m = const_cast<btPersistentManifold*>(p.manifold());
+  REQUIRE(m);
+  REQUIRE(m->getNumContacts() == 4);
+  int kept = 0, fresh = 0;
+  for (int i = 0; i < 4; ++i) {
+    const auto& q = m->getContactPoint(i);
+    CHECK(q.m_index0 < 100);
+    CHECK(q.m_index1 < 100);
+    // the stored point within the threshold of this one, if any
+    int near = -1;
+    for (int k = 0; k < 4; ++k) {
+      if ((where[static_cast<std::size_t>(k)] - q.m_localPointB).length() < threshold) near = k;
+    }
+    if (near >= 0) {
+      CHECK(q.m_appliedImpulse == static_cast<btScalar>(near + 1));
+      ++kept;
+    } else {
+      CHECK(q.m_appliedImpulse == 0);
+      ++fresh;
+    }
+  }
+  CHECK(kept == 3);
+  CHECK(fresh == 1);
+  CHECK(p.cf->counters().id_matches == 0);
+}
+
 TEST_CASE("bullet: each shape is prepared once, whatever the number of pairs") {
   btBoxShape box(btVector3(0.5f, 0.5f, 0.5f));
   btDefaultCollisionConfiguration config;
