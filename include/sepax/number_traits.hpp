@@ -1,10 +1,8 @@
 // sepax/number_traits.hpp
 //
-// The one place that says what sepax needs of a number type T.
-//
-// Every algorithm in sepax is a template over T.  What an algorithm may do with
-// a T is exactly what this header lists:
-//
+// The one place that says what sepax needs of a number type T.  Every
+// algorithm in sepax is a template over T; what it may do with a T is exactly
+// what this header lists:
 //   * field operations  + - * /  and unary minus, on T values;
 //   * comparison        <  <=  >  >=  ==  != ;
 //   * construction from small integers: T(0), T(1), T(2), ...;

@@ -1,8 +1,7 @@
 // sepax/polygon_sat_2d.hpp
 //
 // The separating axis test between two convex polygons in the plane, as in the
-// 2D part of Gregorius' GDC 2013 talk, over any sepax number type T.
-//
+// 2D part of Gregorius' GDC 2013 talk, over any sepax number type T:
 //   Polygon2<T>     a validated convex polygon, vertices counter-clockwise.
 //                   Edge i runs from vertex i to vertex i+1 (mod n); its
 //                   outward normal is (e.y, -e.x): unit length when T

@@ -7,39 +7,14 @@
 //
 // Each works in A's frame on (A, B'), B' = posed(B, relative_pose(pose_a,
 // pose_b)) (posing.hpp: the exact definition of the input), and returns
-// exactly what the same SAT returns on (a.polyhedron(), B') - feature,
-// verdict, separation, stats - except that the axis is mapped to world
-// coordinates: pose_a.rotate(axis) (separation is frame-invariant).
-//
-// With opt.early_out two checks come first, each decided by the kernel on
-// B's posed vertices and only the plane or edge of B' it reads (posing.hpp,
-// "Staged posing"); only when both fail is the rest of B' derived and the
-// SAT run:
-//   1. the cache's feature (cache valid): SatCache's early-out hit;
-//   2. the margin pre-check (float/double): the face of A best aligned with
-//      c(B') - c(A) and the face of B best aligned with c(A) - c(B')
-//      (centroids), evaluated as every SAT evaluates a face
-//      (face_query_a / face_query_b); the first that separates beyond the
-//      margin (stops_early) is the answer (with a cache, the cache takes
-//      it).  Inner-radius estimates skip it where it cannot succeed, and
-//      so does a cache whose last answer was not beyond the margin.
-// Either answer is an early-out answer as SatOptions defines it: a feature
-// whose separation is greater than the margin (exactly so under
-// policy::Robust and for exact T), early_out set, not necessarily the
-// feature the SAT would meet first; the verdict is the SAT's.  Without
-// early_out nothing changes: the SAT's full result, bit for bit.
-//
-// Allocation: none per query for float/double (B' lives in per-thread
-// scratch, prepared_shape.hpp; the traversal's walk data is the prepared
-// shapes'; its per-face scratch is on the stack up to kTraversalInlineFaces
-// faces in total).
-//
-// cache: optional per-pair SatCache (sat_cache.hpp), warm start included;
-// its guarantee is the one stated there (a cached query returns the fresh
-// query's feature, separation and verdict; with early_out a re-checked
-// feature beyond the margin answers at once), the cached feature's indices
-// being those of the prepared shapes (the same at every pose).  A cache from
-// another pair or stale shapes only costs one re-evaluation.
+// exactly what the same SAT returns on (a.polyhedron(), B'), the axis mapped
+// to world coordinates.  Steps of a query (posed_query):
+//   1. with opt.early_out: the cache's feature (warm_hit), then the margin
+//      pre-check (margin_precheck), each on B's posed vertices and only the
+//      plane or edge it reads;
+//   2. otherwise the rest of B' derived into per-thread scratch and the SAT run.
+// No allocation per query for float/double.  Each step in detail: on
+// sat::traversal below.
 #pragma once
 
 #include <array>
@@ -113,7 +88,7 @@ std::optional<SatResult<T>> warm_hit(const PreparedShape<T>& a, const PreparedSh
 }
 
 /// The margin pre-check of a posed query with early_out (float/double; see
-/// the header comment).  With d = c(B') - c(A) (centroids, in A's frame):
+/// sat::traversal below).  With d = c(B') - c(A) (centroids, in A's frame):
 /// the face of A whose normal is best aligned with d, then the face of B
 /// whose normal is best aligned with -d (found among B's local normals with
 /// R^T(-d), R = x.rotation), each evaluated by the kernel exactly as every
@@ -228,7 +203,41 @@ SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pos
 
 }  // namespace detail
 
-/// Posed traversal SAT (see the header comment).
+/// Posed traversal SAT.  It works in A's frame on (A, B'), B' = posed(B, relative_pose(pose_a,
+/// pose_b)) (posing.hpp: the exact definition of the input), and returns
+/// exactly what the same SAT returns on (a.polyhedron(), B') - feature,
+/// verdict, separation, stats - except that the axis is mapped to world
+/// coordinates: pose_a.rotate(axis) (separation is frame-invariant).
+///
+/// With opt.early_out two checks come first, each decided by the kernel on
+/// B's posed vertices and only the plane or edge of B' it reads (posing.hpp,
+/// "Staged posing"); only when both fail is the rest of B' derived and the
+/// SAT run:
+///   1. the cache's feature (cache valid): SatCache's early-out hit;
+///   2. the margin pre-check (float/double): the face of A best aligned with
+///      c(B') - c(A) and the face of B best aligned with c(A) - c(B')
+///      (centroids), evaluated as every SAT evaluates a face
+///      (face_query_a / face_query_b); the first that separates beyond the
+///      margin (stops_early) is the answer (with a cache, the cache takes
+///      it).  Inner-radius estimates skip it where it cannot succeed, and
+///      so does a cache whose last answer was not beyond the margin.
+/// Either answer is an early-out answer as SatOptions defines it: a feature
+/// whose separation is greater than the margin (exactly so under
+/// policy::Robust and for exact T), early_out set, not necessarily the
+/// feature the SAT would meet first; the verdict is the SAT's.  Without
+/// early_out nothing changes: the SAT's full result, bit for bit.
+///
+/// Allocation: none per query for float/double (B' lives in per-thread
+/// scratch, prepared_shape.hpp; the traversal's walk data is the prepared
+/// shapes'; its per-face scratch is on the stack up to kTraversalInlineFaces
+/// faces in total).
+///
+/// cache: optional per-pair SatCache (sat_cache.hpp), warm start included;
+/// its guarantee is the one stated there (a cached query returns the fresh
+/// query's feature, separation and verdict; with early_out a re-checked
+/// feature beyond the margin answers at once), the cached feature's indices
+/// being those of the prepared shapes (the same at every pose).  A cache from
+/// another pair or stale shapes only costs one re-evaluation.
 template <class Policy = policy::Plain, Number T>
 SatResult<T> traversal(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
                        const RigidTransform<T>& pose_b, const SatOptions& opt = {},
@@ -239,7 +248,7 @@ SatResult<T> traversal(const PreparedShape<T>& a, const RigidTransform<T>& pose_
                                             });
 }
 
-/// Posed Gauss-map SAT (see the header comment).
+/// Posed Gauss-map SAT: as the posed traversal above, with sat::gauss_map.
 template <class Policy = policy::Plain, Number T>
 SatResult<T> gauss_map(const PreparedShape<T>& a, const RigidTransform<T>& pose_a, const PreparedShape<T>& b,
                        const RigidTransform<T>& pose_b, const SatOptions& opt = {},
@@ -249,7 +258,7 @@ SatResult<T> gauss_map(const PreparedShape<T>& a, const RigidTransform<T>& pose_
       [](auto& k, const SatOptions& o, const Feature* seed) { return gauss_map_with(k, o, seed); });
 }
 
-/// Posed brute-force SAT (see the header comment).
+/// Posed brute-force SAT: as the posed traversal above, with sat::brute_force.
 template <class Policy = policy::Plain, Number T>
 SatResult<T> brute_force(const PreparedShape<T>& a, const RigidTransform<T>& pose_a,
                          const PreparedShape<T>& b, const RigidTransform<T>& pose_b,

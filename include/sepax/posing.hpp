@@ -1,48 +1,17 @@
 // sepax/posing.hpp
 //
 // Posing: one shape of a pair moved into the other's local frame, the input
-// every posed query (prepared_shape.hpp) decides on.
-//
-// Definition (the input the posed queries are exact for).  Shapes A and B are
-// given in their local frames with poses pose_a, pose_b (world = R local + t,
-// transform.hpp).  A posed query works in A's frame:
-//
-//   X  = relative_pose(pose_a, pose_b) = pose_a.inverse() * pose_b,
-//        computed in T exactly as transform.hpp evaluates inverse() and
-//        compose() (for float/double: rounded, one fixed evaluation order);
-//   B' = posed(B, X): the polyhedron with B's topology and plane triples and
-//        the vertices  v' = X.apply(v)  (fl(fl(row_i . v) + t_i) for
-//        float/double, transform.hpp's apply()), its planes recomputed from
-//        v' as every ConvexPolyhedron computes them: bit for bit
-//        transformed(B, X), built in reused scratch without allocating.
-//
-// A posed query on (A, pose_a, B, pose_b) returns exactly what the same SAT
-// returns on (A, posed(B, X)) - same feature, verdict, separation and stats,
-// bit for bit - with the axis (and manifold points) mapped to world
-// coordinates by pose_a.  Under policy::Robust its decisions are the exact
-// decisions on that input (the mpq SAT on the exact images of A and B').
-// Exact T with an exactly orthogonal rotation (rotation_from_integer_quaternion):
-// inverse, compose and apply are exact, so B' is exactly B moved rigidly and
-// the posed query is the exact answer for the poses given.
-//
-// Staged posing.  The vertices of B' come first (pose_vertices_into: the
-// formula above, with B's bounds, centroid and range checks); planes, edge
-// arrays, lanes and normal conditioning follow (ConvexPolyhedron::
-// finish_rigid_image), bit for bit as in one pass.  A posed query with
-// early_out that can prove a separation beyond the margin from one feature
-// (the cached feature of a SatCache, posed_queries.hpp) derives only the
-// plane or edge of B' that feature reads (ConvexPolyhedron::
-// derive_rigid_part: the same formulas; the robust kernel's normal bound
-// for B is then the conditioning of those planes alone, a bound for every
-// plane it reads) and decides on the same vertices of B' with the same
-// kernel predicates: the same decision as on the full B', so the input it is
-// exact for is the one defined above.  Only when the check fails is the rest
-// of B' derived.
-//
-// Poses must be rigid: for float/double the query throws InvalidInput
-// (BadScale) when |M^T M - I| > 1e-3 or det M <= 0 (a reflection or a scale,
-// which would turn B inside out or break every bound); exact T requires
-// det M > 0 (decided exactly) and is exact for any such linear part.
+// every posed query (prepared_shape.hpp) decides on:
+//   1. X = relative_pose(pose_a, pose_b): B's frame in A's, in T;
+//   2. check_rigid(X): a rotation within 1e-3 (float/double), det > 0 (exact);
+//   3. the vertices of B' = posed(B, X), v' = X.apply(v), with B's bounds and
+//      range checks (pose_vertices_into);
+//   4. the planes, edge arrays, lanes and conditioning of B'
+//      (ConvexPolyhedron::finish_rigid_image), or only the plane or edge an
+//      early-out check reads (derive_rigid_part).
+// A posed query returns exactly what the same SAT returns on (A, B').  The
+// definition of that input, what the robust decisions are exact for, and why
+// the staged steps change nothing: on posed() below.
 #pragma once
 
 #include <cmath>
@@ -63,10 +32,15 @@ RigidTransform<T> relative_pose(const RigidTransform<T>& pose_a, const RigidTran
 
 namespace detail {
 
-/// Throws InvalidInput (BadScale) unless x's linear part is a rotation (see
-/// the header comment): for float/double |R^T R - I|_F <= 1e-3 (with the
-/// rounding of its double evaluation bounded below) and det R > 0; for exact
-/// T det R > 0, decided exactly.
+/// Poses must be rigid: for float/double the query throws InvalidInput
+/// (BadScale) when |M^T M - I| > 1e-3 or det M <= 0 (a reflection or a scale,
+/// which would turn B inside out or break every bound); exact T requires
+/// det M > 0 (decided exactly) and is exact for any such linear part.
+///
+/// Throws InvalidInput (BadScale) unless x's linear part is a rotation: for
+/// float/double |R^T R - I|_F <= 1e-3 (with the rounding of its double
+/// evaluation bounded below) and det R > 0; for exact T det R > 0, decided
+/// exactly.
 template <Number T>
 void check_rigid(const RigidTransform<T>& x) {
   const auto& r = x.rotation;
@@ -143,6 +117,41 @@ void pose_into(ConvexPolyhedron<T>& out, const ConvexPolyhedron<T>& src, bool sa
 /// comment): the pre-posed reference of a posed query, posed(B,
 /// relative_pose(pose_a, pose_b)).  Allocates (a new polyhedron); the posed
 /// queries use per-thread scratch instead.
+/// Definition (the input the posed queries are exact for).  Shapes A and B are
+/// given in their local frames with poses pose_a, pose_b (world = R local + t,
+/// transform.hpp).  A posed query works in A's frame:
+///
+///   X  = relative_pose(pose_a, pose_b) = pose_a.inverse() * pose_b,
+///        computed in T exactly as transform.hpp evaluates inverse() and
+///        compose() (for float/double: rounded, one fixed evaluation order);
+///   B' = posed(B, X): the polyhedron with B's topology and plane triples and
+///        the vertices  v' = X.apply(v)  (fl(fl(row_i . v) + t_i) for
+///        float/double, transform.hpp's apply()), its planes recomputed from
+///        v' as every ConvexPolyhedron computes them: bit for bit
+///        transformed(B, X), built in reused scratch without allocating.
+///
+/// A posed query on (A, pose_a, B, pose_b) returns exactly what the same SAT
+/// returns on (A, posed(B, X)) - same feature, verdict, separation and stats,
+/// bit for bit - with the axis (and manifold points) mapped to world
+/// coordinates by pose_a.  Under policy::Robust its decisions are the exact
+/// decisions on that input (the mpq SAT on the exact images of A and B').
+/// Exact T with an exactly orthogonal rotation (rotation_from_integer_quaternion):
+/// inverse, compose and apply are exact, so B' is exactly B moved rigidly and
+/// the posed query is the exact answer for the poses given.
+///
+/// Staged posing.  The vertices of B' come first (pose_vertices_into: the
+/// formula above, with B's bounds, centroid and range checks); planes, edge
+/// arrays, lanes and normal conditioning follow (ConvexPolyhedron::
+/// finish_rigid_image), bit for bit as in one pass.  A posed query with
+/// early_out that can prove a separation beyond the margin from one feature
+/// (the cached feature of a SatCache, posed_queries.hpp) derives only the
+/// plane or edge of B' that feature reads (ConvexPolyhedron::
+/// derive_rigid_part: the same formulas; the robust kernel's normal bound
+/// for B is then the conditioning of those planes alone, a bound for every
+/// plane it reads) and decides on the same vertices of B' with the same
+/// kernel predicates: the same decision as on the full B', so the input it is
+/// exact for is the one defined above.  Only when the check fails is the rest
+/// of B' derived.
 template <Number T>
 ConvexPolyhedron<T> posed(const ConvexPolyhedron<T>& b, const RigidTransform<T>& x) {
   ConvexPolyhedron<T> out;

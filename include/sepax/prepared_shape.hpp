@@ -1,9 +1,9 @@
 // sepax/prepared_shape.hpp
 //
 // PreparedShape<T>: a convex hull in its own local frame together with
-// everything the SATs precompute for it, built once and then queried at any
-// pose.  This header also brings the queries on prepared shapes
-// (posed_queries.hpp):
+// everything the SATs precompute for it (contents and posing: on the class),
+// built once, immutable, queried at any pose from any number of threads.
+// This header also brings the queries on prepared shapes (posed_queries.hpp):
 //
 //   const PreparedShape<float> a(hull_a), b(hull_b);      // once per hull
 //   SatCache<float> cache;                                 // once per pair
@@ -13,19 +13,6 @@
 //   if (!r.early_out) {
 //     const auto m = contact_manifold(a, pose_a, b, pose_b, r, opt);  // world coordinates
 //   }
-//
-// Contents: the validated ConvexPolyhedron (planes, per-edge arrays, SIMD
-// lanes, bounds), its GaussMapWalk (the traversal's walk data and probe
-// vertices).  Immutable after construction, so one
-// PreparedShape may be queried from any number of threads at once.
-//
-// Posing (posing.hpp defines the input exactly): a posed query moves B into
-// A's frame, B' = posed(B, inverse(pose_a) * pose_b), into per-thread scratch
-// that keeps its arrays between queries (no heap allocation once a thread
-// has posed a shape at least as large; the topology is copied only when the
-// scratch last held another shape), and reuses B' as long as the same shape
-// is asked at bit-identical relative pose (a manifold right after its SAT
-// query poses nothing).
 #pragma once
 
 #include <atomic>
@@ -88,6 +75,18 @@ inline std::uint64_t next_shape_serial() {
 
 }  // namespace detail
 
+/// Contents: the validated ConvexPolyhedron (planes, per-edge arrays, SIMD
+/// lanes, bounds), its GaussMapWalk (the traversal's walk data and probe
+/// vertices).  Immutable after construction, so one
+/// PreparedShape may be queried from any number of threads at once.
+///
+/// Posing (posing.hpp defines the input exactly): a posed query moves B into
+/// A's frame, B' = posed(B, inverse(pose_a) * pose_b), into per-thread scratch
+/// that keeps its arrays between queries (no heap allocation once a thread
+/// has posed a shape at least as large; the topology is copied only when the
+/// scratch last held another shape), and reuses B' as long as the same shape
+/// is asked at bit-identical relative pose (a manifold right after its SAT
+/// query poses nothing).
 template <Number T>
 class PreparedShape {
  public:

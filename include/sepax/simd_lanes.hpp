@@ -3,28 +3,14 @@
 // The two hot loops of the Gauss-map SAT over the lane arrays of
 // ConvexPolyhedron (one array per coordinate), a few edges or vertices at a
 // time with baseline SSE2 (4 floats or 2 doubles per instruction; no
-// -march=native, no -ffast-math).  On targets without SSE2, or with
-// SEPAX_NO_SIMD defined, the same code runs one lane at a time.
-//
-// Every lane evaluates exactly the operation sequence of the scalar code it
-// replaces -- dot(a, b) = (a0*b0 + a1*b1) + a2*b2, left to right, in T -- so
-// the values are bit-identical to PlainKernel's (IEEE operations are the
-// same in a vector lane).  Under FMA contraction (-march=native
-// -ffp-contract=fast) the compiler may fuse differently here and in the scalar
-// code: plain float/double decisions may then differ between the two paths
-// on inputs within rounding of a tie, as plain float decisions already differ
-// between builds.  The robust kernel only uses these values in filters whose
-// bounds hold with and without contraction.
-//
+// -march=native, no -ffast-math); without SSE2, or with SEPAX_NO_SIMD, one
+// lane at a time.  Every lane computes bit for bit what the scalar code does
+// (on Lanes: the contraction caveat).
 //   arc_candidates  the Minkowski-face (arc crossing) test of one edge of A
-//                   against a range of edges of B: exact decisions of the
-//                   plain float test (kFilter = false), or the superset of
-//                   pairs that are not certainly rejected by a filter with
-//                   an error bound (kFilter = true).
-//   support_scan    argmin over a shape's vertices of n.v (lowest index among
-//                   equal minima), with the minimum, and optionally the
-//                   second smallest value (for the robust filter), or the
-//                   minimum alone (no argmin: the robust face estimate).
+//                   against a range of edges of B (exact plain decisions, or
+//                   the pairs a filter does not certainly reject);
+//   support_scan    argmin over a shape's vertices of n.v, with the minimum
+//                   (and the second smallest value for the robust filter).
 // Both need ConvexPolyhedron::lanes_bounded() of the shapes they read (no
 // value can overflow, none is NaN); callers check it once per query and use
 // their scalar code otherwise.
@@ -53,6 +39,17 @@
 namespace sepax::simd {
 
 /// Lane operations: V holds `width` values of T, M a per-lane mask.
+///
+/// Every lane evaluates exactly the operation sequence of the scalar code it
+/// replaces -- dot(a, b) = (a0*b0 + a1*b1) + a2*b2, left to right, in T -- so
+/// the values are bit-identical to PlainKernel's (IEEE operations are the
+/// same in a vector lane).  Under FMA contraction (-march=native
+/// -ffp-contract=fast) the compiler may fuse differently here and in the scalar
+/// code: plain float/double decisions may then differ between the two paths
+/// on inputs within rounding of a tie, as plain float decisions already differ
+/// between builds.  The robust kernel only uses these values in filters whose
+/// bounds hold with and without contraction.
+///
 template <class T>
 struct Lanes {  // portable fallback: one lane
   using V = T;

@@ -1,12 +1,9 @@
 // sepax/transform.hpp
 //
 // RigidTransform<T>: p -> R p + t, with R a 3x3 rotation and t a translation.
-//
 // Every product is written out with a fixed evaluation order (sepax::dot on
 // rows), so exact number types never meet an Eigen reduction, and float runs
-// are reproducible.
-//
-// Where rotations come from:
+// are reproducible.  Where rotations come from:
 //   * from_quaternion(w, x, y, z): any non-zero quaternion, normalised in
 //     double; the matrix is computed in double and then converted to T.  For
 //     float/double it is orthogonal up to rounding.  For exact T the entries

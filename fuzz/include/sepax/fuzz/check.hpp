@@ -170,7 +170,6 @@ bool has_traversal_sat();
 ///   posed, posed_exact, posed_rational, warm
 ///                   posed queries on prepared shapes and cached coherent
 ///                   sequences (check_posed.hpp)
-///
 CaseReport check_case(const FuzzCase& c, const CheckOptions& opt = {});
 
 /// check_case, with any exception other than the rejection of invalid shapes

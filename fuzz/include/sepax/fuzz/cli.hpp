@@ -7,18 +7,16 @@
 // parallel verdicts, every candidate axis with its separation, error bound
 // and exact value, the features chosen by every configuration and SAT, the
 // contact manifold float against exact, notes on what is degenerate -- then
-// the full differential check of the case (check_case_guarded).
-//
-// Text: a report for people.  JSON (AuditOptions::json): one object with the
-// same content, keys in this order:
+// the full differential check of the case (check_case_guarded).  Text: a
+// report for people; JSON (AuditOptions::json): one object, keys in order:
 //   number, reference, shapes {A, B: vertices, edges, faces, flat, extent},
 //   edge_pairs [{a, b, triple_products [{name, value, sign, exact_sign,
 //   differs}], minkowski_face {value, exact}, parallel {value, exact}}],
 //   axes [{axis, separation, exact_separation, difference, error_bound,
 //   exact_zero}], flat_pair, chosen [{config, sat, overlap, feature,
 //   feature_text, separation}], manifold {exact, value, comparison}, notes,
-//   check {valid, unexplained, findings}.
-// ("value" is the audited number type's result, "exact" the mpq one.)
+//   check {valid, unexplained, findings} ("value": the audited number type's
+//   result, "exact": the mpq one).
 #pragma once
 
 #include <ostream>

@@ -76,7 +76,6 @@ inline Vec3<double> abs_cross(const Vec3<double>& a, const Vec3<double>& b) {
 ///     => delta_n = ||n - n_e|| <= gamma_4 + 2 gamma_5 ||C|| / |N_e|.
 ///       ||C|| / |N_e| >= 1 is the conditioning of the triangle (1/sin of its angle at p0).
 ///
-///
 /// (1)/(4): bound on ||n - n_e|| for the normalised rounded cross product of
 /// the rounded vectors a, b (as F computed them); exact_len_lo <= |N_e|.
 template <class F>
@@ -92,7 +91,6 @@ inline double delta_normal(const Vec3<F>& a, const Vec3<F>& b, double exact_len_
 ///       |fl(n.d) - n.d| <= gamma_3 sum|n_i||d_i|
 ///       |n.d - n_e.d_e| <= ||n - n_e|| ||d|| + ||n_e|| ||d - d_e|| <= (delta_n + gamma_1) ||d||
 ///     => B_arc = gamma_3 sum|n_i||d_i| + (delta_n + gamma_1) ||d||.
-///
 ///
 /// (2) arc triple product n . d.
 template <class F>
@@ -111,7 +109,6 @@ inline double arc_bound(const Vec3<F>& n, const Vec3<F>& dir, double delta_n) {
 ///     Far from the origin this grows with |v| and |p0|: the kernel really does
 ///     compute the offset in absolute coordinates.
 ///
-///
 /// (3) height of v above the face with rounded unit normal n and plane point p0.
 template <class F>
 inline double face_bound(const Vec3<F>& n, const Vec3<F>& p0, const Vec3<F>& v, double delta_n) {
@@ -129,7 +126,6 @@ inline double face_bound(const Vec3<F>& n, const Vec3<F>& p0, const Vec3<F>& v, 
 ///     (The orientation of the axis is a sign decided on the centroid; a flipped
 ///     orientation is not covered by this bound and shows up as a disagreement.)
 ///
-///
 /// (4) O(1) edge separation: n the rounded unit axis, w = fl(pB - pA).
 template <class F>
 inline double edge_bound(const Vec3<F>& n, const Vec3<F>& w, double delta_n) {
@@ -140,7 +136,6 @@ inline double edge_bound(const Vec3<F>& n, const Vec3<F>& w, double delta_n) {
 ///     max_A fl(n.v)); every projection is off by at most
 ///     gamma_3 sum|n||v| + delta_n ||v|| (n as in (4)), the subtraction rounds once:
 ///     => B_proj = 2 max_v (gamma_3 sum|n||v| + delta_n ||v||) + u (|min_B| + |max_A|) (1 + gamma_1).
-///
 ///
 /// (5) one projection n . v of the brute force.
 template <class F>
@@ -178,7 +173,6 @@ inline double projection_bound(const Vec3<F>& n, const Vec3<F>& v, double delta_
 ///     for float (t = (float)1e-4 = 0.99999997e-4; the sqrt(2) gamma_2 term is
 ///     the 0.17%) and 1.0000002e-8 for double (t = 1e-8).
 ///
-///
 /// (6) The parallel skip: the tolerance t the kernel uses, the sine bound
 /// K_F, and the guard limits on squared lengths (derived above).
 template <class F>
@@ -211,7 +205,6 @@ struct ParallelSkip {
 ///       evaluated in double;
 ///     => delta_u = gamma_4 + 2 (gamma_2 ||C|| + e_dn) / lo   (as in (1)),
 ///        B_side(v) = max(B_face(v) with u, B_edge(v - t) with u).
-///
 ///
 /// (7) ||u - u_e|| for the side axis of an edge d with face unit normal n.
 template <class F>
@@ -275,7 +268,6 @@ inline double side_axis_bound(const ConvexPolyhedron<F>& p, int e, const ConvexP
 ///     with N_e = dA_e x dB_e and X = (pA - cA) + (cB - pB) (classify.hpp):
 ///     outside this band a flipped float orientation is unexplained.
 ///
-///
 /// (8) ||c~ - c|| for the stored centroid of p (sequential sum, one division).
 template <class F>
 inline double centroid_error(const ConvexPolyhedron<F>& p) {
@@ -311,7 +303,6 @@ inline double orientation_bound(const Vec3<F>& n, const Vec3<F>& wa, const Vec3<
 ///     g = 0.  A float run that accepts a pair the exact one rejects is
 ///     explained when every endpoint passes "possible", decided exactly as
 ///     (N_e . (v_max - p))^2 <= T^2 |N_e|^2 (classify.hpp support_band).
-///
 ///
 /// (9) the half-width of the "possible" support band of one shape:
 /// t + 2 P_S + u (|max~| + t), with t the kernel's support tolerance
