@@ -1,28 +1,13 @@
 // What the adapter skips from one step to the next, and the bounds that
-// allow it (docs/bullet.md, "Coherence"):
-//
-// * Bounding spheres.  A pair whose spheres (centroid, max distance of a
-//   vertex from it) are farther apart than the margin plus a rounding slack
-//   is farther apart than the margin: no point, and no query.
-// * The kept face.  After a SAT query whose contact (contact_choice.hpp) is
-//   a face, the adapter keeps that face and the relative pose x0 the query
-//   ran at.  At a later step with relative pose x1 every vertex of B (in
-//   A's frame) is within
-//       delta = |R1 - R0|_F reach_B + |t1 - t0|
-//   of where it was (reach_B: B's largest |v| in its local frame), so every
-//   axis's separation, the SAT's maximum among them, moved by at most
-//   delta (plus the rounding of both images, kSlack).  While delta is at
-//   most kKeepMotion * kAbsTolerance * min(extent A, extent B) (half the
-//   contact choice's tolerance) and the SAT's separation at x0 plus delta
-//   and the slack stays within the margin (so the pair is still not beyond
-//   it), the kept face is re-evaluated instead of querying the SAT again:
-//   the contact is the one chosen at x0, its depth exact for x1, and no
-//   other axis can have overtaken it by more than 2 delta.
-// * Kept apart.  After a query that proved the pair beyond the margin with
-//   separation s0 along an axis (fixed in A's frame) at relative pose x0,
-//   the separation along that axis at x1 is at least s0 - delta: while
-//   s0 - delta - slack exceeds the margin the pair is still beyond it (the
-//   SAT, whose maximum is at least that, would stop too), and no query runs.
+// allow it (docs/bullet.md, "Coherence"); each bound is derived on the
+// constant or function that implements it:
+//   * bounding spheres: a pair whose spheres are farther apart than the margin
+//     plus a rounding slack gets no point and no query;
+//   * the kept face: after a query whose contact is a face, the face is
+//     re-evaluated while B moved little (kKeepMotion, motion_bound) and the
+//     pair cannot have become beyond the margin;
+//   * kept apart: after a query that proved the pair beyond the margin, no
+//     query runs while the motion since cannot have closed the gap.
 #pragma once
 
 #include <algorithm>
@@ -35,6 +20,25 @@
 
 namespace sepax::bullet {
 
+/// * The kept face.  After a SAT query whose contact (contact_choice.hpp) is
+///   a face, the adapter keeps that face and the relative pose x0 the query
+///   ran at.  At a later step with relative pose x1 every vertex of B (in
+///   A's frame) is within
+///       delta = |R1 - R0|_F reach_B + |t1 - t0|
+///   of where it was (reach_B: B's largest |v| in its local frame), so every
+///   axis's separation, the SAT's maximum among them, moved by at most
+///   delta (plus the rounding of both images, kSlack).  While delta is at
+///   most kKeepMotion * kAbsTolerance * min(extent A, extent B) (half the
+///   contact choice's tolerance) and the SAT's separation at x0 plus delta
+///   and the slack stays within the margin (so the pair is still not beyond
+///   it), the kept face is re-evaluated instead of querying the SAT again:
+///   the contact is the one chosen at x0, its depth exact for x1, and no
+///   other axis can have overtaken it by more than 2 delta.
+/// * Kept apart.  After a query that proved the pair beyond the margin with
+///   separation s0 along an axis (fixed in A's frame) at relative pose x0,
+///   the separation along that axis at x1 is at least s0 - delta: while
+///   s0 - delta - slack exceeds the margin the pair is still beyond it (the
+///   SAT, whose maximum is at least that, would stop too), and no query runs.
 /// The kept face holds while B moved at most this fraction of the contact
 /// choice's tolerance (x kAbsTolerance x the smaller extent), dimensionless.
 inline constexpr double kKeepMotion = 0.5;

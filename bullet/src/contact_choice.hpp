@@ -1,26 +1,15 @@
-// The adapter's choice of contact type for a physics engine's solver.
-//
-// sepax's SAT reports the axis of maximum separation; a face and an edge pair
-// (or a face of A and a face of B) can be within rounding of each other, as
-// in every resting stack of equal boxes, where the touching faces' edges
-// coincide.  Building the manifold from whichever wins by a hair gives a
-// single edge-edge point one step and four face points the next, and swaps
-// the reference face between the shapes, which changes every point's feature
-// ids: the solver loses its warm start and the stack wobbles.  Physics
-// engines therefore prefer a face contact unless an edge pair separates
-// clearly more, and the face of A unless a face of B separates clearly more
-// (D. Gregorius, "Robust Contact Creation for Physics Simulations", GDC
-// 2015; Box2D's and Bullet's polyhedral clipping do the same):
+// The adapter's choice of contact type for a physics engine's solver: a face
+// contact unless an edge pair separates clearly more, and the face of A unless
+// a face of B separates clearly more (D. Gregorius, "Robust Contact Creation
+// for Physics Simulations", GDC 2015; Box2D's and Bullet's polyhedral
+// clipping do the same):
 //
 //   face of B over face of A  iff  sB > kRelFace sA + tol
 //   edge pair over the face   iff  sE > kRelEdge sF + tol
 //
-// with tol = kAbsTolerance * min(extent A, extent B) (the shapes' size,
-// ConvexPolyhedron::extent).  This is a contact policy on top of the exact
-// SAT, not a change of its answer: the verdict and the early exit beyond the
-// speculative margin stay sepax's.  The candidate face of each shape is its
-// face most aligned with the SAT axis (towards the other shape), its
-// separation computed over the other shape's vertices in double.
+// with tol = kAbsTolerance * min(extent A, extent B).  A contact policy on top
+// of the exact SAT, not a change of its answer: the verdict and the early exit
+// beyond the speculative margin stay sepax's.  Why: on kRelFace.
 #pragma once
 
 #include <limits>
@@ -31,8 +20,26 @@
 
 namespace sepax::bullet {
 
+/// sepax's SAT reports the axis of maximum separation; a face and an edge pair
+/// (or a face of A and a face of B) can be within rounding of each other, as
+/// in every resting stack of equal boxes, where the touching faces' edges
+/// coincide.  Building the manifold from whichever wins by a hair gives a
+/// single edge-edge point one step and four face points the next, and swaps
+/// the reference face between the shapes, which changes every point's feature
+/// ids: the solver loses its warm start and the stack wobbles.  Physics
+/// engines therefore prefer a face contact unless an edge pair separates
+/// clearly more, and the face of A unless a face of B separates clearly more
+/// (the header's rule, with tol = kAbsTolerance x the smaller extent,
+/// ConvexPolyhedron::extent).  The candidate face of each shape is its
+/// face most aligned with the SAT axis (towards the other shape), its
+/// separation computed over the other shape's vertices in double.  kRelFace: a
+/// face of B must separate by more than this fraction of A's (plus tol),
+/// dimensionless.
 inline constexpr double kRelFace = 0.98;
+/// An edge pair must separate by more than this fraction of the face's
+/// separation (plus tol), dimensionless.
 inline constexpr double kRelEdge = 0.90;
+/// tol in units of the smaller shape extent, dimensionless.
 inline constexpr double kAbsTolerance = 1e-3;
 
 namespace detail {

@@ -9,46 +9,12 @@
 //   sepax::bullet::CreateFunc sepax_cf(config);       // outlives the world
 //   sepax::bullet::register_algorithm(dispatcher, sepax_cf);
 //
-// Per pair and step the algorithm runs the posed robust traversal SAT
-// (float, sat::traversal<policy::Robust>) on the two shapes' prepared hulls
-// at the bodies' world transforms, with
-//   * Bullet's contact breaking threshold of the pair's manifold as the
-//     speculative margin (SatOptions::margin with early_out): a pair farther
-//     apart than that stops at the first axis proven to separate by more;
-//   * a per-pair SatCache (warm start);
-//   * sepax's contact manifold (at most four points, within the margin).
-// The points go into the pair's btPersistentManifold with sepax's feature ids
-// (contact_feature.hpp) as Bullet's part/index ids: m_partId = the feature's
-// kind (1 vertex, 2 edge, 3 face), m_index = its index, for each body.  A new
-// point whose ids equal those of a point already in the manifold replaces it
-// (btPersistentManifold::replaceContactPoint keeps the accumulated impulses,
-// Bullet's warm start); points whose features are no longer in contact are
-// removed.  Bullet's own algorithms match points by distance instead
-// (btPersistentManifold::getCacheEntry); the manifold written here is always
-// complete, so refreshContactPoints has nothing to add and is not called.
-// Friction, restitution, rolling/spinning friction, contact stiffness and
-// damping, friction anchors and the contact callbacks are set as
-// btManifoldResult::addContactPoint sets them.
-//
-// Collision margin.  The geometry is the one btPolyhedralContactClipping (Bullet's
-// own SAT, btConvexConvexAlgorithm's polyhedral path) collides: a box is its
-// full half extents (btBoxShape::getHalfExtentsWithMargin: Bullet's box margin
-// is inside the box), a hull is its scaled points as given (its margin, which
-// GJK adds around the points, is not added).  The margin only enters through
-// the contact breaking threshold (the speculative margin).
-//
-// Shapes are prepared once: CreateFunc keeps one PreparedShape per
-// btCollisionShape* (ShapeCache), shared by every pair using that shape.  The
-// cache compares each shape's type, local scaling and size data (half extents;
-// point count and point array) at every step, so a shape rescaled or resized
-// in place is prepared again; a shape whose points are edited in place, or a
-// shape deleted while another is allocated at its address with equal data,
-// must be dropped with ShapeCache::forget.  A shape sepax refuses (a flat or
-// degenerate hull: InvalidInput) is handed to the algorithm Bullet's
-// configuration had for that pair, which the CreateFunc keeps.
-//
-// Threads: CreateFunc's cache is guarded by a mutex; the queries use sepax's
-// per-thread scratch, so btCollisionDispatcherMt may run pairs in parallel.
+// Per pair and step (CollisionAlgorithm): the posed robust traversal SAT with
+// the contact breaking threshold as the speculative margin and a per-pair
+// cache, then sepax's manifold written into the pair's btPersistentManifold
+// with sepax's feature ids.  Shapes are prepared once per btCollisionShape*
+// (ShapeCache); shapes sepax refuses go to Bullet's own algorithm for the
+// pair (CreateFunc).  docs/bullet.md has the whole story.
 #pragma once
 
 #include <cstdint>
@@ -75,7 +41,7 @@ struct Prepared;
 /// True for the Bullet shape types the algorithm handles.
 bool is_supported(int shape_type);
 
-/// The key a prepared shape is checked against at every step (see the header).
+/// The key a prepared shape is checked against at every step (see ShapeCache).
 struct ShapeKey {
   int type = -1;
   float scaling[3] = {0, 0, 0};
@@ -88,7 +54,16 @@ struct ShapeKey {
 /// The key of a supported shape (type -1 for an unsupported one).
 ShapeKey shape_key(const btCollisionShape& shape);
 
-/// One PreparedShape per btCollisionShape* (see the header).
+/// One PreparedShape per btCollisionShape*.
+/// Shapes are prepared once: CreateFunc keeps one PreparedShape per
+/// btCollisionShape* (ShapeCache), shared by every pair using that shape.  The
+/// cache compares each shape's type, local scaling and size data (half extents;
+/// point count and point array) at every step, so a shape rescaled or resized
+/// in place is prepared again; a shape whose points are edited in place, or a
+/// shape deleted while another is allocated at its address with equal data,
+/// must be dropped with ShapeCache::forget.  A shape sepax refuses (a flat or
+/// degenerate hull: InvalidInput) is handed to the algorithm Bullet's
+/// configuration had for that pair, which the CreateFunc keeps.
 class ShapeCache {
  public:
   ShapeCache();
@@ -134,6 +109,35 @@ struct Counters {
 };
 
 /// The algorithm for one pair (created by CreateFunc).
+/// Per pair and step the algorithm runs the posed robust traversal SAT
+/// (float, sat::traversal<policy::Robust>) on the two shapes' prepared hulls
+/// at the bodies' world transforms, with
+///   * Bullet's contact breaking threshold of the pair's manifold as the
+///     speculative margin (SatOptions::margin with early_out): a pair farther
+///     apart than that stops at the first axis proven to separate by more;
+///   * a per-pair SatCache (warm start);
+///   * sepax's contact manifold (at most four points, within the margin).
+/// The points go into the pair's btPersistentManifold with sepax's feature ids
+/// (contact_feature.hpp) as Bullet's part/index ids: m_partId = the feature's
+/// kind (1 vertex, 2 edge, 3 face), m_index = its index, for each body.  A new
+/// point whose ids equal those of a point already in the manifold replaces it
+/// (btPersistentManifold::replaceContactPoint keeps the accumulated impulses,
+/// Bullet's warm start).  A new point whose ids no stored point has replaces,
+/// as btPersistentManifold::getCacheEntry does, the nearest remaining stored
+/// point within the contact breaking threshold (the same place named by
+/// another feature keeps its impulse); stored points no new point took are
+/// removed.  The manifold written here is always complete, so
+/// refreshContactPoints has nothing to add and is not called.
+/// Friction, restitution, rolling/spinning friction, contact stiffness and
+/// damping, friction anchors and the contact callbacks are set as
+/// btManifoldResult::addContactPoint sets them.
+///
+/// Collision margin.  The geometry is the one btPolyhedralContactClipping (Bullet's
+/// own SAT, btConvexConvexAlgorithm's polyhedral path) collides: a box is its
+/// full half extents (btBoxShape::getHalfExtentsWithMargin: Bullet's box margin
+/// is inside the box), a hull is its scaled points as given (its margin, which
+/// GJK adds around the points, is not added).  The margin only enters through
+/// the contact breaking threshold (the speculative margin).
 class CollisionAlgorithm : public btActivatingCollisionAlgorithm {
  public:
   CollisionAlgorithm(const btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* body0,
@@ -158,6 +162,8 @@ class CollisionAlgorithm : public btActivatingCollisionAlgorithm {
 /// Creates CollisionAlgorithm for supported pairs; keeps the shape cache, the
 /// counters and the configuration's own create functions (the fallback for
 /// shapes sepax refuses).  Must outlive every world using it.
+/// Threads: CreateFunc's cache is guarded by a mutex; the queries use sepax's
+/// per-thread scratch, so btCollisionDispatcherMt may run pairs in parallel.
 class CreateFunc : public btCollisionAlgorithmCreateFunc {
  public:
   explicit CreateFunc(btCollisionConfiguration& config);
