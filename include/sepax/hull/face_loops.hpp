@@ -245,6 +245,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
   std::vector<int>& index = next_vertex_;  // welded point -> output vertex
   index.assign(q_.size(), -1);
   std::vector<Vec3<T>> verts;
+  std::vector<Vec3<double>> verts_double;  // exact T with double points: the same vertices as doubles
   out_vertex_.assign(pts_.size(), 0);
   for (const auto& l : loops)
     for (int v : l) out_vertex_[as_index(v)] = 1;
@@ -254,11 +255,14 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
       if (index[as_index(v)] < 0) {
         index[as_index(v)] = static_cast<int>(verts.size());
         verts.push_back(in_[as_index(pts_[as_index(v)])]);
+        if (shadow_) verts_double.push_back(qd_[as_index(v)]);
       }
       v = index[as_index(v)];
     }
   }
-  return finish([&] { return HullPolyhedron<T>::from_faces(std::move(verts), faces); });
+  return finish([&] {
+    return HullPolyhedron<T>::from_faces(std::move(verts), faces, shadow_ ? &verts_double : nullptr);
+  });
 }
 
 }  // namespace sepax::hull::detail
