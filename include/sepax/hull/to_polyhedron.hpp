@@ -36,7 +36,8 @@ namespace sepax::hull::detail {
 template <class T>
 struct HullPolyhedron {
   /// doubles (exact T): the vertices as doubles, each exactly equal to its vertex, or null.
-  static ConvexPolyhedron<T> from_faces(std::vector<Vec3<T>> vertices, const std::vector<std::vector<int>>& faces,
+  static ConvexPolyhedron<T> from_faces(std::vector<Vec3<T>> vertices,
+                                        const std::vector<std::vector<int>>& faces,
                                         const std::vector<Vec3<double>>* doubles = nullptr) {
     if constexpr (!std::is_floating_point_v<T>) {
       if (faces.size() == 2) return ConvexPolyhedron<T>::from_faces(std::move(vertices), faces);  // flat
@@ -105,7 +106,8 @@ struct HullPolyhedron {
       const FilteredSign r = orientation_filter(a, b, c, x);
       if (r.certain) return r.det > 0 ? 1 : -1;
       const Vec3<T> ta = vec_from_double<T>(a);
-      const Vec3<T> tb(vec_from_double<T>(b) - ta), tc(vec_from_double<T>(c) - ta), tx(vec_from_double<T>(x) - ta);
+      const Vec3<T> tb(vec_from_double<T>(b) - ta), tc(vec_from_double<T>(c) - ta),
+          tx(vec_from_double<T>(x) - ta);
       return sign_of(T(dot(cross(tb, tc), tx)));
     };
     auto vd = [&](int v) -> const Vec3<double>& { return d[as_index(v)]; };
@@ -114,7 +116,8 @@ struct HullPolyhedron {
     for (int f = 0; f < nf; ++f) {
       const auto& t = p.face(f).plane_vertices;
       if (!certainly_nonzero_cross(vd(t[0]), vd(t[1]), vd(t[2])) && is_zero(p.plane(f).normal)) {
-        P::fail(ErrorCode::DegenerateFace, "face " + std::to_string(f) + " has zero area (its vertices are collinear)");
+        P::fail(ErrorCode::DegenerateFace,
+                "face " + std::to_string(f) + " has zero area (its vertices are collinear)");
       }
       const auto loop = p.face_vertices(f);
       const std::size_t n = loop.size();
@@ -138,8 +141,8 @@ struct HullPolyhedron {
     }
     for (int v = 0; v < p.vertex_count(); ++v) {
       if (p.vertex_half_edges(v).size() < 3) {
-        P::fail(ErrorCode::NotConvex, "vertex " + std::to_string(v) +
-                                          " has only two edges (it lies in the middle of an edge)");
+        P::fail(ErrorCode::NotConvex,
+                "vertex " + std::to_string(v) + " has only two edges (it lies in the middle of an edge)");
       }
     }
     // (a) the interior point
@@ -175,8 +178,8 @@ struct HullPolyhedron {
       p.local_convexity_witnesses(f, witnesses);
       for (int w : witnesses) {
         if (orient(vd(t[0]), vd(t[1]), vd(t[2]), vd(w)) > 0) {
-          P::fail(ErrorCode::NotConvex, "not convex: vertex " + std::to_string(w) + " is above the plane of face " +
-                                            std::to_string(f));
+          P::fail(ErrorCode::NotConvex, "not convex: vertex " + std::to_string(w) +
+                                            " is above the plane of face " + std::to_string(f));
         }
       }
     }
