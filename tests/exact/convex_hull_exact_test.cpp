@@ -9,16 +9,13 @@
 
 #include <sepax/convex_hull.hpp>
 
+#include "../../tools/hull_compare_signature.hpp"
 #include "../../tools/reference/convex_hull_reference.hpp"
 #include "../core/hull_point_sets.hpp"
 
-#include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
-#include <sstream>
-#include <string>
 #include <vector>
 
 using namespace sepax;
@@ -51,36 +48,6 @@ void check_exact_hull(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& 
   std::vector<std::vector<int>> faces;
   for (int f = 0; f < h.face_count(); ++f) faces.push_back(h.face_vertices(f));
   CHECK_NOTHROW(ConvexPolyhedron<T>::from_faces(h.vertices(), faces));
-}
-
-// A polytope up to numbering: its sorted vertices and its faces as loops, each started at its smallest
-// vertex, sorted (the vertices are doubles here, so their doubles name them exactly).
-template <class T>
-std::string signature(const ConvexPolyhedron<T>& h) {
-  using P = std::array<double, 3>;
-  auto point = [&](int v) {
-    return P{to_double(h.vertex(v)[0]), to_double(h.vertex(v)[1]), to_double(h.vertex(v)[2])};
-  };
-  std::vector<P> vs;
-  for (int v = 0; v < h.vertex_count(); ++v) vs.push_back(point(v));
-  std::sort(vs.begin(), vs.end());
-  std::vector<std::vector<P>> fs;
-  for (int f = 0; f < h.face_count(); ++f) {
-    std::vector<P> loop;
-    for (int v : h.face_vertices(f)) loop.push_back(point(v));
-    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
-    fs.push_back(loop);
-  }
-  std::sort(fs.begin(), fs.end());
-  std::ostringstream s;
-  s.precision(17);
-  for (const auto& p : vs) s << p[0] << ' ' << p[1] << ' ' << p[2] << ';';
-  s << '|';
-  for (const auto& l : fs) {
-    for (const auto& p : l) s << p[0] << ' ' << p[1] << ' ' << p[2] << ',';
-    s << ';';
-  }
-  return s.str();
 }
 
 }  // namespace
@@ -220,7 +187,7 @@ TEMPLATE_TEST_CASE("exact hull of the benchmark's point kinds is the reference b
     for (const auto& p : hull_sets::bench_point_set(kind, 150)) pts.push_back(vec_from_double<T>(p));
     const auto h = convex_hull(pts);
     const auto r = reference::convex_hull(pts);
-    CHECK(signature(h) == signature(r));
+    CHECK(hull_compare::signature(h) == hull_compare::signature(r));
     check_exact_hull(h, pts);
   }
 }

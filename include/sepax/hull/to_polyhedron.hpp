@@ -39,26 +39,20 @@ struct HullPolyhedron {
   static ConvexPolyhedron<T> from_faces(std::vector<Vec3<T>> vertices,
                                         const std::vector<std::vector<int>>& faces,
                                         const std::vector<Vec3<double>>* doubles = nullptr) {
+    if (faces.size() == 2) return ConvexPolyhedron<T>::from_faces(std::move(vertices), faces);  // flat
+    // a solid: topology, plane triples and planes as from_faces builds them
+    ConvexPolyhedron<T> p;
+    p.vertices_ = std::move(vertices);
+    p.check_coordinates();
+    p.build_topology(faces);
+    p.choose_plane_triples();
+    p.compute_derived();
     if constexpr (!std::is_floating_point_v<T>) {
-      if (faces.size() == 2) return ConvexPolyhedron<T>::from_faces(std::move(vertices), faces);  // flat
-      ConvexPolyhedron<T> p;
-      p.vertices_ = std::move(vertices);
-      p.check_coordinates();
-      p.build_topology(faces);
-      p.choose_plane_triples();
-      p.compute_derived();
       // The filtered certificate; where it cannot conclude, from_faces' exact checks with the local
       // certificate (exact for exact T, so the same acceptance as from_faces' full scan).
       if (doubles == nullptr || !certify_exact(p, *doubles)) p.validate_geometry(0.0);
       return p;
     } else {
-      if (faces.size() == 2) return ConvexPolyhedron<T>::from_faces(std::move(vertices), faces);  // flat
-      ConvexPolyhedron<T> p;
-      p.vertices_ = std::move(vertices);
-      p.check_coordinates();
-      p.build_topology(faces);
-      p.choose_plane_triples();
-      p.compute_derived();
       p.validate_geometry(0.0);  // the certificate (or the full scan where a vertex is not wound once)
       if (static_cast<double>(p.face_count()) * static_cast<double>(p.vertex_count()) > kConvexityScanPairs)
         return p;  // (what from_faces checks on a large shape: the certificate alone)
