@@ -3,11 +3,13 @@
 // the unit ball, in a thin slab [-1, 1]^2 x [-1e-3, 1e-3], on a cylinder's
 // lateral surface (radius 1, height 2); 10^min .. 10^max points.
 //   double, float: sepax against CGAL::Epick (float points widened exactly);
-//   Epeck: convex_hull<CGAL::Epeck::FT> against CGAL::Epeck, up to 10^exact.
-// Ratio = sepax / CGAL (targets: 2 for double and float, 3 for Epeck).
+//   Epeck, mpq: convex_hull<CGAL::Epeck::FT>, convex_hull<mpq_class> against CGAL::Epeck, up to 10^exact.
+// Ratio = sepax / CGAL (targets: 2 for double and float, 3 for Epeck and mpq).
 //
 //   sepax_hull_bench [--min 3] [--max 5] [--exact 4] [--kinds sphere,ball,slab,cylinder]
-//                    [--types double,float,Epeck] [--run both|sepax|cgal]
+//                    [--types double,float,Epeck,mpq] [--run both|sepax|cgal] [--clock wall|cpu]
+// --clock cpu times each hull by the thread's CPU time (CLOCK_THREAD_CPUTIME_ID) instead of the wall clock:
+//   on a shared, loaded machine the wall time also counts the time other processes run.
 // --run sepax (or cgal) builds only that side's hulls (the other column reads 0): for instruction counts,
 //   valgrind --tool=callgrind build/bench/sepax_hull_bench --min 3 --max 3 --kinds sphere
 //     --types double --run sepax   (one command line)
@@ -32,10 +34,25 @@
 #include <string>
 #include <vector>
 
+#include <time.h>
+
 namespace {
+
+bool cpu_clock = false;  // --clock cpu
+
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 template <class F>
 double seconds(F&& f) {
+  if (cpu_clock) {
+    const double t0 = thread_cpu_seconds();
+    f();
+    return thread_cpu_seconds() - t0;
+  }
   const auto t0 = std::chrono::steady_clock::now();
   f();
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -76,7 +93,7 @@ std::vector<std::string> split(const std::string& s) {
 int main(int argc, char** argv) {
   int min_exp = 3, max_exp = 5, exact_exp = 4;
   std::vector<std::string> kinds{"sphere", "ball", "slab", "cylinder"};
-  std::vector<std::string> types{"double", "float", "Epeck"};
+  std::vector<std::string> types{"double", "float", "Epeck", "mpq"};
   std::string run = "both";
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -93,11 +110,13 @@ int main(int argc, char** argv) {
     } else if (a == "--run" && (std::string(argv[i + 1]) == "both" || std::string(argv[i + 1]) == "sepax" ||
                                 std::string(argv[i + 1]) == "cgal")) {
       run = argv[i + 1];
+    } else if (a == "--clock" && (std::string(argv[i + 1]) == "wall" || std::string(argv[i + 1]) == "cpu")) {
+      cpu_clock = std::string(argv[i + 1]) == "cpu";
     } else {
       std::fprintf(stderr,
                    "usage: sepax_hull_bench [--min 3] [--max 5] [--exact 4] "
-                   "[--kinds sphere,ball,slab,cylinder] [--types double,float,Epeck] "
-                   "[--run both|sepax|cgal]\n");
+                   "[--kinds sphere,ball,slab,cylinder] [--types double,float,Epeck,mpq] "
+                   "[--run both|sepax|cgal] [--clock wall|cpu]\n");
       return 2;
     }
   }
@@ -133,6 +152,11 @@ int main(int argc, char** argv) {
         const double epeck = cgal ? cgal_hull<CGAL::Epeck>(pts, cv) : 0;
         const double se = mine ? sepax_hull<CGAL::Epeck::FT>(pts, v, f) : 0;
         row("Epeck", se, epeck, v, f, cv);
+      }
+      if (wanted("mpq") && e <= exact_exp) {
+        const double epeck = cgal ? cgal_hull<CGAL::Epeck>(pts, cv) : 0;
+        const double sq = mine ? sepax_hull<mpq_class>(pts, v, f) : 0;
+        row("mpq", sq, epeck, v, f, cv);
       }
     }
   }

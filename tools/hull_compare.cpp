@@ -9,6 +9,7 @@
 //   hull_compare [CORPUS_DIR] [stress sets per seed, default 2000]
 #include <sepax/convex_hull.hpp>
 
+#include "hull_compare_signature.hpp"
 #include "reference/convex_hull_reference.hpp"
 #include "../tests/core/hull_point_sets.hpp"
 
@@ -29,36 +30,6 @@ using namespace sepax;
 
 namespace {
 
-// A polytope up to numbering: its sorted vertices and its faces as loops of
-// coordinates, each started at its smallest vertex, sorted.
-template <class T>
-std::string signature(const ConvexPolyhedron<T>& h) {
-  using P = std::array<double, 3>;
-  auto pt = [&](int v) {
-    return P{to_double(h.vertex(v)[0]), to_double(h.vertex(v)[1]), to_double(h.vertex(v)[2])};
-  };
-  std::vector<P> vs;
-  for (int v = 0; v < h.vertex_count(); ++v) vs.push_back(pt(v));
-  std::sort(vs.begin(), vs.end());
-  std::vector<std::vector<P>> fs;
-  for (int f = 0; f < h.face_count(); ++f) {
-    std::vector<P> loop;
-    for (int v : h.face_vertices(f)) loop.push_back(pt(v));
-    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
-    fs.push_back(loop);
-  }
-  std::sort(fs.begin(), fs.end());
-  std::ostringstream s;
-  s.precision(17);
-  for (const auto& p : vs) s << p[0] << ' ' << p[1] << ' ' << p[2] << ';';
-  s << '|';
-  for (const auto& l : fs) {
-    for (const auto& p : l) s << p[0] << ' ' << p[1] << ' ' << p[2] << ',';
-    s << ';';
-  }
-  return s.str();
-}
-
 struct Tally {
   long sets = 0, same = 0, differ = 0;
 };
@@ -70,7 +41,7 @@ void compare(const std::string& name, const std::vector<Vec3<T>>& pts, Tally& t)
   std::optional<ConvexPolyhedron<T>> ha, hb;
   try {
     ha = convex_hull(pts);
-    a = signature(*ha);
+    a = hull_compare::signature(*ha);
   } catch (const InvalidInput& e) {  // (the same error: the same code; messages may be worded apart)
     a = "InvalidInput " + std::to_string(static_cast<int>(e.code()));
   } catch (const std::exception& e) {
@@ -78,7 +49,7 @@ void compare(const std::string& name, const std::vector<Vec3<T>>& pts, Tally& t)
   }
   try {
     hb = reference::convex_hull(pts);
-    b = signature(*hb);
+    b = hull_compare::signature(*hb);
   } catch (const InvalidInput& e) {  // (the same error: the same code; messages may be worded apart)
     b = "InvalidInput " + std::to_string(static_cast<int>(e.code()));
   } catch (const std::exception& e) {

@@ -177,7 +177,9 @@ inline void ConvexPolyhedron<T>::choose_plane_triples() {
     const auto loop = face_vertices(f);
     const int n = static_cast<int>(loop.size());
     std::array<int, 3> best{loop[0], loop[1], loop[2]};
-    if (n <= 16) {
+    if (n == 3) {
+      // a triangle: its one triple
+    } else if (n <= 16) {
       std::vector<Vec3<T>> rel;  // loop vertices relative to loop[0] (scaled for float)
       rel.reserve(static_cast<std::size_t>(n));
       for (int i = 0; i < n; ++i) rel.push_back(Vec3<T>(vertex(loop[i]) - vertex(loop[0])));

@@ -206,7 +206,13 @@ inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
     }
     const auto loop = face_vertices(f);
     const int n = static_cast<int>(loop.size());
+    const auto& triple = face(f).plane_vertices;
     for (int i = 0; i < n; ++i) {
+      // (exact T: the plane triple's own heights are exactly 0 by the plane's construction)
+      if constexpr (number_traits<T>::is_exact) {
+        const int v = loop[static_cast<std::size_t>(i)];
+        if (v == triple[0] || v == triple[1] || v == triple[2]) continue;
+      }
       const T h = height(f, vertex(loop[static_cast<std::size_t>(i)]));
       if (abs_of(h) > plan_tol) {
         fail(ErrorCode::NonPlanarFace, "face " + std::to_string(f) + " is not planar: vertex " +
@@ -222,7 +228,8 @@ inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
       Vec3<T> bc(c - b);
       bool bad;
       if constexpr (number_traits<T>::is_exact) {
-        bad = !(dot(pl.normal, cross(ab, bc)) > T(0));
+        // (a triangle, its own plane triple: the turn is |normal|^2, non-zero as tested above)
+        bad = n != 3 && !(dot(pl.normal, cross(ab, bc)) > T(0));
       } else {
         // turn/|ab| is the distance of c from the line a-b (times |n| = 1).
         // ab, bc and the tolerance scaled by one power of two (largest

@@ -9,6 +9,12 @@
 
 #include <sepax/convex_hull.hpp>
 
+#include "../../tools/hull_compare_signature.hpp"
+#include "../../tools/reference/convex_hull_reference.hpp"
+#include "../core/hull_point_sets.hpp"
+
+#include <cmath>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -169,4 +175,58 @@ TEMPLATE_TEST_CASE("exact hull: coplanar gives a polygon, collinear and duplicat
   const auto tri = convex_hull(line);
   CHECK(tri.is_flat());
   CHECK(code_of({pt<T>(1, 2, 3), pt<T>(1, 2, 3), pt<T>(4, 5, 6)}) == ErrorCode::TooFewPoints);
+}
+
+TEMPLATE_TEST_CASE("exact hull of the benchmark's point kinds is the reference builder's polytope",
+                   "[hull][exact]", mpq_class, CGAL::Epeck::FT) {
+  using T = TestType;
+  // (the filtered paths: every coordinate a double; the reference scans every vertex and face in T)
+  for (const char* kind : {"sphere", "ball", "slab", "cylinder"}) {
+    INFO(kind);
+    std::vector<Vec3<T>> pts;
+    for (const auto& p : hull_sets::bench_point_set(kind, 150)) pts.push_back(vec_from_double<T>(p));
+    const auto h = convex_hull(pts);
+    const auto r = reference::convex_hull(pts);
+    CHECK(hull_compare::signature(h) == hull_compare::signature(r));
+    check_exact_hull(h, pts);
+  }
+}
+
+TEMPLATE_TEST_CASE("exact hull validation refuses a doubly wound vertex and a reflex edge", "[hull][exact]",
+                   mpq_class, CGAL::Epeck::FT) {
+  using T = TestType;
+  // A bipyramid over a pentagon whose apexes see the pentagon in pentagram order: every edge convex, the
+  // centre below every face plane, but each apex wound twice (not convex).
+  std::vector<Vec3<double>> d{{0, 0, 1}, {0, 0, -1}};
+  for (int k = 0; k < 5; ++k)
+    d.push_back({std::cos(2 * std::numbers::pi * k / 5), std::sin(2 * std::numbers::pi * k / 5), 0});
+  std::vector<std::vector<int>> star;
+  for (int j = 0; j < 5; ++j) {
+    const int w0 = 2 + (2 * j) % 5, w1 = 2 + (2 * j + 2) % 5;
+    star.push_back({0, w0, w1});
+    star.push_back({1, w1, w0});
+  }
+  std::vector<std::vector<int>> convex;  // the same points in pentagon order: convex
+  for (int k = 0; k < 5; ++k) {
+    const int u0 = 2 + k, u1 = 2 + (k + 1) % 5;
+    convex.push_back({0, u0, u1});
+    convex.push_back({1, u1, u0});
+  }
+  // an octahedron whose top apex is pushed below the equator: reflex edges
+  std::vector<Vec3<double>> o{{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -0.5}, {0, 0, -1}};
+  std::vector<std::vector<int>> dented;
+  for (int k = 0; k < 4; ++k) {
+    dented.push_back({4, k, (k + 1) % 4});
+    dented.push_back({5, (k + 1) % 4, k});
+  }
+  auto exact = [](const std::vector<Vec3<double>>& v) {
+    std::vector<Vec3<T>> t;
+    for (const auto& p : v) t.push_back(vec_from_double<T>(p));
+    return t;
+  };
+  using H = hull::detail::HullPolyhedron<T>;
+  CHECK_NOTHROW(H::from_faces(exact(d), convex, &d));
+  CHECK_THROWS_AS(H::from_faces(exact(d), star, &d), InvalidInput);
+  CHECK_THROWS_AS(ConvexPolyhedron<T>::from_faces(exact(d), star), InvalidInput);
+  CHECK_THROWS_AS(H::from_faces(exact(o), dented, &o), InvalidInput);
 }

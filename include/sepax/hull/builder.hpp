@@ -51,7 +51,8 @@ template <Number T>
 struct FaceGroup {
   std::vector<int> verts;                        ///< sorted welded point indices
   Vec3<T> area = Vec3<T>(T(0), T(0), T(0));      ///< float: sum of triangle cross products
-  Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};  ///< (initialised: groups_ copies FaceGroup{})
+  Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};  ///< float: the refitted plane (HullTraits::group_plane)
+  int plane_tri = -1;                            ///< exact: the triangle whose plane is the group's
   bool degenerate = false;                       ///< a single zero-area triangle
   std::vector<int> splits;                       ///< sorted ids of the split faces its triangles came from
 };

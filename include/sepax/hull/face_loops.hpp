@@ -165,7 +165,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
   for (int r : reject) rejected[as_index(r)] = 1;
   for (std::size_t li = 0; li < loops.size(); ++li) {
     const auto& l = loops[li];
-    const Group& g = groups_[as_index(loop_group[li])];
+    const Group& g = groups_[as_index(loop_group[li])];  // (its plane only when a corner is tested)
     const std::size_t n = l.size();
     if (n < 3) {
       for (int v : l) {
@@ -183,7 +183,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     for (std::size_t i = 0; i < n; ++i) {
       const int pa = l[(i + n - 1) % n], pb = l[i], pc = l[(i + 1) % n];
       const Vec3<T> e1(local_point(pb) - local_point(pa)), e2(local_point(pc) - local_point(pb));
-      const T turn = dot(g.pl.normal, cross(e1, e2));
+      const T turn = dot(Traits::group_plane(*this, g).normal, cross(e1, e2));
       if (Traits::convex_corner(*this, turn, e1, e2)) continue;
       // the point opposite the longest side of triangle (pa, pb, pc)
       const T lab = squared_norm(e1), lbc = squared_norm(e2),
@@ -245,6 +245,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
   std::vector<int>& index = next_vertex_;  // welded point -> output vertex
   index.assign(q_.size(), -1);
   std::vector<Vec3<T>> verts;
+  std::vector<Vec3<double>> verts_double;  // exact T with double points: the same vertices as doubles
   out_vertex_.assign(pts_.size(), 0);
   for (const auto& l : loops)
     for (int v : l) out_vertex_[as_index(v)] = 1;
@@ -254,11 +255,14 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
       if (index[as_index(v)] < 0) {
         index[as_index(v)] = static_cast<int>(verts.size());
         verts.push_back(in_[as_index(pts_[as_index(v)])]);
+        if (shadow_) verts_double.push_back(qd_[as_index(v)]);
       }
       v = index[as_index(v)];
     }
   }
-  return finish([&] { return HullPolyhedron<T>::from_faces(std::move(verts), faces); });
+  return finish([&] {
+    return HullPolyhedron<T>::from_faces(std::move(verts), faces, shadow_ ? &verts_double : nullptr);
+  });
 }
 
 }  // namespace sepax::hull::detail

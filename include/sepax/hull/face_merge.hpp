@@ -78,7 +78,10 @@ inline void Builder<T>::unite(int x, int y) {
     gx.splits = std::move(sp);
   }
   Traits::add_area(gx, gy);
-  if (gx.degenerate && !gy.degenerate) gx.pl = gy.pl;
+  if (gx.degenerate && !gy.degenerate) {
+    gx.pl = gy.pl;
+    gx.plane_tri = gy.plane_tri;
+  }
   gx.degenerate = gx.degenerate && gy.degenerate;
   parent_[as_index(y)] = x;
   Traits::refit(*this, gx);
@@ -104,8 +107,9 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
     Group& g = groups_[as_index(f)];
     g.verts = {t.v[0], t.v[1], t.v[2]};
     std::sort(g.verts.begin(), g.verts.end());
-    g.pl = plane(f);
-    g.degenerate = is_zero(g.pl.normal);
+    g.plane_tri = f;
+    Traits::init_group_plane(*this, g, f);
+    g.degenerate = Traits::zero_area(*this, f);
     if (nomerge_[as_index(f)] != 0) g.splits = {nomerge_[as_index(f)]};
     g.area = Traits::triangle_area(*this, t);
   }

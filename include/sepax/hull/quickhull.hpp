@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <stdexcept>
@@ -71,15 +72,33 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::build(const std::vector<in
         b = ext[as_index(j)];
       }
     }
-  // Point farthest from line ab.
+  // Point farthest from line ab.  Exact T with double points: the farthest by the double estimate, when
+  // it is certainly off the line (certainly_nonzero_cross; any point off the line gives a valid simplex);
+  // otherwise the scan in T.
   const Vec3<T> ab(local_point(b) - local_point(a));
   int c = -1;
   T best_c(0);
-  for (int i : active) {
-    const T d = squared_norm(cross(ab, Vec3<T>(local_point(i) - local_point(a))));
-    if (d > best_c) {
-      best_c = d;
-      c = i;
+  if (shadow_) {
+    double best_est = 0;
+    const Vec3<double> dab(qd_[as_index(b)] - qd_[as_index(a)]);
+    for (int i : active) {
+      const double e =
+          squared_norm(Vec3<double>(cross(dab, Vec3<double>(qd_[as_index(i)] - qd_[as_index(a)]))));
+      if (e > best_est) {
+        best_est = e;
+        c = i;
+      }
+    }
+    if (c >= 0 && !certainly_nonzero_cross(qd_[as_index(a)], qd_[as_index(b)], qd_[as_index(c)])) c = -1;
+    if (c >= 0) best_c = squared_norm(cross(ab, Vec3<T>(local_point(c) - local_point(a))));
+  }
+  if (c < 0) {
+    for (int i : active) {
+      const T d = squared_norm(cross(ab, Vec3<T>(local_point(i) - local_point(a))));
+      if (d > best_c) {
+        best_c = d;
+        c = i;
+      }
     }
   }
   const bool collinear = c < 0 || Traits::collinear(best_c, ab, flat_);
@@ -88,14 +107,32 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::build(const std::vector<in
                        "convex_hull: all points lie on one line" + std::string(Traits::kFlatNote));
   }
   // Point farthest from plane abc.
+  // (exact T with double points: the farthest by the filter's estimate, when it is certainly off the plane)
   const Plane<T> base = plane_through(local_point(a), local_point(b), local_point(c));
   int d = -1;
   T best_d(0);
-  for (int i : active) {
-    const T h = abs_of(height(base, i));
-    if (h > best_d) {
-      best_d = h;
-      d = i;
+  if (shadow_) {
+    double best_est = 0;
+    bool certain = false;
+    for (int i : active) {
+      const FilteredSign r =
+          orientation_filter(qd_[as_index(a)], qd_[as_index(b)], qd_[as_index(c)], qd_[as_index(i)]);
+      if (std::abs(r.det) > best_est) {
+        best_est = std::abs(r.det);
+        certain = r.certain;
+        d = i;
+      }
+    }
+    if (!certain) d = -1;
+    if (d >= 0) best_d = abs_of(height(base, d));
+  }
+  if (d < 0) {
+    for (int i : active) {
+      const T h = abs_of(height(base, i));
+      if (h > best_d) {
+        best_d = h;
+        d = i;
+      }
     }
   }
   if (d < 0 || best_d <= flat_) return polygon(active, base.normal, reject);

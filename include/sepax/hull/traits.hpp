@@ -9,6 +9,7 @@
 //   farthest, sees, zero_area     the eye of a face; "does the eye see face f"; "has f zero area"
 //   set_plane                     a new triangle's plane (exact with double points: only when needed)
 //   coplanar, certainly_apart     "are two face groups one face" (exact: filtered for double points)
+//   init_group_plane, group_plane  a face group's plane (exact: its triangle's, built only when needed)
 //   refit, triangle_area, add_area  float: a group's area-weighted plane
 //   collinear, left_turn, convex_corner  the tolerant (float) or exact turn tests
 //   rounding_case                 a case only rounding causes: for exact T a builder bug
@@ -180,10 +181,20 @@ struct ExactHullTraits {
     }
     return false;
   }
+  /// A group's plane is its plane triangle's (Builder::plane), built when first needed: with double points
+  /// most groups never need one (zero_area and certainly_apart decide without).
+  template <class B, class Group>
+  static void init_group_plane(B&, Group&, int) {}
+  template <class B, class Group>
+  static const Plane<T>& group_plane(B& b, const Group& g) {
+    return b.plane(g.plane_tri);
+  }
   /// Two adjacent groups are one face when their planes are exactly the same oriented plane.
   template <class B, class Group>
-  static bool coplanar(const B&, const Group& ga, const Group& gb) {
-    return is_zero(cross(ga.pl.normal, gb.pl.normal)) && dot(ga.pl.normal, gb.pl.normal) > T(0);
+  static bool coplanar(B& b, const Group& ga, const Group& gb) {
+    const Plane<T>& pa = group_plane(b, ga);
+    const Plane<T>& pb = group_plane(b, gb);
+    return is_zero(cross(pa.normal, pb.normal)) && dot(pa.normal, pb.normal) > T(0);
   }
   /// A group's plane is its root triangle's: nothing to refit, no area to keep.
   template <class B, class Group>
@@ -362,6 +373,15 @@ struct FloatHullTraits {
   template <class B>
   static bool certainly_apart(const B&, int, int) {
     return false;
+  }
+  /// A group's plane starts as its triangle's and is refitted as groups unite (refit).
+  template <class B, class Group>
+  static void init_group_plane(B& b, Group& g, int f) {
+    g.pl = b.plane(f);
+  }
+  template <class B, class Group>
+  static const Plane<T>& group_plane(const B&, const Group& g) {
+    return g.pl;
   }
   /// Either face sees every vertex of the other (not shared with it) less than eps below its plane.
   /// (Either: a thin face's own plane is poorly determined, so the other face's plane may be the one that
