@@ -51,7 +51,7 @@ double support_gap(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts
     for (const auto& v : h.vertices()) mh = std::max(mh, d.dot(vec_to_double(v)));
     worst = std::max(worst, mp - mh);
   }
-  return worst / (Tolerances<T>::coplanar * h.extent());
+  return worst / (Tolerances<T>::kCoplanar * h.extent());
 }
 template <class T>
 void run(unsigned seed, int iters, int only, double report) {
@@ -74,7 +74,7 @@ void run(unsigned seed, int iters, int only, double report) {
       double max_abs = 0;
       for (const auto& p : pts)
         for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(p[c])));
-      double allow = 64 * number_traits<T>::unit_roundoff * max_abs / (Tolerances<T>::coplanar * h.extent());
+      double allow = 64 * number_traits<T>::unit_roundoff * max_abs / (Tolerances<T>::kCoplanar * h.extent());
       double o = out - allow;  // excess beyond the offset allowance
       const double gap = support_gap(h, pts) - allow;
       if (gap > gworst) {

@@ -381,7 +381,7 @@ void audit_as(const FuzzCase& c, std::ostream& out, Json& j) {
                     " edge pair(s) are exactly parallel (no edge axis; skipped by every SAT)");
   if (parallel_tol)
     notes.push_back(std::to_string(parallel_tol) + " edge pair(s) are not exactly parallel but within the " +
-                    fname + " 'parallel' tolerance (" + g(Tolerances<F>::parallel) + "): plain " + fname +
+                    fname + " 'parallel' tolerance (" + g(Tolerances<F>::kParallel) + "): plain " + fname +
                     " skips them");
   if (exact_zeros) {
     std::string s = std::to_string(exact_zeros) +

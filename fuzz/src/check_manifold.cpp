@@ -94,8 +94,8 @@
 //      Depth: the SAT separation, bounded by error_bounds.hpp (4).
 //
 // (M8) Reduction (manifold_reduction.hpp): the float reduction maximises its
-//      float H within area_tol = contact_area * extent^2 (and picks the deepest
-//      within key_tol = contact_weld * extent).  The H of a point set is at
+//      float H within area_tol = kContactArea * extent^2 (and picks the deepest
+//      within key_tol = kContactWeld * extent).  The H of a point set is at
 //      most 2 max |T| terms; for T(a,b,c) = ((b - a) x (c - a)).n with x = b - a,
 //      y = c - a:  |fl(T) - T| <= g7 (|x| x |y|).|n|, and against the exact
 //      positions (bounds ea, eb, ec) and unit normal:
@@ -574,7 +574,7 @@ struct FloatCheck {
     const int inc = mf.incident_face;
     // -- replay both clips --
     const double ext = std::min(A.extent(), B.extent());
-    const F weld2 = detail::extent_tolerance(A, B, Tolerances<F>::contact_weld, 2);
+    const F weld2 = detail::extent_tolerance(A, B, Tolerances<F>::kContactWeld, 2);
     const double weld = std::sqrt(double(weld2));
     const Replay<F> rpf = replay_clip(R, I, rf, inc, dn, weld2);
     const Replay<Q> rpe = replay_clip(Re, Ie, rf, inc, 0.0, Q(0));
@@ -833,7 +833,7 @@ struct FloatCheck {
           for (std::size_t k = j + 1; k < x.size(); ++k) m = std::max(m, dT(x[i], x[j], x[k]));
       return 2 * m * kSlack;
     };
-    const double area_tol = Tolerances<F>::contact_area * ext * ext;
+    const double area_tol = Tolerances<F>::kContactArea * ext * ext;
     // The reduction picks the deepest point first and then maximises the area
     // over the sets that contain it.  When the float's deepest point is
     // another one (a tie within key_tol: deep_ok below), its area is compared
@@ -849,7 +849,7 @@ struct FloatCheck {
     const double slack = 0x1p-40 * (std::abs(he) + ext * ext);
     const bool area_ok = he - hf <= area_tol + dH(xf) + dH(xo) + slack;
     // the deepest point: the float's first point against the exact deepest
-    const double key_tol = Tolerances<F>::contact_weld * ext;
+    const double key_tol = Tolerances<F>::kContactWeld * ext;
     const double sd = to_double(me.points[static_cast<std::size_t>(xf[0])].separation);
     const double se = to_double(me.points[static_cast<std::size_t>(xe[0])].separation);
     const bool deep_ok = sd - se <= key_tol + 2 * es_max + 0x1p-40 * ext;

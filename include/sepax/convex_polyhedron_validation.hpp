@@ -67,7 +67,7 @@ inline void ConvexPolyhedron<T>::check_range(bool planes) {
                                   ": sepax needs |coordinate| <= " + num_str(limit) +
                                   " (max/16) so that edges, plane offsets and projections stay finite");
   }
-  const double smallest_tol = Tolerances<T>::coplanar * kAdjacentCoplanarFraction * extent_;
+  const double smallest_tol = Tolerances<T>::kCoplanar * kAdjacentCoplanarFraction * extent_;
   if (!(smallest_tol >= static_cast<double>(std::numeric_limits<T>::min()))) {
     fail(ErrorCode::BadScale, "extent " + num_str(extent_) + " is too small for " + tname +
                                   ": the validation tolerances (relative to the extent) fall "
@@ -182,8 +182,8 @@ template <Number T>
 inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
   if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
   if constexpr (!number_traits<T>::is_exact) check_range();
-  const T plan_tol = height_tolerance(Tolerances<T>::planarity);
-  const T conv_tol = height_tolerance(Tolerances<T>::convexity);
+  const T plan_tol = height_tolerance(Tolerances<T>::kPlanarity);
+  const T conv_tol = height_tolerance(Tolerances<T>::kConvexity);
   // faces: non-zero area, planar, convex loops
   for (int f = 0; f < face_count(); ++f) {
     const auto& pl = plane(f);
@@ -194,14 +194,14 @@ inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
       }
     } else {
       const double aspect = triple_aspect(f);
-      if (!(aspect > Tolerances<T>::sliver)) {
+      if (!(aspect > Tolerances<T>::kSliver)) {
         const auto& t = face(f).plane_vertices;
         fail(ErrorCode::DegenerateFace,
              "face " + std::to_string(f) + " has zero area up to rounding: its widest triangle (vertices " +
                  std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
                  ") is only " + num_str(aspect) +
                  " times as high as its longest side (Tolerances::sliver = " +
-                 num_str(Tolerances<T>::sliver) + "); its normal would be rounding noise");
+                 num_str(Tolerances<T>::kSliver) + "); its normal would be rounding noise");
       }
     }
     const auto loop = face_vertices(f);
@@ -314,7 +314,7 @@ inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
     if constexpr (number_traits<T>::is_exact) {
       coplanar = is_zero(cross(plane(f).normal, plane(g).normal));
     } else {
-      const T tol = height_tolerance(Tolerances<T>::coplanar * kAdjacentCoplanarFraction);
+      const T tol = height_tolerance(Tolerances<T>::kCoplanar * kAdjacentCoplanarFraction);
       coplanar = true;
       int h = face(g).edge;
       for (int i = 0; i < face(g).count && coplanar; ++i, h = half_edge(h).next)

@@ -118,7 +118,7 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   // farther apart than the weld tolerance), so once the polygon has been
   // welded such a step is skipped: the same points and ids (a large
   // reference face, such as a ramp under a box, has many such planes).
-  const T weld2 = extent_tolerance(a, b, Tolerances<T>::contact_weld, 2);
+  const T weld2 = extent_tolerance(a, b, Tolerances<T>::kContactWeld, 2);
   {
     bool welded = number_traits<T>::is_exact;  // exact T: no welding at all
     int h = R.face(ref_face).edge;
@@ -206,8 +206,8 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
     pos.push_back(c.position);
     keys.push_back(c.separation.num);
   }
-  const T area_tol = extent_tolerance(a, b, Tolerances<T>::contact_area, 3);
-  const T key_tol = extent_tolerance(a, b, Tolerances<T>::contact_weld, 1);
+  const T area_tol = extent_tolerance(a, b, Tolerances<T>::kContactArea, 3);
+  const T key_tol = extent_tolerance(a, b, Tolerances<T>::kContactWeld, 1);
   SmallVector<int, 4> keep;
   reduce_contact_points_into(pos, keys, nr, key_tol, area_tol, keep);
   for (int i : keep) m.points.push_back(pts[static_cast<std::size_t>(i)]);

@@ -47,7 +47,7 @@ inline const char* to_string(ContactKind k) {
 /// distance (same units as the shapes): shapes separated by at most the margin
 /// get a manifold with the points whose separation is <= margin.  Every
 /// internal tolerance is relative to the shapes' extent and named in
-/// tolerances.hpp (contact_weld, contact_area); exact types use none.
+/// tolerances.hpp (kContactWeld, kContactArea); exact types use none.
 struct ManifoldOptions {
   /// Keep at most 4 points (deepest + largest area).  false keeps all.
   bool reduce = true;

@@ -7,7 +7,7 @@
 //   exactly parallel edges are skipped; the support check of the brute force
 //   compares projections exactly.
 // * float/double: plain rounding arithmetic, with the named tolerances of
-//   tolerances.hpp (parallel, support).  This is the fast path the benchmark
+//   tolerances.hpp (kParallel, kSupport).  This is the fast path the benchmark
 //   measures and the fuzzer audits against exact arithmetic.
 #pragma once
 
@@ -118,7 +118,7 @@ class PlainKernel {
     if constexpr (number_traits<T>::is_exact) {
       return is_zero(n);
     } else {
-      const T tol = static_cast<T>(Tolerances<T>::parallel);
+      const T tol = static_cast<T>(Tolerances<T>::kParallel);
       return nearly_parallel(da, db, tol);  // (scale-safe: vec3.hpp)
     }
   }
@@ -195,7 +195,7 @@ class PlainKernel {
       // tolerances.hpp).  Without it, a small shape far from the origin
       // (rounding > support*extent) loses its supporting edges.
       const double u = number_traits<T>::unit_roundoff;
-      return static_cast<T>(Tolerances<T>::support * p.extent() +
+      return static_cast<T>(Tolerances<T>::kSupport * p.extent() +
                             kSupportRoundingSlack * u * p.max_abs_coordinate());
     }
   }

@@ -60,7 +60,7 @@ class Polygon2 {
   /// vertex (DegenerateFace), clockwise order (InwardFaces), a reflex or (in
   /// exact arithmetic) collinear corner, or a loop that winds more than once
   /// (NonConvexFace).  For float/double the convexity check uses the relative
-  /// tolerance Tolerances<T>::convexity of tolerances.hpp.
+  /// tolerance Tolerances<T>::kConvexity of tolerances.hpp.
   static Polygon2 from_vertices(std::vector<Vec2<T>> vertices) {
     Polygon2 p;
     p.v_ = std::move(vertices);
@@ -138,7 +138,7 @@ class Polygon2 {
       const Vec2<T> e = edge(i);
       T tol(0);
       if constexpr (!number_traits<T>::is_exact) {
-        tol = static_cast<T>(Tolerances<T>::convexity * extent_) * number_traits<T>::sqrt(dot2(e, e));
+        tol = static_cast<T>(Tolerances<T>::kConvexity * extent_) * number_traits<T>::sqrt(dot2(e, e));
       }
       for (int j = 0; j < n; ++j) {
         if (j == i || j == (i + 1) % n) continue;
@@ -305,7 +305,7 @@ Polygon2<T> project_flat(const ConvexPolyhedron<T>& p, int drop, std::vector<int
 
 /// 2D SAT of two flat shapes in one plane (throws std::invalid_argument if
 /// either is not flat or they are not coplanar: exactly for exact T, within
-/// Tolerances<T>::coplanar of the extent for float T).
+/// Tolerances<T>::kCoplanar of the extent for float T).
 template <Number T>
 Sat2Result<T> coplanar_sat(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) {
   if (!a.is_flat() || !b.is_flat())
@@ -313,7 +313,7 @@ Sat2Result<T> coplanar_sat(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<
   const Plane<T>& pl = a.plane(0);
   T tol(0);
   if constexpr (!number_traits<T>::is_exact)
-    tol = static_cast<T>(Tolerances<T>::coplanar * std::max(a.extent(), b.extent()));
+    tol = static_cast<T>(Tolerances<T>::kCoplanar * std::max(a.extent(), b.extent()));
   for (const auto& v : b.vertices())
     if (abs_of(T(dot(pl.normal, v) - pl.offset)) > tol)
       throw std::invalid_argument("coplanar_sat: the two polygons are not in one plane");

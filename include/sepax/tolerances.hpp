@@ -45,76 +45,76 @@ namespace sepax {
 template <class T>
 struct Tolerances {
   /// Hull builder: points closer than this are one point, x extent.
-  static constexpr double weld = 0;
+  static constexpr double kWeld = 0;
   /// Hull builder: a point this close above a face plane is on it (dropped); two
   /// adjacent faces are merged when either sees every vertex of the other less
   /// than this below its plane; a face corner this close to the line through its
   /// neighbours is removed (every output face strictly convex).  Validation
   /// refuses adjacent faces within coplanar / 4.  x extent.
-  static constexpr double coplanar = 0;
+  static constexpr double kCoplanar = 0;
   /// Hull builder: a point set this close to a plane is a flat polygon, this
   /// close to a line it is Collinear.  2 x coplanar, so that a solid is never
   /// thinner than twice the merge tolerance (its sides cannot merge into its
   /// top).  x extent.
-  static constexpr double flat = 0;
+  static constexpr double kFlat = 0;
   /// Validation: face vertices within this of the face's plane, x extent.
-  static constexpr double planarity = 0;
+  static constexpr double kPlanarity = 0;
   /// Validation: no vertex more than this above any face plane, x extent.
-  static constexpr double convexity = 0;
+  static constexpr double kConvexity = 0;
   /// Validation: a face whose plane triangle is at most sliver x L high over its
   /// longest side L has zero area up to rounding (DegenerateFace).  Rounding
   /// alone gives collinear points a height up to ~14u L, and a face normal's
   /// angular error is ~4u / (height / L).  Below coplanar / 4, so every hull face
   /// (no corner within coplanar x extent of its neighbours' line) passes.
   /// x the face's longest side, not the extent.
-  static constexpr double sliver = 0;
+  static constexpr double kSliver = 0;
   /// Brute-force SAT, float only: an edge endpoint within this of the extreme
   /// projection (on the unit axis) counts as supporting, plus the projections'
   /// own rounding, kSupportRoundingSlack (25) x u max|coordinate| (derived in
   /// PlainKernel::support_tolerance), which dominates for a small shape far
   /// from the origin.  x extent.
-  static constexpr double support = 0;
+  static constexpr double kSupport = 0;
   /// Plain float SATs: edges with |eA x eB| <= parallel |eA| |eB| are parallel
   /// and skipped (their float cross product is too inaccurate to be an axis).
   /// The robust policy skips only exactly parallel edges; exact types likewise.
   /// The sine of the edges' angle, dimensionless.
-  static constexpr double parallel = 0;
+  static constexpr double kParallel = 0;
   /// Contact manifold, float only: clip points closer than this are one point;
   /// in the 4-point reduction, depths within it are equally deep.  x the smaller
   /// of the two shapes' extents.
-  static constexpr double contact_weld = 0;
+  static constexpr double kContactWeld = 0;
   /// Contact manifold reduction: a point is kept only if it adds more than this
   /// (doubled) area; squared distances and areas within it of the largest are
   /// ties.  x extent^2.
-  static constexpr double contact_area = 0;
+  static constexpr double kContactArea = 0;
 };
 
 template <>
 struct Tolerances<float> {
-  static constexpr double weld = 1e-5;
-  static constexpr double coplanar = 1e-5;
-  static constexpr double flat = 2e-5;
-  static constexpr double planarity = 4e-5;
-  static constexpr double convexity = 4e-5;
-  static constexpr double sliver = 2e-6;
-  static constexpr double support = 1e-5;
-  static constexpr double parallel = 1e-4;
-  static constexpr double contact_weld = 1e-5;
-  static constexpr double contact_area = 1e-6;
+  static constexpr double kWeld = 1e-5;
+  static constexpr double kCoplanar = 1e-5;
+  static constexpr double kFlat = 2e-5;
+  static constexpr double kPlanarity = 4e-5;
+  static constexpr double kConvexity = 4e-5;
+  static constexpr double kSliver = 2e-6;
+  static constexpr double kSupport = 1e-5;
+  static constexpr double kParallel = 1e-4;
+  static constexpr double kContactWeld = 1e-5;
+  static constexpr double kContactArea = 1e-6;
 };
 
 template <>
 struct Tolerances<double> {
-  static constexpr double weld = 1e-10;
-  static constexpr double coplanar = 1e-10;
-  static constexpr double flat = 2e-10;
-  static constexpr double planarity = 4e-10;
-  static constexpr double convexity = 4e-10;
-  static constexpr double sliver = 2e-11;
-  static constexpr double support = 1e-10;
-  static constexpr double parallel = 1e-8;
-  static constexpr double contact_weld = 1e-10;
-  static constexpr double contact_area = 1e-14;
+  static constexpr double kWeld = 1e-10;
+  static constexpr double kCoplanar = 1e-10;
+  static constexpr double kFlat = 2e-10;
+  static constexpr double kPlanarity = 4e-10;
+  static constexpr double kConvexity = 4e-10;
+  static constexpr double kSliver = 2e-11;
+  static constexpr double kSupport = 1e-10;
+  static constexpr double kParallel = 1e-8;
+  static constexpr double kContactWeld = 1e-10;
+  static constexpr double kContactArea = 1e-14;
 };
 
 /// The brute force's support tolerance (PlainKernel::support_tolerance) adds
@@ -131,7 +131,7 @@ inline constexpr double kSupportRoundingSlack = 25;
 inline constexpr double kAdjacentCoplanarFraction = 0.25;
 
 // ---- convex hull (float/double; docs/hull.md) --------------------------------
-// Every constant of the hull builder (include/sepax/hull/), in units of eps = Tolerances<T>::coplanar x
+// Every constant of the hull builder (include/sepax/hull/), in units of eps = Tolerances<T>::kCoplanar x
 // extent unless its line says otherwise.  Exact types use none of them.
 //
 // | name                        | value | reason                                                          |

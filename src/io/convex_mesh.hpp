@@ -3,14 +3,14 @@
 // convex_mesh<T>: a face list that is a closed convex mesh, triangulated or
 // with any number of coplanar faces per side, as the convex polyhedron it
 // bounds -- the hull of its vertices (sepax::convex_hull<T>, which merges
-// coplanar faces: within Tolerances<T>::coplanar * extent for float and
+// coplanar faces: within Tolerances<T>::kCoplanar * extent for float and
 // double, exactly for exact types).
 //
 // The mesh is accepted only when it is its own hull:
 //   1. closed_mesh(): the faces form a closed, consistently oriented
 //      2-manifold (vertices of identical coordinates welded);
 //   2. every face lies in the plane of a hull face -- each of its vertices
-//      within Tolerances<T>::planarity * extent of it (exactly on it for
+//      within Tolerances<T>::kPlanarity * extent of it (exactly on it for
 //      exact T) -- and turns the same way (its Newell normal has a positive
 //      dot product with the hull face's outward normal);
 //   3. the faces' total area is less than 1.5 times the hull's surface area.
@@ -91,7 +91,7 @@ ConvexPolyhedron<T> convex_mesh(const ShapeData& s, const std::vector<Vec3<T>>& 
                        std::string("the faces enclose no volume: every vertex is on one plane") + kHullHint);
   }
   // float/double: relative to the extent; the plane's normal is unit length.
-  const double tol = Tolerances<T>::planarity * hull.extent();
+  const double tol = Tolerances<T>::kPlanarity * hull.extent();
   const auto on_plane = [&](const Plane<T>& pl, const Vec3<T>& x) {
     if constexpr (number_traits<T>::is_exact) {
       return detail::height(pl, x) == T(0);

@@ -82,7 +82,7 @@ bool resolvable_around(const std::vector<Vec3<T>>& points, const Vec3<T>& c) {
     }
     const double extent = std::sqrt(squared_norm(Vec3<double>(hi - lo)));
     return far <=
-           Tolerances<T>::planarity / (2 * kHullFarRounding * number_traits<T>::unit_roundoff) * extent;
+           Tolerances<T>::kPlanarity / (2 * kHullFarRounding * number_traits<T>::unit_roundoff) * extent;
   }
 }
 

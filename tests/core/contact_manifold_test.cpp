@@ -158,11 +158,11 @@ TEMPLATE_TEST_CASE("box on a larger box rotated by 45 degrees: octagon reduced t
                          vec_to_double(full.points[k].position), vec_to_double(full.points[l].position)}));
         }
   CHECK(subsets == 35);
-  // Float: candidates within the reduction's tie tolerance (contact_area *
+  // Float: candidates within the reduction's tie tolerance (kContactArea *
   // extent^2 of doubled area, plus the float rounding of the areas, below it)
   // of the best are ties.
   const double ext = std::min(a.extent(), b.extent());
-  CHECK(quad_area(kept) >= best - Tolerances<T>::contact_area * ext * ext);
+  CHECK(quad_area(kept) >= best - Tolerances<T>::kContactArea * ext * ext);
   CHECK(quad_area(kept) <= best + 1e-12);
   // deterministic: the same input gives the same manifold
   const auto again = contact_manifold(a, b);

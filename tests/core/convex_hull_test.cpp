@@ -51,7 +51,7 @@ double vertex_offset(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& p
     for (const auto& p : pts) best = std::min(best, (vec_to_double(v) - vec_to_double(p)).norm());
     worst = std::max(worst, best);
   }
-  return worst / (Tolerances<T>::coplanar * h.extent());
+  return worst / (Tolerances<T>::kCoplanar * h.extent());
 }
 
 // The rounding of a point's coordinates, 2 u max|x| per coordinate (the
@@ -62,7 +62,7 @@ double lift_rounding(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& p
   for (const auto& p : pts)
     for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(p[c])));
   return 2 * std::sqrt(3.0) * number_traits<T>::unit_roundoff * max_abs /
-         (Tolerances<T>::coplanar * h.extent());
+         (Tolerances<T>::kCoplanar * h.extent());
 }
 
 // Set `iter` of the stream of random_point_set with this seed (as
@@ -185,7 +185,7 @@ TEMPLATE_TEST_CASE("points within the flat tolerance of a plane give a polygon",
   for (int i = 0; i < 100; ++i) pts.emplace_back(u(rng), u(rng), 0.0);
   const double extent = 2 * std::sqrt(2.0);
   // bumps well below the flat tolerance
-  for (auto& p : pts) p[2] = 0.1 * Tolerances<T>::flat * extent * u(rng);
+  for (auto& p : pts) p[2] = 0.1 * Tolerances<T>::kFlat * extent * u(rng);
   const auto h = convex_hull(to_t<T>(pts));
   CHECK(h.is_flat());
   check_valid(h);
@@ -327,7 +327,7 @@ double stress_stream(unsigned seed, int count) {
       for (const auto& p : pts)
         for (int c = 0; c < 3; ++c) max_abs = std::max(max_abs, std::abs(to_double(p[c])));
       const double rounding =
-          64 * number_traits<T>::unit_roundoff * max_abs / (Tolerances<T>::coplanar * h.extent());
+          64 * number_traits<T>::unit_roundoff * max_abs / (Tolerances<T>::kCoplanar * h.extent());
       worst = std::max(worst, out - rounding);
       CHECK(out <= kHullOutsideBound + rounding);
       // Euclidean: a point within eps of two planes of a thin wedge can be
@@ -353,7 +353,7 @@ double stress_stream(unsigned seed, int count) {
       }
       if (e.code() == ErrorCode::BadScale) {
         // documented limit: 16 u max|x| > planarity * extent
-        CHECK(16 * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::planarity * (hi - lo).norm());
+        CHECK(16 * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::kPlanarity * (hi - lo).norm());
       } else {
         CHECK((e.code() == ErrorCode::Collinear || e.code() == ErrorCode::TooFewPoints));
         CHECK((kind == 4 || kind == 5));
@@ -434,7 +434,7 @@ TEMPLATE_TEST_CASE("slab corners that the repair rounds lost are kept", "[hull][
     for (const auto& p : pts)
       for (int k = 0; k < 3; ++k) max_abs = std::max(max_abs, std::abs(to_double(p[k])));
     const double rounding =
-        64 * number_traits<T>::unit_roundoff * max_abs / (Tolerances<T>::coplanar * h.extent());
+        64 * number_traits<T>::unit_roundoff * max_abs / (Tolerances<T>::kCoplanar * h.extent());
     const double dist = max_distance(h, pts);
     INFO("vertices " << h.vertex_count() << ", farthest point " << dist << ", thickness "
                      << min_face_width(h, pts) << " x coplanar*extent");
@@ -551,7 +551,7 @@ TEMPLATE_TEST_CASE("large hull: local checks agree with the full scans", "[hull]
       CHECK(static_cast<double>(h.vertex_count()) * h.face_count() > kConvexityScanPairs);
     CHECK(static_cast<double>(pts.size()) * h.face_count() > kHullPointScanPairs);
     CHECK(vertices_are_inputs(h, pts));
-    CHECK(max_vertex_height(h) <= Tolerances<T>::convexity * h.extent());
+    CHECK(max_vertex_height(h) <= Tolerances<T>::kConvexity * h.extent());
     // (a repair round puts back every point farther out than this)
     CHECK(max_outside(h, pts) <= kHullRepairTolerance);
   }
@@ -577,7 +577,7 @@ TEMPLATE_TEST_CASE("large hull: a height-field grid whose corner defeats the win
   const auto h = convex_hull(pts);
   INFO(h.vertex_count() << " vertices, " << h.face_count() << " faces");
   CHECK(!h.is_flat());
-  CHECK(max_vertex_height(h) <= Tolerances<T>::convexity * h.extent());
+  CHECK(max_vertex_height(h) <= Tolerances<T>::kConvexity * h.extent());
   CHECK(max_outside(h, pts) <= kHullRepairTolerance);
 }
 

@@ -347,7 +347,7 @@ TEMPLATE_TEST_CASE("scale: tolerances stay relative to the extent at every scale
     INFO("scale " << s);
     // vertex 6 of the cube (half size s) moved up by r*s: within planarity*extent
     // it is accepted, beyond it faces 1, 3 and 5 are not planar.
-    for (const double r : {Tolerances<T>::planarity / 8, 1e-3}) {
+    for (const double r : {Tolerances<T>::kPlanarity / 8, 1e-3}) {
       auto v = cube_vertices<T>();
       for (auto& q : v)
         q = Vec3<T>(static_cast<T>(q[0] * s), static_cast<T>(q[1] * s), static_cast<T>(q[2] * s));
@@ -469,7 +469,7 @@ TEMPLATE_TEST_CASE("validation: a face that is zero-area only up to rounding is 
 
   // a sliver triangle, height sliver/4 over its longest side, vs a thin but
   // valid one (4 * sliver), flat and as the base of a tetrahedron
-  const double sl = Tolerances<T>::sliver;
+  const double sl = Tolerances<T>::kSliver;
   for (const double h : {sl / 4, sl * 4}) {
     INFO("height " << h);
     const std::vector<Vec3<T>> tri{Vec3<T>(T(0), T(0), T(0)), Vec3<T>(T(1), T(0), T(0)),

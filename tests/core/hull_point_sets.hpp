@@ -32,7 +32,7 @@ inline double max_outside(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T
       worst = std::max(worst, d);
     }
   }
-  return worst / (Tolerances<T>::coplanar * h.extent());
+  return worst / (Tolerances<T>::kCoplanar * h.extent());
 }
 
 // Largest Euclidean distance of any input point from the hull (the solid, or
@@ -99,7 +99,7 @@ inline double max_distance(const ConvexPolyhedron<T>& h, const std::vector<Vec3<
     }
     if (h.is_flat() || above) worst = std::max(worst, best);
   }
-  return worst / (Tolerances<T>::coplanar * h.extent());
+  return worst / (Tolerances<T>::kCoplanar * h.extent());
 }
 
 // Thickness of the point set across the thinnest of the hull's face planes:
@@ -131,7 +131,7 @@ inline double min_face_width(const ConvexPolyhedron<T>& h, const std::vector<Vec
     }
     best = std::min(best, hi - lo);
   }
-  return best / (Tolerances<T>::coplanar * h.extent());
+  return best / (Tolerances<T>::kCoplanar * h.extent());
 }
 
 inline std::vector<Vec3<double>> sphere_points(int n, std::mt19937& rng) {

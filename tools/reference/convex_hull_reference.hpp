@@ -5,7 +5,7 @@
 //
 // Algorithm (quickhull with a clean-up pass):
 //   1. Reject NaN/Inf (NonFinite, naming the point).  Weld points closer than
-//      Tolerances<T>::weld * extent (exact T: remove exact duplicates only).
+//      Tolerances<T>::kWeld * extent (exact T: remove exact duplicates only).
 //      Fewer than 3 distinct points -> TooFewPoints.
 //   2. Initial simplex from extreme points: the farthest pair (a, b), the point
 //      c farthest from line ab (all within flat*extent of it -> Collinear), the
@@ -100,7 +100,7 @@
 namespace sepax::reference {
 
 /// float/double: how far outside its hull an input point may be, in units of
-/// Tolerances<T>::coplanar * extent (docs/hull.md, "Guarantees"): its height
+/// Tolerances<T>::kCoplanar * extent (docs/hull.md, "Guarantees"): its height
 /// above any face plane, and its Euclidean distance from the hull (measured
 /// over every stress set, not proven; docs/hull.md gives the numbers).
 inline constexpr double hull_outside_bound = 64;
@@ -687,9 +687,9 @@ class Builder {
       // Decisions are made on coordinates relative to the box centre.
       const T two(2);
       centre_ = Vec3<T>((lo[0] + hi[0]) / two, (lo[1] + hi[1]) / two, (lo[2] + hi[2]) / two);
-      eps_ = static_cast<T>(Tolerances<T>::coplanar * extent_);
-      flat_ = static_cast<T>(Tolerances<T>::flat * extent_);
-      weld_ = static_cast<T>(Tolerances<T>::weld * extent_);
+      eps_ = static_cast<T>(Tolerances<T>::kCoplanar * extent_);
+      flat_ = static_cast<T>(Tolerances<T>::kFlat * extent_);
+      weld_ = static_cast<T>(Tolerances<T>::kWeld * extent_);
     } else {
       centre_ = Vec3<T>(T(0), T(0), T(0));
       eps_ = flat_ = weld_ = T(0);
@@ -1822,9 +1822,9 @@ class Builder {
       d2 += w * w;
     }
     const double ext = std::sqrt(d2);
-    const T plan_tol = static_cast<T>(0.5 * Tolerances<T>::planarity * ext);
-    const T conv_tol = static_cast<T>(0.5 * Tolerances<T>::convexity * ext);
-    const T copl_tol = static_cast<T>(2.0 * Tolerances<T>::coplanar / 4 * ext);
+    const T plan_tol = static_cast<T>(0.5 * Tolerances<T>::kPlanarity * ext);
+    const T conv_tol = static_cast<T>(0.5 * Tolerances<T>::kConvexity * ext);
+    const T copl_tol = static_cast<T>(2.0 * Tolerances<T>::kCoplanar / 4 * ext);
     std::vector<Plane<T>> planes;
     std::map<std::pair<int, int>, int> edge_face;
     for (std::size_t f = 0; f < loops.size(); ++f) {
@@ -1855,7 +1855,7 @@ class Builder {
         bool ok = !is_zero(pl.normal);
         if constexpr (!exact) {  // (validation: aspect > sliver; here with a factor 2 margin)
           ok = ok && detail::triangle_aspect(pts[sz(t[0])], pts[sz(t[1])], pts[sz(t[2])]) >
-                         2 * Tolerances<T>::sliver;
+                         2 * Tolerances<T>::kSliver;
         }
         const bool shape_ok = ok;
         for (int v : l) ok = ok && abs_of(h(v)) <= plan_tol;
@@ -1905,7 +1905,7 @@ class Builder {
       any = true;
       reject.push_back(least_significant(loops[f]));
     }
-    if (any && 16.0 * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::planarity * ext) {
+    if (any && 16.0 * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::kPlanarity * ext) {
       throw InvalidInput(ErrorCode::BadScale,
                          "convex_hull: the points are up to " + std::to_string(max_abs) +
                              " from the origin, too far for " + std::string(number_traits<T>::name) +

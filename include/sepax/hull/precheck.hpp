@@ -173,9 +173,9 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
     d2 += w * w;
   }
   const double ext = std::sqrt(d2);
-  const T plan_tol = static_cast<T>(kHullPrecheckFraction * Tolerances<T>::planarity * ext);
-  const T conv_tol = static_cast<T>(kHullPrecheckFraction * Tolerances<T>::convexity * ext);
-  const T copl_tol = static_cast<T>(kHullPrecheckCoplanarMargin * Tolerances<T>::coplanar / 4 * ext);
+  const T plan_tol = static_cast<T>(kHullPrecheckFraction * Tolerances<T>::kPlanarity * ext);
+  const T conv_tol = static_cast<T>(kHullPrecheckFraction * Tolerances<T>::kConvexity * ext);
+  const T copl_tol = static_cast<T>(kHullPrecheckCoplanarMargin * Tolerances<T>::kCoplanar / 4 * ext);
   std::vector<Plane<T>> planes;
   // directed edge (u, v) -> (its face, its position in that face's loop)
   const FaceEdges edge_face(loops, q_.size());
@@ -229,7 +229,7 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
       // (validation: aspect > sliver; here with a margin)
       ok = ok &&
            sepax::detail::triangle_aspect(pts[as_index(t[0])], pts[as_index(t[1])], pts[as_index(t[2])]) >
-               kHullPrecheckSliverMargin * Tolerances<T>::sliver;
+               kHullPrecheckSliverMargin * Tolerances<T>::kSliver;
       const bool shape_ok = ok;
       for (int v : rotated) ok = ok && abs_of(h(v)) <= plan_tol;
       if (scan) {
@@ -292,7 +292,7 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
     any = true;
     reject.push_back(least_significant(loops[f]));
   }
-  if (any && kHullFarRounding * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::planarity * ext) {
+  if (any && kHullFarRounding * number_traits<T>::unit_roundoff * max_abs > Tolerances<T>::kPlanarity * ext) {
     throw InvalidInput(
         ErrorCode::BadScale,
         "convex_hull: the points are up to " + std::to_string(max_abs) + " from the origin, too far for " +

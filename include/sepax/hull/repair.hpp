@@ -172,7 +172,7 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
   const PolygonFaces polygons = polygon_faces(h, centre_);
   const std::vector<PolygonFace>& faces = polygons.faces;
   DeepInside<T> deep(
-      h, faces, kHullDeepInsideSlack * slack + kHullDeepInsidePlanarity * Tolerances<T>::planarity * extent_,
+      h, faces, kHullDeepInsideSlack * slack + kHullDeepInsidePlanarity * Tolerances<T>::kPlanarity * extent_,
       pts_.size());
   std::vector<int> near;        // large solids: the faces measured for a point near the surface
   std::vector<double> heights;  // (polygon_distance's scratch)

@@ -56,7 +56,7 @@ struct HullPolyhedron {
       p.validate_geometry(0.0);  // the certificate (or the full scan where a vertex is not wound once)
       if (static_cast<double>(p.face_count()) * static_cast<double>(p.vertex_count()) > kConvexityScanPairs)
         return p;  // (what from_faces checks on a large shape: the certificate alone)
-      const T conv_tol = p.height_tolerance(Tolerances<T>::convexity);
+      const T conv_tol = p.height_tolerance(Tolerances<T>::kConvexity);
       std::vector<int> all(as_index(p.vertex_count()));
       for (int v = 0; v < p.vertex_count(); ++v) all[as_index(v)] = v;
       const VertexTree<T> tree(all, [&](int v) { return p.vertex(v); });

@@ -226,7 +226,7 @@ struct ExactHullTraits {
   static void rounding_case(const char* what) { throw std::logic_error(std::string("convex_hull: ") + what); }
 };
 
-/// float / double: decisions within eps = Tolerances<T>::coplanar x extent, on coordinates relative to the
+/// float / double: decisions within eps = Tolerances<T>::kCoplanar x extent, on coordinates relative to the
 /// bounding-box centre.
 template <Number T>
 struct FloatHullTraits {
@@ -256,9 +256,9 @@ struct FloatHullTraits {
     }
     const T two(2);
     b.centre_ = Vec3<T>((lo[0] + hi[0]) / two, (lo[1] + hi[1]) / two, (lo[2] + hi[2]) / two);
-    b.eps_ = static_cast<T>(Tolerances<T>::coplanar * extent);
-    b.flat_ = static_cast<T>(Tolerances<T>::flat * extent);
-    b.weld_ = static_cast<T>(Tolerances<T>::weld * extent);
+    b.eps_ = static_cast<T>(Tolerances<T>::kCoplanar * extent);
+    b.flat_ = static_cast<T>(Tolerances<T>::kFlat * extent);
+    b.weld_ = static_cast<T>(Tolerances<T>::kWeld * extent);
   }
   static Vec3<T> local(const Vec3<T>& p, const Vec3<T>& centre) { return Vec3<T>(p - centre); }
 

@@ -147,7 +147,7 @@ inline double projection_bound(const Vec3<F>& n, const Vec3<F>& v, double delta_
 
 /// (6) The parallel-edge skip of the plain kernel (plain_kernel.hpp edges_parallel):
 ///       parallel  <=>  !( fl(N.N) > fl(fl(fl(t t) fl(da.da)) fl(db.db)) ),
-///     N = fl(da x db), t = (F)Tolerances<F>::parallel, and da, db the edge
+///     N = fl(da x db), t = (F)Tolerances<F>::kParallel, and da, db the edge
 ///     directions the kernel stores (exact F values).  The SATs skip such a
 ///     pair, so a float run can miss an exact winner there.  What a "parallel"
 ///     answer implies about the exact values of da, db:
@@ -177,7 +177,7 @@ inline double projection_bound(const Vec3<F>& n, const Vec3<F>& v, double delta_
 /// K_F, and the guard limits on squared lengths (derived above).
 template <class F>
 struct ParallelSkip {
-  static double tol() { return double(static_cast<F>(Tolerances<F>::parallel)); }
+  static double tol() { return double(static_cast<F>(Tolerances<F>::kParallel)); }
   static double sine_bound() {
     const double u = u_of<F>(), t = tol();
     return (t * std::sqrt((1 + gamma(9, u)) * (1 + 0x1p-23) / (1 - gamma(3, u))) +
