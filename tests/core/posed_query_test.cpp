@@ -64,9 +64,9 @@ TEST_CASE("a posed result is in world coordinates", "[posed]") {
 // computed conditioning included, also when the per-thread scratch last held
 // another shape (require_same_derived, posed_cases.hpp).  The posed
 // traversal, brute force and manifold pose B without its edge lane arrays
-// (only sat::gauss_map reads them): in rounds 1 and 2 everything else,
+// (only sat::gauss_map reads them): in passes 1 and 2 everything else,
 // lanes_bounded() included, must be bit for bit the same without them, and a
-// later request with them must complete the full image (round 1: after a
+// later request with them must complete the full image (pass 1: after a
 // check's partial image at the same pose).
 TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[posed]", float, double) {
   using T = TestType;
@@ -75,18 +75,18 @@ TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[po
   std::vector<PreparedShape<T>> prepared;
   for (const auto& s : locals) prepared.emplace_back(s);
   int checked = 0;
-  for (int round = 0; round < 3; ++round) {
+  for (int pass = 0; pass < 3; ++pass) {
     // alternate shapes, so the scratch changes topology, grows and shrinks
     for (std::size_t i = 0; i < prepared.size(); ++i) {
       const auto x = random_pose<T>(rng, 2.0);
       const ConvexPolyhedron<T> reference = transformed(locals[i], x);
-      if (round == 1) {
+      if (pass == 1) {
         const int f = 0;
         prepared[i].posed_part_scratch(x, std::span<const int>(&f, 1), std::span<const int>());
       }
-      if (round > 0) require_same_derived(prepared[i].posed_scratch(x, false), reference, false);
+      if (pass > 0) require_same_derived(prepared[i].posed_scratch(x, false), reference, false);
       require_same_derived(prepared[i].posed_scratch(x), reference);
-      if (round > 0) require_same_derived(prepared[i].posed_scratch(x, false), reference);  // kept
+      if (pass > 0) require_same_derived(prepared[i].posed_scratch(x, false), reference);  // kept
       require_same_derived(posed(locals[i], x), reference);
       ++checked;
     }
