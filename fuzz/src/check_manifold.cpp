@@ -210,19 +210,8 @@ Replay<T> replay_clip(const ConvexPolyhedron<T>& R, const ConvexPolyhedron<T>& I
   const Vec3<T>& nr = R.plane(ref_face).normal;
   std::vector<ClipVertex<T>> poly, tmp;
   std::vector<double> ep, etmp;
-  {
-    int h = I.face(inc).edge;
-    for (int i = 0; i < I.face(inc).count; ++i, h = I.half_edge(h).next) {
-      ClipVertex<T> v;
-      const int o = I.half_edge(h).origin;
-      v.point = I.vertex(o);
-      v.id.a = ShapeFeature::face(ref_face);
-      v.id.b = ShapeFeature::vertex(o);
-      v.next_edge = h / 2;
-      poly.push_back(v);
-      ep.push_back(0.0);
-    }
-  }
+  detail::incident_polygon(I, inc, ref_face, poly);
+  ep.assign(poly.size(), 0.0);
   int h = R.face(ref_face).edge;
   for (int i = 0; i < R.face(ref_face).count && !poly.empty(); ++i, h = R.half_edge(h).next) {
     const int tail = R.half_edge(h).origin;

@@ -74,6 +74,23 @@ int support_vertex(const ConvexPolyhedron<T>& p, const Vec3<T>& n) {
   return best;
 }
 
+/// Step 3's input: incident face `inc` of I as a clip polygon, each vertex
+/// with its features (reference face ref_face, incident vertex) and the
+/// incident edge to the next vertex; appended to poly.
+template <Number T, class Poly>
+void incident_polygon(const ConvexPolyhedron<T>& I, int inc, int ref_face, Poly& poly) {
+  int h = I.face(inc).edge;
+  for (int i = 0; i < I.face(inc).count; ++i, h = I.half_edge(h).next) {
+    ClipVertex<T> v;
+    const int o = I.half_edge(h).origin;
+    v.point = I.vertex(o);
+    v.id.a = ShapeFeature::face(ref_face);
+    v.id.b = ShapeFeature::vertex(o);
+    v.next_edge = h / 2;
+    poly.push_back(v);
+  }
+}
+
 /// The face contact of the header's steps, appended to m: reference face
 /// ref_face of A (ref_is_a) or of B, support vertex `support` of the other
 /// shape, points within `margin`.
@@ -100,16 +117,7 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   tp->reserve(pp->capacity());
   {
     Poly& poly = *pp;
-    int h = I.face(inc).edge;
-    for (int i = 0; i < I.face(inc).count; ++i, h = I.half_edge(h).next) {
-      ClipVertex<T> v;
-      const int o = I.half_edge(h).origin;
-      v.point = I.vertex(o);
-      v.id.a = ShapeFeature::face(ref_face);
-      v.id.b = ShapeFeature::vertex(o);
-      v.next_edge = h / 2;
-      poly.push_back(v);
-    }
+    incident_polygon(I, inc, ref_face, poly);
   }
   // Clip against the side planes of the reference face, in loop order.  A
   // plane that keeps every vertex leaves the polygon as it is
