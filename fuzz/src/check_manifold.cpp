@@ -214,23 +214,16 @@ Replay<T> replay_clip(const ConvexPolyhedron<T>& R, const ConvexPolyhedron<T>& I
   ep.assign(poly.size(), 0.0);
   int h = R.face(ref_face).edge;
   for (int i = 0; i < R.face(ref_face).count && !poly.empty(); ++i, h = R.half_edge(h).next) {
-    const int tail = R.half_edge(h).origin;
-    const int head = R.half_edge(R.half_edge(h).next).origin;
-    ClipPlane<T> cp;
-    cp.normal = cross(Vec3<T>(R.vertex(head) - R.vertex(tail)), nr);
-    cp.offset = dot(cp.normal, R.vertex(tail));
-    cp.edge = h / 2;
-    cp.tail = tail;
-    cp.head = head;
+    const ClipPlane<T> cp = detail::side_plane(R, h, nr);
     // the library's own step, and the replay of it with bounds
     clip_polygon(poly, cp, inc, tmp);
     etmp.clear();
     double dc = 0, cn = 0;
     V cd, vt;
     if constexpr (fl) {
-      const Vec3<T> e(R.vertex(head) - R.vertex(tail));
+      const Vec3<T> e(R.vertex(cp.head) - R.vertex(cp.tail));
       cd = vd(cp.normal);
-      vt = vd(R.vertex(tail));
+      vt = vd(R.vertex(cp.tail));
       cn = nrm(cd);
       const double en = nrm(vd(e)), nn = nrm(vd(nr));
       dc = (g2 * nrm(bounds::abs_cross(vd(e), vd(nr))) + g1 * en * nn + (1 + g1) * en * dn) * kSlack;

@@ -91,6 +91,22 @@ void incident_polygon(const ConvexPolyhedron<T>& I, int inc, int ref_face, Poly&
   }
 }
 
+/// The side plane of the reference face's half-edge h (tail -> head), nr the
+/// face's normal: normal (v_head - v_tail) x nr, unnormalised, through the
+/// tail; the points with dot(normal, x) - offset <= 0 are kept.
+template <Number T>
+ClipPlane<T> side_plane(const ConvexPolyhedron<T>& R, int h, const Vec3<T>& nr) {
+  const int tail = R.half_edge(h).origin;
+  const int head = R.half_edge(R.half_edge(h).next).origin;
+  ClipPlane<T> cp;
+  cp.normal = cross(Vec3<T>(R.vertex(head) - R.vertex(tail)), nr);
+  cp.offset = dot(cp.normal, R.vertex(tail));
+  cp.edge = h / 2;
+  cp.tail = tail;
+  cp.head = head;
+  return cp;
+}
+
 /// The face contact of the header's steps, appended to m: reference face
 /// ref_face of A (ref_is_a) or of B, support vertex `support` of the other
 /// shape, points within `margin`.
@@ -133,14 +149,7 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
     for (int i = 0; i < R.face(ref_face).count && !pp->empty(); ++i, h = R.half_edge(h).next) {
       Poly& poly = *pp;
       Poly& tmp = *tp;
-      const int tail = R.half_edge(h).origin;
-      const int head = R.half_edge(R.half_edge(h).next).origin;
-      ClipPlane<T> cp;
-      cp.normal = cross(Vec3<T>(R.vertex(head) - R.vertex(tail)), nr);
-      cp.offset = dot(cp.normal, R.vertex(tail));
-      cp.edge = h / 2;
-      cp.tail = tail;
-      cp.head = head;
+      const ClipPlane<T> cp = side_plane(R, h, nr);
       if (welded && !clip_polygon_if_cut(poly, cp, inc, tmp)) {
         if (opt.record_steps) {
           m.clip_steps.push_back(
