@@ -32,15 +32,11 @@ RigidTransform<T> relative_pose(const RigidTransform<T>& pose_a, const RigidTran
 
 namespace detail {
 
-/// Poses must be rigid: for float/double the query throws InvalidInput
-/// (BadScale) when |M^T M - I| > 1e-3 or det M <= 0 (a reflection or a scale,
-/// which would turn B inside out or break every bound); exact T requires
-/// det M > 0 (decided exactly) and is exact for any such linear part.
-///
-/// Throws InvalidInput (BadScale) unless x's linear part is a rotation: for
-/// float/double |R^T R - I|_F <= 1e-3 (with the rounding of its double
-/// evaluation bounded below) and det R > 0; for exact T det R > 0, decided
-/// exactly.
+/// Poses must be rigid.  Throws InvalidInput (BadScale) unless x's linear
+/// part R is a rotation: for float/double |R^T R - I|_F <= 1e-3 (with the
+/// rounding of its double evaluation bounded below) and det R > 0 (a
+/// reflection or a scale would turn B inside out or break every bound); exact
+/// T requires det R > 0, decided exactly, and is exact for any such R.
 template <Number T>
 void check_rigid(const RigidTransform<T>& x) {
   const auto& r = x.rotation;
