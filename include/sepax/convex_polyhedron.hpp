@@ -609,6 +609,8 @@ class ConvexPolyhedron {
   double compute_normal_conditioning() const;
   struct NormalConditioningScan;
   Plane<T> plane_of_triple(int f, NormalConditioningScan* scan) const;
+  std::size_t plane_groups(NormalConditioningScan* scan, bool& nb, bool& of);
+  static void planes_in_range(const Plane<T>& pl, bool& nb, bool& of);
   void compute_lanes();
   T height(int f, const Vec3<T>& p) const;
   T height_tolerance(double rel) const;

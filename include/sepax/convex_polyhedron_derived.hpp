@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "convex_polyhedron.hpp"
+#include "simd_ops.hpp"
 
 namespace sepax {
 
@@ -40,6 +41,7 @@ inline void ConvexPolyhedron<T>::compute_derived(bool eager_conditioning, bool w
 // on first use).  Returns, for float/double, whether every normal component
 // is within 2^60 in magnitude (compute_lanes' bound; false for NaN) and
 // whether every offset is finite, tested without a branch per value.
+// Float/double with SIMD: plane_groups first, the scalar loop for the rest.
 template <Number T>
 inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_planes(
     bool eager_conditioning) {
@@ -50,7 +52,11 @@ inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_
       eager_conditioning && (std::is_same_v<T, float> || std::is_same_v<T, double>);
   PlanesInRange in_range;
   [[maybe_unused]] bool nb = true, of = true;
-  for (std::size_t f = 0; f < nf; ++f) {
+  std::size_t f = 0;
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    if (nf > 2) f = plane_groups(cond ? &scan : nullptr, nb, of);
+  }
+  for (; f < nf; ++f) {
     if (f == 1 && nf == 2) {
       // Flat shape: the back face's plane is exactly the front one negated.
       // That is what plane_through on the reversed triple gives in exact
@@ -62,11 +68,7 @@ inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_
     }
     const Plane<T> pl = plane_of_triple(static_cast<int>(f), cond ? &scan : nullptr);
     planes_[f] = pl;
-    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-      const T big = T(0x1p60);
-      nb &= std::abs(pl.normal[0]) <= big && std::abs(pl.normal[1]) <= big && std::abs(pl.normal[2]) <= big;
-      of &= std::abs(pl.offset) <= std::numeric_limits<T>::max();
-    }
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) planes_in_range(pl, nb, of);
   }
   normal_conditioning_.reset();  // new coordinates: computed again on first use
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
@@ -75,6 +77,99 @@ inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_
     in_range.offsets_finite = of;
   }
   return in_range;
+}
+
+// compute_planes' range tests of one plane (float/double): ANDs into nb
+// whether every normal component is within 2^60 in magnitude (false for NaN)
+// and into of whether the offset is finite.
+template <Number T>
+[[gnu::always_inline]] inline void ConvexPolyhedron<T>::planes_in_range(const Plane<T>& pl, bool& nb,
+                                                                        bool& of) {
+  const T big = T(0x1p60);
+  nb &= std::abs(pl.normal[0]) <= big && std::abs(pl.normal[1]) <= big && std::abs(pl.normal[2]) <= big;
+  of &= std::abs(pl.offset) <= std::numeric_limits<T>::max();
+}
+
+// compute_planes for faces [0, k W), W = simd::Lanes<T>::width (4 floats or
+// 2 doubles with SSE2; 0 faces without SIMD), k W the largest multiple of W
+// up to the face count, W faces at a time: each lane evaluates
+// plane_of_triple's operations in its order (the differences, the cross
+// product, c.c left to right, sqrt, three divisions, the offset left to
+// right), each correctly rounded as in a scalar register, so every plane and
+// every scan term is bit for bit plane_of_triple's (under FMA contraction
+// the caveat of simd_ops.hpp).  A group with a lane whose c.c leaves the
+// safe range (plane_of_triple then rescales the cross product) is computed
+// face by face by plane_of_triple.  The scan gets the faces in index order;
+// nb and of get compute_planes' range tests.  Returns k W.
+template <Number T>
+inline std::size_t ConvexPolyhedron<T>::plane_groups(NormalConditioningScan* scan, bool& nb, bool& of) {
+  using L = simd::Lanes<T>;
+  constexpr int W = L::width;
+  if constexpr (W == 1) {
+    (void)scan, (void)nb, (void)of;
+    return 0;
+  } else {
+    using V = typename L::V;
+    const std::size_t done = faces_.size() / W * W;
+    const V vmax = L::set1(std::numeric_limits<T>::max());
+    const V vtiny = L::set1(std::numeric_limits<T>::min() * T(0x1p40));  // safe_squared_norm's
+    const V big = L::set1(T(0x1p60));
+    auto ok_n = L::le(big, big), ok_o = ok_n;  // every lane true
+    constexpr unsigned all = (1u << W) - 1;
+    for (std::size_t base = 0; base < done; base += W) {
+      alignas(16) T in[9][W];  // v0, v1, v2 of each lane's plane triple, by coordinate
+      for (int i = 0; i < W; ++i) {
+        const auto& t = faces_[base + static_cast<std::size_t>(i)].plane_vertices;
+        const T* p0 = vertices_[static_cast<std::size_t>(t[0])].data();
+        const T* p1 = vertices_[static_cast<std::size_t>(t[1])].data();
+        const T* p2 = vertices_[static_cast<std::size_t>(t[2])].data();
+        in[0][i] = p0[0], in[1][i] = p0[1], in[2][i] = p0[2];
+        in[3][i] = p1[0], in[4][i] = p1[1], in[5][i] = p1[2];
+        in[6][i] = p2[0], in[7][i] = p2[1], in[8][i] = p2[2];
+      }
+      const V a0 = L::load(in[0]), a1 = L::load(in[1]), a2 = L::load(in[2]);
+      const V u0 = L::sub(L::load(in[3]), a0), u1 = L::sub(L::load(in[4]), a1),
+              u2 = L::sub(L::load(in[5]), a2);
+      const V w0 = L::sub(L::load(in[6]), a0), w1 = L::sub(L::load(in[7]), a1),
+              w2 = L::sub(L::load(in[8]), a2);
+      const V c0 = L::sub(L::mul(u1, w2), L::mul(u2, w1));
+      const V c1 = L::sub(L::mul(u2, w0), L::mul(u0, w2));
+      const V c2 = L::sub(L::mul(u0, w1), L::mul(u1, w0));
+      const V s = L::add(L::add(L::mul(c0, c0), L::mul(c1, c1)), L::mul(c2, c2));
+      if (L::bits(L::mand(L::le(s, vmax), L::gt(s, vtiny))) != all) [[unlikely]] {
+        for (int i = 0; i < W; ++i) {
+          const int f = static_cast<int>(base) + i;
+          planes_[static_cast<std::size_t>(f)] = plane_of_triple(f, scan);
+          planes_in_range(planes_[static_cast<std::size_t>(f)], nb, of);
+        }
+        continue;
+      }
+      const V len = L::sqrt(s);  // > 0: s is in the safe range
+      const V n0 = L::div(c0, len), n1 = L::div(c1, len), n2 = L::div(c2, len);
+      const V off = L::add(L::add(L::mul(n0, a0), L::mul(n1, a1)), L::mul(n2, a2));
+      ok_n = L::mand(
+          ok_n, L::mand(L::le(L::abs(n0), big), L::mand(L::le(L::abs(n1), big), L::le(L::abs(n2), big))));
+      ok_o = L::mand(ok_o, L::le(L::abs(off), vmax));
+      alignas(16) T out[4][W];
+      L::store(out[0], n0);
+      L::store(out[1], n1);
+      L::store(out[2], n2);
+      L::store(out[3], off);
+      for (int i = 0; i < W; ++i)
+        planes_[base + static_cast<std::size_t>(i)] =
+            Plane<T>{Vec3<T>(out[0][i], out[1][i], out[2][i]), out[3][i]};
+      if (scan != nullptr) {
+        alignas(16) double sq[3][W];  // |u|^2, |w|^2, |c|^2 in double, x*x + y*y + z*z
+        simd::squared_norms_in_double<T>(u0, u1, u2, sq[0]);
+        simd::squared_norms_in_double<T>(w0, w1, w2, sq[1]);
+        simd::squared_norms_in_double<T>(c0, c1, c2, sq[2]);
+        for (int i = 0; i < W; ++i) scan->add_squares(sq[0][i], sq[1][i], sq[2][i]);
+      }
+    }
+    nb &= L::bits(ok_n) == all;
+    of &= L::bits(ok_o) == all;
+    return done;
+  }
 }
 
 // Everything after the planes: per-edge arrays and lanes.  Reuses the

@@ -5,7 +5,7 @@
 // time with baseline SSE2 (4 floats or 2 doubles per instruction; no
 // -march=native, no -ffast-math); without SSE2, or with SEPAX_NO_SIMD, one
 // lane at a time.  Every lane computes bit for bit what the scalar code does
-// (on Lanes: the contraction caveat).
+// (Lanes, simd_ops.hpp: the operations and the contraction caveat).
 //   arc_candidates  the Minkowski-face (arc crossing) test of one edge of A
 //                   against a range of edges of B (exact plain decisions, or
 //                   the pairs a filter does not certainly reject);
@@ -22,121 +22,9 @@
 #include <type_traits>
 
 #include "convex_polyhedron.hpp"
-
-#if defined(__SSE2__) && !defined(SEPAX_NO_SIMD)
-#include <emmintrin.h>
-#define SEPAX_SIMD_SSE2 1
-#endif
-
-/// Inline the per-group bodies into their loops (GCC otherwise outlines a
-/// lambda called from two places).
-#if defined(__GNUC__) || defined(__clang__)
-#define SEPAX_SIMD_INLINE __attribute__((always_inline))
-#else
-#define SEPAX_SIMD_INLINE
-#endif
+#include "simd_ops.hpp"
 
 namespace sepax::simd {
-
-/// Lane operations: V holds `width` values of T, M a per-lane mask.
-///
-/// Every lane evaluates exactly the operation sequence of the scalar code it
-/// replaces -- dot(a, b) = (a0*b0 + a1*b1) + a2*b2, left to right, in T -- so
-/// the values are bit-identical to PlainKernel's (IEEE operations are the
-/// same in a vector lane).  Under FMA contraction (-march=native
-/// -ffp-contract=fast) the compiler may fuse differently here and in the scalar
-/// code: plain float/double decisions may then differ between the two paths
-/// on inputs within rounding of a tie, as plain float decisions already differ
-/// between builds.  The robust kernel only uses these values in filters whose
-/// bounds hold with and without contraction.
-///
-template <class T>
-struct Lanes {  // portable fallback: one lane
-  using V = T;
-  using M = bool;
-  static constexpr int width = 1;
-  static V load(const T* p) { return *p; }
-  static V set1(T x) { return x; }
-  static V iota(T base) { return base; }
-  static V add(V a, V b) { return a + b; }
-  static V mul(V a, V b) { return a * b; }
-  static M lt(V a, V b) { return a < b; }
-  static M gt(V a, V b) { return a > b; }
-  static M ge(V a, V b) { return a >= b; }
-  static M le(V a, V b) { return a <= b; }
-  static M mand(M a, M b) { return a && b; }
-  static M mor(M a, M b) { return a || b; }
-  static V select(M m, V a, V b) { return m ? a : b; }
-  static V min_lt(V h, V m) { return h < m ? h : m; }  // h if h < m, else m
-  static V max_gt(V h, V m) { return h > m ? h : m; }  // h if h > m, else m
-  static M eq(V a, V b) { return a == b; }
-  static V hmin(V v) { return v; }  // the minimum over the lanes, in every lane
-  static unsigned bits(M m) { return m ? 1u : 0u; }
-  static T first(V v) { return v; }
-};
-
-#if defined(SEPAX_SIMD_SSE2)
-template <>
-struct Lanes<float> {
-  using V = __m128;
-  using M = __m128;
-  static constexpr int width = 4;
-  static V load(const float* p) { return _mm_loadu_ps(p); }
-  static V set1(float x) { return _mm_set1_ps(x); }
-  static V iota(float base) { return _mm_setr_ps(base, base + 1.0f, base + 2.0f, base + 3.0f); }
-  static V add(V a, V b) { return _mm_add_ps(a, b); }
-  static V mul(V a, V b) { return _mm_mul_ps(a, b); }
-  static M lt(V a, V b) { return _mm_cmplt_ps(a, b); }
-  static M gt(V a, V b) { return _mm_cmpgt_ps(a, b); }
-  static M ge(V a, V b) { return _mm_cmpge_ps(a, b); }
-  static M le(V a, V b) { return _mm_cmple_ps(a, b); }
-  static M mand(M a, M b) { return _mm_and_ps(a, b); }
-  static M mor(M a, M b) { return _mm_or_ps(a, b); }
-  static V select(M m, V a, V b) { return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b)); }
-  // minps(a, b) = a < b ? a : b and maxps(a, b) = a > b ? a : b, per lane
-  static V min_lt(V h, V m) { return _mm_min_ps(h, m); }
-  static V max_gt(V h, V m) { return _mm_max_ps(h, m); }
-  static M eq(V a, V b) { return _mm_cmpeq_ps(a, b); }
-  static V hmin(V v) {  // no NaN: min over the lanes, in every lane
-    v = _mm_min_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1)));
-    return _mm_min_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)));
-  }
-  static unsigned bits(M m) { return static_cast<unsigned>(_mm_movemask_ps(m)); }
-  static float first(V v) { return _mm_cvtss_f32(v); }
-};
-
-template <>
-struct Lanes<double> {
-  using V = __m128d;
-  using M = __m128d;
-  static constexpr int width = 2;
-  static V load(const double* p) { return _mm_loadu_pd(p); }
-  static V set1(double x) { return _mm_set1_pd(x); }
-  static V iota(double base) { return _mm_setr_pd(base, base + 1.0); }
-  static V add(V a, V b) { return _mm_add_pd(a, b); }
-  static V mul(V a, V b) { return _mm_mul_pd(a, b); }
-  static M lt(V a, V b) { return _mm_cmplt_pd(a, b); }
-  static M gt(V a, V b) { return _mm_cmpgt_pd(a, b); }
-  static M ge(V a, V b) { return _mm_cmpge_pd(a, b); }
-  static M le(V a, V b) { return _mm_cmple_pd(a, b); }
-  static M mand(M a, M b) { return _mm_and_pd(a, b); }
-  static M mor(M a, M b) { return _mm_or_pd(a, b); }
-  static V select(M m, V a, V b) { return _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b)); }
-  static V min_lt(V h, V m) { return _mm_min_pd(h, m); }
-  static V max_gt(V h, V m) { return _mm_max_pd(h, m); }
-  static M eq(V a, V b) { return _mm_cmpeq_pd(a, b); }
-  static V hmin(V v) { return _mm_min_pd(v, _mm_shuffle_pd(v, v, 1)); }
-  static unsigned bits(M m) { return static_cast<unsigned>(_mm_movemask_pd(m)); }
-  static double first(V v) { return _mm_cvtsd_f64(v); }
-};
-#endif
-
-/// A dot product per lane, in dot()'s order: (x*bx + y*by) + z*bz.
-template <class L>
-inline typename L::V dot3(typename L::V x, typename L::V y, typename L::V z, typename L::V bx,
-                          typename L::V by, typename L::V bz) {
-  return L::add(L::add(L::mul(x, bx), L::mul(y, by)), L::mul(z, bz));
-}
 
 /// Minkowski-face test of edge ea of A against the edges eb in [lo, hi) of B
 /// (lo a multiple of the lane width, e.g. of kMinkowskiBatch).  Writes the accepted eb to

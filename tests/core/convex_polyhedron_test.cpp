@@ -4,9 +4,11 @@
 
 #include <sepax/convex_hull.hpp>
 #include <sepax/convex_polyhedron.hpp>
+#include <sepax/posing.hpp>
 #include <sepax/shapes.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <type_traits>
@@ -334,6 +336,33 @@ TEMPLATE_TEST_CASE("scale: valid shapes build at any scale in range, with the sa
       if (p.is_flat()) CHECK(p.plane(1).normal == Vec3<T>(-p.plane(0).normal));
       CHECK(std::abs(p.extent() / s / unit.extent() - 1.0) < 1e-6);
       CHECK(std::abs(to_double(p.centroid()[0]) / s - to_double(unit.centroid()[0])) < 1e-5);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("scale: every stored plane is plane_through of its plane triple, bit for bit",
+                   "[polyhedron][scale]", float, double) {
+  // compute_planes derives a few faces at a time in SIMD lanes, face by face
+  // where a lane's cross product leaves the safe range (tiny and huge
+  // scales), and the remainder one at a time: each plane must be the scalar
+  // plane_through's, and the eagerly scanned normal conditioning (posed) the
+  // lazily computed one's.
+  using T = TestType;
+  auto scales = in_range_scales<T>();
+  scales.push_back(1.0);
+  for (const auto& unit : unit_shapes<T>()) {
+    for (const double s : scales) {
+      INFO("scale " << s << ", " << unit.face_count() << " faces");
+      const ConvexPolyhedron<T> p = scaled(unit, s);
+      const int nf = p.is_flat() ? 1 : p.face_count();
+      for (int f = 0; f < nf; ++f) {
+        const auto& t = p.face(f).plane_vertices;
+        const Plane<T> q = plane_through(p.vertex(t[0]), p.vertex(t[1]), p.vertex(t[2]));
+        CHECK(std::memcmp(&q.normal, &p.plane(f).normal, sizeof(q.normal)) == 0);
+        CHECK(std::memcmp(&q.offset, &p.plane(f).offset, sizeof(q.offset)) == 0);
+      }
+      const ConvexPolyhedron<T> moved = posed(p, RigidTransform<T>::identity());
+      CHECK(moved.normal_conditioning() == p.normal_conditioning());
     }
   }
 }

@@ -1,0 +1,170 @@
+// sepax/simd_ops.hpp
+//
+// Lane operations for the SIMD loops (simd_lanes.hpp, the plane pass of
+// convex_polyhedron_derived.hpp): Lanes<T> holds 4 floats or 2 doubles with
+// baseline SSE2 (no -march=native, no -ffast-math), one value otherwise
+// (no SSE2, or SEPAX_NO_SIMD).  Every operation is the IEEE operation of the
+// scalar code, correctly rounded per lane (sqrt and division included), so a
+// lane computes bit for bit what the scalar expression does; dot3 keeps
+// dot()'s order.
+#pragma once
+
+#include <cmath>
+#include <type_traits>
+
+#if defined(__SSE2__) && !defined(SEPAX_NO_SIMD)
+#include <emmintrin.h>
+#define SEPAX_SIMD_SSE2 1
+#endif
+
+/// Inline the per-group bodies into their loops (GCC otherwise outlines a
+/// lambda called from two places).
+#if defined(__GNUC__) || defined(__clang__)
+#define SEPAX_SIMD_INLINE __attribute__((always_inline))
+#else
+#define SEPAX_SIMD_INLINE
+#endif
+
+namespace sepax::simd {
+
+/// Lane operations: V holds `width` values of T, M a per-lane mask.
+///
+/// Every lane evaluates exactly the operation sequence of the scalar code it
+/// replaces -- dot(a, b) = (a0*b0 + a1*b1) + a2*b2, left to right, in T -- so
+/// the values are bit-identical to PlainKernel's (IEEE operations are the
+/// same in a vector lane).  Under FMA contraction (-march=native
+/// -ffp-contract=fast) the compiler may fuse differently here and in the scalar
+/// code: plain float/double decisions may then differ between the two paths
+/// on inputs within rounding of a tie, as plain float decisions already differ
+/// between builds.  The robust kernel only uses these values in filters whose
+/// bounds hold with and without contraction.
+///
+template <class T>
+struct Lanes {  // portable fallback: one lane
+  using V = T;
+  using M = bool;
+  static constexpr int width = 1;
+  static V load(const T* p) { return *p; }
+  static V set1(T x) { return x; }
+  static V iota(T base) { return base; }
+  static void store(T* p, V v) { *p = v; }
+  static V add(V a, V b) { return a + b; }
+  static V sub(V a, V b) { return a - b; }
+  static V mul(V a, V b) { return a * b; }
+  static V div(V a, V b) { return a / b; }
+  static V sqrt(V a) { return std::sqrt(a); }
+  static V abs(V a) { return std::abs(a); }
+  static M lt(V a, V b) { return a < b; }
+  static M gt(V a, V b) { return a > b; }
+  static M ge(V a, V b) { return a >= b; }
+  static M le(V a, V b) { return a <= b; }
+  static M mand(M a, M b) { return a && b; }
+  static M mor(M a, M b) { return a || b; }
+  static V select(M m, V a, V b) { return m ? a : b; }
+  static V min_lt(V h, V m) { return h < m ? h : m; }  // h if h < m, else m
+  static V max_gt(V h, V m) { return h > m ? h : m; }  // h if h > m, else m
+  static M eq(V a, V b) { return a == b; }
+  static V hmin(V v) { return v; }  // the minimum over the lanes, in every lane
+  static unsigned bits(M m) { return m ? 1u : 0u; }
+  static T first(V v) { return v; }
+};
+
+#if defined(SEPAX_SIMD_SSE2)
+template <>
+struct Lanes<float> {
+  using V = __m128;
+  using M = __m128;
+  static constexpr int width = 4;
+  static V load(const float* p) { return _mm_loadu_ps(p); }
+  static V set1(float x) { return _mm_set1_ps(x); }
+  static V iota(float base) { return _mm_setr_ps(base, base + 1.0f, base + 2.0f, base + 3.0f); }
+  static void store(float* p, V v) { _mm_storeu_ps(p, v); }
+  static V add(V a, V b) { return _mm_add_ps(a, b); }
+  static V sub(V a, V b) { return _mm_sub_ps(a, b); }
+  static V mul(V a, V b) { return _mm_mul_ps(a, b); }
+  static V div(V a, V b) { return _mm_div_ps(a, b); }
+  static V sqrt(V a) { return _mm_sqrt_ps(a); }
+  static V abs(V a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }  // the sign bit cleared
+  static M lt(V a, V b) { return _mm_cmplt_ps(a, b); }
+  static M gt(V a, V b) { return _mm_cmpgt_ps(a, b); }
+  static M ge(V a, V b) { return _mm_cmpge_ps(a, b); }
+  static M le(V a, V b) { return _mm_cmple_ps(a, b); }
+  static M mand(M a, M b) { return _mm_and_ps(a, b); }
+  static M mor(M a, M b) { return _mm_or_ps(a, b); }
+  static V select(M m, V a, V b) { return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b)); }
+  // minps(a, b) = a < b ? a : b and maxps(a, b) = a > b ? a : b, per lane
+  static V min_lt(V h, V m) { return _mm_min_ps(h, m); }
+  static V max_gt(V h, V m) { return _mm_max_ps(h, m); }
+  static M eq(V a, V b) { return _mm_cmpeq_ps(a, b); }
+  static V hmin(V v) {  // no NaN: min over the lanes, in every lane
+    v = _mm_min_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm_min_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)));
+  }
+  static unsigned bits(M m) { return static_cast<unsigned>(_mm_movemask_ps(m)); }
+  static float first(V v) { return _mm_cvtss_f32(v); }
+};
+
+template <>
+struct Lanes<double> {
+  using V = __m128d;
+  using M = __m128d;
+  static constexpr int width = 2;
+  static V load(const double* p) { return _mm_loadu_pd(p); }
+  static V set1(double x) { return _mm_set1_pd(x); }
+  static V iota(double base) { return _mm_setr_pd(base, base + 1.0); }
+  static void store(double* p, V v) { _mm_storeu_pd(p, v); }
+  static V add(V a, V b) { return _mm_add_pd(a, b); }
+  static V sub(V a, V b) { return _mm_sub_pd(a, b); }
+  static V mul(V a, V b) { return _mm_mul_pd(a, b); }
+  static V div(V a, V b) { return _mm_div_pd(a, b); }
+  static V sqrt(V a) { return _mm_sqrt_pd(a); }
+  static V abs(V a) { return _mm_andnot_pd(_mm_set1_pd(-0.0), a); }  // the sign bit cleared
+  static M lt(V a, V b) { return _mm_cmplt_pd(a, b); }
+  static M gt(V a, V b) { return _mm_cmpgt_pd(a, b); }
+  static M ge(V a, V b) { return _mm_cmpge_pd(a, b); }
+  static M le(V a, V b) { return _mm_cmple_pd(a, b); }
+  static M mand(M a, M b) { return _mm_and_pd(a, b); }
+  static M mor(M a, M b) { return _mm_or_pd(a, b); }
+  static V select(M m, V a, V b) { return _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b)); }
+  static V min_lt(V h, V m) { return _mm_min_pd(h, m); }
+  static V max_gt(V h, V m) { return _mm_max_pd(h, m); }
+  static M eq(V a, V b) { return _mm_cmpeq_pd(a, b); }
+  static V hmin(V v) { return _mm_min_pd(v, _mm_shuffle_pd(v, v, 1)); }
+  static unsigned bits(M m) { return static_cast<unsigned>(_mm_movemask_pd(m)); }
+  static double first(V v) { return _mm_cvtsd_f64(v); }
+};
+#endif
+
+/// out[i] = x_i*x_i + y_i*y_i + z_i*z_i in double, left to right, for the
+/// Lanes<T>::width lanes of x, y, z (each value converted to double first,
+/// exactly): what `double(x)*double(x) + double(y)*double(y) + ...` gives
+/// lane by lane.
+template <class T>
+inline void squared_norms_in_double(typename Lanes<T>::V x, typename Lanes<T>::V y, typename Lanes<T>::V z,
+                                    double* out) {
+#if defined(SEPAX_SIMD_SSE2)
+  if constexpr (std::is_same_v<T, float>) {
+    auto sum = [](__m128d a, __m128d b, __m128d c) {
+      return _mm_add_pd(_mm_add_pd(_mm_mul_pd(a, a), _mm_mul_pd(b, b)), _mm_mul_pd(c, c));
+    };
+    auto hi = [](__m128 v) { return _mm_cvtps_pd(_mm_movehl_ps(v, v)); };
+    _mm_storeu_pd(out, sum(_mm_cvtps_pd(x), _mm_cvtps_pd(y), _mm_cvtps_pd(z)));
+    _mm_storeu_pd(out + 2, sum(hi(x), hi(y), hi(z)));
+  } else if constexpr (std::is_same_v<T, double>) {
+    _mm_storeu_pd(out, _mm_add_pd(_mm_add_pd(_mm_mul_pd(x, x), _mm_mul_pd(y, y)), _mm_mul_pd(z, z)));
+  } else
+#endif
+  {  // one lane
+    const double a = static_cast<double>(x), b = static_cast<double>(y), c = static_cast<double>(z);
+    *out = a * a + b * b + c * c;
+  }
+}
+
+/// A dot product per lane, in dot()'s order: (x*bx + y*by) + z*bz.
+template <class L>
+inline typename L::V dot3(typename L::V x, typename L::V y, typename L::V z, typename L::V bx,
+                          typename L::V by, typename L::V bz) {
+  return L::add(L::add(L::mul(x, bx), L::mul(y, by)), L::mul(z, bz));
+}
+
+}  // namespace sepax::simd
