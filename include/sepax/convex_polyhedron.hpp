@@ -574,13 +574,20 @@ class ConvexPolyhedron {
   bool write_edge_lanes();
   // The per-edge arrays of a rigid image (finish_rigid_image) from its
   // vertices and planes, and with kLanes their edge lanes (lanes_ sized);
-  // returns whether every direction component has |x| <= 2^60.
+  // returns whether every direction component has |x| <= 2^60.  With every
+  // vertex coordinate within 2^59 (max_abs_) each component of a difference
+  // is within 2^60 (rounding is monotone and 2^60 is a float and a double),
+  // so the per-edge test runs only otherwise (kCheck).
   template <bool kLanes>
+  bool derive_rigid_edges() {
+    return max_abs_ <= 0x1p59 ? derive_rigid_edges<kLanes, false>() : derive_rigid_edges<kLanes, true>();
+  }
+  template <bool kLanes, bool kCheck>
   bool derive_rigid_edges() {
     const auto ne = static_cast<std::size_t>(edge_count());
     const auto es = static_cast<std::size_t>(lane_edge_stride_);
     T* const l = lanes_.data();
-    const T big = T(0x1p60);
+    [[maybe_unused]] const T big = T(0x1p60);
     bool ok = true;
     for (std::size_t e = 0; e < ne; ++e) {
       const HalfEdge& h0 = half_edges_[2 * e];
@@ -592,7 +599,7 @@ class ConvexPolyhedron {
       edge_n0_[e] = n0;
       edge_n1_[e] = n1;
       for (int c = 0; c < 3; ++c) {
-        ok &= std::abs(d[c]) <= big;
+        if constexpr (kCheck) ok &= std::abs(d[c]) <= big;
         if constexpr (kLanes) {
           const auto k = static_cast<std::size_t>(c);
           l[k * es + e] = n0[c];
