@@ -30,6 +30,7 @@
 #include "error.hpp"
 #include "number_traits.hpp"
 #include "tolerances.hpp"
+#include "simd_ops.hpp"
 #include "vec3.hpp"
 
 namespace sepax {
@@ -280,9 +281,15 @@ class ConvexPolyhedron {
   /// Float/double: one pass over the vertices computes each image point,
   /// writes it and its vertex lanes, and adds it to the bounds, the sum and
   /// the finiteness test (the values compute_bounds and compute_lanes give,
-  /// bit for bit: the same sequential sum, the same comparisons).
-  template <class Point>
-  void assign_rigid_vertices(const ConvexPolyhedron& src, bool same_topology, Point&& point) {
+  /// bit for bit: the same sequential sum, the same comparisons).  With
+  /// point_lanes (not nullptr), the vertices come W at a time from src's
+  /// vertex lanes: point_lanes(x, y, z) maps simd::Lanes<T> vectors of
+  /// coordinates to their images in place, lane by lane bit for bit what
+  /// point gives (point takes the remainder); the sum then runs over the
+  /// written lanes in index order.
+  template <class Point, class PointLanes = std::nullptr_t>
+  void assign_rigid_vertices(const ConvexPolyhedron& src, bool same_topology, Point&& point,
+                             PointLanes&& point_lanes = nullptr) {
     if (!same_topology) {
       half_edges_ = src.half_edges_;
       faces_ = src.faces_;
@@ -311,7 +318,16 @@ class ConvexPolyhedron {
       T lo0 = inf, lo1 = inf, lo2 = inf, hi0 = -inf, hi1 = -inf, hi2 = -inf;
       T s0 = T(0), s1 = T(0), s2 = T(0);
       bool finite = true;
-      for (std::size_t i = 0; i < nv; ++i) {
+      std::size_t i = 0;
+      if constexpr (!std::is_same_v<std::remove_cvref_t<PointLanes>, std::nullptr_t>) {
+        i = rigid_vertex_groups(src, point_lanes, lo0, lo1, lo2, hi0, hi1, hi2, finite);
+        for (std::size_t k = 0; k < i; ++k) {  // the sequential sum, in index order
+          s0 = s0 + lv[k];
+          s1 = s1 + lv[vs + k];
+          s2 = s2 + lv[2 * vs + k];
+        }
+      }
+      for (; i < nv; ++i) {
         const Vec3<T> v = point(src.vertices_[i]);
         vertices_[i] = v;
         const T x = v[0], y = v[1], z = v[2];
@@ -612,6 +628,68 @@ class ConvexPolyhedron {
       for (std::size_t k = 0; k < 9; ++k) std::fill(l + k * es + ne, l + (k + 1) * es, T(0));
     }
     return ok;
+  }
+  // assign_rigid_vertices' groups: vertices [0, k W) of src (W =
+  // simd::Lanes<T>::width, k W the largest multiple of W up to the vertex
+  // count; 0 without SIMD) mapped by point_lanes from src's vertex lanes,
+  // written to the vertex lanes and vertices_, with the bounds (lo, hi:
+  // the per-lane minima and maxima of the image folded in) and the
+  // finiteness test (every |coordinate| <= max).  Returns k W.
+  template <class PointLanes>
+  std::size_t rigid_vertex_groups(const ConvexPolyhedron& src, PointLanes& point_lanes, T& lo0, T& lo1,
+                                  T& lo2, T& hi0, T& hi1, T& hi2, bool& finite) {
+    using L = simd::Lanes<T>;
+    constexpr int W = L::width;
+    if constexpr (W == 1) {
+      (void)src, (void)point_lanes, (void)lo0, (void)lo1, (void)lo2, (void)hi0, (void)hi1, (void)hi2;
+      (void)finite;
+      return 0;
+    } else {
+      using V = typename L::V;
+      const std::size_t done = src.vertices_.size() / W * W;
+      if (done == 0) return 0;
+      const auto vs = static_cast<std::size_t>(lane_vertex_stride_);
+      const auto ss = static_cast<std::size_t>(src.lane_vertex_stride_);
+      const T* const sx = src.lanes_.data() + 9 * static_cast<std::size_t>(src.lane_edge_stride_);
+      T* const lv = lanes_.data() + 9 * static_cast<std::size_t>(lane_edge_stride_);
+      const V vmax = L::set1(std::numeric_limits<T>::max());
+      const V inf = L::set1(std::numeric_limits<T>::infinity()),
+              ninf = L::set1(-std::numeric_limits<T>::infinity());
+      V mn0 = inf, mn1 = inf, mn2 = inf, mx0 = ninf, mx1 = ninf, mx2 = ninf;
+      auto ok = L::le(vmax, vmax);  // every lane true
+      for (std::size_t b = 0; b < done; b += W) {
+        V x = L::load(sx + b), y = L::load(sx + ss + b), z = L::load(sx + 2 * ss + b);
+        point_lanes(x, y, z);
+        L::store(lv + b, x);
+        L::store(lv + vs + b, y);
+        L::store(lv + 2 * vs + b, z);
+        for (int k = 0; k < W; ++k)
+          vertices_[b + static_cast<std::size_t>(k)] = Vec3<T>(lv[b + k], lv[vs + b + k], lv[2 * vs + b + k]);
+        ok = L::mand(
+            ok, L::mand(L::le(L::abs(x), vmax), L::mand(L::le(L::abs(y), vmax), L::le(L::abs(z), vmax))));
+        mn0 = L::min_lt(x, mn0), mn1 = L::min_lt(y, mn1), mn2 = L::min_lt(z, mn2);
+        mx0 = L::max_gt(x, mx0), mx1 = L::max_gt(y, mx1), mx2 = L::max_gt(z, mx2);
+      }
+      finite &= L::bits(ok) == (1u << W) - 1;
+      alignas(16) T m[6][W];
+      const V mv[6] = {mn0, mn1, mn2, mx0, mx1, mx2};
+      for (int k = 0; k < 6; ++k) L::store(m[k], mv[k]);
+      T* const bound[6] = {&lo0, &lo1, &lo2, &hi0, &hi1, &hi2};
+      for (int c = 0; c < 6; ++c) {
+        T& r = *bound[c];
+        for (int k = 0; k < W; ++k) r = c < 3 ? (m[c][k] < r ? m[c][k] : r) : (m[c][k] > r ? m[c][k] : r);
+        if (r == T(0)) {
+          // A zero bound: its sign is that of the first zero in index order
+          // (the sequential comparisons keep the first of equal values), so
+          // it is found again in that order.
+          const T* const lane = lv + static_cast<std::size_t>(c % 3) * vs;
+          r = c < 3 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
+          for (std::size_t k = 0; k < done; ++k)
+            r = c < 3 ? (lane[k] < r ? lane[k] : r) : (lane[k] > r ? lane[k] : r);
+        }
+      }
+      return done;
+    }
   }
   double compute_normal_conditioning() const;
   struct NormalConditioningScan;

@@ -20,6 +20,7 @@
 
 #include "convex_polyhedron.hpp"
 #include "error.hpp"
+#include "simd_ops.hpp"
 #include "transform.hpp"
 
 namespace sepax {
@@ -95,7 +96,27 @@ template <Number T>
 [[gnu::noinline]] void pose_vertices_into(ConvexPolyhedron<T>& out, const ConvexPolyhedron<T>& src,
                                           bool same_topology, const RigidTransform<T>& x) {
   check_rigid(x);
-  out.assign_rigid_vertices(src, same_topology, [&](const Vec3<T>& v) { return x.apply(v); });
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    // x.apply a few vertices at a time (simd_ops.hpp): per lane apply()'s
+    // operations in its order, fl(fl(fl(fl(r_i0 v_0 + r_i1 v_1) + r_i2 v_2) + t_i)
+    using L = simd::Lanes<T>;
+    using V = typename L::V;
+    V r[3][3], t[3];
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) r[i][j] = L::set1(x.rotation(i, j));
+      t[i] = L::set1(x.translation[i]);
+    }
+    auto lanes = [&](V& a, V& b, V& c) {
+      V o[3];
+      for (int i = 0; i < 3; ++i)
+        o[i] = L::add(L::add(L::add(L::mul(r[i][0], a), L::mul(r[i][1], b)), L::mul(r[i][2], c)), t[i]);
+      a = o[0], b = o[1], c = o[2];
+    };
+    out.assign_rigid_vertices(
+        src, same_topology, [&](const Vec3<T>& v) { return x.apply(v); }, lanes);
+  } else {
+    out.assign_rigid_vertices(src, same_topology, [&](const Vec3<T>& v) { return x.apply(v); });
+  }
 }
 
 /// out = posed(src, x): pose_vertices_into, then every plane, edge array and

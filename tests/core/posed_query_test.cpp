@@ -2,6 +2,8 @@
 // double: every posed SAT returns bit for bit what the same SAT returns on
 // the pre-posed pair (A, posed(B, relative_pose(pose_a, pose_b))), axis
 // mapped to world; margins and bad poses.
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -92,6 +94,49 @@ TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[po
     }
   }
   CHECK(checked == 3 * int(locals.size()));
+}
+
+// Posing maps B's vertices a few at a time (SIMD lanes) and folds the lanes
+// bounds; a bound that is zero must keep the sign of the first zero in vertex
+// order, as the sequential scan of with_vertices keeps it.  Boxes with x in
+// {0, 1}, zeros of both signs (a vertex (-0, -1, -1) stays -0 under the
+// identity with translation -0; the others become +0) and vertex orders
+// shuffled, posed by the identity with translation (-0, -0, -0): bounds and
+// everything else bit for bit transformed(B, X).
+TEMPLATE_TEST_CASE("posing keeps the sign of a zero bound in vertex order", "[posed]", float, double) {
+  using T = TestType;
+  const ConvexPolyhedron<T> unit = shapes::box<T>(0.5, 1.0, 1.0);
+  RigidTransform<T> x = RigidTransform<T>::identity();
+  x.translation = Vec3<T>(T(-0.0), T(-0.0), T(-0.0));
+  std::mt19937_64 rng(2059);
+  int negative_zero_bounds = 0, positive_zero_bounds = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<int> order(static_cast<std::size_t>(unit.vertex_count()));
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    std::shuffle(order.begin(), order.end(), rng);
+    std::vector<int> new_index(order.size());
+    std::vector<Vec3<T>> v;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      new_index[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
+      Vec3<T> p = unit.vertex(order[i]);
+      p[0] = p[0] > T(0) ? T(1) : (rng() % 2 ? T(-0.0) : T(0.0));
+      v.push_back(p);
+    }
+    std::vector<std::vector<int>> faces;
+    for (int f = 0; f < unit.face_count(); ++f) {
+      std::vector<int> loop;
+      for (const int i : unit.face_vertices(f)) loop.push_back(new_index[static_cast<std::size_t>(i)]);
+      faces.push_back(loop);
+    }
+    const ConvexPolyhedron<T> b = ConvexPolyhedron<T>::from_faces(v, faces);
+    const PreparedShape<T> pb(b);
+    const ConvexPolyhedron<T> reference = transformed(b, x);
+    require_same_derived(pb.posed_scratch(x), reference);
+    require_same_derived(posed(b, x), reference);
+    (std::signbit(reference.bounds_min()[0]) ? negative_zero_bounds : positive_zero_bounds)++;
+  }
+  CHECK(negative_zero_bounds > 0);  // both signs were met
+  CHECK(positive_zero_bounds > 0);
 }
 
 // Posing checks B's image as with_vertices checks new vertices: a pose that
