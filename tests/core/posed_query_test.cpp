@@ -96,6 +96,22 @@ TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[po
   CHECK(checked == 3 * int(locals.size()));
 }
 
+// relative_pose spells out pose_a.inverse() * pose_b: the same value, bit for
+// bit, for poses near and far from the origin.
+TEMPLATE_TEST_CASE("relative_pose is pose_a.inverse() * pose_b bit for bit", "[posed]", float, double) {
+  using T = TestType;
+  std::mt19937_64 rng(4111);
+  for (int i = 0; i < 500; ++i) {
+    const double reach = i % 2 ? 1.0 : 1e4;
+    const RigidTransform<T> pa = random_pose<T>(rng, reach), pb = random_pose<T>(rng, reach);
+    const RigidTransform<T> x = relative_pose(pa, pb), y = pa.inverse() * pb;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) REQUIRE(std::memcmp(&x.rotation(r, c), &y.rotation(r, c), sizeof(T)) == 0);
+      REQUIRE(std::memcmp(&x.translation[r], &y.translation[r], sizeof(T)) == 0);
+    }
+  }
+}
+
 // Posing maps B's vertices a few at a time (SIMD lanes) and folds the lanes
 // bounds; a bound that is zero must keep the sign of the first zero in vertex
 // order, as the sequential scan of with_vertices keeps it.  Boxes with x in
