@@ -150,7 +150,7 @@ std::int64_t ShapeCache::preparations() const {
 // ---- counters ------------------------------------------------------------------
 
 struct CreateFunc::Live {
-  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, manifolds{0},
+  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, refreshed{0}, manifolds{0},
       points{0}, id_matches{0}, errors{0}, fallback_pairs{0};
   std::mutex error_mutex;
   std::string last_error;
@@ -168,6 +168,7 @@ Counters CreateFunc::counters() const {
   c.early_outs = live_->early_outs.load();
   c.culled = live_->culled.load();
   c.kept = live_->kept.load();
+  c.refreshed = live_->refreshed.load();
   c.kept_apart = live_->kept_apart.load();
   c.manifolds = live_->manifolds.load();
   c.points = live_->points.load();
@@ -184,6 +185,7 @@ void CreateFunc::reset_counters() {
   live_->early_outs = 0;
   live_->culled = 0;
   live_->kept = 0;
+  live_->refreshed = 0;
   live_->kept_apart = 0;
   live_->manifolds = 0;
   live_->points = 0;
@@ -207,6 +209,7 @@ struct CollisionAlgorithm::State {
   // and the relative pose of the query it came from
   bool kept = false;
   SatResult<float> contact;
+  KeptFace face;  // its side planes when it is a face of A (face_refresh.hpp)
   double sat_separation = 0;
   RigidTransform<float> x0;
   // the last query's answer beyond the margin (coherence.hpp): valid, its
@@ -420,8 +423,10 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       keep = delta <= budget && s.sat_separation + delta + slack <= margin;
     }
     if (keep) {
-      kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.manifold);
+      bool refreshed = false;
+      kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.face, s.manifold, refreshed);
       live.kept.fetch_add(1, std::memory_order_relaxed);
+      if (refreshed) live.refreshed.fetch_add(1, std::memory_order_relaxed);
     } else {
       SatOptions opt;
       opt.early_out = true;
@@ -443,6 +448,12 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       if (t == FeatureType::FaceA || t == FeatureType::FaceB) {
         s.kept = true;
         s.contact = contact;
+        if (t == FeatureType::FaceA) {
+          if (s.face.face != contact.feature.a) s.face.set(s.a->shape.polyhedron(), contact.feature.a);
+        } else {
+          s.face.face = -1;
+          s.face.planes.clear();
+        }
         s.sat_separation = to_double(r.separation);
         s.x0 = x;
       }
