@@ -5,6 +5,8 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <new>
+#include <type_traits>
 #include <vector>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
@@ -261,7 +263,16 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
   const btScalar damping = stiffness ? gCalculateCombinedContactDampingCallback(o0, o1) : btScalar(0);
   const btScalar stiff = stiffness ? gCalculateCombinedContactStiffnessCallback(o0, o1) : btScalar(0);
 
-  btManifoldPoint fresh[MANIFOLD_CACHE_SIZE];
+  // The new points, constructed in place (btManifoldPoint is trivially
+  // destructible; a default-constructed array and a copy per point cost a
+  // fifth of this function).
+  union Slot {
+    Slot() {}
+    btManifoldPoint point;
+  };
+  static_assert(std::is_trivially_destructible_v<btManifoldPoint>);
+  Slot slots[MANIFOLD_CACHE_SIZE];
+  auto at = [&](int j) -> btManifoldPoint& { return slots[j].point; };
   int count = 0;
   for (const auto& c : m.points) {
     if (count == MANIFOLD_CACHE_SIZE) break;
@@ -272,8 +283,8 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     const btVector3 normal_on_b = swapped ? n : -n;
     const btVector3 point_b = bt(swapped ? c.point_a : c.point_b);
     const btVector3 point_a = point_b + normal_on_b * depth;
-    btManifoldPoint p(ma->getWorldTransform().invXform(point_a), mb->getWorldTransform().invXform(point_b),
-                      normal_on_b, depth);
+    btManifoldPoint& p = *new (&slots[count].point) btManifoldPoint(
+        ma->getWorldTransform().invXform(point_a), mb->getWorldTransform().invXform(point_b), normal_on_b, depth);
     p.m_positionWorldOnA = point_a;
     p.m_positionWorldOnB = point_b;
     p.m_combinedFriction = friction;
@@ -290,7 +301,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     }
     btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
     set_ids(p, c.id, swapped);
-    fresh[count++] = p;
+    ++count;
   }
 
   const bool new_collision = man.getNumContacts() == 0;
@@ -307,7 +318,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
   int matches = 0;
   for (int j = 0; j < count; ++j) {
     for (int i = 0; i < stored && from[j] < 0; ++i) {
-      if (!used[i] && same_ids(man.getContactPoint(i), fresh[j])) from[j] = i;
+      if (!used[i] && same_ids(man.getContactPoint(i), at(j))) from[j] = i;
     }
     if (from[j] >= 0) {
       used[from[j]] = true;
@@ -319,7 +330,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     btScalar nearest = threshold * threshold;
     for (int i = 0; i < stored; ++i) {
       if (used[i]) continue;
-      const btScalar d2 = (man.getContactPoint(i).m_localPointB - fresh[j].m_localPointB).length2();
+      const btScalar d2 = (man.getContactPoint(i).m_localPointB - at(j).m_localPointB).length2();
       if (d2 < nearest) {
         nearest = d2;
         from[j] = i;
@@ -328,7 +339,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     if (from[j] >= 0) used[from[j]] = true;
   }
   for (int j = 0; j < count; ++j) {
-    if (from[j] >= 0) man.replaceContactPoint(fresh[j], from[j]);
+    if (from[j] >= 0) man.replaceContactPoint(at(j), from[j]);
   }
   // Stored points no new point took go (backwards: removal moves the last
   // point into the hole, which has been looked at already).
@@ -336,7 +347,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     if (!used[i]) man.removeContactPoint(i);
   }
   for (int j = 0; j < count; ++j) {
-    if (from[j] < 0) man.addManifoldPoint(fresh[j]);
+    if (from[j] < 0) man.addManifoldPoint(at(j));
   }
   const bool custom =
       (o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK;

@@ -47,6 +47,18 @@ struct KeptFace {
   }
 };
 
+/// True when a vertex of `poly` is above `plane` (clip_polygon_if_cut's test,
+/// on the same heights: clip_detail::height_over), without its buffers; a
+/// large reference face (a ramp under a box) has many side planes that keep
+/// the whole polygon.
+template <class Poly>
+bool cuts(const Poly& poly, const ClipPlane<float>& plane) {
+  for (const auto& v : poly) {
+    if (clip_detail::height_over(plane, v.point) > 0.0f) return true;
+  }
+  return false;
+}
+
 /// The refresh of the header on (a, bp) for the kept face contact r (FaceA
 /// or FaceB, support vertex in r.feature, axis in world); `kept`: the side
 /// planes of r's face of A when r is FaceA and kept.face is that face.
@@ -78,6 +90,7 @@ inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidT
   for (int i = 0; i < R.face(ref_face).count && !pp->empty(); ++i, h = R.half_edge(h).next) {
     const ClipPlane<float> cp =
         cached ? kept.planes[static_cast<std::size_t>(i)] : sepax::detail::side_plane(R, h, nr);
+    if (welded && !cuts(*pp, cp)) continue;
     if (welded && !clip_polygon_if_cut(*pp, cp, inc, *tp)) continue;
     if (!welded) clip_polygon(*pp, cp, inc, *tp);
     weld_polygon(*tp, weld2);
