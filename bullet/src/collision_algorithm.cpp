@@ -219,6 +219,16 @@ struct CollisionAlgorithm::State {
   bool apart = false;
   double apart_separation = 0;
   RigidTransform<float> x_apart;
+
+  /// A shape was prepared anew (another shape or key): the warm cache, the
+  /// kept face (its face index and side planes) and the kept separation
+  /// belonged to the old one.
+  void forget_shape_state() {
+    cache = SatCache<float>{};
+    kept = false;
+    apart = false;
+    face = KeptFace{};
+  }
 };
 
 namespace {
@@ -395,13 +405,13 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       s.a = owner_.shapes_.get(*sa, ka);
       s.shape_a = sa;
       s.key_a = ka;
-      s.cache = SatCache<float>{};
+      s.forget_shape_state();
     }
     if (sb != s.shape_b || !(kb == s.key_b) || !s.b) {
       s.b = owner_.shapes_.get(*sb, kb);
       s.shape_b = sb;
       s.key_b = kb;
-      s.cache = SatCache<float>{};
+      s.forget_shape_state();
     }
     const btTransform& wa = body0->getWorldTransform();
     const btTransform& wb = body1->getWorldTransform();

@@ -437,3 +437,20 @@ TEST_CASE("bullet: a resting pair's kept face is refreshed, with a fresh algorit
   CHECK(c.queries == 1);
   CHECK(c.refreshed == 40);
 }
+
+TEST_CASE("bullet: a shape rescaled in place drops the kept face and queries again") {
+  btBoxShape floor(btVector3(5, 0.5f, 5)), box(btVector3(0.5f, 0.5f, 0.5f));
+  const btTransform tf = at(0, -0.5f, 0), tb = at(0, 0.499f, 0);
+  Pair p(&floor, &box, tf, tb, true);
+  REQUIRE(p.manifold());
+  REQUIRE(p.manifold());
+  CHECK(p.cf->counters().kept == 1);
+  box.setLocalScaling(btVector3(1.5f, 1, 1.5f));  // same pose, wider box: the kept face's data are the old shape's
+  const auto got = points_of(p.manifold());
+  CHECK(p.cf->counters().queries == 2);
+  CHECK(p.cf->counters().kept == 1);
+  Pair fresh(&floor, &box, tf, tb, true);
+  const auto want = points_of(fresh.manifold());
+  REQUIRE(got.size() == want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) CHECK(got[i].on_b == want[i].on_b);
+}
