@@ -7,16 +7,14 @@
 //      clip_polygon, clip_polygon_if_cut, weld_polygon) in fixed buffers;
 //      the side planes of a reference face of A are the same at every pose
 //      and computed once (KeptFace);
-//   3. the points within the margin, each with its height over the reference
-//      plane and its projection, as face_contact's keep_points computes them,
+//   3. the points within the margin (face_point, face_contact's step 3),
 //      mapped to world by pose_a as posed_manifold_on maps them.
 // When that leaves more than four points (face_contact would reduce them), no
 // point (face_contact's support-vertex fallback), or the contact's own
 // separation is beyond the margin (contact_manifold returns no point), the
 // refresh declines and the adapter builds the manifold with
 // posed_manifold_on.  Otherwise the points are those posed_manifold_on gives,
-// bit for bit: the same functions on the same inputs, the same arithmetic
-// where face_contact's lambda is spelled out here.
+// bit for bit: the same functions on the same inputs.
 #pragma once
 
 #include <span>
@@ -97,30 +95,15 @@ inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidT
     welded = true;
     std::swap(pp, tp);
   }
-  // face_contact's keep_points, in A's frame, then posed_manifold_on's map
+  // face_contact's step 3, in A's frame, then posed_manifold_on's map
   const float n2 = sepax::detail::norm2_of(nr);
   ContactPoint<float> pts[4];
   std::size_t count = 0;
+  ContactPoint<float> cand;
   for (const auto& v : *pp) {
-    const Separation<float> s{float(dot(nr, v.point) - rp.offset), n2};
-    if (!sepax::detail::within_margin(s, m)) continue;
+    if (!sepax::detail::face_point(v, rp, n2, ref_is_a, m, cand)) continue;
     if (count == 4) return false;  // face_contact reduces: its full path
-    const float k = s.num / n2;
-    const Vec3<float> proj(v.point[0] - nr[0] * k, v.point[1] - nr[1] * k, v.point[2] - nr[2] * k);
-    ContactPoint<float>& c = pts[count++];
-    c.separation = s;
-    if (ref_is_a) {
-      c.point_a = proj;
-      c.point_b = v.point;
-      c.id = v.id;
-    } else {
-      c.point_a = v.point;
-      c.point_b = proj;
-      c.id = v.id.swapped();
-    }
-    const float half = 1.0f / 2.0f;
-    c.position = Vec3<float>((c.point_a[0] + c.point_b[0]) * half, (c.point_a[1] + c.point_b[1]) * half,
-                             (c.point_a[2] + c.point_b[2]) * half);
+    pts[count++] = cand;
   }
   if (count == 0) return false;  // face_contact's support-vertex fallback: its full path
   out.kind = ContactKind::Face;

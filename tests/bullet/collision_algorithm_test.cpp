@@ -370,31 +370,47 @@ TEST_CASE("bullet: a refreshed kept face gives a fresh algorithm's points while 
   // side 1 mm deep, its high side just under the contact breaking threshold.
   // Raising it by 5 um per step lifts the high side's two points beyond the
   // threshold (the refreshed point set shrinks from 4 to 2) while the pair
-  // stays within the kept face's budget (0.5e-3 x 0.17 m).
+  // stays within the kept face's budget (0.5e-3 x 0.17 m).  With the floor as
+  // body 0 the reference face is a face of A (its side planes kept), with the
+  // box as body 0 a face of B (its side planes move with B').
   btBoxShape floor(btVector3(5, 0.5f, 5)), box(btVector3(0.05f, 0.05f, 0.05f));
   const btTransform tf = at(0, -0.5f, 0);
-  Pair probe(&floor, &box, tf, at(0, 0.2f, 0), true);
-  probe.b.setWorldTransform(at(0, 0.04f, 0));
-  const btPersistentManifold* m0 = probe.manifold();
-  REQUIRE(m0);
-  const float thr = m0->getContactBreakingThreshold();
-  const float s = (thr + 0.001f - 30e-6f) / 0.1f;  // sin of the tilt: high side 30 um under the threshold
-  const float angle = std::asin(s);
-  const btQuaternion tilt(btVector3(0, 0, 1), angle);
-  const float c = std::cos(angle);
-  const float y = -0.001f + 0.05f * s + 0.05f * c;  // lowest vertex 1 mm deep
-  Pair kept(&floor, &box, tf, at(0.3f, y, 0.2f, tilt), true);
-  REQUIRE(kept.manifold());
-  REQUIRE(kept.manifold()->getNumContacts() == 4);
-  std::vector<btTransform> poses;
-  for (int step = 1; step <= 12; ++step) poses.push_back(at(0.3f, y + 5e-6f * static_cast<float>(step), 0.2f, tilt));
-  const auto counts = follow_fresh(kept, &floor, &box, poses);
-  CHECK(counts.front() == 4);
-  CHECK(counts.back() == 2);
-  const auto cnt = kept.cf->counters();
-  CHECK(cnt.queries == 1);
-  CHECK(cnt.kept == 13);
-  CHECK(cnt.refreshed == cnt.kept);
+  for (const bool floor_first : {true, false}) {
+    btCollisionShape* s0 = floor_first ? static_cast<btCollisionShape*>(&floor) : &box;
+    btCollisionShape* s1 = floor_first ? static_cast<btCollisionShape*>(&box) : &floor;
+    Pair probe(&floor, &box, tf, at(0, 0.049f, 0), true);
+    const btPersistentManifold* m0 = probe.manifold();
+    REQUIRE(m0);
+    const float thr = m0->getContactBreakingThreshold();
+    const float s = (thr + 0.001f - 30e-6f) / 0.1f;  // sin of the tilt: high side 30 um under the threshold
+    const float angle = std::asin(s);
+    const btQuaternion tilt(btVector3(0, 0, 1), angle);
+    const float c = std::cos(angle);
+    const float y = -0.001f + 0.05f * s + 0.05f * c;  // lowest vertex 1 mm deep
+    const btTransform t0 = at(0.3f, y, 0.2f, tilt);
+    // body 1 moves: the box, or the floor the opposite way
+    std::vector<btTransform> poses;
+    for (int step = 1; step <= 12; ++step) {
+      const float up = 5e-6f * static_cast<float>(step);
+      poses.push_back(floor_first ? at(0.3f, y + up, 0.2f, tilt) : at(0, -0.5f - up, 0));
+    }
+    Pair kept(s0, s1, floor_first ? tf : t0, floor_first ? t0 : tf, true);
+    const btPersistentManifold* m1 = kept.manifold();
+    REQUIRE(m1);
+    REQUIRE(m1->getNumContacts() == 4);
+    for (int i = 0; i < 4; ++i) {  // the floor's face is the reference face: a face of B when it is body 1
+      const auto& q = m1->getContactPoint(i);
+      CHECK((floor_first ? q.m_partId0 : q.m_partId1) == 3);
+      CHECK((floor_first ? q.m_partId1 : q.m_partId0) == 1);
+    }
+    const auto counts = follow_fresh(kept, s0, s1, poses);
+    CHECK(counts.front() == 4);
+    CHECK(counts.back() == 2);
+    const auto cnt = kept.cf->counters();
+    CHECK(cnt.queries == 1);
+    CHECK(cnt.kept == 12);
+    CHECK(cnt.refreshed == cnt.kept);
+  }
 }
 
 TEST_CASE("bullet: a kept face whose clip would need the reduction falls back to the full manifold") {
@@ -420,22 +436,6 @@ TEST_CASE("bullet: a kept face whose clip would need the reduction falls back to
   CHECK(cnt.kept == 11);
   CHECK(cnt.refreshed > 0);           // before the corner crosses
   CHECK(cnt.refreshed < cnt.kept);    // after: the full path
-}
-
-TEST_CASE("bullet: a resting pair's kept face is refreshed, with a fresh algorithm's points") {
-  btBoxShape box(btVector3(0.5f, 0.5f, 0.5f));
-  const btQuaternion tilt(btVector3(0.3f, 0.2f, 0.9f).normalized(), 2e-3f);
-  Pair kept(&box, &box, at(0, 0, 0), at(0.02f, 0.998f, 0.01f, tilt), true);
-  REQUIRE(kept.manifold());
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<float> u(-1, 1);
-  std::vector<btTransform> poses;
-  for (int step = 0; step < 40; ++step)
-    poses.push_back(at(0.02f + 1e-5f * u(rng), 0.998f + 1e-5f * u(rng), 0.01f + 1e-5f * u(rng), tilt));
-  for (const std::size_t n : follow_fresh(kept, &box, &box, poses)) CHECK(n == 4);
-  const auto c = kept.cf->counters();
-  CHECK(c.queries == 1);
-  CHECK(c.refreshed == 40);
 }
 
 TEST_CASE("bullet: a shape rescaled in place drops the kept face and queries again") {
