@@ -152,8 +152,8 @@ std::int64_t ShapeCache::preparations() const {
 // ---- counters ------------------------------------------------------------------
 
 struct CreateFunc::Live {
-  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, refreshed{0}, manifolds{0},
-      points{0}, id_matches{0}, errors{0}, fallback_pairs{0};
+  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, refreshed{0},
+      manifolds{0}, points{0}, id_matches{0}, errors{0}, fallback_pairs{0};
   std::mutex error_mutex;
   std::string last_error;
 
@@ -293,8 +293,9 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     const btVector3 normal_on_b = swapped ? n : -n;
     const btVector3 point_b = bt(swapped ? c.point_a : c.point_b);
     const btVector3 point_a = point_b + normal_on_b * depth;
-    btManifoldPoint& p = *new (&slots[count].point) btManifoldPoint(
-        ma->getWorldTransform().invXform(point_a), mb->getWorldTransform().invXform(point_b), normal_on_b, depth);
+    btManifoldPoint& p = *new (&slots[count].point)
+                             btManifoldPoint(ma->getWorldTransform().invXform(point_a),
+                                             mb->getWorldTransform().invXform(point_b), normal_on_b, depth);
     p.m_positionWorldOnA = point_a;
     p.m_positionWorldOnB = point_b;
     p.m_combinedFriction = friction;

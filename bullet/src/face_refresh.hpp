@@ -4,9 +4,10 @@
 //      vertex, as face_contact chooses it;
 //   2. the incident polygon clipped by the reference face's side planes with
 //      face_contact's own steps (incident_polygon, side_plane,
-//      clip_polygon, clip_polygon_if_cut, weld_polygon) in fixed buffers;
+//      clip_polygon, clip_polygon_if_cut, weld_polygon) in inline buffers;
 //      the side planes of a reference face of A are the same at every pose
-//      and computed once (KeptFace);
+//      and computed once (KeptFace); a plane that keeps the whole polygon is
+//      skipped on its heights alone (cuts);
 //   3. the points within the margin (face_point, face_contact's step 3),
 //      mapped to world by pose_a as posed_manifold_on maps them.
 // When that leaves more than four points (face_contact would reduce them), no
@@ -16,8 +17,6 @@
 // posed_manifold_on.  Otherwise the points are those posed_manifold_on gives,
 // bit for bit: the same functions on the same inputs.
 #pragma once
-
-#include <span>
 
 #include <sepax/clip_polygon.hpp>
 #include <sepax/face_contact.hpp>
@@ -41,7 +40,8 @@ struct KeptFace {
     planes.clear();
     const Vec3<float>& nr = a.plane(f).normal;
     int h = a.face(f).edge;
-    for (int i = 0; i < a.face(f).count; ++i, h = a.half_edge(h).next) planes.push_back(sepax::detail::side_plane(a, h, nr));
+    for (int i = 0; i < a.face(f).count; ++i, h = a.half_edge(h).next)
+      planes.push_back(sepax::detail::side_plane(a, h, nr));
   }
 };
 

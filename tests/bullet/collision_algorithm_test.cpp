@@ -428,14 +428,15 @@ TEST_CASE("bullet: a kept face whose clip would need the reduction falls back to
   REQUIRE(kept.manifold());
   REQUIRE(kept.manifold()->getNumContacts() == 4);
   std::vector<btTransform> poses;
-  for (int step = 1; step <= 10; ++step) poses.push_back(at(x + 5e-6f * static_cast<float>(step), 0.049f, 0, turn));
+  for (int step = 1; step <= 10; ++step)
+    poses.push_back(at(x + 5e-6f * static_cast<float>(step), 0.049f, 0, turn));
   const auto counts = follow_fresh(kept, &floor, &box, poses);
   for (const std::size_t n : counts) CHECK(n == 4);
   const auto cnt = kept.cf->counters();
   CHECK(cnt.queries == 1);
   CHECK(cnt.kept == 11);
-  CHECK(cnt.refreshed > 0);           // before the corner crosses
-  CHECK(cnt.refreshed < cnt.kept);    // after: the full path
+  CHECK(cnt.refreshed > 0);         // before the corner crosses
+  CHECK(cnt.refreshed < cnt.kept);  // after: the full path
 }
 
 TEST_CASE("bullet: a shape rescaled in place drops the kept face and queries again") {
@@ -445,7 +446,8 @@ TEST_CASE("bullet: a shape rescaled in place drops the kept face and queries aga
   REQUIRE(p.manifold());
   REQUIRE(p.manifold());
   CHECK(p.cf->counters().kept == 1);
-  box.setLocalScaling(btVector3(1.5f, 1, 1.5f));  // same pose, wider box: the kept face's data are the old shape's
+  box.setLocalScaling(
+      btVector3(1.5f, 1, 1.5f));  // same pose, wider box: the kept face's data are the old shape's
   const auto got = points_of(p.manifold());
   CHECK(p.cf->counters().queries == 2);
   CHECK(p.cf->counters().kept == 1);
