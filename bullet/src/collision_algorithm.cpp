@@ -5,6 +5,8 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <new>
+#include <type_traits>
 #include <vector>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
@@ -150,8 +152,8 @@ std::int64_t ShapeCache::preparations() const {
 // ---- counters ------------------------------------------------------------------
 
 struct CreateFunc::Live {
-  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, manifolds{0},
-      points{0}, id_matches{0}, errors{0}, fallback_pairs{0};
+  std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, refreshed{0},
+      manifolds{0}, points{0}, id_matches{0}, errors{0}, fallback_pairs{0};
   std::mutex error_mutex;
   std::string last_error;
 
@@ -168,6 +170,7 @@ Counters CreateFunc::counters() const {
   c.early_outs = live_->early_outs.load();
   c.culled = live_->culled.load();
   c.kept = live_->kept.load();
+  c.refreshed = live_->refreshed.load();
   c.kept_apart = live_->kept_apart.load();
   c.manifolds = live_->manifolds.load();
   c.points = live_->points.load();
@@ -184,6 +187,7 @@ void CreateFunc::reset_counters() {
   live_->early_outs = 0;
   live_->culled = 0;
   live_->kept = 0;
+  live_->refreshed = 0;
   live_->kept_apart = 0;
   live_->manifolds = 0;
   live_->points = 0;
@@ -207,6 +211,7 @@ struct CollisionAlgorithm::State {
   // and the relative pose of the query it came from
   bool kept = false;
   SatResult<float> contact;
+  KeptFace face;  // its side planes when it is a face of A (face_refresh.hpp)
   double sat_separation = 0;
   RigidTransform<float> x0;
   // the last query's answer beyond the margin (coherence.hpp): valid, its
@@ -214,6 +219,16 @@ struct CollisionAlgorithm::State {
   bool apart = false;
   double apart_separation = 0;
   RigidTransform<float> x_apart;
+
+  /// A shape was prepared anew (another shape or key): the warm cache, the
+  /// kept face (its face index and side planes) and the kept separation
+  /// belonged to the old one.
+  void forget_shape_state() {
+    cache = SatCache<float>{};
+    kept = false;
+    apart = false;
+    face = KeptFace{};
+  }
 };
 
 namespace {
@@ -258,7 +273,16 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
   const btScalar damping = stiffness ? gCalculateCombinedContactDampingCallback(o0, o1) : btScalar(0);
   const btScalar stiff = stiffness ? gCalculateCombinedContactStiffnessCallback(o0, o1) : btScalar(0);
 
-  btManifoldPoint fresh[MANIFOLD_CACHE_SIZE];
+  // The new points, constructed in place (btManifoldPoint is trivially
+  // destructible; a default-constructed array and a copy per point cost a
+  // fifth of this function).
+  union Slot {
+    Slot() {}
+    btManifoldPoint point;
+  };
+  static_assert(std::is_trivially_destructible_v<btManifoldPoint>);
+  Slot slots[MANIFOLD_CACHE_SIZE];
+  auto at = [&](int j) -> btManifoldPoint& { return slots[j].point; };
   int count = 0;
   for (const auto& c : m.points) {
     if (count == MANIFOLD_CACHE_SIZE) break;
@@ -269,8 +293,9 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     const btVector3 normal_on_b = swapped ? n : -n;
     const btVector3 point_b = bt(swapped ? c.point_a : c.point_b);
     const btVector3 point_a = point_b + normal_on_b * depth;
-    btManifoldPoint p(ma->getWorldTransform().invXform(point_a), mb->getWorldTransform().invXform(point_b),
-                      normal_on_b, depth);
+    btManifoldPoint& p = *new (&slots[count].point)
+                             btManifoldPoint(ma->getWorldTransform().invXform(point_a),
+                                             mb->getWorldTransform().invXform(point_b), normal_on_b, depth);
     p.m_positionWorldOnA = point_a;
     p.m_positionWorldOnB = point_b;
     p.m_combinedFriction = friction;
@@ -287,7 +312,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     }
     btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
     set_ids(p, c.id, swapped);
-    fresh[count++] = p;
+    ++count;
   }
 
   const bool new_collision = man.getNumContacts() == 0;
@@ -304,7 +329,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
   int matches = 0;
   for (int j = 0; j < count; ++j) {
     for (int i = 0; i < stored && from[j] < 0; ++i) {
-      if (!used[i] && same_ids(man.getContactPoint(i), fresh[j])) from[j] = i;
+      if (!used[i] && same_ids(man.getContactPoint(i), at(j))) from[j] = i;
     }
     if (from[j] >= 0) {
       used[from[j]] = true;
@@ -316,7 +341,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     btScalar nearest = threshold * threshold;
     for (int i = 0; i < stored; ++i) {
       if (used[i]) continue;
-      const btScalar d2 = (man.getContactPoint(i).m_localPointB - fresh[j].m_localPointB).length2();
+      const btScalar d2 = (man.getContactPoint(i).m_localPointB - at(j).m_localPointB).length2();
       if (d2 < nearest) {
         nearest = d2;
         from[j] = i;
@@ -325,7 +350,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     if (from[j] >= 0) used[from[j]] = true;
   }
   for (int j = 0; j < count; ++j) {
-    if (from[j] >= 0) man.replaceContactPoint(fresh[j], from[j]);
+    if (from[j] >= 0) man.replaceContactPoint(at(j), from[j]);
   }
   // Stored points no new point took go (backwards: removal moves the last
   // point into the hole, which has been looked at already).
@@ -333,7 +358,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     if (!used[i]) man.removeContactPoint(i);
   }
   for (int j = 0; j < count; ++j) {
-    if (from[j] < 0) man.addManifoldPoint(fresh[j]);
+    if (from[j] < 0) man.addManifoldPoint(at(j));
   }
   const bool custom =
       (o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK;
@@ -381,13 +406,13 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       s.a = owner_.shapes_.get(*sa, ka);
       s.shape_a = sa;
       s.key_a = ka;
-      s.cache = SatCache<float>{};
+      s.forget_shape_state();
     }
     if (sb != s.shape_b || !(kb == s.key_b) || !s.b) {
       s.b = owner_.shapes_.get(*sb, kb);
       s.shape_b = sb;
       s.key_b = kb;
-      s.cache = SatCache<float>{};
+      s.forget_shape_state();
     }
     const btTransform& wa = body0->getWorldTransform();
     const btTransform& wb = body1->getWorldTransform();
@@ -420,8 +445,10 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       keep = delta <= budget && s.sat_separation + delta + slack <= margin;
     }
     if (keep) {
-      kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.manifold);
+      bool refreshed = false;
+      kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.face, s.manifold, refreshed);
       live.kept.fetch_add(1, std::memory_order_relaxed);
+      if (refreshed) live.refreshed.fetch_add(1, std::memory_order_relaxed);
     } else {
       SatOptions opt;
       opt.early_out = true;
@@ -443,6 +470,12 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       if (t == FeatureType::FaceA || t == FeatureType::FaceB) {
         s.kept = true;
         s.contact = contact;
+        if (t == FeatureType::FaceA) {
+          if (s.face.face != contact.feature.a) s.face.set(s.a->shape.polyhedron(), contact.feature.a);
+        } else {
+          s.face.face = -1;
+          s.face.planes.clear();
+        }
         s.sat_separation = to_double(r.separation);
         s.x0 = x;
       }

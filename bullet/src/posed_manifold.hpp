@@ -12,6 +12,7 @@
 #include <sepax/small_vector.hpp>
 
 #include "contact_choice.hpp"
+#include "face_refresh.hpp"
 
 namespace sepax::bullet {
 
@@ -28,10 +29,13 @@ inline SatResult<float> chosen_contact(const PreparedShape<float>& a, const Rigi
 /// of B; or, for a face of A, B's faces around the support vertex, among
 /// which the manifold picks the incident face), PreparedShape::
 /// posed_part_scratch: the same contact and manifold as on the full B'.
+/// The manifold is refreshed (face_refresh.hpp; `face`: the kept face's
+/// side planes) unless the refresh declines; then posed_manifold_on builds
+/// it.  Returns the contact; `refreshed` says which path built the points.
 inline SatResult<float> kept_manifold(const PreparedShape<float>& a, const RigidTransform<float>& pose_a,
                                       const PreparedShape<float>& b, const RigidTransform<float>& x,
-                                      const SatResult<float>& last, double margin,
-                                      ContactManifold<float>& out) {
+                                      const SatResult<float>& last, double margin, const KeptFace& face,
+                                      ContactManifold<float>& out, bool& refreshed) {
   const ConvexPolyhedron<float>* bp = nullptr;
   if (last.feature.type == FeatureType::FaceB) {
     const int g = last.feature.b;
@@ -45,6 +49,8 @@ inline SatResult<float> kept_manifold(const PreparedShape<float>& a, const Rigid
     for (const int h : bp->vertex_half_edges(r.feature.b)) faces.push_back(bp->half_edge(h).face);
     bp = &b.posed_part_scratch(x, std::span<const int>(faces.data(), faces.size()), std::span<const int>());
   }
+  refreshed = refresh_face_manifold(a.polyhedron(), pose_a, *bp, r, margin, face, out);
+  if (refreshed) return r;
   SatOptions opt;
   opt.margin = margin;
   out = sepax::detail::posed_manifold_on(a.polyhedron(), pose_a, *bp, r, opt);

@@ -107,6 +107,33 @@ ClipPlane<T> side_plane(const ConvexPolyhedron<T>& R, int h, const Vec3<T>& nr) 
   return cp;
 }
 
+/// Step 3's point of clipped vertex v when it is within `margin` of the
+/// reference plane rp (n2 = |rp.normal|^2): its separation, its projection
+/// onto rp, the points on A and B and their midpoint; false otherwise.
+template <Number T>
+bool face_point(const ClipVertex<T>& v, const Plane<T>& rp, const T& n2, bool ref_is_a, const T& margin,
+                ContactPoint<T>& c) {
+  const Vec3<T>& nr = rp.normal;
+  const Separation<T> s{T(dot(nr, v.point) - rp.offset), n2};
+  if (!within_margin(s, margin)) return false;
+  const T k = s.num / n2;
+  const Vec3<T> proj(v.point[0] - nr[0] * k, v.point[1] - nr[1] * k, v.point[2] - nr[2] * k);
+  c.separation = s;
+  if (ref_is_a) {
+    c.point_a = proj;
+    c.point_b = v.point;
+    c.id = v.id;
+  } else {
+    c.point_a = v.point;
+    c.point_b = proj;
+    c.id = v.id.swapped();
+  }
+  const T half = T(1) / T(2);
+  c.position = Vec3<T>((c.point_a[0] + c.point_b[0]) * half, (c.point_a[1] + c.point_b[1]) * half,
+                       (c.point_a[2] + c.point_b[2]) * half);
+  return true;
+}
+
 /// The face contact of the header's steps, appended to m: reference face
 /// ref_face of A (ref_is_a) or of B, support vertex `support` of the other
 /// shape, points within `margin`.
@@ -175,26 +202,9 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   SmallVector<ContactPoint<T>, kManifoldInlineClip> pts;
   pts.reserve(poly.size());
   auto keep_points = [&] {
+    ContactPoint<T> c;
     for (const auto& v : poly) {
-      const Separation<T> s{T(dot(nr, v.point) - rp.offset), n2};
-      if (!within_margin(s, margin)) continue;
-      const T k = s.num / n2;
-      const Vec3<T> proj(v.point[0] - nr[0] * k, v.point[1] - nr[1] * k, v.point[2] - nr[2] * k);
-      ContactPoint<T> c;
-      c.separation = s;
-      if (ref_is_a) {
-        c.point_a = proj;
-        c.point_b = v.point;
-        c.id = v.id;
-      } else {
-        c.point_a = v.point;
-        c.point_b = proj;
-        c.id = v.id.swapped();
-      }
-      const T half = T(1) / T(2);
-      c.position = Vec3<T>((c.point_a[0] + c.point_b[0]) * half, (c.point_a[1] + c.point_b[1]) * half,
-                           (c.point_a[2] + c.point_b[2]) * half);
-      pts.push_back(c);
+      if (face_point(v, rp, n2, ref_is_a, margin, c)) pts.push_back(c);
     }
   };
   keep_points();

@@ -338,3 +338,121 @@ TEST_CASE(
   REQUIRE(p.manifold());
   CHECK(p.cf->counters().queries == 2);
 }
+
+namespace {
+
+/// Moves `kept`'s body b through `poses` one step each, and checks every
+/// step's manifold against a fresh algorithm's at the same poses (ids,
+/// depths, positions).  Returns the point counts per step.
+std::vector<std::size_t> follow_fresh(Pair& kept, btCollisionShape* sa, btCollisionShape* sb,
+                                      const std::vector<btTransform>& poses) {
+  std::vector<std::size_t> counts;
+  for (const btTransform& tb : poses) {
+    kept.b.setWorldTransform(tb);
+    const auto got = points_of(kept.manifold());
+    Pair fresh(sa, sb, kept.a.getWorldTransform(), tb, true);
+    const auto want = points_of(fresh.manifold());
+    REQUIRE(got.size() == want.size());
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      CHECK(std::equal(got[i].ids, got[i].ids + 4, want[i].ids));
+      CHECK(got[i].depth == want[i].depth);
+      CHECK(got[i].on_b == want[i].on_b);
+    }
+    counts.push_back(got.size());
+  }
+  return counts;
+}
+
+}  // namespace
+
+TEST_CASE("bullet: a refreshed kept face gives a fresh algorithm's points while points leave the margin") {
+  // A 10 cm box tilted by about 0.2 rad on a floor: its bottom face's low
+  // side 1 mm deep, its high side just under the contact breaking threshold.
+  // Raising it by 5 um per step lifts the high side's two points beyond the
+  // threshold (the refreshed point set shrinks from 4 to 2) while the pair
+  // stays within the kept face's budget (0.5e-3 x 0.17 m).  With the floor as
+  // body 0 the reference face is a face of A (its side planes kept), with the
+  // box as body 0 a face of B (its side planes move with B').
+  btBoxShape floor(btVector3(5, 0.5f, 5)), box(btVector3(0.05f, 0.05f, 0.05f));
+  const btTransform tf = at(0, -0.5f, 0);
+  for (const bool floor_first : {true, false}) {
+    btCollisionShape* s0 = floor_first ? static_cast<btCollisionShape*>(&floor) : &box;
+    btCollisionShape* s1 = floor_first ? static_cast<btCollisionShape*>(&box) : &floor;
+    Pair probe(&floor, &box, tf, at(0, 0.049f, 0), true);
+    const btPersistentManifold* m0 = probe.manifold();
+    REQUIRE(m0);
+    const float thr = m0->getContactBreakingThreshold();
+    const float s = (thr + 0.001f - 30e-6f) / 0.1f;  // sin of the tilt: high side 30 um under the threshold
+    const float angle = std::asin(s);
+    const btQuaternion tilt(btVector3(0, 0, 1), angle);
+    const float c = std::cos(angle);
+    const float y = -0.001f + 0.05f * s + 0.05f * c;  // lowest vertex 1 mm deep
+    const btTransform t0 = at(0.3f, y, 0.2f, tilt);
+    // body 1 moves: the box, or the floor the opposite way
+    std::vector<btTransform> poses;
+    for (int step = 1; step <= 12; ++step) {
+      const float up = 5e-6f * static_cast<float>(step);
+      poses.push_back(floor_first ? at(0.3f, y + up, 0.2f, tilt) : at(0, -0.5f - up, 0));
+    }
+    Pair kept(s0, s1, floor_first ? tf : t0, floor_first ? t0 : tf, true);
+    const btPersistentManifold* m1 = kept.manifold();
+    REQUIRE(m1);
+    REQUIRE(m1->getNumContacts() == 4);
+    for (int i = 0; i < 4; ++i) {  // the floor's face is the reference face: a face of B when it is body 1
+      const auto& q = m1->getContactPoint(i);
+      CHECK((floor_first ? q.m_partId0 : q.m_partId1) == 3);
+      CHECK((floor_first ? q.m_partId1 : q.m_partId0) == 1);
+    }
+    const auto counts = follow_fresh(kept, s0, s1, poses);
+    CHECK(counts.front() == 4);
+    CHECK(counts.back() == 2);
+    const auto cnt = kept.cf->counters();
+    CHECK(cnt.queries == 1);
+    CHECK(cnt.kept == 12);
+    CHECK(cnt.refreshed == cnt.kept);
+  }
+}
+
+TEST_CASE("bullet: a kept face whose clip would need the reduction falls back to the full manifold") {
+  // A 10 cm box turned about the vertical near the floor's +x side, one
+  // corner 20 um inside it; 5 um per step outwards: the corner crosses the
+  // side plane, the clip leaves five points, and the step builds the manifold
+  // on the full path (reduction to four), which the refresh declines.
+  btBoxShape floor(btVector3(0.5f, 0.5f, 0.5f)), box(btVector3(0.05f, 0.05f, 0.05f));
+  const btTransform tf = at(0, -0.5f, 0);
+  const float angle = 0.3f;
+  const btQuaternion turn(btVector3(0, 1, 0), angle);
+  const float reach = 0.05f * (std::cos(angle) + std::sin(angle));  // the corner's x offset
+  const float x = 0.5f - reach - 20e-6f;
+  Pair kept(&floor, &box, tf, at(x, 0.049f, 0, turn), true);
+  REQUIRE(kept.manifold());
+  REQUIRE(kept.manifold()->getNumContacts() == 4);
+  std::vector<btTransform> poses;
+  for (int step = 1; step <= 10; ++step)
+    poses.push_back(at(x + 5e-6f * static_cast<float>(step), 0.049f, 0, turn));
+  const auto counts = follow_fresh(kept, &floor, &box, poses);
+  for (const std::size_t n : counts) CHECK(n == 4);
+  const auto cnt = kept.cf->counters();
+  CHECK(cnt.queries == 1);
+  CHECK(cnt.kept == 11);
+  CHECK(cnt.refreshed > 0);         // before the corner crosses
+  CHECK(cnt.refreshed < cnt.kept);  // after: the full path
+}
+
+TEST_CASE("bullet: a shape rescaled in place drops the kept face and queries again") {
+  btBoxShape floor(btVector3(5, 0.5f, 5)), box(btVector3(0.5f, 0.5f, 0.5f));
+  const btTransform tf = at(0, -0.5f, 0), tb = at(0, 0.499f, 0);
+  Pair p(&floor, &box, tf, tb, true);
+  REQUIRE(p.manifold());
+  REQUIRE(p.manifold());
+  CHECK(p.cf->counters().kept == 1);
+  box.setLocalScaling(
+      btVector3(1.5f, 1, 1.5f));  // same pose, wider box: the kept face's data are the old shape's
+  const auto got = points_of(p.manifold());
+  CHECK(p.cf->counters().queries == 2);
+  CHECK(p.cf->counters().kept == 1);
+  Pair fresh(&floor, &box, tf, tb, true);
+  const auto want = points_of(fresh.manifold());
+  REQUIRE(got.size() == want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) CHECK(got[i].on_b == want[i].on_b);
+}

@@ -1,0 +1,132 @@
+// The manifold of a kept face re-derived at a new pose, without building a
+// ContactManifold through contact_manifold (docs/bullet.md, "Coherence"):
+//   1. the incident face: most_antiparallel_face around the contact's support
+//      vertex, as face_contact chooses it;
+//   2. the incident polygon clipped by the reference face's side planes with
+//      face_contact's own steps (incident_polygon, side_plane,
+//      clip_polygon, clip_polygon_if_cut, weld_polygon) in inline buffers;
+//      the side planes of a reference face of A are the same at every pose
+//      and computed once (KeptFace); a plane that keeps the whole polygon is
+//      skipped on its heights alone (cuts);
+//   3. the points within the margin (face_point, face_contact's step 3),
+//      mapped to world by pose_a as posed_manifold_on maps them.
+// When that leaves more than four points (face_contact would reduce them), no
+// point (face_contact's support-vertex fallback), or the contact's own
+// separation is beyond the margin (contact_manifold returns no point), the
+// refresh declines and the adapter builds the manifold with
+// posed_manifold_on.  Otherwise the points are those posed_manifold_on gives,
+// bit for bit: the same functions on the same inputs.
+#pragma once
+
+#include <sepax/clip_polygon.hpp>
+#include <sepax/face_contact.hpp>
+#include <sepax/manifold_result.hpp>
+#include <sepax/sat_result.hpp>
+#include <sepax/small_vector.hpp>
+#include <sepax/tolerances.hpp>
+#include <sepax/transform.hpp>
+
+namespace sepax::bullet {
+
+/// The side planes of a kept reference face of A (A's frame), in the loop
+/// order face_contact clips with; empty for a reference face of B, whose side
+/// planes move with B'.
+struct KeptFace {
+  int face = -1;
+  SmallVector<ClipPlane<float>, 16> planes;
+
+  void set(const ConvexPolyhedron<float>& a, int f) {
+    face = f;
+    planes.clear();
+    const Vec3<float>& nr = a.plane(f).normal;
+    int h = a.face(f).edge;
+    for (int i = 0; i < a.face(f).count; ++i, h = a.half_edge(h).next)
+      planes.push_back(sepax::detail::side_plane(a, h, nr));
+  }
+};
+
+/// True when a vertex of `poly` is above `plane` (clip_polygon_if_cut's test,
+/// on the same heights: clip_detail::height_over), without its buffers; a
+/// large reference face (a ramp under a box) has many side planes that keep
+/// the whole polygon.
+template <class Poly>
+bool cuts(const Poly& poly, const ClipPlane<float>& plane) {
+  for (const auto& v : poly) {
+    if (clip_detail::height_over(plane, v.point) > 0.0f) return true;
+  }
+  return false;
+}
+
+/// The refresh of the header on (a, bp) for the kept face contact r (FaceA
+/// or FaceB, support vertex in r.feature, axis in world); `kept`: the side
+/// planes of r's face of A when r is FaceA and kept.face is that face.
+/// Returns false (out untouched) where the header says it declines.
+inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidTransform<float>& pose_a,
+                                  const ConvexPolyhedron<float>& bp, const SatResult<float>& r, double margin,
+                                  const KeptFace& kept, ContactManifold<float>& out) {
+  const float m = from_double<float>(margin);
+  if (!sepax::detail::within_margin(r.separation, m)) return false;
+  const bool ref_is_a = r.feature.type == FeatureType::FaceA;
+  const int ref_face = ref_is_a ? r.feature.a : r.feature.b;
+  const int support = ref_is_a ? r.feature.b : r.feature.a;
+  const ConvexPolyhedron<float>& R = ref_is_a ? a : bp;
+  const ConvexPolyhedron<float>& I = ref_is_a ? bp : a;
+  const Plane<float>& rp = R.plane(ref_face);
+  const Vec3<float>& nr = rp.normal;
+  int visited = 0;
+  const int inc = sepax::detail::most_antiparallel_face(I, nr, support, visited);
+
+  using Poly = SmallVector<ClipVertex<float>, 16>;
+  Poly buf0, buf1;
+  Poly* pp = &buf0;
+  Poly* tp = &buf1;
+  sepax::detail::incident_polygon(I, inc, ref_face, *pp);
+  const float weld2 = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 2);
+  const bool cached = ref_is_a && kept.face == ref_face;
+  bool welded = false;
+  int h = R.face(ref_face).edge;
+  for (int i = 0; i < R.face(ref_face).count && !pp->empty(); ++i, h = R.half_edge(h).next) {
+    const ClipPlane<float> cp =
+        cached ? kept.planes[static_cast<std::size_t>(i)] : sepax::detail::side_plane(R, h, nr);
+    if (welded && !cuts(*pp, cp)) continue;
+    if (welded && !clip_polygon_if_cut(*pp, cp, inc, *tp)) continue;
+    if (!welded) clip_polygon(*pp, cp, inc, *tp);
+    weld_polygon(*tp, weld2);
+    welded = true;
+    std::swap(pp, tp);
+  }
+  // face_contact's step 3, in A's frame, then posed_manifold_on's map
+  const float n2 = sepax::detail::norm2_of(nr);
+  ContactPoint<float> pts[4];
+  std::size_t count = 0;
+  ContactPoint<float> cand;
+  for (const auto& v : *pp) {
+    if (!sepax::detail::face_point(v, rp, n2, ref_is_a, m, cand)) continue;
+    if (count == 4) return false;  // face_contact reduces: its full path
+    pts[count++] = cand;
+  }
+  if (count == 0) return false;  // face_contact's support-vertex fallback: its full path
+  out.kind = ContactKind::Face;
+  out.feature = r.feature;
+  out.normal = r.axis;
+  out.norm2 = r.separation.norm2;
+  out.separation = r.separation;
+  out.reference_shape = ref_is_a ? 0 : 1;
+  out.reference_face = ref_face;
+  out.incident_face = inc;
+  out.incident_faces_visited = visited;
+  out.candidate_points = static_cast<int>(count);
+  out.support_fallback = false;
+  out.clip_steps.clear();
+  out.points.clear();
+  for (std::size_t i = 0; i < count; ++i) {
+    ContactPoint<float> c = pts[i];
+    c.position = pose_a.apply(c.position);
+    c.point_a = pose_a.apply(c.point_a);
+    c.point_b = pose_a.apply(c.point_b);
+    out.points.push_back(c);
+  }
+  return true;
+}
+
+}  // namespace sepax::bullet
