@@ -101,16 +101,20 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
     for (int f : live)
       for (int v : tris_[as_index(f)].v) star_[as_index(v)].push_back(f);
   }
-  groups_.assign(tris_.size(), Group{});
+  // (a group per triangle index, read only for live triangles: each is reset in place, keeping its
+  // vectors' storage across the merges and rebuilds of one build)
+  groups_.resize(tris_.size());
   for (int f : live) {
     const Tri& t = tris_[as_index(f)];
     Group& g = groups_[as_index(f)];
-    g.verts = {t.v[0], t.v[1], t.v[2]};
+    g.verts.assign({t.v[0], t.v[1], t.v[2]});
     std::sort(g.verts.begin(), g.verts.end());
+    g.pl = Plane<T>{Vec3<T>(T(0), T(0), T(0)), T(0)};
     g.plane_tri = f;
     Traits::init_group_plane(*this, g, f);
     g.degenerate = Traits::zero_area(*this, f);
-    if (nomerge_[as_index(f)] != 0) g.splits = {nomerge_[as_index(f)]};
+    g.splits.clear();
+    if (nomerge_[as_index(f)] != 0) g.splits.push_back(nomerge_[as_index(f)]);
     g.area = Traits::triangle_area(*this, t);
   }
   // Plane merges until nothing changes; then zero-area triangles join a

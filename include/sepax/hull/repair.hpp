@@ -162,6 +162,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::try_tent(const ConvexPolyh
 template <Number T>
 inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside,
                                          double& height) const {
+  // (a hull with every point a vertex measures nothing: no polygons or climb to prepare)
+  if (std::find(out_vertex_.begin(), out_vertex_.end(), char{0}) == out_vertex_.end()) return 0;
   double max_abs = 0;
   for (std::size_t i = 0; i < pts_.size(); ++i)
     for (int c = 0; c < 3; ++c)
