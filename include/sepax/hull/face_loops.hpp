@@ -219,6 +219,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     reject.erase(std::unique(reject.begin(), reject.end()), reject.end());
     return std::nullopt;
   }
+  ScannedPlanes<T> scanned;  // float: the planes the pre-check scanned every vertex against
   if constexpr (Traits::kPrechecks) {
     for (auto& l : loops) start_at_best_apex(l);
     // Adjacent faces that validation would see as coplanar are merged
@@ -233,7 +234,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     // terminates too.
     std::vector<std::pair<int, int>> merges;
     std::vector<int> split;
-    prevalidate(loops, reject, false, &merges, &loop_group, &split);
+    prevalidate(loops, reject, false, &merges, &loop_group, &split, &scanned);
     std::vector<int> split_ids;
     for (int f : split) split_ids.push_back(loop_group[as_index(f)]);
     if (split_groups(live, split_ids)) {
@@ -267,7 +268,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     }
   }
   return finish([&] {
-    return HullPolyhedron<T>::from_faces(std::move(verts), faces, shadow_ ? &verts_double : nullptr);
+    return HullPolyhedron<T>::from_faces(std::move(verts), faces, shadow_ ? &verts_double : nullptr,
+                                         scanned.planes.empty() ? nullptr : &scanned);
   });
 }
 

@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory_resource>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -375,8 +376,11 @@ inline void Builder<T>::expand() {
     }
     // horizon: directed edges from visible to non-visible faces, as a cycle
     // (starting at the first vertex in the hash map's order: the order of
-    // the new faces steers later float decisions, so it is kept as it is)
-    std::unordered_map<int, std::pair<int, int>> next;  // from -> (to, outside face)
+    // the new faces steers later float decisions, so it is kept as it is;
+    // the map's nodes and buckets come from a buffer kept between eyes,
+    // which leaves its order unchanged)
+    std::pmr::monotonic_buffer_resource pool(horizon_pool_.data(), horizon_pool_.size());
+    std::pmr::unordered_map<int, std::pair<int, int>> next(&pool);  // from -> (to, outside face)
     bool simple = true;
     for (int f : visible) {
       const Tri& t = tris_[as_index(f)];
@@ -456,13 +460,14 @@ inline void Builder<T>::expand() {
         if (!kept) reassign(v);
       }
     }
+    std::vector<int>& pts = moved_;
     for (int f : visible) {
       Tri& t = tris_[as_index(f)];
       t.alive = false;
-      std::vector<int> pts = std::move(t.conflict);
-      t.conflict.clear();
+      pts.assign(t.conflict.begin(), t.conflict.end());
       pts.insert(pts.end(), t.on.begin(), t.on.end());
-      t.on.clear();
+      std::vector<int>().swap(t.conflict);  // (a dead face keeps no storage)
+      std::vector<int>().swap(t.on);
       for (int p : pts) reassign(p);
     }
   }

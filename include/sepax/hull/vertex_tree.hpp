@@ -12,6 +12,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -101,6 +102,25 @@ class VertexTree {
       }
     }
     return best;
+  }
+
+  /// Whether every vertex x with |x_i| <= mag_i whose computed height T(dot(n, x) - off) was found at most
+  /// below, evaluated anywhere (with or without FMA contraction), also has a computed height at most limit.
+  ///
+  /// Bound.  Each evaluation is within gamma_4(T) S + 4 eta(T) of the exact n.x - off (may_exceed's bound,
+  /// S = sum |n_i| mag_i + |off|), so two evaluations differ by at most 2 gamma_4(T) S + 8 eta(T).  The
+  /// margin is computed in double as kSlack S + kTiny (kSlack = 2 (gamma_4(T) + gamma_4(double)) >= the
+  /// 2 gamma_4(T) needed, with the factor of may_exceed covering the rounding of S; kTiny >= 8 eta(T)).
+  /// The test fl(below + margin) <= fl(limit (1 - 4u)) (u of double) implies below + margin < limit: the
+  /// sum of two non-negative doubles is rounded down by at most a factor (1 - u).  Non-finite values fail.
+  static bool height_holds(const Plane<T>& pl, const std::array<double, 3>& mag, T below, T limit) {
+    const double s = std::abs(static_cast<double>(pl.normal[0])) * mag[0] +
+                     std::abs(static_cast<double>(pl.normal[1])) * mag[1] +
+                     std::abs(static_cast<double>(pl.normal[2])) * mag[2] + std::abs(static_cast<double>(pl.offset));
+    const double b = static_cast<double>(below);
+    if (!(b >= 0)) return false;
+    constexpr double kShrink = 1 - 4 * number_traits<double>::unit_roundoff;
+    return b + (kSlack * s + kTiny) <= static_cast<double>(limit) * kShrink;
   }
 
  private:
