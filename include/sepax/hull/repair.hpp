@@ -24,6 +24,7 @@
 #include "builder.hpp"
 #include "fallbacks.hpp"
 #include "hull_distance.hpp"
+#include "plane_tree.hpp"
 
 namespace sepax::hull::detail {
 
@@ -159,6 +160,10 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::try_tent(const ConvexPolyh
 // within eps of two planes of a thin wedge can be far beyond its edge);
 // returns the largest of either in units of eps, and in height the
 // largest height alone.
+/// Faces from which a point's largest height goes through a PlaneTree (below, a pass over the faces is
+/// cheaper than the tree's boxes; either gives the same value).
+inline constexpr int kPlaneTreeFaces = 512;
+
 template <Number T>
 inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside,
                                          double& height) const {
@@ -179,6 +184,7 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
   std::vector<int> near;        // large solids: the faces measured for a point near the surface
   std::vector<double> heights;  // (polygon_distance's scratch)
   std::vector<int> seen(faces.size(), -1);
+  std::optional<PlaneTree<T>> planes;  // (h's face planes, built when a point is measured against all)
   for (std::size_t i = 0; i < pts_.size(); ++i) {
     if (out_vertex_[i]) continue;  // (the pre-check held it within conv_tol = 2 eps)
     const int p = static_cast<int>(i);
@@ -206,7 +212,17 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
       }
       subset = &near;
     } else {
-      for (int f = 0; f < h.face_count(); ++f) hp = std::max(hp, plane_height(f));
+      // the largest height above every face plane (on many faces through the tree of planes: the value
+      // of the pass)
+      if (h.face_count() < kPlaneTreeFaces) {
+        for (int f = 0; f < h.face_count(); ++f) hp = std::max(hp, plane_height(f));
+      } else {
+        if (!planes) planes.emplace(h.face_count(), [&](int f) -> const Plane<T>& { return h.plane(f); });
+        const T top = planes->max_height(input_point(p), [&](int f) {
+          return T(dot(h.plane(f).normal, input_point(p)) - h.plane(f).offset);
+        });
+        hp = std::max(hp, to_double(top));
+      }
     }
     hp -= slack;
     height = std::max(height, hp / e);

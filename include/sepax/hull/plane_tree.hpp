@@ -1,0 +1,160 @@
+// sepax/hull/plane_tree.hpp
+//
+// Float T: the largest height of one point above many planes without a pass over every plane, with the
+// same value as that pass (VertexTree's dual: the planes are the items, the point is the query):
+//   1. PlaneTree: the planes (n, off) in a binary tree of boxes in (n_0, n_1, n_2, off) (median splits on
+//      the widest of the four);
+//   2. max_height: the largest computed height T(dot(n, x) - off) over the planes, a box skipped when its
+//      bound proves every height in it at most the largest found so far (the bound is derived there).
+// Used by the measure of points against a built hull (repair.hpp, outside_points).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#include "../convex_polyhedron.hpp"
+#include "../number_traits.hpp"
+#include "../vec3.hpp"
+#include "index.hpp"
+
+namespace sepax::hull::detail {
+
+/// Float T: planes in a tree of bounding boxes of their coefficients, for the largest height of a point.
+template <Number T>
+class PlaneTree {
+  static_assert(std::is_floating_point_v<T>);
+
+ public:
+  /// The tree of planes plane(0) .. plane(count - 1).
+  template <class PlaneOf>
+  PlaneTree(int count, PlaneOf&& plane) {
+    items_.reserve(as_index(count));
+    for (int f = 0; f < count; ++f) {
+      const Plane<T>& pl = plane(f);
+      items_.push_back(Item{{static_cast<double>(pl.normal[0]), static_cast<double>(pl.normal[1]),
+                             static_cast<double>(pl.normal[2]), static_cast<double>(pl.offset)},
+                            f});
+    }
+    if (items_.empty()) return;
+    nodes_.push_back(fill(0, static_cast<int>(items_.size())));
+    expand(0);
+  }
+
+  /// The largest computed height T(dot(n_f, x) - off_f) over the planes: the value a pass over every
+  /// plane finds, each plane handed over computed by height(f) (which must compute exactly that
+  /// expression).  -infinity for no planes.
+  ///
+  /// Bound (VertexTree::may_exceed's with the roles of point and plane exchanged).  For a box
+  /// [lo, hi] of (n, off) let n*_i = hi_i where x_i > 0, else lo_i, and off* = lo_off: M = n*.x - off* is the
+  /// exact maximum of n.x - off over the box; with a_i = max(|lo_i|, |hi_i|) (a_3 for off),
+  /// S = sum |x_i| a_i + a_3 >= sum |n_i| |x_i| + |off| for every plane of the box.  The computed height of a
+  /// plane is a 4-term dot product: at most n.x - off + gamma_4(T) S + 4 eta(T) <= M + gamma_4(T) S +
+  /// 4 eta(T); fl(M) in double >= M - gamma_4(double) S - 4 eta(double).  So every height in the box is at
+  /// most lim when fl(M) + (gamma_4(T) + gamma_4(double)) S + 8 eta(T) <= lim, tested with twice that
+  /// coefficient (covering the rounding of S and of the final sum, as in VertexTree) and 64 min(T)
+  /// (>= 8 eta(T)).  Non-finite values fail the test (the box is then opened).
+  template <class Height>
+  T max_height(const Vec3<T>& x, Height&& height) const {
+    T best = -std::numeric_limits<T>::infinity();
+    if (nodes_.empty()) return best;
+    const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
+                                  static_cast<double>(x[2])};
+    // (the child with the larger bound first: a high height found early skips more boxes)
+    int stack[64];
+    double bound[64];
+    int top = 0;
+    stack[top] = 0;
+    bound[top++] = upper(nodes_[0], q);
+    while (top > 0) {
+      --top;
+      const Node& nd = nodes_[as_index(stack[top])];
+      if (bound[top] <= static_cast<double>(best)) continue;
+      if (nd.left < 0) {
+        for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(items_[as_index(i)].id));
+      } else {
+        const double bl = upper(nodes_[as_index(nd.left)], q), br = upper(nodes_[as_index(nd.left + 1)], q);
+        const bool left_first = !(br > bl);
+        stack[top] = left_first ? nd.left + 1 : nd.left;
+        bound[top++] = left_first ? br : bl;
+        stack[top] = left_first ? nd.left : nd.left + 1;
+        bound[top++] = left_first ? bl : br;
+      }
+    }
+    return best;
+  }
+
+ private:
+  static constexpr int kLeaf = 8;  ///< planes per leaf at most
+  static constexpr double gamma4(double u) { return 4 * u / (1 - 4 * u); }
+  static constexpr double kSlack =
+      2 * (gamma4(number_traits<T>::unit_roundoff) + gamma4(number_traits<double>::unit_roundoff));
+  static constexpr double kTiny = 64 * static_cast<double>(std::numeric_limits<T>::min());
+
+  struct Node {
+    double lo[4], hi[4], mag[4];  ///< box of (n, off) (exact: T widens exactly to double); mag = max |.|
+    int begin = 0, end = 0;       ///< items_[begin, end)
+    int left = -1;                ///< children left, left + 1 (-1: a leaf)
+  };
+
+  struct Item {
+    std::array<double, 4> c;  ///< n_0, n_1, n_2, off
+    int id;
+  };
+
+  /// A bound u with: every computed height of nd's planes at x is at most lim whenever u <= lim
+  /// (max_height's bound; NaN when a value is not finite, so that no comparison skips the box).
+  static double upper(const Node& nd, const std::array<double, 3>& x) {
+    double m = (x[0] > 0 ? nd.hi[0] : nd.lo[0]) * x[0];
+    m = m + (x[1] > 0 ? nd.hi[1] : nd.lo[1]) * x[1];
+    m = m + (x[2] > 0 ? nd.hi[2] : nd.lo[2]) * x[2];
+    m = m - nd.lo[3];
+    double s = std::abs(x[0]) * nd.mag[0];
+    s = s + std::abs(x[1]) * nd.mag[1];
+    s = s + std::abs(x[2]) * nd.mag[2];
+    s = s + nd.mag[3];
+    const double u = m + (kSlack * s + kTiny);
+    return std::isfinite(u) ? u : std::numeric_limits<double>::quiet_NaN();
+  }
+
+  Node fill(int b, int e) const {
+    Node nd;
+    nd.begin = b;
+    nd.end = e;
+    for (int c = 0; c < 4; ++c) nd.lo[c] = nd.hi[c] = items_[as_index(b)].c[as_index(c)];
+    for (int i = b + 1; i < e; ++i)
+      for (int c = 0; c < 4; ++c) {
+        nd.lo[c] = std::min(nd.lo[c], items_[as_index(i)].c[as_index(c)]);
+        nd.hi[c] = std::max(nd.hi[c], items_[as_index(i)].c[as_index(c)]);
+      }
+    for (int c = 0; c < 4; ++c) nd.mag[c] = std::max(std::abs(nd.lo[c]), std::abs(nd.hi[c]));
+    return nd;
+  }
+
+  /// Median split on the box's widest coordinate, down to leaves of kLeaf planes (depth at most
+  /// log2(n / kLeaf) + 1: the traversal's stack fits 64 for any int count).
+  void expand(int id) {
+    Node nd = nodes_[as_index(id)];
+    if (nd.end - nd.begin <= kLeaf) return;
+    int axis = 0;
+    for (int c = 1; c < 4; ++c)
+      if (nd.hi[c] - nd.lo[c] > nd.hi[axis] - nd.lo[axis]) axis = c;
+    const int mid = nd.begin + (nd.end - nd.begin) / 2;
+    std::nth_element(items_.begin() + nd.begin, items_.begin() + mid, items_.begin() + nd.end,
+                     [&](const Item& p, const Item& r) { return p.c[as_index(axis)] < r.c[as_index(axis)]; });
+    const int left = static_cast<int>(nodes_.size());
+    nodes_.push_back(fill(nd.begin, mid));
+    nodes_.push_back(fill(mid, nd.end));
+    nodes_[as_index(id)].left = left;
+    expand(left);
+    expand(left + 1);
+  }
+
+  std::vector<Item> items_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace sepax::hull::detail
