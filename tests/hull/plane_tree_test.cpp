@@ -61,7 +61,7 @@ TEMPLATE_TEST_CASE("plane tree: the largest height is the pass's, bit for bit", 
         d /= std::sqrt(d.squaredNorm());
         const double r = trial % 4 == 0 ? 1.0 : trial % 4 == 1 ? 0.5 * (1 + unit(rng)) : 1 + std::abs(unit(rng));
         const Vec3<double> xd = scale * (r * d + Vec3<double>(offset, -offset, offset / 2));
-        const Vec3<T> x(T(xd[0]), T(xd[1]), T(xd[2]));
+        const Vec3<T> x(static_cast<T>(xd[0]), static_cast<T>(xd[1]), static_cast<T>(xd[2]));
         T pass = -std::numeric_limits<T>::infinity();
         for (const auto& pl : planes) pass = std::max(pass, computed_height(pl, x));
         const T top = tree.max_height(x, [&](int f) {
