@@ -170,6 +170,7 @@ class Builder {
   std::array<int, 4> simplex_{-1, -1, -1, -1};  // the first build's initial simplex
   Vec3<T> base_normal_;                         // normal of its initial triangle
   std::vector<Group> groups_;
+  std::vector<int> group_version_;  // per group root: the unions it has taken (face_merge.hpp)
   std::vector<char> removed_;  // points the clean-up rejected (put back when pinned)
   std::vector<char> pinned_;   // float: points a repair pass put back
   bool any_pinned_ = false;
