@@ -19,6 +19,7 @@
 #include "../convex_polyhedron.hpp"
 #include "../number_traits.hpp"
 #include "../vec3.hpp"
+#include "box_tree.hpp"
 #include "index.hpp"
 
 namespace sepax::hull::detail {
@@ -31,18 +32,7 @@ class PlaneTree {
  public:
   /// The tree of planes plane(0) .. plane(count - 1).
   template <class PlaneOf>
-  PlaneTree(int count, PlaneOf&& plane) {
-    items_.reserve(as_index(count));
-    for (int f = 0; f < count; ++f) {
-      const Plane<T>& pl = plane(f);
-      items_.push_back(Item{{static_cast<double>(pl.normal[0]), static_cast<double>(pl.normal[1]),
-                             static_cast<double>(pl.normal[2]), static_cast<double>(pl.offset)},
-                            f});
-    }
-    if (items_.empty()) return;
-    nodes_.push_back(fill(0, static_cast<int>(items_.size())));
-    expand(0);
-  }
+  PlaneTree(int count, PlaneOf&& plane) : tree_(items(count, plane)) {}
 
   /// The largest computed height T(dot(n_f, x) - off_f) over the planes: the value a pass over every
   /// plane finds, each plane handed over computed by height(f) (which must compute exactly that
@@ -60,7 +50,7 @@ class PlaneTree {
   template <class Height>
   T max_height(const Vec3<T>& x, Height&& height) const {
     T best = -std::numeric_limits<T>::infinity();
-    if (nodes_.empty()) return best;
+    if (tree_.nodes().empty()) return best;
     const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
                                   static_cast<double>(x[2])};
     // (the child with the larger bound first: a high height found early skips more boxes)
@@ -68,15 +58,16 @@ class PlaneTree {
     double bound[64];
     int top = 0;
     stack[top] = 0;
-    bound[top++] = upper(nodes_[0], q);
+    bound[top++] = upper(tree_.nodes()[0], q);
     while (top > 0) {
       --top;
-      const Node& nd = nodes_[as_index(stack[top])];
+      const Node& nd = tree_.nodes()[as_index(stack[top])];
       if (bound[top] <= static_cast<double>(best)) continue;
       if (nd.left < 0) {
-        for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(items_[as_index(i)].id));
+        for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(tree_.items()[as_index(i)].id));
       } else {
-        const double bl = upper(nodes_[as_index(nd.left)], q), br = upper(nodes_[as_index(nd.left + 1)], q);
+        const double bl = upper(tree_.nodes()[as_index(nd.left)], q);
+        const double br = upper(tree_.nodes()[as_index(nd.left + 1)], q);
         const bool left_first = !(br > bl);
         stack[top] = left_first ? nd.left + 1 : nd.left;
         bound[top++] = left_first ? br : bl;
@@ -88,22 +79,23 @@ class PlaneTree {
   }
 
  private:
-  static constexpr int kLeaf = 8;  ///< planes per leaf at most
-  static constexpr double gamma4(double u) { return 4 * u / (1 - 4 * u); }
-  static constexpr double kSlack =
-      2 * (gamma4(number_traits<T>::unit_roundoff) + gamma4(number_traits<double>::unit_roundoff));
-  static constexpr double kTiny = 64 * static_cast<double>(std::numeric_limits<T>::min());
+  using Node = typename BoxTree<4>::Node;
+  static constexpr double kSlack = DotBound<T>::kSlack;
+  static constexpr double kTiny = DotBound<T>::kTiny;
 
-  struct Node {
-    double lo[4], hi[4], mag[4];  ///< box of (n, off) (exact: T widens exactly to double); mag = max |.|
-    int begin = 0, end = 0;       ///< items_[begin, end)
-    int left = -1;                ///< children left, left + 1 (-1: a leaf)
-  };
-
-  struct Item {
-    std::array<double, 4> c;  ///< n_0, n_1, n_2, off
-    int id;
-  };
+  /// The planes as tree items (n_0, n_1, n_2, off; T widens exactly to double).
+  template <class PlaneOf>
+  static std::vector<typename BoxTree<4>::Item> items(int count, PlaneOf& plane) {
+    std::vector<typename BoxTree<4>::Item> out;
+    out.reserve(as_index(count));
+    for (int f = 0; f < count; ++f) {
+      const Plane<T>& pl = plane(f);
+      out.push_back({{static_cast<double>(pl.normal[0]), static_cast<double>(pl.normal[1]),
+                      static_cast<double>(pl.normal[2]), static_cast<double>(pl.offset)},
+                     f});
+    }
+    return out;
+  }
 
   /// A bound u with: every computed height of nd's planes at x is at most lim whenever u <= lim
   /// (max_height's bound; NaN when a value is not finite, so that no comparison skips the box).
@@ -120,41 +112,7 @@ class PlaneTree {
     return std::isfinite(u) ? u : std::numeric_limits<double>::quiet_NaN();
   }
 
-  Node fill(int b, int e) const {
-    Node nd;
-    nd.begin = b;
-    nd.end = e;
-    for (int c = 0; c < 4; ++c) nd.lo[c] = nd.hi[c] = items_[as_index(b)].c[as_index(c)];
-    for (int i = b + 1; i < e; ++i)
-      for (int c = 0; c < 4; ++c) {
-        nd.lo[c] = std::min(nd.lo[c], items_[as_index(i)].c[as_index(c)]);
-        nd.hi[c] = std::max(nd.hi[c], items_[as_index(i)].c[as_index(c)]);
-      }
-    for (int c = 0; c < 4; ++c) nd.mag[c] = std::max(std::abs(nd.lo[c]), std::abs(nd.hi[c]));
-    return nd;
-  }
-
-  /// Median split on the box's widest coordinate, down to leaves of kLeaf planes (depth at most
-  /// log2(n / kLeaf) + 1: the traversal's stack fits 64 for any int count).
-  void expand(int id) {
-    Node nd = nodes_[as_index(id)];
-    if (nd.end - nd.begin <= kLeaf) return;
-    int axis = 0;
-    for (int c = 1; c < 4; ++c)
-      if (nd.hi[c] - nd.lo[c] > nd.hi[axis] - nd.lo[axis]) axis = c;
-    const int mid = nd.begin + (nd.end - nd.begin) / 2;
-    std::nth_element(items_.begin() + nd.begin, items_.begin() + mid, items_.begin() + nd.end,
-                     [&](const Item& p, const Item& r) { return p.c[as_index(axis)] < r.c[as_index(axis)]; });
-    const int left = static_cast<int>(nodes_.size());
-    nodes_.push_back(fill(nd.begin, mid));
-    nodes_.push_back(fill(mid, nd.end));
-    nodes_[as_index(id)].left = left;
-    expand(left);
-    expand(left + 1);
-  }
-
-  std::vector<Item> items_;
-  std::vector<Node> nodes_;
+  BoxTree<4> tree_;
 };
 
 }  // namespace sepax::hull::detail
