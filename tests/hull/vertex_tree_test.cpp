@@ -1,7 +1,8 @@
 // hull/vertex_tree.hpp: the vertices a VertexTree does not hand over have computed heights at most the
 // limit, for float and double, at several scales and offsets; and the tree does skip vertices;
 // VertexTree::height_holds.  hull/plane_tree.hpp: PlaneTree::max_height is the largest computed height of a
-// point above the planes, bit for bit the value of a pass over every plane; and the tree does skip planes.
+// point above the planes, bit for bit the value of a pass over every plane, first_above the first plane a
+// pass finds above a limit; and the tree does skip planes.
 #include <catch2/catch.hpp>
 
 #include <sepax/convex_hull.hpp>
@@ -172,6 +173,15 @@ TEMPLATE_TEST_CASE("plane tree: the largest height is the pass's, bit for bit", 
         });
         total += static_cast<long>(planes.size());
         CHECK(top == pass);
+        // the first plane above a limit (from below the largest height to above it), as a pass finds it
+        for (const T limit : {T(pass - T(scale)), T(pass - T(1e-6 * scale)), pass, T(0)}) {
+          int first = -1;
+          for (std::size_t f = 0; f < planes.size() && first < 0; ++f)
+            if (computed_height(planes[f], x) > limit) first = static_cast<int>(f);
+          CHECK(tree.first_above(x, limit, [&](int f) {
+            return computed_height(planes[static_cast<std::size_t>(f)], x);
+          }) == first);
+        }
       }
     }
   }

@@ -5,8 +5,10 @@
 //   1. PlaneTree: the planes (n, off) in a binary tree of boxes in (n_0, n_1, n_2, off) (median splits on
 //      the widest of the four);
 //   2. max_height: the largest computed height T(dot(n, x) - off) over the planes, a box skipped when its
-//      bound proves every height in it at most the largest found so far (the bound is derived there).
-// Used by the measure of points against a built hull (repair.hpp, outside_points).
+//      bound proves every height in it at most the largest found so far (the bound is derived there);
+//   3. first_above: the first plane (in index order) whose computed height exceeds a limit.
+// Used by the measure of points against a built hull (repair.hpp, outside_points) and the quickhull's sweep
+// of kept points (quickhull.hpp, sweep).
 #pragma once
 
 #include <algorithm>
@@ -23,6 +25,10 @@
 #include "index.hpp"
 
 namespace sepax::hull::detail {
+
+/// Planes from which the builder's searches go through a PlaneTree (below, a pass over the planes is cheaper
+/// than the tree's boxes; either gives the same result).
+inline constexpr int kPlaneTreeFaces = 512;
 
 /// Float T: planes in a tree of bounding boxes of their coefficients, for the largest height of a point.
 template <Number T>
@@ -76,6 +82,35 @@ class PlaneTree {
       }
     }
     return best;
+  }
+
+  /// The smallest plane index f whose computed height T(dot(n_f, x) - off_f) exceeds limit, or -1: the
+  /// first plane a pass in index order finds above limit.  A box is skipped when max_height's bound proves
+  /// every height in it at most limit; every other plane's height(f) (the same expression) is computed.
+  template <class Height>
+  int first_above(const Vec3<T>& x, T limit, Height&& height) const {
+    int first = -1;
+    if (tree_.nodes().empty()) return first;
+    const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
+                                  static_cast<double>(x[2])};
+    const double lim = static_cast<double>(limit);
+    int stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& nd = tree_.nodes()[as_index(stack[--top])];
+      if (upper(nd, q) <= lim) continue;
+      if (nd.left < 0) {
+        for (int i = nd.begin; i < nd.end; ++i) {
+          const int f = tree_.items()[as_index(i)].id;
+          if ((first < 0 || f < first) && height(f) > limit) first = f;
+        }
+      } else {
+        stack[top++] = nd.left + 1;
+        stack[top++] = nd.left;
+      }
+    }
+    return first;
   }
 
  private:

@@ -30,6 +30,7 @@
 #include "../tolerances.hpp"
 #include "builder.hpp"
 #include "orientation_filter.hpp"
+#include "plane_tree.hpp"
 
 namespace sepax::hull::detail {
 
@@ -229,13 +230,25 @@ inline bool Builder<T>::sweep() {
     const bool scan = on_count * static_cast<double>(live.size()) <= kHullPointScanPairs;
     const T reach = -(static_cast<T>(kHullOutsideBound) * eps_);
     std::vector<int> seen(scan ? 0 : tris_.size(), -1), queue;
+    // (the scan's first live face above a point, through a tree of their planes on many faces: the same
+    // face)
+    std::optional<PlaneTree<T>> planes;
+    if (scan && on_count > 0 && live.size() >= as_index(kPlaneTreeFaces)) {
+      planes.emplace(static_cast<int>(live.size()),
+                     [&](int k) -> const Plane<T>& { return tris_[as_index(live[as_index(k)])].pl; });
+    }
     for (int f : live) {
       std::vector<int>& on = tris_[as_index(f)].on;
       std::size_t keep = 0;
       for (std::size_t i = 0; i < on.size(); ++i) {
         const int p = on[i];
         int out = -1;
-        if (scan) {
+        if (scan && planes) {
+          const int k = planes->first_above(local_point(p), threshold(p), [&](int j) {
+            return height(tris_[as_index(live[as_index(j)])].pl, p);
+          });
+          if (k >= 0) out = live[as_index(k)];
+        } else if (scan) {
           for (std::size_t k = 0; k < live.size() && out < 0; ++k)
             if (height(tris_[as_index(live[k])].pl, p) > threshold(p)) out = live[k];
         } else {

@@ -160,10 +160,6 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::try_tent(const ConvexPolyh
 // within eps of two planes of a thin wedge can be far beyond its edge);
 // returns the largest of either in units of eps, and in height the
 // largest height alone.
-/// Faces from which a point's largest height goes through a PlaneTree (below, a pass over the faces is
-/// cheaper than the tree's boxes; either gives the same value).
-inline constexpr int kPlaneTreeFaces = 512;
-
 template <Number T>
 inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside,
                                          double& height) const {
