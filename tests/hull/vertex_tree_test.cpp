@@ -154,15 +154,16 @@ TEMPLATE_TEST_CASE("plane tree: the largest height is the pass's, bit for bit", 
                                               pts[static_cast<std::size_t>(pick(rng))],
                                               pts[static_cast<std::size_t>(pick(rng))]));
       }
-      const sepax::hull::detail::PlaneTree<T> tree(static_cast<int>(planes.size()),
-                                                   [&](int f) -> const Plane<T>& {
-                                                     return planes[static_cast<std::size_t>(f)];
-                                                   });
+      const sepax::hull::detail::PlaneTree<T> tree(
+          static_cast<int>(planes.size()),
+          [&](int f) -> const Plane<T>& { return planes[static_cast<std::size_t>(f)]; });
       for (int trial = 0; trial < 300; ++trial) {
         // points on the sphere, inside, outside and far away
         Vec3<double> d(gauss(rng), gauss(rng), gauss(rng));
         d /= std::sqrt(d.squaredNorm());
-        const double r = trial % 4 == 0 ? 1.0 : trial % 4 == 1 ? 0.5 * (1 + unit(rng)) : 1 + std::abs(unit(rng));
+        const double r = trial % 4 == 0   ? 1.0
+                         : trial % 4 == 1 ? 0.5 * (1 + unit(rng))
+                                          : 1 + std::abs(unit(rng));
         const Vec3<double> xd = scale * (r * d + Vec3<double>(offset, -offset, offset / 2));
         const Vec3<T> x(static_cast<T>(xd[0]), static_cast<T>(xd[1]), static_cast<T>(xd[2]));
         T pass = -std::numeric_limits<T>::infinity();
@@ -206,12 +207,12 @@ TEMPLATE_TEST_CASE("vertex tree: height_holds needs the rounding margin below th
   const Plane<T> pl{Vec3<T>(T(0.6), T(0.8), T(0)), T(2)};
   const std::array<double, 3> mag{3.0, 4.0, 1.0};
   const T limit = T(1e-3);
-  CHECK(Tree::height_holds(pl, mag, T(5e-4), limit));         // half the limit: far within it
-  CHECK(!Tree::height_holds(pl, mag, limit, limit));          // no room for the rounding of a second evaluation
-  CHECK(!Tree::height_holds(pl, mag, T(2e-3), limit));        // above the limit
-  CHECK(!Tree::height_holds(pl, mag, T(-1), limit));          // (a negative bound is not accepted)
+  CHECK(Tree::height_holds(pl, mag, T(5e-4), limit));   // half the limit: far within it
+  CHECK(!Tree::height_holds(pl, mag, limit, limit));    // no room for the rounding of a second evaluation
+  CHECK(!Tree::height_holds(pl, mag, T(2e-3), limit));  // above the limit
+  CHECK(!Tree::height_holds(pl, mag, T(-1), limit));    // (a negative bound is not accepted)
   const std::array<double, 3> huge{1e30, 1e30, 1e30};
-  CHECK(!Tree::height_holds(pl, huge, T(5e-4), limit));       // rounding of the coordinates beyond the room
+  CHECK(!Tree::height_holds(pl, huge, T(5e-4), limit));  // rounding of the coordinates beyond the room
   const Plane<T> nan{Vec3<T>(std::numeric_limits<T>::quiet_NaN(), T(0), T(0)), T(0)};
   CHECK(!Tree::height_holds(nan, mag, T(5e-4), limit));
 }

@@ -171,8 +171,8 @@ class Builder {
   Vec3<T> base_normal_;                         // normal of its initial triangle
   std::vector<Group> groups_;
   std::vector<int> group_version_;  // per group root: the unions it has taken (face_merge.hpp)
-  std::vector<char> removed_;  // points the clean-up rejected (put back when pinned)
-  std::vector<char> pinned_;   // float: points a repair pass put back
+  std::vector<char> removed_;       // points the clean-up rejected (put back when pinned)
+  std::vector<char> pinned_;        // float: points a repair pass put back
   bool any_pinned_ = false;
   std::vector<char> out_vertex_;             // vertices of the last output
   std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
@@ -185,10 +185,10 @@ class Builder {
   std::vector<std::array<int, 3>> horizon_;  // scratch, per eye
   static constexpr std::size_t kHorizonPool = 16384;  ///< bytes: a horizon of ~200 edges without allocation
   std::vector<std::byte> horizon_pool_ = std::vector<std::byte>(kHorizonPool);  // the horizon map's storage
-  std::vector<int> moved_;                   // scratch, per eye: the points of a removed face
-  std::vector<int> degree_;                  // scratch, per welded point
-  std::vector<int> eye_visits_;              // times each welded point was the eye (kHullMaxEyeVisits)
-  std::vector<int> nomerge_;                 // triangle -> id of the face it was split from (0: none)
+  std::vector<int> moved_;       // scratch, per eye: the points of a removed face
+  std::vector<int> degree_;      // scratch, per welded point
+  std::vector<int> eye_visits_;  // times each welded point was the eye (kHullMaxEyeVisits)
+  std::vector<int> nomerge_;     // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
   bool tent_;  // float: may try tent_hull (not in a tent's own build)
 };

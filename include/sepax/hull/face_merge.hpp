@@ -144,7 +144,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
           Apart& known = apart[as_index(3 * f + i)];
           const int vx = group_version_[as_index(x)], vy = group_version_[as_index(y)];
           if (known.x == x && known.y == y && known.vx == vx && known.vy == vy) continue;
-          if (split_apart(groups_[as_index(x)], groups_[as_index(y)]) || Traits::certainly_apart(*this, x, y) ||
+          if (split_apart(groups_[as_index(x)], groups_[as_index(y)]) ||
+              Traits::certainly_apart(*this, x, y) ||
               !Traits::coplanar(*this, groups_[as_index(x)], groups_[as_index(y)])) {
             known = Apart{x, y, vx, vy};
             continue;

@@ -159,7 +159,8 @@ inline double Builder<T>::shadow_out(const ConvexPolyhedron<T>& h, const Vec3<do
     const Vec3<double> x = vec_to_double(local_point(static_cast<int>(i)));
     const std::array<double, 2> p{dot(ax, x), dot(bx, x)};
     double out = -1e300;
-    for (const Edge& g : edges) out = std::max(out, (g.ex * (p[1] - g.a[1]) - g.ey * (p[0] - g.a[0])) / -g.len);
+    for (const Edge& g : edges)
+      out = std::max(out, (g.ex * (p[1] - g.a[1]) - g.ey * (p[0] - g.a[0])) / -g.len);
     worst = std::max(worst, out);
   }
   return worst / to_double(eps_);

@@ -111,7 +111,8 @@ class VertexTree {
   static bool height_holds(const Plane<T>& pl, const std::array<double, 3>& mag, T below, T limit) {
     const double s = std::abs(static_cast<double>(pl.normal[0])) * mag[0] +
                      std::abs(static_cast<double>(pl.normal[1])) * mag[1] +
-                     std::abs(static_cast<double>(pl.normal[2])) * mag[2] + std::abs(static_cast<double>(pl.offset));
+                     std::abs(static_cast<double>(pl.normal[2])) * mag[2] +
+                     std::abs(static_cast<double>(pl.offset));
     const double b = static_cast<double>(below);
     if (!(b >= 0)) return false;
     constexpr double kShrink = 1 - 4 * number_traits<double>::unit_roundoff;
