@@ -29,6 +29,9 @@ namespace sepax::hull::detail {
 /// Planes from which the builder's searches go through a PlaneTree (below, a pass over the planes is cheaper
 /// than the tree's boxes; either gives the same result).
 inline constexpr int kPlaneTreeFaces = 512;
+/// Points from which the sweep's searches go through a PlaneTree (fewer: the tree costs more to build than
+/// the passes it saves).
+inline constexpr double kPlaneTreePoints = 64;
 
 /// Float T: planes in a tree of bounding boxes of their coefficients, for the largest height of a point.
 template <Number T>

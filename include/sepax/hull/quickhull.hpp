@@ -233,7 +233,7 @@ inline bool Builder<T>::sweep() {
     // (the scan's first live face above a point, through a tree of their planes on many faces: the same
     // face)
     std::optional<PlaneTree<T>> planes;
-    if (scan && on_count > 0 && live.size() >= as_index(kPlaneTreeFaces)) {
+    if (scan && on_count >= kPlaneTreePoints && live.size() >= as_index(kPlaneTreeFaces)) {
       planes.emplace(static_cast<int>(live.size()),
                      [&](int k) -> const Plane<T>& { return tris_[as_index(live[as_index(k)])].pl; });
     }
