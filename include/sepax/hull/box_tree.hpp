@@ -53,6 +53,26 @@ class BoxTree {
   const std::vector<Item>& items() const { return items_; }
   const std::vector<Node>& nodes() const { return nodes_; }
 
+  /// Depth first from the root: a node for which skip(node) holds is passed over with its subtree; every
+  /// other leaf is handed to leaf(node); children are entered left first when left_first, else right first.
+  template <class Skip, class Leaf>
+  void walk(bool left_first, Skip&& skip, Leaf&& leaf) const {
+    if (nodes_.empty()) return;
+    int stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& nd = nodes_[as_index(stack[--top])];
+      if (skip(nd)) continue;
+      if (nd.left < 0) {
+        leaf(nd);
+      } else {
+        stack[top++] = left_first ? nd.left + 1 : nd.left;
+        stack[top++] = left_first ? nd.left : nd.left + 1;
+      }
+    }
+  }
+
  private:
   static constexpr int kLeaf = 8;  ///< items per leaf at most
 

@@ -93,26 +93,17 @@ class PlaneTree {
   template <class Height>
   int first_above(const Vec3<T>& x, T limit, Height&& height) const {
     int first = -1;
-    if (tree_.nodes().empty()) return first;
     const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
                                   static_cast<double>(x[2])};
     const double lim = static_cast<double>(limit);
-    int stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node& nd = tree_.nodes()[as_index(stack[--top])];
-      if (upper(nd, q) <= lim) continue;
-      if (nd.left < 0) {
-        for (int i = nd.begin; i < nd.end; ++i) {
-          const int f = tree_.items()[as_index(i)].id;
-          if ((first < 0 || f < first) && height(f) > limit) first = f;
-        }
-      } else {
-        stack[top++] = nd.left + 1;
-        stack[top++] = nd.left;
-      }
-    }
+    tree_.walk(
+        true, [&](const Node& nd) { return upper(nd, q) <= lim; },
+        [&](const Node& nd) {
+          for (int i = nd.begin; i < nd.end; ++i) {
+            const int f = tree_.items()[as_index(i)].id;
+            if ((first < 0 || f < first) && height(f) > limit) first = f;
+          }
+        });
     return first;
   }
 

@@ -54,23 +54,14 @@ class VertexTree {
   /// values fail the test (the box is then opened).
   template <class F>
   void may_exceed(const Plane<T>& pl, T limit, F&& visit) const {
-    if (tree_.nodes().empty()) return;
     const double n0 = static_cast<double>(pl.normal[0]), n1 = static_cast<double>(pl.normal[1]),
                  n2 = static_cast<double>(pl.normal[2]), off = static_cast<double>(pl.offset);
     const double lim = static_cast<double>(limit);
-    int stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node& nd = tree_.nodes()[as_index(stack[--top])];
-      if (at_most(nd, n0, n1, n2, off, lim)) continue;
-      if (nd.left < 0) {
-        for (int i = nd.begin; i < nd.end; ++i) visit(tree_.items()[as_index(i)].id);
-      } else {
-        stack[top++] = nd.left;
-        stack[top++] = nd.left + 1;
-      }
-    }
+    tree_.walk(
+        false, [&](const Node& nd) { return at_most(nd, n0, n1, n2, off, lim); },
+        [&](const Node& nd) {
+          for (int i = nd.begin; i < nd.end; ++i) visit(tree_.items()[as_index(i)].id);
+        });
   }
 
   /// The largest computed height T(dot(n, x) - off) over the vertices: the value a pass over every vertex
@@ -80,22 +71,14 @@ class VertexTree {
   template <class Height>
   T max_height(const Plane<T>& pl, Height&& height) const {
     T best = -std::numeric_limits<T>::infinity();
-    if (tree_.nodes().empty()) return best;
     const double n0 = static_cast<double>(pl.normal[0]), n1 = static_cast<double>(pl.normal[1]),
                  n2 = static_cast<double>(pl.normal[2]), off = static_cast<double>(pl.offset);
-    int stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node& nd = tree_.nodes()[as_index(stack[--top])];
-      if (at_most(nd, n0, n1, n2, off, static_cast<double>(best))) continue;
-      if (nd.left < 0) {
-        for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(tree_.items()[as_index(i)].id));
-      } else {
-        stack[top++] = nd.left + 1;
-        stack[top++] = nd.left;  // (the left child first)
-      }
-    }
+    tree_.walk(
+        true, [&](const Node& nd) { return at_most(nd, n0, n1, n2, off, static_cast<double>(best)); },
+        [&](const Node& nd) {
+          for (int i = nd.begin; i < nd.end; ++i)
+            best = std::max(best, height(tree_.items()[as_index(i)].id));
+        });
     return best;
   }
 
