@@ -82,9 +82,15 @@ inline int pow2_exponent(T m) {
 }
 
 /// v * 2^-e, component by component (std::ldexp: exact unless a component
-/// becomes subnormal; e may exceed the exponent range of a T factor).
+/// becomes subnormal; e may exceed the exponent range of a T factor).  When
+/// 2^-e is a normal T, a product by it: one rounding of the same exact value,
+/// so bit for bit std::ldexp's result (subnormal results included).
 template <class T>
 inline Vec3<T> scale_pow2(const Vec3<T>& v, int e) {
+  if (e > -std::numeric_limits<T>::max_exponent && e < std::numeric_limits<T>::max_exponent - 1) {
+    const T s = std::ldexp(T(1), -e);  // 2^-e, a normal number
+    return Vec3<T>(v[0] * s, v[1] * s, v[2] * s);
+  }
   return Vec3<T>(std::ldexp(v[0], -e), std::ldexp(v[1], -e), std::ldexp(v[2], -e));
 }
 

@@ -1,11 +1,16 @@
 // hull/vertex_tree.hpp: the vertices a VertexTree does not hand over have computed heights at most the
-// limit, for float and double, at several scales and offsets; and the tree does skip vertices.
+// limit, for float and double, at several scales and offsets; and the tree does skip vertices;
+// VertexTree::height_holds.  hull/plane_tree.hpp: PlaneTree::max_height is the largest computed height of a
+// point above the planes, bit for bit the value of a pass over every plane, first_above the first plane a
+// pass finds above a limit; and the tree does skip planes.
 #include <catch2/catch.hpp>
 
 #include <sepax/convex_hull.hpp>
+#include <sepax/hull/plane_tree.hpp>
 #include <sepax/hull/vertex_tree.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -122,4 +127,92 @@ TEMPLATE_TEST_CASE("vertex tree: max_height is the largest computed height of a 
       CHECK(measured < static_cast<int>(pts.size()));
     }
   }
+}
+
+TEMPLATE_TEST_CASE("plane tree: the largest height is the pass's, bit for bit", "[hull]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(11);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  long visited = 0, total = 0;
+  for (const double scale : {1e-3, 1.0, 1e3}) {
+    for (const double offset : {0.0, 5.0}) {
+      // the faces of a hull of sphere points (planes of every direction), and random planes
+      std::vector<Vec3<T>> pts;
+      for (int i = 0; i < 600; ++i) {
+        Vec3<double> d(gauss(rng), gauss(rng), gauss(rng));
+        d /= std::sqrt(d.squaredNorm());
+        const Vec3<double> x = scale * (d + Vec3<double>(offset, -offset, offset / 2));
+        pts.emplace_back(T(x[0]), T(x[1]), T(x[2]));
+      }
+      const auto hull = sepax::convex_hull(pts);
+      std::vector<Plane<T>> planes;
+      for (int f = 0; f < hull.face_count(); ++f) planes.push_back(hull.plane(f));
+      std::uniform_int_distribution<int> pick(0, static_cast<int>(pts.size()) - 1);
+      for (int i = 0; i < 200; ++i) {
+        planes.push_back(sepax::plane_through(pts[static_cast<std::size_t>(pick(rng))],
+                                              pts[static_cast<std::size_t>(pick(rng))],
+                                              pts[static_cast<std::size_t>(pick(rng))]));
+      }
+      const sepax::hull::detail::PlaneTree<T> tree(
+          static_cast<int>(planes.size()),
+          [&](int f) -> const Plane<T>& { return planes[static_cast<std::size_t>(f)]; });
+      for (int trial = 0; trial < 300; ++trial) {
+        // points on the sphere, inside, outside and far away
+        Vec3<double> d(gauss(rng), gauss(rng), gauss(rng));
+        d /= std::sqrt(d.squaredNorm());
+        const double r = trial % 4 == 0   ? 1.0
+                         : trial % 4 == 1 ? 0.5 * (1 + unit(rng))
+                                          : 1 + std::abs(unit(rng));
+        const Vec3<double> xd = scale * (r * d + Vec3<double>(offset, -offset, offset / 2));
+        const Vec3<T> x(static_cast<T>(xd[0]), static_cast<T>(xd[1]), static_cast<T>(xd[2]));
+        T pass = -std::numeric_limits<T>::infinity();
+        for (const auto& pl : planes) pass = std::max(pass, computed_height(pl, x));
+        const T top = tree.max_height(x, [&](int f) {
+          ++visited;
+          return computed_height(planes[static_cast<std::size_t>(f)], x);
+        });
+        total += static_cast<long>(planes.size());
+        CHECK(top == pass);
+        // the first plane above a limit (from below the largest height to above it), as a pass finds it
+        for (const T limit : {T(pass - T(scale)), T(pass - T(1e-6 * scale)), pass, T(0)}) {
+          int first = -1;
+          for (std::size_t f = 0; f < planes.size() && first < 0; ++f)
+            if (computed_height(planes[f], x) > limit) first = static_cast<int>(f);
+          CHECK(tree.first_above(x, limit, [&](int f) {
+            return computed_height(planes[static_cast<std::size_t>(f)], x);
+          }) == first);
+        }
+      }
+    }
+  }
+  // (the tree skips most planes for points of a sphere against its faces)
+  CHECK(visited < total / 2);
+}
+
+TEMPLATE_TEST_CASE("plane tree: no planes give -infinity", "[hull]", float, double) {
+  using T = TestType;
+  const sepax::hull::detail::PlaneTree<T> tree(0, [](int) -> const Plane<T>& {
+    static const Plane<T> none{Vec3<T>(T(0), T(0), T(0)), T(0)};
+    return none;
+  });
+  CHECK(tree.max_height(Vec3<T>(T(1), T(2), T(3)), [](int) { return T(0); }) ==
+        -std::numeric_limits<T>::infinity());
+}
+
+TEMPLATE_TEST_CASE("vertex tree: height_holds needs the rounding margin below the limit", "[hull]", float,
+                   double) {
+  using T = TestType;
+  using Tree = sepax::hull::detail::VertexTree<T>;
+  const Plane<T> pl{Vec3<T>(T(0.6), T(0.8), T(0)), T(2)};
+  const std::array<double, 3> mag{3.0, 4.0, 1.0};
+  const T limit = T(1e-3);
+  CHECK(Tree::height_holds(pl, mag, T(5e-4), limit));   // half the limit: far within it
+  CHECK(!Tree::height_holds(pl, mag, limit, limit));    // no room for the rounding of a second evaluation
+  CHECK(!Tree::height_holds(pl, mag, T(2e-3), limit));  // above the limit
+  CHECK(!Tree::height_holds(pl, mag, T(-1), limit));    // (a negative bound is not accepted)
+  const std::array<double, 3> huge{1e30, 1e30, 1e30};
+  CHECK(!Tree::height_holds(pl, huge, T(5e-4), limit));  // rounding of the coordinates beyond the room
+  const Plane<T> nan{Vec3<T>(std::numeric_limits<T>::quiet_NaN(), T(0), T(0)), T(0)};
+  CHECK(!Tree::height_holds(nan, mag, T(5e-4), limit));
 }

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <span>
@@ -28,6 +29,7 @@
 #include "../vec3.hpp"
 #include "hull_distance.hpp"
 #include "index.hpp"
+#include "to_polyhedron.hpp"
 #include "traits.hpp"
 
 namespace sepax::hull::detail {
@@ -137,7 +139,8 @@ class Builder {
   int least_significant(const std::vector<int>& l) const;
   void prevalidate(std::vector<std::vector<int>>& loops, std::vector<int>& reject, bool flat = false,
                    std::vector<std::pair<int, int>>* merges = nullptr,
-                   const std::vector<int>* loop_group = nullptr, std::vector<int>* split = nullptr);
+                   const std::vector<int>* loop_group = nullptr, std::vector<int>* split = nullptr,
+                   ScannedPlanes<T>* scanned = nullptr);
 
   /// Welded point i in local coordinates.
   const Vec3<T>& local_point(int i) const { return q_[as_index(i)]; }
@@ -167,8 +170,9 @@ class Builder {
   std::array<int, 4> simplex_{-1, -1, -1, -1};  // the first build's initial simplex
   Vec3<T> base_normal_;                         // normal of its initial triangle
   std::vector<Group> groups_;
-  std::vector<char> removed_;  // points the clean-up rejected (put back when pinned)
-  std::vector<char> pinned_;   // float: points a repair pass put back
+  std::vector<int> group_version_;  // per group root: the unions it has taken (face_merge.hpp)
+  std::vector<char> removed_;       // points the clean-up rejected (put back when pinned)
+  std::vector<char> pinned_;        // float: points a repair pass put back
   bool any_pinned_ = false;
   std::vector<char> out_vertex_;             // vertices of the last output
   std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
@@ -179,9 +183,12 @@ class Builder {
   std::vector<Vec3<double>> qd_;             // exact T: q_ as doubles, when shadow_
   bool shadow_ = false;                      // exact T: every welded coordinate is exactly a double
   std::vector<std::array<int, 3>> horizon_;  // scratch, per eye
-  std::vector<int> degree_;                  // scratch, per welded point
-  std::vector<int> eye_visits_;              // times each welded point was the eye (kHullMaxEyeVisits)
-  std::vector<int> nomerge_;                 // triangle -> id of the face it was split from (0: none)
+  static constexpr std::size_t kHorizonPool = 16384;  ///< bytes: a horizon of ~200 edges without allocation
+  std::vector<std::byte> horizon_pool_ = std::vector<std::byte>(kHorizonPool);  // the horizon map's storage
+  std::vector<int> moved_;       // scratch, per eye: the points of a removed face
+  std::vector<int> degree_;      // scratch, per welded point
+  std::vector<int> eye_visits_;  // times each welded point was the eye (kHullMaxEyeVisits)
+  std::vector<int> nomerge_;     // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
   bool tent_;  // float: may try tent_hull (not in a tent's own build)
 };

@@ -30,29 +30,35 @@ namespace sepax::hull::detail {
 template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<int>& live,
                                                               std::vector<int>& reject) {
-  // boundary edges of each group, grouped by group (stable: in triangle order)
+  // boundary edges of each group, grouped by group (stable: in triangle order).  A group is its root
+  // triangle, so the edges are bucketed by root index (a counting sort: the order of a stable sort by
+  // group, in linear time).
   struct BoundaryEdge {
     int group, from, to;
   };
-  std::vector<BoundaryEdge> bnd;
-  bnd.reserve(live.size() * 3);
-  std::vector<int> roots;
+  std::vector<BoundaryEdge> found;
+  found.reserve(live.size() * 3);
+  std::vector<int> roots;  // (ascending: live is)
+  std::vector<std::size_t> group_start(tris_.size() + 1, 0);
   for (int f : live) {
     const int g = find(f);
     if (g == f) roots.push_back(g);
     const Tri& t = tris_[as_index(f)];
     for (int i = 0; i < 3; ++i)
-      if (find(t.nb[as_index(i)]) != g) bnd.push_back({g, t.v[as_index(i)], t.v[as_index((i + 1) % 3)]});
+      if (find(t.nb[as_index(i)]) != g) {
+        found.push_back({g, t.v[as_index(i)], t.v[as_index((i + 1) % 3)]});
+        ++group_start[as_index(g) + 1];
+      }
   }
-  std::stable_sort(bnd.begin(), bnd.end(),
-                   [](const BoundaryEdge& a, const BoundaryEdge& b) { return a.group < b.group; });
-  std::sort(roots.begin(), roots.end());
-  // group -> its edges bnd[edge_start[k], edge_start[k + 1]) for roots[k]
+  for (std::size_t g = 0; g < tris_.size(); ++g) group_start[g + 1] += group_start[g];
+  std::vector<BoundaryEdge> bnd(found.size());
+  {
+    std::vector<std::size_t> fill(group_start.begin(), group_start.end() - 1);
+    for (const BoundaryEdge& e : found) bnd[fill[as_index(e.group)]++] = e;
+  }
+  // group -> its edges bnd[edge_start[k], edge_start[k + 1]) for roots[k] (every group with edges is a root)
   std::vector<std::size_t> edge_start(roots.size() + 1, bnd.size());
-  for (std::size_t k = 0, e = 0; k < roots.size(); ++k) {
-    while (e < bnd.size() && bnd[e].group < roots[k]) ++e;
-    edge_start[k] = e;
-  }
+  for (std::size_t k = 0; k < roots.size(); ++k) edge_start[k] = group_start[as_index(roots[k])];
   bool collapsed = roots.size() < 4;
   for (std::size_t k = 0; k < roots.size(); ++k) collapsed = collapsed || edge_start[k] == edge_start[k + 1];
   if (collapsed) {
@@ -213,6 +219,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     reject.erase(std::unique(reject.begin(), reject.end()), reject.end());
     return std::nullopt;
   }
+  ScannedPlanes<T> scanned;  // float: the planes the pre-check scanned every vertex against
   if constexpr (Traits::kPrechecks) {
     for (auto& l : loops) start_at_best_apex(l);
     // Adjacent faces that validation would see as coplanar are merged
@@ -227,7 +234,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     // terminates too.
     std::vector<std::pair<int, int>> merges;
     std::vector<int> split;
-    prevalidate(loops, reject, false, &merges, &loop_group, &split);
+    prevalidate(loops, reject, false, &merges, &loop_group, &split, &scanned);
     std::vector<int> split_ids;
     for (int f : split) split_ids.push_back(loop_group[as_index(f)]);
     if (split_groups(live, split_ids)) {
@@ -261,7 +268,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     }
   }
   return finish([&] {
-    return HullPolyhedron<T>::from_faces(std::move(verts), faces, shadow_ ? &verts_double : nullptr);
+    return HullPolyhedron<T>::from_faces(std::move(verts), faces, shadow_ ? &verts_double : nullptr,
+                                         scanned.planes.empty() ? nullptr : &scanned);
   });
 }
 

@@ -84,6 +84,7 @@ inline void Builder<T>::unite(int x, int y) {
   }
   gx.degenerate = gx.degenerate && gy.degenerate;
   parent_[as_index(y)] = x;
+  if (as_index(x) < group_version_.size()) ++group_version_[as_index(x)];
   Traits::refit(*this, gx);
 }
 
@@ -101,16 +102,20 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
     for (int f : live)
       for (int v : tris_[as_index(f)].v) star_[as_index(v)].push_back(f);
   }
-  groups_.assign(tris_.size(), Group{});
+  // (a group per triangle index, read only for live triangles: each is reset in place, keeping its
+  // vectors' storage across the merges and rebuilds of one build; its plane is set by init_group_plane
+  // where the traits read it, float T, and exact T never reads it)
+  groups_.resize(tris_.size(), Group{});  // (new entries copied from one: cheap for shared T values)
   for (int f : live) {
     const Tri& t = tris_[as_index(f)];
     Group& g = groups_[as_index(f)];
-    g.verts = {t.v[0], t.v[1], t.v[2]};
+    g.verts.assign({t.v[0], t.v[1], t.v[2]});
     std::sort(g.verts.begin(), g.verts.end());
     g.plane_tri = f;
     Traits::init_group_plane(*this, g, f);
     g.degenerate = Traits::zero_area(*this, f);
-    if (nomerge_[as_index(f)] != 0) g.splits = {nomerge_[as_index(f)]};
+    g.splits.clear();
+    if (nomerge_[as_index(f)] != 0) g.splits.push_back(nomerge_[as_index(f)]);
     g.area = Traits::triangle_area(*this, t);
   }
   // Plane merges until nothing changes; then zero-area triangles join a
@@ -118,6 +123,16 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
   // triangle between two coplanar faces kept them apart, and once it has
   // joined one of them they are adjacent (left unmerged, validation would
   // refuse the pair and the clean-up would drop a real corner).
+  //
+  // A pair of groups found apart (split apart, certainly apart or not coplanar: functions of the two
+  // groups alone) stays apart until one of them changes: each edge slot remembers the pair and the
+  // groups' versions (bumped by unite) it was found apart with, and is not tested again while they hold.
+  // (strands_vertex depends on the other groups too: a pair it kept apart is tested again.)
+  struct Apart {
+    int x = -1, y = -1, vx = 0, vy = 0;
+  };
+  std::vector<Apart> apart(tris_.size() * 3);
+  group_version_.assign(tris_.size(), 0);
   for (bool joined = true; joined;) {
     joined = false;
     for (bool changed = true; changed;) {
@@ -126,9 +141,16 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
         for (int i = 0; i < 3; ++i) {
           const int x = find(f), y = find(tris_[as_index(f)].nb[as_index(i)]);
           if (x == y || groups_[as_index(x)].degenerate || groups_[as_index(y)].degenerate) continue;
-          if (split_apart(groups_[as_index(x)], groups_[as_index(y)])) continue;
-          if (!Traits::certainly_apart(*this, x, y) &&
-              Traits::coplanar(*this, groups_[as_index(x)], groups_[as_index(y)]) && !strands_vertex(x, y)) {
+          Apart& known = apart[as_index(3 * f + i)];
+          const int vx = group_version_[as_index(x)], vy = group_version_[as_index(y)];
+          if (known.x == x && known.y == y && known.vx == vx && known.vy == vy) continue;
+          if (split_apart(groups_[as_index(x)], groups_[as_index(y)]) ||
+              Traits::certainly_apart(*this, x, y) ||
+              !Traits::coplanar(*this, groups_[as_index(x)], groups_[as_index(y)])) {
+            known = Apart{x, y, vx, vy};
+            continue;
+          }
+          if (!strands_vertex(x, y)) {
             unite(x, y);
             changed = true;
           }

@@ -141,18 +141,26 @@ inline double Builder<T>::shadow_out(const ConvexPolyhedron<T>& h, const Vec3<do
   }
   std::vector<std::size_t> loop = hull_2d(v, 0.0);
   if (loop.size() < 3) return 1e300;
+  // the loop's edges with length (start a, direction e, length), computed once for every point
+  struct Edge {
+    std::array<double, 2> a;
+    double ex, ey, len;
+  };
+  std::vector<Edge> edges;
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const auto& a = v[loop[k]];
+    const auto& b = v[loop[(k + 1) % loop.size()]];
+    const double ex = b[0] - a[0], ey = b[1] - a[1];
+    const double len = std::hypot(ex, ey);
+    if (len > 0) edges.push_back({a, ex, ey, len});
+  }
   double worst = 0;
   for (std::size_t i = 0; i < pts_.size(); ++i) {
     const Vec3<double> x = vec_to_double(local_point(static_cast<int>(i)));
     const std::array<double, 2> p{dot(ax, x), dot(bx, x)};
     double out = -1e300;
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-      const auto& a = v[loop[k]];
-      const auto& b = v[loop[(k + 1) % loop.size()]];
-      const double ex = b[0] - a[0], ey = b[1] - a[1];
-      const double len = std::hypot(ex, ey);
-      if (len > 0) out = std::max(out, (ex * (p[1] - a[1]) - ey * (p[0] - a[0])) / -len);
-    }
+    for (const Edge& g : edges)
+      out = std::max(out, (g.ex * (p[1] - g.a[1]) - g.ey * (p[0] - g.a[0])) / -g.len);
     worst = std::max(worst, out);
   }
   return worst / to_double(eps_);

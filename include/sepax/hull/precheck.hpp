@@ -150,7 +150,8 @@ class FaceEdges {
 template <Number T>
 inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::vector<int>& reject, bool flat,
                                     std::vector<std::pair<int, int>>* merges,
-                                    const std::vector<int>* loop_group, std::vector<int>* split) {
+                                    const std::vector<int>* loop_group, std::vector<int>* split,
+                                    ScannedPlanes<T>* scanned) {
   std::vector<int> used;  // the loops' vertices, ascending
   {
     std::vector<char> on_loop(q_.size(), 0);
@@ -265,6 +266,12 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
   }
   if (split != nullptr) {
     std::erase_if(*split, [&](int f) { return !bad[as_index(f)]; });
+  }
+  // (a solid's scanned planes: every used vertex at most conv_tol above each face's passing plane)
+  if (scanned != nullptr) {
+    scanned->planes.clear();
+    if (scan && !flat) scanned->planes = planes;
+    scanned->below = conv_tol;
   }
   for (std::size_t f = 0; f < loops.size() && !flat; ++f) {
     if (bad[f]) continue;

@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory_resource>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -29,6 +30,7 @@
 #include "../tolerances.hpp"
 #include "builder.hpp"
 #include "orientation_filter.hpp"
+#include "plane_tree.hpp"
 
 namespace sepax::hull::detail {
 
@@ -228,13 +230,25 @@ inline bool Builder<T>::sweep() {
     const bool scan = on_count * static_cast<double>(live.size()) <= kHullPointScanPairs;
     const T reach = -(static_cast<T>(kHullOutsideBound) * eps_);
     std::vector<int> seen(scan ? 0 : tris_.size(), -1), queue;
+    // (the scan's first live face above a point, through a tree of their planes on many faces: the same
+    // face)
+    std::optional<PlaneTree<T>> planes;
+    if (scan && on_count >= kPlaneTreePoints && live.size() >= as_index(kPlaneTreeFaces)) {
+      planes.emplace(static_cast<int>(live.size()),
+                     [&](int k) -> const Plane<T>& { return tris_[as_index(live[as_index(k)])].pl; });
+    }
     for (int f : live) {
       std::vector<int>& on = tris_[as_index(f)].on;
       std::size_t keep = 0;
       for (std::size_t i = 0; i < on.size(); ++i) {
         const int p = on[i];
         int out = -1;
-        if (scan) {
+        if (scan && planes) {
+          const int k = planes->first_above(local_point(p), threshold(p), [&](int j) {
+            return height(tris_[as_index(live[as_index(j)])].pl, p);
+          });
+          if (k >= 0) out = live[as_index(k)];
+        } else if (scan) {
           for (std::size_t k = 0; k < live.size() && out < 0; ++k)
             if (height(tris_[as_index(live[k])].pl, p) > threshold(p)) out = live[k];
         } else {
@@ -375,8 +389,11 @@ inline void Builder<T>::expand() {
     }
     // horizon: directed edges from visible to non-visible faces, as a cycle
     // (starting at the first vertex in the hash map's order: the order of
-    // the new faces steers later float decisions, so it is kept as it is)
-    std::unordered_map<int, std::pair<int, int>> next;  // from -> (to, outside face)
+    // the new faces steers later float decisions, so it is kept as it is;
+    // the map's nodes and buckets come from a buffer kept between eyes,
+    // which leaves its order unchanged)
+    std::pmr::monotonic_buffer_resource pool(horizon_pool_.data(), horizon_pool_.size());
+    std::pmr::unordered_map<int, std::pair<int, int>> next(&pool);  // from -> (to, outside face)
     bool simple = true;
     for (int f : visible) {
       const Tri& t = tris_[as_index(f)];
@@ -456,13 +473,14 @@ inline void Builder<T>::expand() {
         if (!kept) reassign(v);
       }
     }
+    std::vector<int>& pts = moved_;
     for (int f : visible) {
       Tri& t = tris_[as_index(f)];
       t.alive = false;
-      std::vector<int> pts = std::move(t.conflict);
-      t.conflict.clear();
+      pts.assign(t.conflict.begin(), t.conflict.end());
       pts.insert(pts.end(), t.on.begin(), t.on.end());
-      t.on.clear();
+      std::vector<int>().swap(t.conflict);  // (a dead face keeps no storage)
+      std::vector<int>().swap(t.on);
       for (int p : pts) reassign(p);
     }
   }

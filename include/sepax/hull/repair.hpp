@@ -24,6 +24,7 @@
 #include "builder.hpp"
 #include "fallbacks.hpp"
 #include "hull_distance.hpp"
+#include "plane_tree.hpp"
 
 namespace sepax::hull::detail {
 
@@ -162,6 +163,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::try_tent(const ConvexPolyh
 template <Number T>
 inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside,
                                          double& height) const {
+  // (a hull with every point a vertex measures nothing: no polygons or climb to prepare)
+  if (std::find(out_vertex_.begin(), out_vertex_.end(), char{0}) == out_vertex_.end()) return 0;
   double max_abs = 0;
   for (std::size_t i = 0; i < pts_.size(); ++i)
     for (int c = 0; c < 3; ++c)
@@ -177,6 +180,7 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
   std::vector<int> near;        // large solids: the faces measured for a point near the surface
   std::vector<double> heights;  // (polygon_distance's scratch)
   std::vector<int> seen(faces.size(), -1);
+  std::optional<PlaneTree<T>> planes;  // (h's face planes, built when a point is measured against all)
   for (std::size_t i = 0; i < pts_.size(); ++i) {
     if (out_vertex_[i]) continue;  // (the pre-check held it within conv_tol = 2 eps)
     const int p = static_cast<int>(i);
@@ -204,7 +208,17 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
       }
       subset = &near;
     } else {
-      for (int f = 0; f < h.face_count(); ++f) hp = std::max(hp, plane_height(f));
+      // the largest height above every face plane (on many faces through the tree of planes: the value
+      // of the pass)
+      if (h.face_count() < kPlaneTreeFaces) {
+        for (int f = 0; f < h.face_count(); ++f) hp = std::max(hp, plane_height(f));
+      } else {
+        if (!planes) planes.emplace(h.face_count(), [&](int f) -> const Plane<T>& { return h.plane(f); });
+        const T top = planes->max_height(input_point(p), [&](int f) {
+          return T(dot(h.plane(f).normal, input_point(p)) - h.plane(f).offset);
+        });
+        hp = std::max(hp, to_double(top));
+      }
     }
     hp -= slack;
     height = std::max(height, hp / e);

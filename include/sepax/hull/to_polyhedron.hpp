@@ -8,13 +8,17 @@
 //   2. float T, a solid: topology, plane triples and derived data as from_faces builds them; validation
 //      with the local convexity certificate (linear), then, on shapes small enough that from_faces scans
 //      (faces x vertices <= kConvexityScanPairs), every vertex against every face plane through a
-//      VertexTree, which skips only vertices it proves within the convexity tolerance.  The shape is
+//      VertexTree, which skips only vertices it proves within the convexity tolerance, and skips the faces
+//      whose planes the builder's pre-check scanned, bit for bit, with a margin for rounding.  The shape is
 //      accepted exactly when from_faces accepts it: the scan rejects every vertex above a plane by more
 //      than the tolerance, which is what the full scan, the certificate and the inward-faces test reject.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -32,13 +36,25 @@
 
 namespace sepax::hull::detail {
 
+/// Float T: planes the builder's pre-check scanned (precheck.hpp): every output vertex has a computed height
+/// T(dot(n, x) - off) of at most below above each of them.
+template <class T>
+struct ScannedPlanes {
+  std::vector<Plane<T>> planes;
+  T below = T(0);
+};
+
 /// ConvexPolyhedron<T>::from_faces for the hull builder (a friend of ConvexPolyhedron).
 template <class T>
 struct HullPolyhedron {
-  /// doubles (exact T): the vertices as doubles, each exactly equal to its vertex, or null.
+  /// doubles (exact T): the vertices as doubles, each exactly equal to its vertex, or null.  scanned (float
+  /// T): planes every vertex is known to be at most a height below, or null; a face whose plane is one of
+  /// them bit for bit, with that height and the rounding of evaluating it again within the convexity
+  /// tolerance (VertexTree::height_holds), needs no scan: the scan would compute heights within it.
   static ConvexPolyhedron<T> from_faces(std::vector<Vec3<T>> vertices,
                                         const std::vector<std::vector<int>>& faces,
-                                        const std::vector<Vec3<double>>* doubles = nullptr) {
+                                        const std::vector<Vec3<double>>* doubles = nullptr,
+                                        const ScannedPlanes<T>* scanned = nullptr) {
     if (faces.size() == 2) return ConvexPolyhedron<T>::from_faces(std::move(vertices), faces);  // flat
     // a solid: topology, plane triples and planes as from_faces builds them
     ConvexPolyhedron<T> p;
@@ -57,11 +73,25 @@ struct HullPolyhedron {
       if (static_cast<double>(p.face_count()) * static_cast<double>(p.vertex_count()) > kConvexityScanPairs)
         return p;  // (what from_faces checks on a large shape: the certificate alone)
       const T conv_tol = p.height_tolerance(Tolerances<T>::kConvexity);
-      std::vector<int> all(as_index(p.vertex_count()));
-      for (int v = 0; v < p.vertex_count(); ++v) all[as_index(v)] = v;
-      const VertexTree<T> tree(all, [&](int v) { return p.vertex(v); });
+      std::array<double, 3> mag{0, 0, 0};  // max |x_i| over the vertices
+      for (int v = 0; v < p.vertex_count(); ++v)
+        for (int c = 0; c < 3; ++c)
+          mag[as_index(c)] = std::max(mag[as_index(c)], std::abs(static_cast<double>(p.vertex(v)[c])));
+      auto known = [&](int f) {
+        if (scanned == nullptr || as_index(f) >= scanned->planes.size()) return false;
+        const Plane<T>& q = scanned->planes[as_index(f)];
+        return q.normal == p.plane(f).normal && q.offset == p.plane(f).offset &&
+               VertexTree<T>::height_holds(q, mag, scanned->below, conv_tol);
+      };
+      std::optional<VertexTree<T>> tree;  // (built when a face needs the scan)
       for (int f = 0; f < p.face_count(); ++f) {
-        tree.may_exceed(p.plane(f), conv_tol, [&](int v) {
+        if (known(f)) continue;
+        if (!tree) {
+          std::vector<int> all(as_index(p.vertex_count()));
+          for (int v = 0; v < p.vertex_count(); ++v) all[as_index(v)] = v;
+          tree.emplace(all, [&](int v) { return p.vertex(v); });
+        }
+        tree->may_exceed(p.plane(f), conv_tol, [&](int v) {
           const T h = p.height(f, p.vertex(v));
           if (h > conv_tol) {
             ConvexPolyhedron<T>::fail(ErrorCode::NotConvex, "not convex: vertex " + std::to_string(v) +

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -21,6 +22,7 @@
 #include "../convex_polyhedron.hpp"
 #include "../number_traits.hpp"
 #include "../vec3.hpp"
+#include "box_tree.hpp"
 #include "index.hpp"
 
 namespace sepax::hull::detail {
@@ -33,13 +35,7 @@ class VertexTree {
  public:
   /// The tree of the vertices ids, at point(id).
   template <class Point>
-  VertexTree(const std::vector<int>& ids, Point&& point) {
-    items_.reserve(ids.size());
-    for (int v : ids) items_.push_back(Item{point(v), v});
-    if (items_.empty()) return;
-    nodes_.push_back(fill(0, static_cast<int>(items_.size())));
-    expand(0);
-  }
+  VertexTree(const std::vector<int>& ids, Point&& point) : tree_(items(ids, point)) {}
 
   /// Calls visit(v) for every vertex v whose computed height T(dot(n, x_v) - off) may exceed limit; every
   /// vertex not visited has a computed height at most limit (with or without FMA contraction).
@@ -58,23 +54,14 @@ class VertexTree {
   /// values fail the test (the box is then opened).
   template <class F>
   void may_exceed(const Plane<T>& pl, T limit, F&& visit) const {
-    if (nodes_.empty()) return;
     const double n0 = static_cast<double>(pl.normal[0]), n1 = static_cast<double>(pl.normal[1]),
                  n2 = static_cast<double>(pl.normal[2]), off = static_cast<double>(pl.offset);
     const double lim = static_cast<double>(limit);
-    int stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node& nd = nodes_[as_index(stack[--top])];
-      if (at_most(nd, n0, n1, n2, off, lim)) continue;
-      if (nd.left < 0) {
-        for (int i = nd.begin; i < nd.end; ++i) visit(items_[as_index(i)].id);
-      } else {
-        stack[top++] = nd.left;
-        stack[top++] = nd.left + 1;
-      }
-    }
+    tree_.walk(
+        false, [&](const Node& nd) { return at_most(nd, n0, n1, n2, off, lim); },
+        [&](const Node& nd) {
+          for (int i = nd.begin; i < nd.end; ++i) visit(tree_.items()[as_index(i)].id);
+        });
   }
 
   /// The largest computed height T(dot(n, x) - off) over the vertices: the value a pass over every vertex
@@ -84,44 +71,53 @@ class VertexTree {
   template <class Height>
   T max_height(const Plane<T>& pl, Height&& height) const {
     T best = -std::numeric_limits<T>::infinity();
-    if (nodes_.empty()) return best;
     const double n0 = static_cast<double>(pl.normal[0]), n1 = static_cast<double>(pl.normal[1]),
                  n2 = static_cast<double>(pl.normal[2]), off = static_cast<double>(pl.offset);
-    int stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node& nd = nodes_[as_index(stack[--top])];
-      if (at_most(nd, n0, n1, n2, off, static_cast<double>(best))) continue;
-      if (nd.left < 0) {
-        for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(items_[as_index(i)].id));
-      } else {
-        stack[top++] = nd.left + 1;
-        stack[top++] = nd.left;  // (the left child first)
-      }
-    }
+    tree_.walk(
+        true, [&](const Node& nd) { return at_most(nd, n0, n1, n2, off, static_cast<double>(best)); },
+        [&](const Node& nd) {
+          for (int i = nd.begin; i < nd.end; ++i)
+            best = std::max(best, height(tree_.items()[as_index(i)].id));
+        });
     return best;
   }
 
+  /// Whether every vertex x with |x_i| <= mag_i whose computed height T(dot(n, x) - off) was found at most
+  /// below, evaluated anywhere (with or without FMA contraction), also has a computed height at most limit.
+  ///
+  /// Bound.  Each evaluation is within gamma_4(T) S + 4 eta(T) of the exact n.x - off (may_exceed's bound,
+  /// S = sum |n_i| mag_i + |off|), so two evaluations differ by at most 2 gamma_4(T) S + 8 eta(T).  The
+  /// margin is computed in double as kSlack S + kTiny (kSlack = 2 (gamma_4(T) + gamma_4(double)) >= the
+  /// 2 gamma_4(T) needed, with the factor of may_exceed covering the rounding of S; kTiny >= 8 eta(T)).
+  /// The test fl(below + margin) <= fl(limit (1 - 4u)) (u of double) implies below + margin < limit: the
+  /// sum of two non-negative doubles is rounded down by at most a factor (1 - u).  Non-finite values fail.
+  static bool height_holds(const Plane<T>& pl, const std::array<double, 3>& mag, T below, T limit) {
+    const double s = std::abs(static_cast<double>(pl.normal[0])) * mag[0] +
+                     std::abs(static_cast<double>(pl.normal[1])) * mag[1] +
+                     std::abs(static_cast<double>(pl.normal[2])) * mag[2] +
+                     std::abs(static_cast<double>(pl.offset));
+    const double b = static_cast<double>(below);
+    if (!(b >= 0)) return false;
+    constexpr double kShrink = 1 - 4 * number_traits<double>::unit_roundoff;
+    return b + (kSlack * s + kTiny) <= static_cast<double>(limit) * kShrink;
+  }
+
  private:
-  static constexpr int kLeaf = 8;  ///< vertices per leaf at most
-  static constexpr double gamma4(double u) { return 4 * u / (1 - 4 * u); }
-  static constexpr double kSlack =
-      2 * (gamma4(number_traits<T>::unit_roundoff) + gamma4(number_traits<double>::unit_roundoff));
-  static constexpr double kTiny = 64 * static_cast<double>(std::numeric_limits<T>::min());
+  using Node = typename BoxTree<3>::Node;
+  static constexpr double kSlack = DotBound<T>::kSlack;
+  static constexpr double kTiny = DotBound<T>::kTiny;
 
-  struct Node {
-    double lo[3], hi[3], mag[3];  ///< box (exact: T widens exactly to double); mag_i = max(|lo_i|, |hi_i|)
-    int begin = 0, end = 0;       ///< items_[begin, end)
-    int left = -1;                ///< children left, left + 1 (-1: a leaf)
-  };
-
-  struct Item {
-    Vec3<T> x;
-    int id;
-  };
-
-  const Vec3<T>& at(int i) const { return items_[as_index(i)].x; }
+  /// The vertices as tree items (T widens exactly to double).
+  template <class Point>
+  static std::vector<typename BoxTree<3>::Item> items(const std::vector<int>& ids, Point& point) {
+    std::vector<typename BoxTree<3>::Item> out;
+    out.reserve(ids.size());
+    for (int v : ids) {
+      const Vec3<T>& x = point(v);
+      out.push_back({{static_cast<double>(x[0]), static_cast<double>(x[1]), static_cast<double>(x[2])}, v});
+    }
+    return out;
+  }
 
   /// Whether the box of nd proves every computed height of its vertices at most lim (may_exceed's bound).
   static bool at_most(const Node& nd, double n0, double n1, double n2, double off, double lim) {
@@ -138,42 +134,7 @@ class VertexTree {
     return m + (kSlack * s + kTiny) <= lim;
   }
 
-  Node fill(int b, int e) const {
-    Node nd;
-    nd.begin = b;
-    nd.end = e;
-    for (int c = 0; c < 3; ++c) nd.lo[c] = nd.hi[c] = static_cast<double>(at(b)[c]);
-    for (int i = b + 1; i < e; ++i)
-      for (int c = 0; c < 3; ++c) {
-        nd.lo[c] = std::min(nd.lo[c], static_cast<double>(at(i)[c]));
-        nd.hi[c] = std::max(nd.hi[c], static_cast<double>(at(i)[c]));
-      }
-    for (int c = 0; c < 3; ++c) nd.mag[c] = std::max(std::abs(nd.lo[c]), std::abs(nd.hi[c]));
-    return nd;
-  }
-
-  /// Median split of node id on its box's widest axis, recursively down to leaves of kLeaf vertices: a
-  /// depth of at most log2(n / kLeaf) + 1, so the traversal's stack (depth + 1 entries) fits 64 for any
-  /// int count.
-  void expand(int id) {
-    Node nd = nodes_[as_index(id)];
-    if (nd.end - nd.begin <= kLeaf) return;
-    int axis = 0;
-    for (int c = 1; c < 3; ++c)
-      if (nd.hi[c] - nd.lo[c] > nd.hi[axis] - nd.lo[axis]) axis = c;
-    const int mid = nd.begin + (nd.end - nd.begin) / 2;
-    std::nth_element(items_.begin() + nd.begin, items_.begin() + mid, items_.begin() + nd.end,
-                     [&](const Item& p, const Item& q) { return p.x[axis] < q.x[axis]; });
-    const int left = static_cast<int>(nodes_.size());
-    nodes_.push_back(fill(nd.begin, mid));
-    nodes_.push_back(fill(mid, nd.end));
-    nodes_[as_index(id)].left = left;
-    expand(left);
-    expand(left + 1);
-  }
-
-  std::vector<Item> items_;
-  std::vector<Node> nodes_;
+  BoxTree<3> tree_;
 };
 
 }  // namespace sepax::hull::detail

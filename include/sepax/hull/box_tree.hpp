@@ -1,0 +1,117 @@
+// sepax/hull/box_tree.hpp
+//
+// Float T: the tree of boxes under VertexTree (vertices, D = 3) and PlaneTree (planes as (n, off), D = 4):
+//   1. BoxTree<D>: items of D coordinates (exactly as doubles) in a binary tree of bounding boxes, median
+//      splits on the widest coordinate down to leaves of kLeaf items;
+//   2. DotBound<T>: the slack of the trees' box tests, for computed 4-term dot products in T bounded in
+//      double (derived in VertexTree::may_exceed).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "../number_traits.hpp"
+#include "index.hpp"
+
+namespace sepax::hull::detail {
+
+/// The rounding slack of a box test on a computed 4-term dot product in T, bounded in double:
+/// kSlack = 2 (gamma_4(T) + gamma_4(double)) relative to the sum of the terms' magnitudes, kTiny = 64 min(T)
+/// (>= 8 eta(T), eta half the smallest subnormal) absolute (VertexTree::may_exceed derives them).
+template <class T>
+struct DotBound {
+  static constexpr double gamma4(double u) { return 4 * u / (1 - 4 * u); }
+  static constexpr double kSlack =
+      2 * (gamma4(number_traits<T>::unit_roundoff) + gamma4(number_traits<double>::unit_roundoff));
+  static constexpr double kTiny = 64 * static_cast<double>(std::numeric_limits<T>::min());
+};
+
+/// Items (an id and D coordinates) in a binary tree of bounding boxes.
+template <int D>
+class BoxTree {
+ public:
+  struct Item {
+    std::array<double, D> c;
+    int id;
+  };
+  struct Node {
+    double lo[D], hi[D], mag[D];  ///< box; mag_i = max(|lo_i|, |hi_i|)
+    int begin = 0, end = 0;       ///< items()[begin, end)
+    int left = -1;                ///< children left, left + 1 (-1: a leaf)
+  };
+
+  BoxTree() = default;
+  explicit BoxTree(std::vector<Item> items) : items_(std::move(items)) {
+    if (items_.empty()) return;
+    nodes_.push_back(fill(0, static_cast<int>(items_.size())));
+    expand(0);
+  }
+
+  const std::vector<Item>& items() const { return items_; }
+  const std::vector<Node>& nodes() const { return nodes_; }
+
+  /// Depth first from the root: a node for which skip(node) holds is passed over with its subtree; every
+  /// other leaf is handed to leaf(node); children are entered left first when left_first, else right first.
+  template <class Skip, class Leaf>
+  void walk(bool left_first, Skip&& skip, Leaf&& leaf) const {
+    if (nodes_.empty()) return;
+    int stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& nd = nodes_[as_index(stack[--top])];
+      if (skip(nd)) continue;
+      if (nd.left < 0) {
+        leaf(nd);
+      } else {
+        stack[top++] = left_first ? nd.left + 1 : nd.left;
+        stack[top++] = left_first ? nd.left : nd.left + 1;
+      }
+    }
+  }
+
+ private:
+  static constexpr int kLeaf = 8;  ///< items per leaf at most
+
+  Node fill(int b, int e) const {
+    Node nd;
+    nd.begin = b;
+    nd.end = e;
+    for (int c = 0; c < D; ++c) nd.lo[c] = nd.hi[c] = items_[as_index(b)].c[as_index(c)];
+    for (int i = b + 1; i < e; ++i)
+      for (int c = 0; c < D; ++c) {
+        nd.lo[c] = std::min(nd.lo[c], items_[as_index(i)].c[as_index(c)]);
+        nd.hi[c] = std::max(nd.hi[c], items_[as_index(i)].c[as_index(c)]);
+      }
+    for (int c = 0; c < D; ++c) nd.mag[c] = std::max(std::abs(nd.lo[c]), std::abs(nd.hi[c]));
+    return nd;
+  }
+
+  /// Median split of node id on its box's widest coordinate, recursively down to leaves of kLeaf items: a
+  /// depth of at most log2(n / kLeaf) + 1, so a traversal's stack (depth + 1 entries) fits 64 for any int
+  /// count.
+  void expand(int id) {
+    Node nd = nodes_[as_index(id)];
+    if (nd.end - nd.begin <= kLeaf) return;
+    int axis = 0;
+    for (int c = 1; c < D; ++c)
+      if (nd.hi[c] - nd.lo[c] > nd.hi[axis] - nd.lo[axis]) axis = c;
+    const int mid = nd.begin + (nd.end - nd.begin) / 2;
+    std::nth_element(items_.begin() + nd.begin, items_.begin() + mid, items_.begin() + nd.end,
+                     [&](const Item& p, const Item& q) { return p.c[as_index(axis)] < q.c[as_index(axis)]; });
+    const int left = static_cast<int>(nodes_.size());
+    nodes_.push_back(fill(nd.begin, mid));
+    nodes_.push_back(fill(mid, nd.end));
+    nodes_[as_index(id)].left = left;
+    expand(left);
+    expand(left + 1);
+  }
+
+  std::vector<Item> items_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace sepax::hull::detail
