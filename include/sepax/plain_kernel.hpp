@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "sat_kernel.hpp"
@@ -109,6 +110,24 @@ class PlainKernel {
       if (minkowski_face(ea, eb)) out[n++] = eb;
     }
     return n;
+  }
+
+  /// Optional member (sat_kernel.hpp, HasEdgeWedge): vertex x of B strictly
+  /// inside the wedge of edge e of A, from the signs of (E x n_s).w in T.
+  /// Exact T: exact (the stored normals are positive multiples of the
+  /// planes' normals).  Float and double: E is first scaled by a power of two
+  /// to max |E_i| in [1, 2), so E x n (n unit) is O(1) and the product with w
+  /// neither overflows nor underflows where w itself does not.
+  bool in_edge_wedge_a(int e, int x) const {
+    Vec3<T> d = a_.edge_direction(e);
+    if constexpr (!number_traits<T>::is_exact) {
+      const T m = detail::max_abs2(d, d);
+      if (!(m > T(0) && m <= std::numeric_limits<T>::max())) return false;  // no direction: no wedge
+      d = detail::scale_pow2(d, detail::pow2_exponent(m));
+    }
+    const Vec3<T> w = diff(b_.vertex(x), a_.vertex(a_.edge_tail(e)));
+    return sign_of(dot(cross(d, a_.edge_normal(e, 0)), w)) > 0 &&
+           sign_of(dot(cross(d, a_.edge_normal(e, 1)), w)) < 0;
   }
 
   bool edges_parallel(int ea, int eb) const {

@@ -240,6 +240,23 @@ concept HasCompareMargin = requires(const K k, const Separation<typename K::FT>&
   { k.compare_margin(s, f, m) } -> std::same_as<int>;
 };
 
+/// Optional kernel member (not part of SatKernel; PlainKernel and
+/// RobustKernel have it):
+///   bool in_edge_wedge_a(int e, int x)
+/// true when vertex x of B lies strictly inside the wedge of edge e of A: with
+/// E = head - tail (parallel to n0 x n1, n_s the normal of edge_face(e, s))
+/// and w = x - tail, (E x n0).w > 0 and (E x n1).w < 0, i.e. the component
+/// of w orthogonal to E points strictly between n0 and n1.  Exact for exact
+/// T and under policy::Robust (n_s the exact normal of the face's plane
+/// triple); the signs of the T values for plain float/double.  The
+/// traversal's arc bound uses it when the best is > 0: for x outside the open
+/// wedge, max over the arc's unit normals n of n.w is max(n0.w, n1.w), the
+/// two heights of x (docs/traversal.md, "The wedge bound").
+template <class K>
+concept HasEdgeWedge = requires(const K k, int i) {
+  { k.in_edge_wedge_a(i, i) } -> std::same_as<bool>;
+};
+
 /// Throws InvalidInput (BadScale) unless opt.margin is finite and >= 0.
 inline void check_options(const SatOptions& opt) {
   if (!(opt.margin >= 0.0) || !(opt.margin <= std::numeric_limits<double>::max())) {

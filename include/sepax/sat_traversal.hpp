@@ -153,7 +153,7 @@ class Traversal : public TraversalArcWalk<K> {
             continue;
           }
         }
-        if (arc_below_best(s0, s1, f0, f1)) {
+        if (arc_below_best(ea, s0, s1, f0, f1)) {
           ++pruned;
           continue;
         }

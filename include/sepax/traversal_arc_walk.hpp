@@ -121,21 +121,22 @@ class TraversalArcWalk : public TraversalClimb<K> {
   //
   // Before the walk, the arc bound (arc_below_best) is tried again with the
   // support vertices the ends are climbed to: x = v0, f0's support, prunes
-  // the arc when both heights of v0 are exactly below the best.  Below f0
+  // the arc when both heights of v0 are exactly below the best and v0 is not
+  // strictly inside the edge's wedge (implied with a best <= 0).  Below f0
   // that is known when f0 was cut off (v0 is at most as high there as the
   // cut-off vertex, which was below an earlier best), else asked; then below
   // f1.  If it prunes, f1 is not climbed.  Then likewise x = v1 (f1's
-  // support) after f1's climb.  All exact decisions (face_below_best), taken
-  // in the same order by every kernel.  At N = 256 (overlapping sphere
-  // hulls) the walked arcs drop from ~12 to ~4 per query and the crossing
-  // tests from 50 to 18.
+  // support) after f1's climb.  All exact decisions (face_below_best,
+  // in_edge_wedge_a), taken in the same order by every kernel.  At N = 256
+  // (overlapping sphere hulls) the walked arcs drop from ~12 to ~4 per query
+  // and the crossing tests from 50 to 18.
   bool arc(FaceScratch& states, int ea, int f0, int f1) {
     const bool cut0 = !(states[f0] & kCertified), cut1 = !(states[f1] & kCertified);
-    const bool bound = prune_arcs_ && best_nonpositive();
+    const bool bound = prune_arcs_ && best_.has();
     int s0 = certify(states, f0);
-    if (bound && support_bounds_arc(f0, cut0, s0, f1)) return false;
+    if (bound && support_bounds_arc(ea, f0, cut0, s0, f1)) return false;
     int s1 = certify(states, f1);
-    if (bound && support_bounds_arc(f1, cut1, s1, f0)) return false;
+    if (bound && support_bounds_arc(ea, f1, cut1, s1, f0)) return false;
     bool forward;
     int v;
     if (!(s0 & kTie)) {
@@ -177,10 +178,11 @@ class TraversalArcWalk : public TraversalClimb<K> {
         // The crossing's normal n lies on the arc and B's support along it is
         // the crossed edge (both ends): its separation is n.(v - a_tail) for
         // the vertex v just entered.  When v's heights over both end faces
-        // are exactly below the best, arc_below_best's bound with x = v holds
+        // are exactly below the best and v is outside the edge's wedge,
+        // arc_below_best's bound with x = v holds
         // for every n on the arc, not only this crossing's: every Minkowski
         // face left on the arc is exactly below the best, and the walk ends.
-        if (crossing_below_best(f0, f1, v)) {
+        if (crossing_below_best(ea, f0, f1, v)) {
           ++ts_.pruned_crossings;
           return false;
         }

@@ -8,8 +8,10 @@
 //     T thresholds that decide most height comparisons with one comparison;
 //   * face_below_best(): a vertex's height above a face is exactly below the
 //     best, so the face's separation is (a climb's cutoff, a probe, a seed);
-//   * arc_below_best(), cut_end_bounds(): two heights bound every Minkowski
-//     face on an arc of a solid A below a best <= 0: the arc is skipped;
+//   * arc_below_best(): two heights of a vertex outside the edge's wedge
+//     bound every Minkowski face on an arc of a solid A below the best: the
+//     arc is skipped (with a best <= 0 the wedge test is implied);
+//     cut_end_bounds() the same for a chunk of arcs (best <= 0 only);
 //     support_bounds_arc() the same with the ends' support vertices;
 //   * crossing_below_best(): one crossing of an arc walk, likewise.
 // Built on traversal_state.hpp; traversal_climb.hpp builds on it.
@@ -188,40 +190,63 @@ class TraversalPruning : public TraversalState<K> {
 
   // Arc pruning.  For a unit n on the (short, A not flat) arc of eA from
   // n0 = n(f0) to n1 = n(f1), A's support along n is eA, so the separation
-  // along n is min_B n.b - n.a_tail <= n.(x - a_tail) for any vertex x of B.
-  // With n = (a n0 + b n1)/|a n0 + b n1| (a, b >= 0), n0.(x - a_tail) =
-  // height(f0, x) and n1.(x - a_tail) = height(f1, x) (a_tail lies on both
-  // faces), and |a n0 + b n1| <= a + b: if both heights are <= m <= 0 then
-  // n.(x - a_tail) <= (a + b) m / |a n0 + b n1| <= m.  So when both heights
-  // are exactly below a best that is <= 0, every Minkowski face on the arc
-  // (its exact separation is the separation along its normal) is exactly
-  // below the best, and the arc is skipped.  x: the vertex stored for f0 or f1.
-  // All three decisions are exact (k.compare, k.sign), so policy::Robust
-  // prunes exactly where exact arithmetic prunes.
+  // along n is min_B n.b - n.a_tail <= n.w, w = x - a_tail, for any vertex x
+  // of B.  n0.w = height(f0, x) and n1.w = height(f1, x) (a_tail lies on
+  // both faces).  The arc's normals lie in the plane orthogonal to eA, where
+  // n.w = |w'| cos(angle(n, w')), w' the part of w in that plane: its maximum
+  // over the arc is |w'| if w' points strictly between n0 and n1 (x inside
+  // the wedge of eA), else the larger of the two heights (the cosine falls
+  // off on both sides of w', and the arc, shorter than pi, misses w').  So
+  // when both heights of x are exactly below the best and x is not strictly
+  // inside the wedge (k.in_edge_wedge_a, exact), every Minkowski face on the
+  // arc (its exact separation is the separation along its normal) is exactly
+  // below the best, and the arc is skipped.  With a best <= 0 the wedge test
+  // is not needed: x inside the wedge has a height > 0 over the nearer end
+  // (w' is within half the arc, less than pi/2, of n0 or n1), so two heights
+  // below a best <= 0 already put x outside.  Kernels without the wedge test
+  // prune only with a best <= 0.  x: the vertex stored for f0 or f1.
+  // Every decision is exact (k.compare, k.sign, in_edge_wedge_a), so
+  // policy::Robust prunes exactly where exact arithmetic prunes.
   // A face whose climb was cut off has its stored vertex's height exactly
   // below an earlier best, hence below the current one: not asked again.
-  SEPAX_TRAVERSAL_INLINE bool arc_below_best(int s0, int s1, int f0, int f1) {
-    if (!prune_arcs_ || !best_nonpositive()) return false;
+  SEPAX_TRAVERSAL_INLINE bool arc_below_best(int ea, int s0, int s1, int f0, int f1) {
+    if (!prune_arcs_ || !best_.has()) return false;
     const int x0 = s0 >> 2, x1 = s1 >> 2;
     if (!(s0 & kCertified)) {
-      if (!(s1 & kCertified) && x0 == x1) return true;                         // both known below, same x
-      if (face_below_best<true>(f1, x0)) return true;                          // x = x0
-      return !(s1 & kCertified) && x1 != x0 && face_below_best<true>(f0, x1);  // x = x1
+      if (!(s1 & kCertified) && x0 == x1) return outside_wedge(ea, x0);         // both known below, same x
+      if (face_below_best<true>(f1, x0) && outside_wedge(ea, x0)) return true;  // x = x0
+      return !(s1 & kCertified) && x1 != x0 && face_below_best<true>(f0, x1) && outside_wedge(ea, x1);
     }
-    if (!(s1 & kCertified)) return face_below_best<true>(f0, x1);           // x = x1
-    return face_below_best<true>(f0, x0) && face_below_best<true>(f1, x0);  // x = x0
+    if (!(s1 & kCertified)) return face_below_best<true>(f0, x1) && outside_wedge(ea, x1);  // x = x1
+    return face_below_best<true>(f0, x0) && face_below_best<true>(f1, x0) && outside_wedge(ea, x0);
   }
 
-  SEPAX_TRAVERSAL_INLINE bool crossing_below_best(int f0, int f1, int v) {
-    return prune_arcs_ && best_nonpositive() && face_below_best<true>(f0, v) && face_below_best<true>(f1, v);
+  // The wedge condition of the arc bound for x, whose heights over both ends
+  // of edge ea are exactly below the best: the best is <= 0, or x is not
+  // strictly inside the wedge of ea.
+  SEPAX_TRAVERSAL_INLINE bool outside_wedge(int ea, int x) {
+    if (best_nonpositive()) return true;
+    if constexpr (HasEdgeWedge<K>) {
+      ++ts_.wedge_tests;
+      return !k_.in_edge_wedge_a(ea, x);
+    } else {
+      return false;
+    }
+  }
+
+  SEPAX_TRAVERSAL_INLINE bool crossing_below_best(int ea, int f0, int f1, int v) {
+    return prune_arcs_ && best_.has() && face_below_best<true>(f0, v) && face_below_best<true>(f1, v) &&
+           outside_wedge(ea, v);
   }
 
   // arc()'s bound with x = the support vertex of end f (certified state s;
   // cut: f was cut off before its late climb, so x is known below the best
-  // under f), below f and the other end g; counts the pruned arc.
-  bool support_bounds_arc(int f, bool cut, int s, int g) {
+  // under f), below f and the other end g, outside the wedge of edge ea;
+  // counts the pruned arc.
+  bool support_bounds_arc(int ea, int f, bool cut, int s, int g) {
     const int x = s >> 2;
-    if (!((cut || face_below_best<true>(f, x)) && face_below_best<true>(g, x))) return false;
+    if (!((cut || face_below_best<true>(f, x)) && face_below_best<true>(g, x) && outside_wedge(ea, x)))
+      return false;
     ++ts_.pruned_arcs;
     ++ts_.late_pruned_arcs;
     return true;

@@ -43,6 +43,7 @@ void check_same_steps(const sat::TraversalStats& r, const sat::TraversalStats& e
   CHECK(r.pruned_arcs == e.pruned_arcs);
   CHECK(r.late_pruned_arcs == e.late_pruned_arcs);
   CHECK(r.late_certified == e.late_certified);
+  CHECK(r.wedge_tests == e.wedge_tests);
 }
 
 template <class F>

@@ -342,6 +342,52 @@ TEST_CASE("robust = exact at extreme double scales (1e70 .. 1e300, 1e-75, 1e-150
   CHECK(t.touching > 0);
 }
 
+TEMPLATE_TEST_CASE("robust wedge test = exact wedge test, edge by vertex", "[robust][kernel][wedge]", float,
+                   double) {
+  // Every edge of A against every vertex of B: random posed hulls at several
+  // scales (the filter decides most), and boxes whose vertices lie on each
+  // other's face planes (exact zeros: the exact stage decides).
+  using T = TestType;
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int checked = 0, inside = 0, mismatches = 0;
+  auto check = [&](const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) {
+    const RobustKernel<T> k(a, b);
+    const auto ae = ConvexPolyhedron<mpq_class>::convert_from(a);
+    const auto be = ConvexPolyhedron<mpq_class>::convert_from(b);
+    const PlainKernel<mpq_class> ke(ae, be);
+    for (int e = 0; e < a.edge_count(); ++e) {
+      for (int x = 0; x < b.vertex_count(); ++x) {
+        const bool r = k.in_edge_wedge_a(e, x), q = ke.in_edge_wedge_a(e, x);
+        ++checked;
+        inside += q;
+        if (r != q) {
+          ++mismatches;
+          INFO("edge " << e << ", vertex " << x << ": robust " << r << ", exact " << q);
+          CHECK(false);
+        }
+      }
+    }
+  };
+  std::vector<double> scales{1.0, 1e-4, 1e4};
+  if constexpr (std::is_same_v<T, double>) scales.insert(scales.end(), {1e70, 1e-75, 1e150, 1e-150});
+  const auto ha = random_sphere_hull<T>(rng, 12);
+  const auto hb = random_sphere_hull<T>(rng, 12);
+  for (double s : scales) {
+    for (int i = 0; i < 4; ++i) {
+      check(posed(ha, random_rotation(rng), Vec3<double>(0, 0, 0), s),
+            posed(hb, random_rotation(rng), Vec3<double>(u(rng), u(rng), u(rng)) * (2.0 * s), s));
+    }
+    const auto box = shapes::box<T>(s, s, s);
+    for (double z : {0.0, 1.0, 2.0, 3.5}) {
+      check(box, translated(box, v3<T>(s, 2 * s, z * s)));
+    }
+  }
+  CHECK(mismatches == 0);
+  CHECK(inside > 0);
+  CHECK(inside < checked);
+}
+
 TEST_CASE("policy::Robust for exact types is the plain exact kernel", "[robust][kernel]") {
   STATIC_REQUIRE(std::is_same_v<kernel_t<policy::Robust, mpq_class>, PlainKernel<mpq_class>>);
   STATIC_REQUIRE(SatKernel<RobustKernel<float>>);

@@ -89,6 +89,17 @@ class RobustFaceQueries : public RobustValues<T> {
     return snap(height(b_.plane(f), a_.vertex(va)).num, e_.face_b, Feature::face_b(va, f));
   }
 
+  /// Optional member (sat_kernel.hpp, HasEdgeWedge): vertex x of B strictly
+  /// inside the wedge of edge e of A, exactly: sign((E x N_s).(x - tail)) for
+  /// the exact edge E = head - tail and N_s the plane triple's cross product
+  /// of edge_face(e, s), > 0 for s = 0 and < 0 for s = 1.  Each sign is
+  /// filtered in T with E_wedge(A) (error_bounds.hpp, QueryBounds::wedge_a),
+  /// exact beyond it.
+  SEPAX_ROBUST_INLINE bool in_edge_wedge_a(int e, int x) const {
+    const Vec3<T> w = this->diff(b_.vertex(x), a_.vertex(a_.edge_tail(e)));
+    return wedge_sign(e, 0, x, w) > 0 && wedge_sign(e, 1, x, w) < 0;
+  }
+
   // ---- the traversal's filtered support comparisons (optional members) ----
   // Two vertices u, v of B below face f of A are compared through
   // g = fl(n_f . p) (the support scan's values): |(g_u - g_v) - (N/|N|).(u - v)|
@@ -120,6 +131,26 @@ class RobustFaceQueries : public RobustValues<T> {
   }
 
  protected:
+  // sign((E x N_s).w) of in_edge_wedge_a, w = fl(x - tail): the T value
+  // fl(fl(Ẽ x n_s).w) decides beyond E_wedge(A) when finite.
+  SEPAX_ROBUST_INLINE int wedge_sign(int e, int s, int x, const Vec3<T>& w) const {
+    const T v = dot(cross(a_.edge_direction(e), a_.edge_normal(e, s)), w);
+    const double m = std::abs(static_cast<double>(v));
+    if (m > e_.wedge_a && m <= std::numeric_limits<double>::max()) return v > T(0) ? 1 : -1;
+    return wedge_sign_exact(e, s, x);
+  }
+  SEPAX_ROBUST_COLD int wedge_sign_exact(int e, int s, int x) const {
+    ++fallbacks_;
+    const auto& t = a_.face(a_.edge_face(e, s)).plane_vertices;
+    const Vec3<T>& v0 = a_.vertex(t[0]);
+    const auto n =
+        robust::exact_cross(robust::exact_diff(a_.vertex(t[1]), v0), robust::exact_diff(a_.vertex(t[2]), v0));
+    const Vec3<T>& tail = a_.vertex(a_.edge_tail(e));
+    const auto d = robust::exact_diff(a_.vertex(a_.edge_head(e)), tail);
+    return robust::exact_sign(
+        robust::exact_dot(robust::exact_cross(d, n), robust::exact_diff(b_.vertex(x), tail)));
+  }
+
   // Support vertex of q along -u (lowest index among the exactly lowest).
   SEPAX_ROBUST_COLD FaceQuery<T> side_query(const P& p, int e, const P& q, bool of_a) const {
     ++fallbacks_;
