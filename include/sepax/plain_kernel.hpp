@@ -125,9 +125,9 @@ class PlainKernel {
       if (!(m > T(0) && m <= std::numeric_limits<T>::max())) return false;  // no direction: no wedge
       d = detail::scale_pow2(d, detail::pow2_exponent(m));
     }
-    const Vec3<T> w = diff(b_.vertex(x), a_.vertex(a_.edge_tail(e)));
-    return sign_of(dot(cross(d, a_.edge_normal(e, 0)), w)) > 0 &&
-           sign_of(dot(cross(d, a_.edge_normal(e, 1)), w)) < 0;
+    // (E x n).w = n.(w x E): one cross product for both faces
+    const Vec3<T> c = cross(diff(b_.vertex(x), a_.vertex(a_.edge_tail(e))), d);
+    return sign_of(dot(a_.edge_normal(e, 0), c)) > 0 && sign_of(dot(a_.edge_normal(e, 1), c)) < 0;
   }
 
   bool edges_parallel(int ea, int eb) const {

@@ -291,24 +291,25 @@ struct QueryBounds : ErrorConstants<T> {
   double pre_side = 0, pre_value = 0, pre_norm_sq = 0;
   /// (wedge) E_wedge(A), the traversal's wedge test (RobustKernel::
   /// in_edge_wedge_a): for an edge E = head - tail of A, a face f of A at the
-  /// edge and a vertex x of B, ṽ = fl(fl(Ẽ x n_f) . w̃) with Ẽ = fl(head -
+  /// edge and a vertex x of B, ṽ = fl(n_f . fl(w̃ x Ẽ)) with Ẽ = fl(head -
   /// tail) (the stored edge direction), w̃ = fl(x - tail), all in T, against
-  /// v = (E x N_f/|N_f|) . w, w = x - tail (its sign is sign((E x N_f) . w)).
+  /// v = (N_f/|N_f|) . (w x E) = (E x N_f/|N_f|) . w, w = x - tail (its sign
+  /// is sign((E x N_f) . w)).
   ///  - |Ẽ - E| <= u|E|, |w̃ - w| <= u|w| (one rounding per coordinate),
   ///    |n_f - N_f/|N_f|| <= δ_A (normal_error), |n_f| <= 1 + δ_A.
-  ///  - |det(a, b, c)| <= |a||b||c|, so det(Ẽ, n, w̃) - det(E, n*, w) =
-  ///    det(Ẽ - E, n, w̃) + det(E, n - n*, w̃) + det(E, n*, w̃ - w) is at most
+  ///  - |det(a, b, c)| <= |a||b||c|, so det(n, w̃, Ẽ) - det(n*, w, E) =
+  ///    det(n, w̃, Ẽ - E) + det(n - n*, w̃, E) + det(n*, w̃ - w, E) is at most
   ///    |E||w| (u(1+u)(1+δ_A) + δ_A(1+u) + u).
-  ///  - the evaluation: each of the three terms w̃_i (Ẽ_j n_k - Ẽ_k n_j)
+  ///  - the evaluation: each of the three terms n_i (w̃_j Ẽ_k - w̃_k Ẽ_j)
   ///    meets at most 5 roundings (two products, the subtraction, the product
-  ///    by w̃_i, two additions): error <= γ_5 Σ_i |w̃_i|(|Ẽ_j n_k| + |Ẽ_k n_j|)
-  ///    <= √2 γ_5 |w̃||Ẽ||n| (Cauchy-Schwarz) <= √2 γ_5 (1+u)^2 (1+δ_A)|E||w|.
-  ///  - underflow: the six products of Ẽ x n add <= 2η per component, <= 2√3 η
-  ///    |w̃| (1+γ_3) after the product by w̃; the three final products <= 3η
-  ///    (1+γ_2); subnormal additions are exact: <= (4D + 4)η.
+  ///    by n_i, two additions): error <= γ_5 Σ_i |n_i|(|w̃_j Ẽ_k| + |w̃_k Ẽ_j|)
+  ///    <= √2 γ_5 |n||w̃||Ẽ| (Cauchy-Schwarz) <= √2 γ_5 (1+u)^2 (1+δ_A)|E||w|.
+  ///  - underflow: the six products of w̃ x Ẽ add <= 2η per component, <= 2√3
+  ///    η |n| (1+γ_3) after the product by n; the three final products <= 3η
+  ///    (1+γ_2); subnormal additions are exact: <= 7η (|n| < 1.01).
   ///  - |E| <= D_A, |w| <= D (x and tail are in the bbox of A ∪ B); the (1+u)
   ///    factors (at most (1+u)^3) are inside the margin.
-  ///   E_wedge(A) = ((√2 γ_5 + 3u)(1 + δ_A) + δ_A) D D_A (1 + 1e-6) + (4D + 4)η.
+  ///   E_wedge(A) = ((√2 γ_5 + 3u)(1 + δ_A) + δ_A) D D_A (1 + 1e-6) + 8η.
   /// |ṽ| > E_wedge(A), ṽ finite, gives sign v = sign ṽ; an overflow anywhere in
   /// ṽ leaves it infinite or NaN, and the exact stage decides.  FMA
   /// contraction only removes roundings.
@@ -361,7 +362,7 @@ struct QueryBounds : ErrorConstants<T> {
       pre_norm_sq = en * (2 * k * (1 + C::kUd) + en) * C::kMargin;
     }
     arc_lane = arc_a_t < arc_b_t ? arc_b_t : arc_a_t;
-    wedge_a = ((C::kWedgeRound * (1 + da_n) + da_n) * d * da) * C::kMargin + (4 * d + 4) * C::kEta;
+    wedge_a = ((C::kWedgeRound * (1 + da_n) + da_n) * d * da) * C::kMargin + 8 * C::kEta;
   }
 };
 

@@ -96,8 +96,8 @@ class RobustFaceQueries : public RobustValues<T> {
   /// filtered in T with E_wedge(A) (error_bounds.hpp, QueryBounds::wedge_a),
   /// exact beyond it.
   SEPAX_ROBUST_INLINE bool in_edge_wedge_a(int e, int x) const {
-    const Vec3<T> w = this->diff(b_.vertex(x), a_.vertex(a_.edge_tail(e)));
-    return wedge_sign(e, 0, x, w) > 0 && wedge_sign(e, 1, x, w) < 0;
+    const Vec3<T> c = wedge_cross(a_.edge_direction(e), b_.vertex(x), a_.vertex(a_.edge_tail(e)));
+    return wedge_sign(e, 0, x, c) > 0 && wedge_sign(e, 1, x, c) < 0;
   }
 
   // ---- the traversal's filtered support comparisons (optional members) ----
@@ -131,10 +131,18 @@ class RobustFaceQueries : public RobustValues<T> {
   }
 
  protected:
-  // sign((E x N_s).w) of in_edge_wedge_a, w = fl(x - tail): the T value
-  // fl(fl(Ẽ x n_s).w) decides beyond E_wedge(A) when finite.
-  SEPAX_ROBUST_INLINE int wedge_sign(int e, int s, int x, const Vec3<T>& w) const {
-    const T v = dot(cross(a_.edge_direction(e), a_.edge_normal(e, s)), w);
+  // c = fl(w x Ẽ), w = fl(x - tail), Ẽ the stored edge direction, written
+  // out (sepax::cross is not always inlined): (E x n).w = n.(w x E), so one
+  // cross product serves both faces.
+  SEPAX_ROBUST_INLINE static Vec3<T> wedge_cross(const Vec3<T>& d, const Vec3<T>& x, const Vec3<T>& tail) {
+    const T w0 = x[0] - tail[0], w1 = x[1] - tail[1], w2 = x[2] - tail[2];
+    return Vec3<T>(T(w1 * d[2] - w2 * d[1]), T(w2 * d[0] - w0 * d[2]), T(w0 * d[1] - w1 * d[0]));
+  }
+  // sign((E x N_s).w) of in_edge_wedge_a: the T value fl(n_s.c) decides
+  // beyond E_wedge(A) when finite, else the exact stage.
+  SEPAX_ROBUST_INLINE int wedge_sign(int e, int s, int x, const Vec3<T>& c) const {
+    const Vec3<T>& n = a_.edge_normal(e, s);
+    const T v = n[0] * c[0] + n[1] * c[1] + n[2] * c[2];
     const double m = std::abs(static_cast<double>(v));
     if (m > e_.wedge_a && m <= std::numeric_limits<double>::max()) return v > T(0) ? 1 : -1;
     return wedge_sign_exact(e, s, x);
