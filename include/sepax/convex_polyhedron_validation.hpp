@@ -242,7 +242,7 @@ inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
           const int e = detail::pow2_exponent(m);
           ab = detail::scale_pow2(ab, e);
           bc = detail::scale_pow2(bc, e);
-          tol = std::ldexp(tol, -e);
+          tol = detail::scale_value_pow2(tol, e);
         }
         const T turn = dot(pl.normal, cross(ab, bc));
         const T lab = number_traits<T>::sqrt(squared_norm(ab));
