@@ -173,15 +173,16 @@ inline T ConvexPolyhedron<T>::triangle_area2(const Vec3<T>& a, const Vec3<T>& b,
 // the unscaled squares stayed in range.
 template <Number T>
 inline void ConvexPolyhedron<T>::choose_plane_triples() {
+  std::vector<int> loop;     // (face f's vertices; one buffer for every face)
+  std::vector<Vec3<T>> rel;  // (loop vertices relative to loop[0], scaled for float)
   for (int f = 0; f < face_count(); ++f) {
-    const auto loop = face_vertices(f);
+    face_vertices(f, loop);
     const int n = static_cast<int>(loop.size());
     std::array<int, 3> best{loop[0], loop[1], loop[2]};
     if (n == 3) {
       // a triangle: its one triple
     } else if (n <= 16) {
-      std::vector<Vec3<T>> rel;  // loop vertices relative to loop[0] (scaled for float)
-      rel.reserve(static_cast<std::size_t>(n));
+      rel.clear();
       for (int i = 0; i < n; ++i) rel.push_back(Vec3<T>(vertex(loop[i]) - vertex(loop[0])));
       if constexpr (std::is_floating_point_v<T>) {
         T m(0);
