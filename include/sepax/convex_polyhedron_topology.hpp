@@ -44,31 +44,34 @@ inline void ConvexPolyhedron<T>::build_topology(const std::vector<std::vector<in
   };
   half_edges_.clear();
   faces_.clear();
+  half_edges_.reserve(out.size() + 1);  // (a valid surface has exactly out.size())
+  faces_.reserve(faces.size());
+  std::vector<int> loop_edges;  // (face f's half-edges; one buffer for every face)
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const auto& loop = faces[f];
-    const std::string fname = "face " + std::to_string(f);
-    if (loop.size() < 3) fail(ErrorCode::DegenerateFace, fname + " has fewer than 3 vertices");
+    auto fname = [f] { return "face " + std::to_string(f); };  // (for messages)
+    if (loop.size() < 3) fail(ErrorCode::DegenerateFace, fname() + " has fewer than 3 vertices");
     for (std::size_t i = 0; i < loop.size(); ++i) {
       if (loop[i] < 0 || loop[i] >= nv) {
-        fail(ErrorCode::BadIndex, fname + " refers to vertex " + std::to_string(loop[i]) +
+        fail(ErrorCode::BadIndex, fname() + " refers to vertex " + std::to_string(loop[i]) +
                                       ", but there are only " + std::to_string(nv) + " vertices");
       }
       for (std::size_t j = 0; j < i; ++j) {
         if (loop[i] == loop[j]) {
-          fail(ErrorCode::DegenerateFace, fname + " uses vertex " + std::to_string(loop[i]) + " twice");
+          fail(ErrorCode::DegenerateFace, fname() + " uses vertex " + std::to_string(loop[i]) + " twice");
         }
       }
     }
     FaceLoop fl;
     fl.count = static_cast<int>(loop.size());
-    std::vector<int> loop_edges;
+    loop_edges.clear();
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const int u = loop[i];
       const int v = loop[(i + 1) % loop.size()];
       if (seen(u, v) >= 0) {
         fail(ErrorCode::NotManifold,
              "edge " + std::to_string(u) + "->" + std::to_string(v) +
-                 " is used twice in the same direction (second time in " + fname +
+                 " is used twice in the same direction (second time in " + fname() +
                  "): faces are inconsistently oriented or the surface is not a 2-manifold");
       }
       const auto key = std::minmax(u, v);
