@@ -401,13 +401,19 @@ class ConvexPolyhedron {
   /// The face's vertex indices in loop order.
   std::vector<int> face_vertices(int f) const {
     std::vector<int> out;
+    face_vertices(f, out);
+    return out;
+  }
+  /// The face's vertex indices in loop order, into out (cleared first; its capacity is reused, so a loop
+  /// over the faces allocates only while the buffer grows).
+  void face_vertices(int f, std::vector<int>& out) const {
+    out.clear();
     out.reserve(static_cast<std::size_t>(face(f).count));
     int h = face(f).edge;
     for (int i = 0; i < face(f).count; ++i) {
       out.push_back(half_edge(h).origin);
       h = half_edge(h).next;
     }
-    return out;
   }
   /// The face's plane triple as points.
   std::array<Vec3<T>, 3> plane_points(int f) const {

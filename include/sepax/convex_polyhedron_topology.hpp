@@ -44,31 +44,34 @@ inline void ConvexPolyhedron<T>::build_topology(const std::vector<std::vector<in
   };
   half_edges_.clear();
   faces_.clear();
+  half_edges_.reserve(out.size() + 1);  // (a valid surface has exactly out.size())
+  faces_.reserve(faces.size());
+  std::vector<int> loop_edges;  // (face f's half-edges; one buffer for every face)
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const auto& loop = faces[f];
-    const std::string fname = "face " + std::to_string(f);
-    if (loop.size() < 3) fail(ErrorCode::DegenerateFace, fname + " has fewer than 3 vertices");
+    auto fname = [f] { return "face " + std::to_string(f); };  // (for messages)
+    if (loop.size() < 3) fail(ErrorCode::DegenerateFace, fname() + " has fewer than 3 vertices");
     for (std::size_t i = 0; i < loop.size(); ++i) {
       if (loop[i] < 0 || loop[i] >= nv) {
-        fail(ErrorCode::BadIndex, fname + " refers to vertex " + std::to_string(loop[i]) +
+        fail(ErrorCode::BadIndex, fname() + " refers to vertex " + std::to_string(loop[i]) +
                                       ", but there are only " + std::to_string(nv) + " vertices");
       }
       for (std::size_t j = 0; j < i; ++j) {
         if (loop[i] == loop[j]) {
-          fail(ErrorCode::DegenerateFace, fname + " uses vertex " + std::to_string(loop[i]) + " twice");
+          fail(ErrorCode::DegenerateFace, fname() + " uses vertex " + std::to_string(loop[i]) + " twice");
         }
       }
     }
     FaceLoop fl;
     fl.count = static_cast<int>(loop.size());
-    std::vector<int> loop_edges;
+    loop_edges.clear();
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const int u = loop[i];
       const int v = loop[(i + 1) % loop.size()];
       if (seen(u, v) >= 0) {
         fail(ErrorCode::NotManifold,
              "edge " + std::to_string(u) + "->" + std::to_string(v) +
-                 " is used twice in the same direction (second time in " + fname +
+                 " is used twice in the same direction (second time in " + fname() +
                  "): faces are inconsistently oriented or the surface is not a 2-manifold");
       }
       const auto key = std::minmax(u, v);
@@ -173,15 +176,16 @@ inline T ConvexPolyhedron<T>::triangle_area2(const Vec3<T>& a, const Vec3<T>& b,
 // the unscaled squares stayed in range.
 template <Number T>
 inline void ConvexPolyhedron<T>::choose_plane_triples() {
+  std::vector<int> loop;     // (face f's vertices; one buffer for every face)
+  std::vector<Vec3<T>> rel;  // (loop vertices relative to loop[0], scaled for float)
   for (int f = 0; f < face_count(); ++f) {
-    const auto loop = face_vertices(f);
+    face_vertices(f, loop);
     const int n = static_cast<int>(loop.size());
     std::array<int, 3> best{loop[0], loop[1], loop[2]};
     if (n == 3) {
       // a triangle: its one triple
     } else if (n <= 16) {
-      std::vector<Vec3<T>> rel;  // loop vertices relative to loop[0] (scaled for float)
-      rel.reserve(static_cast<std::size_t>(n));
+      rel.clear();
       for (int i = 0; i < n; ++i) rel.push_back(Vec3<T>(vertex(loop[i]) - vertex(loop[0])));
       if constexpr (std::is_floating_point_v<T>) {
         T m(0);

@@ -185,6 +185,7 @@ inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
   const T plan_tol = height_tolerance(Tolerances<T>::kPlanarity);
   const T conv_tol = height_tolerance(Tolerances<T>::kConvexity);
   // faces: non-zero area, planar, convex loops
+  std::vector<int> loop;  // (face f's vertices; one buffer for every face)
   for (int f = 0; f < face_count(); ++f) {
     const auto& pl = plane(f);
     if constexpr (number_traits<T>::is_exact) {
@@ -204,7 +205,7 @@ inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
                  num_str(Tolerances<T>::kSliver) + "); its normal would be rounding noise");
       }
     }
-    const auto loop = face_vertices(f);
+    face_vertices(f, loop);
     const int n = static_cast<int>(loop.size());
     const auto& triple = face(f).plane_vertices;
     for (int i = 0; i < n; ++i) {
@@ -242,7 +243,7 @@ inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
           const int e = detail::pow2_exponent(m);
           ab = detail::scale_pow2(ab, e);
           bc = detail::scale_pow2(bc, e);
-          tol = std::ldexp(tol, -e);
+          tol = detail::scale_value_pow2(tol, e);
         }
         const T turn = dot(pl.normal, cross(ab, bc));
         const T lab = number_traits<T>::sqrt(squared_norm(ab));

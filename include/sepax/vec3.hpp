@@ -9,7 +9,9 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -75,20 +77,51 @@ inline T max_abs2(const Vec3<T>& u, const Vec3<T>& w) {
   return std::max({fabs(u[0]), fabs(u[1]), fabs(u[2]), fabs(w[0]), fabs(w[1]), fabs(w[2])});
 }
 
-/// Binary exponent e of m (finite, > 0): m * 2^-e is in [1, 2).
+/// The bits of float or double as an unsigned integer of the same width, and the layout of its exponent.
+template <class T>
+struct FloatBits {
+  static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>);
+  using Uint = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
+  static constexpr int kMantissaBits = std::numeric_limits<T>::digits - 1;  ///< stored fraction bits
+  static constexpr int kBias = std::numeric_limits<T>::max_exponent - 1;    ///< exponent field of 2^0
+};
+
+/// 2^e for e in T's normal range (min_exponent - 1 <= e <= max_exponent - 1), built from its bits: the
+/// value of std::ldexp(T(1), e), without a library call.  (Outside that range 2^e is subnormal or
+/// overflows; callers take std::ldexp there.)
+template <class T>
+inline T normal_pow2(int e) {
+  using B = FloatBits<T>;
+  return std::bit_cast<T>(
+      static_cast<typename B::Uint>(static_cast<typename B::Uint>(e + B::kBias) << B::kMantissaBits));
+}
+
+/// Binary exponent e of m (finite, > 0): m * 2^-e is in [1, 2).  std::ilogb(m); for a normal m read from
+/// its exponent field.
 template <class T>
 inline int pow2_exponent(T m) {
+  using B = FloatBits<T>;
+  if (m >= std::numeric_limits<T>::min() && m <= std::numeric_limits<T>::max())
+    return static_cast<int>(std::bit_cast<typename B::Uint>(m) >> B::kMantissaBits) - B::kBias;
   return std::ilogb(m);
 }
 
-/// v * 2^-e, component by component (std::ldexp: exact unless a component
-/// becomes subnormal; e may exceed the exponent range of a T factor).  When
-/// 2^-e is a normal T, a product by it: one rounding of the same exact value,
-/// so bit for bit std::ldexp's result (subnormal results included).
+/// x * 2^-e (std::ldexp(x, -e): exact unless the result is subnormal or overflows; e may exceed the
+/// exponent range of a T factor).  When 2^-e is a normal T, a product by normal_pow2(-e): one rounding of
+/// the same exact value, so bit for bit std::ldexp's result (subnormal results and overflow to infinity
+/// included).
+template <class T>
+inline T scale_value_pow2(T x, int e) {
+  if (e > -std::numeric_limits<T>::max_exponent && e < std::numeric_limits<T>::max_exponent - 1)
+    return x * normal_pow2<T>(-e);
+  return std::ldexp(x, -e);
+}
+
+/// v * 2^-e, component by component: scale_value_pow2 of each component (bit for bit std::ldexp's).
 template <class T>
 inline Vec3<T> scale_pow2(const Vec3<T>& v, int e) {
   if (e > -std::numeric_limits<T>::max_exponent && e < std::numeric_limits<T>::max_exponent - 1) {
-    const T s = std::ldexp(T(1), -e);  // 2^-e, a normal number
+    const T s = normal_pow2<T>(-e);
     return Vec3<T>(v[0] * s, v[1] * s, v[2] * s);
   }
   return Vec3<T>(std::ldexp(v[0], -e), std::ldexp(v[1], -e), std::ldexp(v[2], -e));

@@ -7,6 +7,7 @@
 #include <sepax/posing.hpp>
 #include <sepax/shapes.hpp>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -387,6 +388,57 @@ TEMPLATE_TEST_CASE("scale: tolerances stay relative to the extent at every scale
       } else {
         CHECK(f.code == ErrorCode::NonPlanarFace);
       }
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE(
+    "scale: the power-of-two helpers are std::ldexp and std::ilogb bit for bit at every exponent",
+    "[polyhedron][scale]", float, double) {
+  // (the corner tests of validation and the plane triples scale by them)
+  using T = TestType;
+  using L = std::numeric_limits<T>;
+  auto bits = [](T x) { return std::bit_cast<typename detail::FloatBits<T>::Uint>(x); };
+  // normal_pow2: every normal power of two
+  for (int e = L::min_exponent - 1; e <= L::max_exponent - 1; ++e) {
+    INFO("2^" << e);
+    CHECK(bits(detail::normal_pow2<T>(e)) == bits(std::ldexp(T(1), e)));
+  }
+  // pow2_exponent: powers of two and values between them, normal and subnormal
+  for (int e = L::min_exponent - L::digits; e <= L::max_exponent - 1; ++e) {
+    for (const T x :
+         {std::ldexp(T(1), e), std::ldexp(T(1.75), e), std::nextafter(std::ldexp(T(1), e), T(0))}) {
+      INFO(x);
+      if (x > T(0) && x <= L::max()) CHECK(detail::pow2_exponent(x) == std::ilogb(x));
+    }
+  }
+  CHECK(detail::pow2_exponent(L::max()) == std::ilogb(L::max()));
+  CHECK(detail::pow2_exponent(L::denorm_min()) == std::ilogb(L::denorm_min()));
+  // scale_value_pow2 and scale_pow2: x 2^-e for every e that moves a value of T across its whole range
+  // (results exact, subnormal, zero or infinite), against std::ldexp
+  const T values[] = {T(1),
+                      T(-1.5),
+                      T(0.1),
+                      T(0),
+                      T(-0.0),
+                      std::nextafter(T(1), T(2)),
+                      L::min(),
+                      L::denorm_min(),
+                      T(3) * L::denorm_min(),
+                      L::max(),
+                      -std::ldexp(T(1.9), L::max_exponent - 2),
+                      std::ldexp(T(1.3), L::min_exponent - 3)};
+  const int span = L::max_exponent - L::min_exponent + L::digits + 4;
+  for (int e = -span; e <= span; ++e) {
+    for (const T x : values) {
+      INFO(x << " 2^-" << e);
+      CHECK(bits(detail::scale_value_pow2(x, e)) == bits(std::ldexp(x, -e)));
+    }
+    const Vec3<T> v(values[1], values[2], values[8]);
+    const Vec3<T> w = detail::scale_pow2(v, e);
+    for (int c = 0; c < 3; ++c) {
+      INFO("component " << c << " 2^-" << e);
+      CHECK(bits(w[c]) == bits(std::ldexp(v[c], -e)));
     }
   }
 }

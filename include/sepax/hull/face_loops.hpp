@@ -92,6 +92,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     }
     // the loop through the first edge; any other edges form extra loops
     std::vector<int> loop;
+    loop.reserve(edges.size());  // (a disk's loop: one vertex per boundary edge)
     const int start = edges.front().from;
     int cur = start;
     do {

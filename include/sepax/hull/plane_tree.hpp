@@ -55,19 +55,21 @@ class PlaneTree {
   /// 4 eta(T); fl(M) in double >= M - gamma_4(double) S - 4 eta(double).  So every height in the box is at
   /// most lim when fl(M) + (gamma_4(T) + gamma_4(double)) S + 8 eta(T) <= lim, tested with twice that
   /// coefficient (covering the rounding of S and of the final sum, as in VertexTree) and 64 min(T)
-  /// (>= 8 eta(T)).  Non-finite values fail the test (the box is then opened).
+  /// (>= 8 eta(T)).  Non-finite values fail the test (the box is then opened).  S is taken once per point,
+  /// on the root box (root_slack): every box lies inside it, so its a_i bound every box's.
   template <class Height>
   T max_height(const Vec3<T>& x, Height&& height) const {
     T best = -std::numeric_limits<T>::infinity();
     if (tree_.nodes().empty()) return best;
     const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
                                   static_cast<double>(x[2])};
+    const double slack = root_slack(q);
     // (the child with the larger bound first: a high height found early skips more boxes)
     int stack[64];
     double bound[64];
     int top = 0;
     stack[top] = 0;
-    bound[top++] = upper(tree_.nodes()[0], q);
+    bound[top++] = upper(tree_.nodes()[0], q, slack);
     while (top > 0) {
       --top;
       const Node& nd = tree_.nodes()[as_index(stack[top])];
@@ -75,8 +77,8 @@ class PlaneTree {
       if (nd.left < 0) {
         for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(tree_.items()[as_index(i)].id));
       } else {
-        const double bl = upper(tree_.nodes()[as_index(nd.left)], q);
-        const double br = upper(tree_.nodes()[as_index(nd.left + 1)], q);
+        const double bl = upper(tree_.nodes()[as_index(nd.left)], q, slack);
+        const double br = upper(tree_.nodes()[as_index(nd.left + 1)], q, slack);
         const bool left_first = !(br > bl);
         stack[top] = left_first ? nd.left + 1 : nd.left;
         bound[top++] = left_first ? br : bl;
@@ -96,8 +98,9 @@ class PlaneTree {
     const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
                                   static_cast<double>(x[2])};
     const double lim = static_cast<double>(limit);
+    const double slack = root_slack(q);
     tree_.walk(
-        true, [&](const Node& nd) { return upper(nd, q) <= lim; },
+        true, [&](const Node& nd) { return upper(nd, q, slack) <= lim; },
         [&](const Node& nd) {
           for (int i = nd.begin; i < nd.end; ++i) {
             const int f = tree_.items()[as_index(i)].id;
@@ -126,18 +129,27 @@ class PlaneTree {
     return out;
   }
 
+  /// kSlack S + kTiny at x, S taken on the root box: at least the slack of every box of the tree
+  /// (max_height's bound); 0 for an empty tree (no box is tested).
+  double root_slack(const std::array<double, 3>& x) const {
+    if (tree_.nodes().empty()) return 0;
+    const Node& root = tree_.nodes()[0];
+    double s = std::abs(x[0]) * root.mag[0];
+    s = s + std::abs(x[1]) * root.mag[1];
+    s = s + std::abs(x[2]) * root.mag[2];
+    s = s + root.mag[3];
+    return kSlack * s + kTiny;
+  }
+
   /// A bound u with: every computed height of nd's planes at x is at most lim whenever u <= lim
-  /// (max_height's bound; NaN when a value is not finite, so that no comparison skips the box).
-  static double upper(const Node& nd, const std::array<double, 3>& x) {
+  /// (max_height's bound, with slack from root_slack; NaN when a value is not finite, so that no comparison
+  /// skips the box).
+  static double upper(const Node& nd, const std::array<double, 3>& x, double slack) {
     double m = (x[0] > 0 ? nd.hi[0] : nd.lo[0]) * x[0];
     m = m + (x[1] > 0 ? nd.hi[1] : nd.lo[1]) * x[1];
     m = m + (x[2] > 0 ? nd.hi[2] : nd.lo[2]) * x[2];
     m = m - nd.lo[3];
-    double s = std::abs(x[0]) * nd.mag[0];
-    s = s + std::abs(x[1]) * nd.mag[1];
-    s = s + std::abs(x[2]) * nd.mag[2];
-    s = s + nd.mag[3];
-    const double u = m + (kSlack * s + kTiny);
+    const double u = m + slack;
     return std::isfinite(u) ? u : std::numeric_limits<double>::quiet_NaN();
   }
 

@@ -137,13 +137,14 @@ struct HullPolyhedron {
     auto vd = [&](int v) -> const Vec3<double>& { return d[as_index(v)]; };
     const int nf = p.face_count();
     // faces: non-zero area, planar, strictly convex loops
+    std::vector<int> loop;  // (face f's vertices; one buffer for every face)
     for (int f = 0; f < nf; ++f) {
       const auto& t = p.face(f).plane_vertices;
       if (!certainly_nonzero_cross(vd(t[0]), vd(t[1]), vd(t[2])) && is_zero(p.plane(f).normal)) {
         P::fail(ErrorCode::DegenerateFace,
                 "face " + std::to_string(f) + " has zero area (its vertices are collinear)");
       }
-      const auto loop = p.face_vertices(f);
+      p.face_vertices(f, loop);
       const std::size_t n = loop.size();
       if (n == 3) continue;  // its own plane triple: planar, and convex with area
       for (int v : loop) {

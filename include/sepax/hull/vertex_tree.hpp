@@ -4,7 +4,8 @@
 // decision as that pass, vertex for vertex:
 //   1. VertexTree: the vertices in a binary tree of boxes (median splits on the widest axis).
 //   2. may_exceed: per plane, a subtree is skipped when its box proves that the computed height
-//      T(dot(n, x) - off) of each of its vertices is at most the limit (the bound is derived there);
+//      T(dot(n, x) - off) of each of its vertices is at most the limit (the bound is derived there; its
+//      rounding slack is computed once per plane, on the root box);
 //      every other vertex is handed to the caller, which computes its height as before.
 //   3. max_height: the largest computed height, with the largest found so far as the limit.
 // Used by the pre-check (precheck.hpp), the hull's validation (to_polyhedron.hpp) and the slab
@@ -52,13 +53,19 @@ class VertexTree {
   /// covers the rounding of S (4 additions, relative gamma_4(double)), of k S and of the final sum (|fl(M)|
   /// <= S (1 + gamma_4), relative u(double) each), and the absolute term any underflow in them.  Non-finite
   /// values fail the test (the box is then opened).
+  ///
+  /// One S per plane: every box of the tree lies inside the root box, so its a_i are at most the root's
+  /// and the root's S (computed once, root_slack()) is an upper bound of every box's S; with it in place of the
+  /// box's own, each test above still holds (only looser), and the rounding of the one S is covered by the
+  /// same factor 2.
   template <class F>
   void may_exceed(const Plane<T>& pl, T limit, F&& visit) const {
     const double n0 = static_cast<double>(pl.normal[0]), n1 = static_cast<double>(pl.normal[1]),
                  n2 = static_cast<double>(pl.normal[2]), off = static_cast<double>(pl.offset);
     const double lim = static_cast<double>(limit);
+    const double slack = root_slack(n0, n1, n2, off);
     tree_.walk(
-        false, [&](const Node& nd) { return at_most(nd, n0, n1, n2, off, lim); },
+        false, [&](const Node& nd) { return at_most(nd, n0, n1, n2, off, slack, lim); },
         [&](const Node& nd) {
           for (int i = nd.begin; i < nd.end; ++i) visit(tree_.items()[as_index(i)].id);
         });
@@ -73,8 +80,9 @@ class VertexTree {
     T best = -std::numeric_limits<T>::infinity();
     const double n0 = static_cast<double>(pl.normal[0]), n1 = static_cast<double>(pl.normal[1]),
                  n2 = static_cast<double>(pl.normal[2]), off = static_cast<double>(pl.offset);
+    const double slack = root_slack(n0, n1, n2, off);
     tree_.walk(
-        true, [&](const Node& nd) { return at_most(nd, n0, n1, n2, off, static_cast<double>(best)); },
+        true, [&](const Node& nd) { return at_most(nd, n0, n1, n2, off, slack, static_cast<double>(best)); },
         [&](const Node& nd) {
           for (int i = nd.begin; i < nd.end; ++i)
             best = std::max(best, height(tree_.items()[as_index(i)].id));
@@ -119,19 +127,28 @@ class VertexTree {
     return out;
   }
 
-  /// Whether the box of nd proves every computed height of its vertices at most lim (may_exceed's bound).
-  static bool at_most(const Node& nd, double n0, double n1, double n2, double off, double lim) {
+  /// kSlack S + kTiny for the plane (n, off), S taken on the root box: at least the slack of every box of
+  /// the tree (may_exceed's bound).  0 for an empty tree (no box is tested).
+  double root_slack(double n0, double n1, double n2, double off) const {
+    if (tree_.nodes().empty()) return 0;
+    const Node& root = tree_.nodes()[0];
+    double s = std::abs(n0) * root.mag[0];
+    s = s + std::abs(n1) * root.mag[1];
+    s = s + std::abs(n2) * root.mag[2];
+    s = s + std::abs(off);
+    return kSlack * s + kTiny;
+  }
+
+  /// Whether the box of nd proves every computed height of its vertices at most lim (may_exceed's bound),
+  /// with slack from root_slack().
+  static bool at_most(const Node& nd, double n0, double n1, double n2, double off, double slack, double lim) {
     const double x0 = n0 > 0 ? nd.hi[0] : nd.lo[0], x1 = n1 > 0 ? nd.hi[1] : nd.lo[1],
                  x2 = n2 > 0 ? nd.hi[2] : nd.lo[2];
     double m = n0 * x0;
     m = m + n1 * x1;
     m = m + n2 * x2;
     m = m - off;
-    double s = std::abs(n0) * nd.mag[0];
-    s = s + std::abs(n1) * nd.mag[1];
-    s = s + std::abs(n2) * nd.mag[2];
-    s = s + std::abs(off);
-    return m + (kSlack * s + kTiny) <= lim;
+    return m + slack <= lim;
   }
 
   BoxTree<3> tree_;
