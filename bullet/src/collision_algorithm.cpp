@@ -153,7 +153,7 @@ std::int64_t ShapeCache::preparations() const {
 
 struct CreateFunc::Live {
   std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, refreshed{0},
-      manifolds{0}, points{0}, id_matches{0}, errors{0}, fallback_pairs{0};
+      reduced{0}, manifolds{0}, points{0}, id_matches{0}, errors{0}, fallback_pairs{0};
   std::mutex error_mutex;
   std::string last_error;
 
@@ -171,6 +171,7 @@ Counters CreateFunc::counters() const {
   c.culled = live_->culled.load();
   c.kept = live_->kept.load();
   c.refreshed = live_->refreshed.load();
+  c.reduced = live_->reduced.load();
   c.kept_apart = live_->kept_apart.load();
   c.manifolds = live_->manifolds.load();
   c.points = live_->points.load();
@@ -188,6 +189,7 @@ void CreateFunc::reset_counters() {
   live_->culled = 0;
   live_->kept = 0;
   live_->refreshed = 0;
+  live_->reduced = 0;
   live_->kept_apart = 0;
   live_->manifolds = 0;
   live_->points = 0;
@@ -449,6 +451,7 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.face, s.manifold, refreshed);
       live.kept.fetch_add(1, std::memory_order_relaxed);
       if (refreshed) live.refreshed.fetch_add(1, std::memory_order_relaxed);
+      if (refreshed && s.manifold.candidate_points > 4) live.reduced.fetch_add(1, std::memory_order_relaxed);
     } else {
       SatOptions opt;
       opt.early_out = true;

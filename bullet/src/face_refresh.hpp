@@ -8,18 +8,22 @@
 //      the side planes of a reference face of A are the same at every pose
 //      and computed once (KeptFace); a plane that keeps the whole polygon is
 //      skipped on its heights alone (cuts);
-//   3. the points within the margin (face_point, face_contact's step 3),
-//      mapped to world by pose_a as posed_manifold_on maps them.
-// When that leaves more than four points (face_contact would reduce them), no
-// point (face_contact's support-vertex fallback), or the contact's own
-// separation is beyond the margin (contact_manifold returns no point), the
-// refresh declines and the adapter builds the manifold with
+//   3. the points within the margin (face_point, face_contact's step 3);
+//   4. more than four of them reduced to four by face_contact's reduction
+//      (reduce_contact_points_into, manifold_reduction.hpp) on the same
+//      positions, depth keys and tolerances;
+//   5. the kept points mapped to world by pose_a as posed_manifold_on maps
+//      them.
+// When that leaves no point (face_contact's support-vertex fallback) or the
+// contact's own separation is beyond the margin (contact_manifold returns no
+// point), the refresh declines and the adapter builds the manifold with
 // posed_manifold_on.  Otherwise the points are those posed_manifold_on gives,
 // bit for bit: the same functions on the same inputs.
 #pragma once
 
 #include <sepax/clip_polygon.hpp>
 #include <sepax/face_contact.hpp>
+#include <sepax/manifold_reduction.hpp>
 #include <sepax/manifold_result.hpp>
 #include <sepax/sat_result.hpp>
 #include <sepax/small_vector.hpp>
@@ -95,17 +99,31 @@ inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidT
     welded = true;
     std::swap(pp, tp);
   }
-  // face_contact's step 3, in A's frame, then posed_manifold_on's map
+  // face_contact's step 3, in A's frame
   const float n2 = sepax::detail::norm2_of(nr);
-  ContactPoint<float> pts[4];
-  std::size_t count = 0;
+  SmallVector<ContactPoint<float>, 16> pts;
   ContactPoint<float> cand;
   for (const auto& v : *pp) {
-    if (!sepax::detail::face_point(v, rp, n2, ref_is_a, m, cand)) continue;
-    if (count == 4) return false;  // face_contact reduces: its full path
-    pts[count++] = cand;
+    if (sepax::detail::face_point(v, rp, n2, ref_is_a, m, cand)) pts.push_back(cand);
   }
-  if (count == 0) return false;  // face_contact's support-vertex fallback: its full path
+  if (pts.empty()) return false;  // face_contact's support-vertex fallback: its full path
+  const std::size_t count = pts.size();
+  // face_contact's step 4: more than four points reduced to four by its
+  // reduction, on the same positions, keys and tolerances
+  SmallVector<int, 4> keep;
+  if (count > 4) {
+    SmallVector<Vec3<float>, 16> pos;
+    SmallVector<float, 16> keys;
+    for (const auto& c : pts) {
+      pos.push_back(c.position);
+      keys.push_back(c.separation.num);
+    }
+    const float area_tol = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactArea, 3);
+    const float key_tol = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 1);
+    reduce_contact_points_into(pos, keys, nr, key_tol, area_tol, keep);
+  } else {
+    for (std::size_t i = 0; i < count; ++i) keep.push_back(static_cast<int>(i));
+  }
   out.kind = ContactKind::Face;
   out.feature = r.feature;
   out.normal = r.axis;
@@ -119,8 +137,9 @@ inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidT
   out.support_fallback = false;
   out.clip_steps.clear();
   out.points.clear();
-  for (std::size_t i = 0; i < count; ++i) {
-    ContactPoint<float> c = pts[i];
+  // posed_manifold_on's map to world
+  for (const int i : keep) {
+    ContactPoint<float> c = pts[static_cast<std::size_t>(i)];
     c.position = pose_a.apply(c.position);
     c.point_a = pose_a.apply(c.point_a);
     c.point_b = pose_a.apply(c.point_b);
