@@ -61,6 +61,35 @@ bool cuts(const Poly& poly, const ClipPlane<float>& plane) {
   return false;
 }
 
+/// face_contact's step 4 where the clip `poly` has more than four points
+/// within the margin: all of them (face_point, in clip order) reduced to
+/// four by face_contact's reduction (reduce_contact_points_into) on the same
+/// positions, depth keys and tolerances; the kept points go to pts[0..count).
+/// Returns the number of points within the margin (candidate_points).
+template <class Poly>
+int reduce_points(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float>& bp, const Poly& poly,
+                  const Plane<float>& rp, bool ref_is_a, float margin, ContactPoint<float> (&pts)[4],
+                  std::size_t& count) {
+  const float n2 = sepax::detail::norm2_of(rp.normal);
+  SmallVector<ContactPoint<float>, 16> all;
+  SmallVector<Vec3<float>, 16> pos;
+  SmallVector<float, 16> keys;
+  ContactPoint<float> c;
+  for (const auto& v : poly) {
+    if (!sepax::detail::face_point(v, rp, n2, ref_is_a, margin, c)) continue;
+    all.push_back(c);
+    pos.push_back(c.position);
+    keys.push_back(c.separation.num);
+  }
+  const float area_tol = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactArea, 3);
+  const float key_tol = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 1);
+  SmallVector<int, 4> keep;
+  reduce_contact_points_into(pos, keys, rp.normal, key_tol, area_tol, keep);
+  count = 0;
+  for (const int i : keep) pts[count++] = all[static_cast<std::size_t>(i)];
+  return static_cast<int>(all.size());
+}
+
 /// The refresh of the header on (a, bp) for the kept face contact r (FaceA
 /// or FaceB, support vertex in r.feature, axis in world); `kept`: the side
 /// planes of r's face of A when r is FaceA and kept.face is that face.
@@ -101,29 +130,21 @@ inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidT
   }
   // face_contact's step 3, in A's frame
   const float n2 = sepax::detail::norm2_of(nr);
-  SmallVector<ContactPoint<float>, 16> pts;
+  ContactPoint<float> pts[4];
+  std::size_t count = 0;
+  bool more = false;
   ContactPoint<float> cand;
   for (const auto& v : *pp) {
-    if (sepax::detail::face_point(v, rp, n2, ref_is_a, m, cand)) pts.push_back(cand);
-  }
-  if (pts.empty()) return false;  // face_contact's support-vertex fallback: its full path
-  const std::size_t count = pts.size();
-  // face_contact's step 4: more than four points reduced to four by its
-  // reduction, on the same positions, keys and tolerances
-  SmallVector<int, 4> keep;
-  if (count > 4) {
-    SmallVector<Vec3<float>, 16> pos;
-    SmallVector<float, 16> keys;
-    for (const auto& c : pts) {
-      pos.push_back(c.position);
-      keys.push_back(c.separation.num);
+    if (!sepax::detail::face_point(v, rp, n2, ref_is_a, m, cand)) continue;
+    if (count == 4) {
+      more = true;
+      break;
     }
-    const float area_tol = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactArea, 3);
-    const float key_tol = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 1);
-    reduce_contact_points_into(pos, keys, nr, key_tol, area_tol, keep);
-  } else {
-    for (std::size_t i = 0; i < count; ++i) keep.push_back(static_cast<int>(i));
+    pts[count++] = cand;
   }
+  if (count == 0) return false;  // face_contact's support-vertex fallback: its full path
+  const int candidates =
+      more ? reduce_points(a, bp, *pp, rp, ref_is_a, m, pts, count) : static_cast<int>(count);
   out.kind = ContactKind::Face;
   out.feature = r.feature;
   out.normal = r.axis;
@@ -133,13 +154,13 @@ inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidT
   out.reference_face = ref_face;
   out.incident_face = inc;
   out.incident_faces_visited = visited;
-  out.candidate_points = static_cast<int>(count);
+  out.candidate_points = candidates;
   out.support_fallback = false;
   out.clip_steps.clear();
   out.points.clear();
   // posed_manifold_on's map to world
-  for (const int i : keep) {
-    ContactPoint<float> c = pts[static_cast<std::size_t>(i)];
+  for (std::size_t i = 0; i < count; ++i) {
+    ContactPoint<float> c = pts[i];
     c.position = pose_a.apply(c.position);
     c.point_a = pose_a.apply(c.point_a);
     c.point_b = pose_a.apply(c.point_b);
