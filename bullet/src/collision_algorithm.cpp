@@ -6,7 +6,6 @@
 #include <atomic>
 #include <cmath>
 #include <new>
-#include <type_traits>
 #include <vector>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
@@ -153,7 +152,7 @@ std::int64_t ShapeCache::preparations() const {
 
 struct CreateFunc::Live {
   std::atomic<std::int64_t> queries{0}, early_outs{0}, culled{0}, kept_apart{0}, kept{0}, refreshed{0},
-      manifolds{0}, points{0}, id_matches{0}, errors{0}, fallback_pairs{0};
+      reduced{0}, manifolds{0}, points{0}, id_matches{0}, errors{0}, fallback_pairs{0};
   std::mutex error_mutex;
   std::string last_error;
 
@@ -171,6 +170,7 @@ Counters CreateFunc::counters() const {
   c.culled = live_->culled.load();
   c.kept = live_->kept.load();
   c.refreshed = live_->refreshed.load();
+  c.reduced = live_->reduced.load();
   c.kept_apart = live_->kept_apart.load();
   c.manifolds = live_->manifolds.load();
   c.points = live_->points.load();
@@ -188,6 +188,7 @@ void CreateFunc::reset_counters() {
   live_->culled = 0;
   live_->kept = 0;
   live_->refreshed = 0;
+  live_->reduced = 0;
   live_->kept_apart = 0;
   live_->manifolds = 0;
   live_->points = 0;
@@ -233,26 +234,70 @@ struct CollisionAlgorithm::State {
 
 namespace {
 
-/// The manifold's feature id of one body: (kind, index) as Bullet's
-/// (partId, index).
-void set_ids(btManifoldPoint& p, const ContactFeatureId& id, bool swapped) {
-  const ShapeFeature& f0 = swapped ? id.b : id.a;
-  const ShapeFeature& f1 = swapped ? id.a : id.b;
-  p.m_partId0 = static_cast<int>(f0.kind);
-  p.m_index0 = f0.index;
-  p.m_partId1 = static_cast<int>(f1.kind);
-  p.m_index1 = f1.index;
+/// A new point of write_points before it goes into the manifold: its points
+/// in world and in the manifold bodies' frames, its depth and its feature
+/// ids as Bullet's (partId0, index0, partId1, index1).
+struct NewPoint {
+  btVector3 world_a, world_b, local_a, local_b;
+  btScalar depth;
+  int part0, index0, part1, index1;
+};
+
+bool same_ids(const btManifoldPoint& x, const NewPoint& y) {
+  return x.m_partId0 == y.part0 && x.m_index0 == y.index0 && x.m_partId1 == y.part1 && x.m_index1 == y.index1;
 }
 
-bool same_ids(const btManifoldPoint& x, const btManifoldPoint& y) {
-  return x.m_partId0 == y.m_partId0 && x.m_index0 == y.m_index0 && x.m_partId1 == y.m_partId1 &&
-         x.m_index1 == y.m_index1;
+/// The pair's material and flags, as btManifoldResult::addContactPoint sets
+/// them on each point.
+struct Material {
+  btScalar friction, restitution, rolling, spinning, damping, stiff;
+  bool stiffness, anchor;
+};
+
+/// Every field of `p` that a point constructed by addContactPoint for `q`
+/// takes from `q` and the material: all but the accumulated impulses, the
+/// previous right-hand side, the user data and the lifetime, the fields
+/// btPersistentManifold::replaceContactPoint keeps from the stored point.
+/// On a point constructed from q's local points, normal and depth this is
+/// addContactPoint's point; on a stored point it is replaceContactPoint's
+/// result without the copy.
+void fill(btManifoldPoint& p, const NewPoint& q, const btVector3& normal_on_b, const Material& mat) {
+  p.m_localPointA = q.local_a;
+  p.m_localPointB = q.local_b;
+  p.m_positionWorldOnB = q.world_b;
+  p.m_positionWorldOnA = q.world_a;
+  p.m_normalWorldOnB = normal_on_b;
+  p.m_distance1 = q.depth;
+  p.m_combinedFriction = mat.friction;
+  p.m_combinedRollingFriction = mat.rolling;
+  p.m_combinedSpinningFriction = mat.spinning;
+  p.m_combinedRestitution = mat.restitution;
+  p.m_partId0 = q.part0;
+  p.m_partId1 = q.part1;
+  p.m_index0 = q.index0;
+  p.m_index1 = q.index1;
+  p.m_contactPointFlags = 0;
+  p.m_contactMotion1 = 0;
+  p.m_contactMotion2 = 0;
+  p.m_contactCFM = 0;
+  p.m_contactERP = 0;
+  p.m_frictionCFM = 0;
+  if (mat.stiffness) {
+    p.m_combinedContactDamping1 = mat.damping;
+    p.m_combinedContactStiffness1 = mat.stiff;
+    p.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
+  }
+  if (mat.anchor) p.m_contactPointFlags |= BT_CONTACT_FLAG_FRICTION_ANCHOR;
+  btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
 }
 
 /// Writes the world-space manifold m of (w0, w1) into `man` (see the header):
-/// points built as btManifoldResult::addContactPoint builds them, matched to
-/// the manifold's points by their feature ids, else by position.  Returns
-/// the id matches.
+/// points as btManifoldResult::addContactPoint builds them, matched to the
+/// manifold's points by their feature ids, else by position.  A matched
+/// stored point is updated in place to what replaceContactPoint would leave
+/// (fill), except with friction anchors, whose replacement depends on the
+/// stored impulses: those go through replaceContactPoint.  Returns the id
+/// matches.
 int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
                  const btCollisionObjectWrapper* w1, const ContactManifold<float>& m) {
   const btCollisionObject* o0 = w0->getCollisionObject();
@@ -262,57 +307,40 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
   const btCollisionObject* mb = swapped ? o0 : o1;
   const btScalar threshold = man.getContactBreakingThreshold();
   const btVector3 n = bt(m.normal);  // from w0's shape to w1's
+  // Bullet's convention: the normal on the manifold's body 1, pointing to
+  // body 0; the point on body 1; the point on body 0 = that + normal depth.
+  const btVector3 normal_on_b = swapped ? n : -n;
 
   // the pair's material, as addContactPoint computes it (once per pair here)
-  const btScalar friction = gCalculateCombinedFrictionCallback(o0, o1);
-  const btScalar restitution = gCalculateCombinedRestitutionCallback(o0, o1);
-  const btScalar rolling = gCalculateCombinedRollingFrictionCallback(o0, o1);
-  const btScalar spinning = gCalculateCombinedSpinningFrictionCallback(o0, o1);
+  Material mat;
+  mat.friction = gCalculateCombinedFrictionCallback(o0, o1);
+  mat.restitution = gCalculateCombinedRestitutionCallback(o0, o1);
+  mat.rolling = gCalculateCombinedRollingFrictionCallback(o0, o1);
+  mat.spinning = gCalculateCombinedSpinningFrictionCallback(o0, o1);
   const int flags = o0->getCollisionFlags() | o1->getCollisionFlags();
-  const bool stiffness = flags & btCollisionObject::CF_HAS_CONTACT_STIFFNESS_DAMPING;
-  const btScalar damping = stiffness ? gCalculateCombinedContactDampingCallback(o0, o1) : btScalar(0);
-  const btScalar stiff = stiffness ? gCalculateCombinedContactStiffnessCallback(o0, o1) : btScalar(0);
+  mat.stiffness = flags & btCollisionObject::CF_HAS_CONTACT_STIFFNESS_DAMPING;
+  mat.damping = mat.stiffness ? gCalculateCombinedContactDampingCallback(o0, o1) : btScalar(0);
+  mat.stiff = mat.stiffness ? gCalculateCombinedContactStiffnessCallback(o0, o1) : btScalar(0);
+  mat.anchor = flags & btCollisionObject::CF_HAS_FRICTION_ANCHOR;
 
-  // The new points, constructed in place (btManifoldPoint is trivially
-  // destructible; a default-constructed array and a copy per point cost a
-  // fifth of this function).
-  union Slot {
-    Slot() {}
-    btManifoldPoint point;
-  };
-  static_assert(std::is_trivially_destructible_v<btManifoldPoint>);
-  Slot slots[MANIFOLD_CACHE_SIZE];
-  auto at = [&](int j) -> btManifoldPoint& { return slots[j].point; };
+  NewPoint pts[MANIFOLD_CACHE_SIZE];
   int count = 0;
   for (const auto& c : m.points) {
     if (count == MANIFOLD_CACHE_SIZE) break;
     const btScalar depth = static_cast<btScalar>(to_double(c.separation));
     if (depth > threshold) continue;
-    // Bullet's convention: the normal on the manifold's body 1, pointing to
-    // body 0; the point on body 1; the point on body 0 = that + normal depth.
-    const btVector3 normal_on_b = swapped ? n : -n;
-    const btVector3 point_b = bt(swapped ? c.point_a : c.point_b);
-    const btVector3 point_a = point_b + normal_on_b * depth;
-    btManifoldPoint& p = *new (&slots[count].point)
-                             btManifoldPoint(ma->getWorldTransform().invXform(point_a),
-                                             mb->getWorldTransform().invXform(point_b), normal_on_b, depth);
-    p.m_positionWorldOnA = point_a;
-    p.m_positionWorldOnB = point_b;
-    p.m_combinedFriction = friction;
-    p.m_combinedRestitution = restitution;
-    p.m_combinedRollingFriction = rolling;
-    p.m_combinedSpinningFriction = spinning;
-    if (stiffness) {
-      p.m_combinedContactDamping1 = damping;
-      p.m_combinedContactStiffness1 = stiff;
-      p.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
-    }
-    if (flags & btCollisionObject::CF_HAS_FRICTION_ANCHOR) {
-      p.m_contactPointFlags |= BT_CONTACT_FLAG_FRICTION_ANCHOR;
-    }
-    btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
-    set_ids(p, c.id, swapped);
-    ++count;
+    NewPoint& q = pts[count++];
+    q.world_b = bt(swapped ? c.point_a : c.point_b);
+    q.world_a = q.world_b + normal_on_b * depth;
+    q.local_a = ma->getWorldTransform().invXform(q.world_a);
+    q.local_b = mb->getWorldTransform().invXform(q.world_b);
+    q.depth = depth;
+    const ShapeFeature& f0 = swapped ? c.id.b : c.id.a;
+    const ShapeFeature& f1 = swapped ? c.id.a : c.id.b;
+    q.part0 = static_cast<int>(f0.kind);
+    q.index0 = f0.index;
+    q.part1 = static_cast<int>(f1.kind);
+    q.index1 = f1.index;
   }
 
   const bool new_collision = man.getNumContacts() == 0;
@@ -329,7 +357,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
   int matches = 0;
   for (int j = 0; j < count; ++j) {
     for (int i = 0; i < stored && from[j] < 0; ++i) {
-      if (!used[i] && same_ids(man.getContactPoint(i), at(j))) from[j] = i;
+      if (!used[i] && same_ids(man.getContactPoint(i), pts[j])) from[j] = i;
     }
     if (from[j] >= 0) {
       used[from[j]] = true;
@@ -341,7 +369,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     btScalar nearest = threshold * threshold;
     for (int i = 0; i < stored; ++i) {
       if (used[i]) continue;
-      const btScalar d2 = (man.getContactPoint(i).m_localPointB - at(j).m_localPointB).length2();
+      const btScalar d2 = (man.getContactPoint(i).m_localPointB - pts[j].local_b).length2();
       if (d2 < nearest) {
         nearest = d2;
         from[j] = i;
@@ -349,8 +377,18 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     }
     if (from[j] >= 0) used[from[j]] = true;
   }
+  auto constructed = [&](const NewPoint& q) {
+    btManifoldPoint p(q.local_a, q.local_b, normal_on_b, q.depth);
+    fill(p, q, normal_on_b, mat);
+    return p;
+  };
   for (int j = 0; j < count; ++j) {
-    if (from[j] >= 0) man.replaceContactPoint(at(j), from[j]);
+    if (from[j] < 0) continue;
+    if (mat.anchor) {
+      man.replaceContactPoint(constructed(pts[j]), from[j]);
+    } else {
+      fill(man.getContactPoint(from[j]), pts[j], normal_on_b, mat);
+    }
   }
   // Stored points no new point took go (backwards: removal moves the last
   // point into the hole, which has been looked at already).
@@ -358,10 +396,9 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
     if (!used[i]) man.removeContactPoint(i);
   }
   for (int j = 0; j < count; ++j) {
-    if (from[j] < 0) man.addManifoldPoint(at(j));
+    if (from[j] < 0) man.addManifoldPoint(constructed(pts[j]));
   }
-  const bool custom =
-      (o0->getCollisionFlags() | o1->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK;
+  const bool custom = flags & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK;
   if (gContactAddedCallback && custom) {
     const btCollisionObjectWrapper* x0 = swapped ? w1 : w0;
     const btCollisionObjectWrapper* x1 = swapped ? w0 : w1;
@@ -449,6 +486,7 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
       kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.face, s.manifold, refreshed);
       live.kept.fetch_add(1, std::memory_order_relaxed);
       if (refreshed) live.refreshed.fetch_add(1, std::memory_order_relaxed);
+      if (refreshed && s.manifold.candidate_points > 4) live.reduced.fetch_add(1, std::memory_order_relaxed);
     } else {
       SatOptions opt;
       opt.early_out = true;

@@ -8,18 +8,22 @@
 //      the side planes of a reference face of A are the same at every pose
 //      and computed once (KeptFace); a plane that keeps the whole polygon is
 //      skipped on its heights alone (cuts);
-//   3. the points within the margin (face_point, face_contact's step 3),
-//      mapped to world by pose_a as posed_manifold_on maps them.
-// When that leaves more than four points (face_contact would reduce them), no
-// point (face_contact's support-vertex fallback), or the contact's own
-// separation is beyond the margin (contact_manifold returns no point), the
-// refresh declines and the adapter builds the manifold with
+//   3. the points within the margin (face_point, face_contact's step 3);
+//   4. more than four of them reduced to four by face_contact's reduction
+//      (reduce_contact_points_into, manifold_reduction.hpp) on the same
+//      positions, depth keys and tolerances;
+//   5. the kept points mapped to world by pose_a as posed_manifold_on maps
+//      them.
+// When that leaves no point (face_contact's support-vertex fallback) or the
+// contact's own separation is beyond the margin (contact_manifold returns no
+// point), the refresh declines and the adapter builds the manifold with
 // posed_manifold_on.  Otherwise the points are those posed_manifold_on gives,
 // bit for bit: the same functions on the same inputs.
 #pragma once
 
 #include <sepax/clip_polygon.hpp>
 #include <sepax/face_contact.hpp>
+#include <sepax/manifold_reduction.hpp>
 #include <sepax/manifold_result.hpp>
 #include <sepax/sat_result.hpp>
 #include <sepax/small_vector.hpp>
@@ -55,6 +59,35 @@ bool cuts(const Poly& poly, const ClipPlane<float>& plane) {
     if (clip_detail::height_over(plane, v.point) > 0.0f) return true;
   }
   return false;
+}
+
+/// face_contact's step 4 where the clip `poly` has more than four points
+/// within the margin: all of them (face_point, in clip order) reduced to
+/// four by face_contact's reduction (reduce_contact_points_into) on the same
+/// positions, depth keys and tolerances; the kept points go to pts[0..count).
+/// Returns the number of points within the margin (candidate_points).
+template <class Poly>
+int reduce_points(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float>& bp, const Poly& poly,
+                  const Plane<float>& rp, bool ref_is_a, float margin, ContactPoint<float> (&pts)[4],
+                  std::size_t& count) {
+  const float n2 = sepax::detail::norm2_of(rp.normal);
+  SmallVector<ContactPoint<float>, 16> all;
+  SmallVector<Vec3<float>, 16> pos;
+  SmallVector<float, 16> keys;
+  ContactPoint<float> c;
+  for (const auto& v : poly) {
+    if (!sepax::detail::face_point(v, rp, n2, ref_is_a, margin, c)) continue;
+    all.push_back(c);
+    pos.push_back(c.position);
+    keys.push_back(c.separation.num);
+  }
+  const float area_tol = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactArea, 3);
+  const float key_tol = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 1);
+  SmallVector<int, 4> keep;
+  reduce_contact_points_into(pos, keys, rp.normal, key_tol, area_tol, keep);
+  count = 0;
+  for (const int i : keep) pts[count++] = all[static_cast<std::size_t>(i)];
+  return static_cast<int>(all.size());
 }
 
 /// The refresh of the header on (a, bp) for the kept face contact r (FaceA
@@ -95,17 +128,23 @@ inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidT
     welded = true;
     std::swap(pp, tp);
   }
-  // face_contact's step 3, in A's frame, then posed_manifold_on's map
+  // face_contact's step 3, in A's frame
   const float n2 = sepax::detail::norm2_of(nr);
   ContactPoint<float> pts[4];
   std::size_t count = 0;
+  bool more = false;
   ContactPoint<float> cand;
   for (const auto& v : *pp) {
     if (!sepax::detail::face_point(v, rp, n2, ref_is_a, m, cand)) continue;
-    if (count == 4) return false;  // face_contact reduces: its full path
+    if (count == 4) {
+      more = true;
+      break;
+    }
     pts[count++] = cand;
   }
   if (count == 0) return false;  // face_contact's support-vertex fallback: its full path
+  const int candidates =
+      more ? reduce_points(a, bp, *pp, rp, ref_is_a, m, pts, count) : static_cast<int>(count);
   out.kind = ContactKind::Face;
   out.feature = r.feature;
   out.normal = r.axis;
@@ -115,10 +154,11 @@ inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidT
   out.reference_face = ref_face;
   out.incident_face = inc;
   out.incident_faces_visited = visited;
-  out.candidate_points = static_cast<int>(count);
+  out.candidate_points = candidates;
   out.support_fallback = false;
   out.clip_steps.clear();
   out.points.clear();
+  // posed_manifold_on's map to world
   for (std::size_t i = 0; i < count; ++i) {
     ContactPoint<float> c = pts[i];
     c.position = pose_a.apply(c.position);

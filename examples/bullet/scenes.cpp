@@ -435,14 +435,14 @@ int main(int argc, char** argv) {
         const auto& c = m.counters;
         std::printf(
             "         sepax: %lld queries, %lld beyond the margin, %lld culled by spheres, %lld kept apart, "
-            "%lld kept faces (%lld refreshed), "
+            "%lld kept faces (%lld refreshed, %lld of them reduced), "
             "%lld manifolds, %lld points, %lld id matches, %lld refused, %lld fallback pairs%s%s\n",
             static_cast<long long>(c.queries), static_cast<long long>(c.early_outs),
             static_cast<long long>(c.culled), static_cast<long long>(c.kept_apart),
             static_cast<long long>(c.kept), static_cast<long long>(c.refreshed),
-            static_cast<long long>(c.manifolds), static_cast<long long>(c.points),
-            static_cast<long long>(c.id_matches), static_cast<long long>(c.errors),
-            static_cast<long long>(c.fallback_pairs),
+            static_cast<long long>(c.reduced), static_cast<long long>(c.manifolds),
+            static_cast<long long>(c.points), static_cast<long long>(c.id_matches),
+            static_cast<long long>(c.errors), static_cast<long long>(c.fallback_pairs),
             c.last_error.empty() ? "" : "; last: ", c.last_error.c_str());
         if (short_mode) {
           if (c.errors != 0 || c.fallback_pairs != 0) {

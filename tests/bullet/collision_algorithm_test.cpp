@@ -413,11 +413,11 @@ TEST_CASE("bullet: a refreshed kept face gives a fresh algorithm's points while 
   }
 }
 
-TEST_CASE("bullet: a kept face whose clip would need the reduction falls back to the full manifold") {
+TEST_CASE("bullet: a kept face whose clip leaves five points is refreshed with the full path's reduction") {
   // A 10 cm box turned about the vertical near the floor's +x side, one
   // corner 20 um inside it; 5 um per step outwards: the corner crosses the
-  // side plane, the clip leaves five points, and the step builds the manifold
-  // on the full path (reduction to four), which the refresh declines.
+  // side plane, the clip leaves five points, and the refresh reduces them to
+  // the four the full path (a fresh algorithm) keeps.
   btBoxShape floor(btVector3(0.5f, 0.5f, 0.5f)), box(btVector3(0.05f, 0.05f, 0.05f));
   const btTransform tf = at(0, -0.5f, 0);
   const float angle = 0.3f;
@@ -435,8 +435,9 @@ TEST_CASE("bullet: a kept face whose clip would need the reduction falls back to
   const auto cnt = kept.cf->counters();
   CHECK(cnt.queries == 1);
   CHECK(cnt.kept == 11);
-  CHECK(cnt.refreshed > 0);         // before the corner crosses
-  CHECK(cnt.refreshed < cnt.kept);  // after: the full path
+  CHECK(cnt.refreshed == cnt.kept);
+  CHECK(cnt.reduced > 0);         // after the corner crosses: five points reduced
+  CHECK(cnt.reduced < cnt.kept);  // before: four points
 }
 
 TEST_CASE("bullet: a shape rescaled in place drops the kept face and queries again") {

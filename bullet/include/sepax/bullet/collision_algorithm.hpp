@@ -99,7 +99,8 @@ struct Counters {
   std::int64_t early_outs = 0;      // queries that stopped beyond the margin
   std::int64_t culled = 0;          // steps of pairs whose bounding spheres are beyond the margin (no query)
   std::int64_t kept = 0;            // steps that re-evaluated the kept face instead of a query
-  std::int64_t refreshed = 0;       // of those, manifolds refreshed (no reduction, no fallback)
+  std::int64_t refreshed = 0;       // of those, manifolds refreshed (no support-vertex fallback)
+  std::int64_t reduced = 0;         // of those, clips that left more than four points (reduced to four)
   std::int64_t kept_apart = 0;      // steps still beyond the margin by the last query's answer (no query)
   std::int64_t manifolds = 0;       // manifolds built
   std::int64_t points = 0;          // points written
