@@ -20,6 +20,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <span>
 #include <sstream>
@@ -48,6 +49,59 @@ struct FaceLoop {
   int count = 0;                        // number of vertices (= half-edges)
   std::array<int, 3> plane_vertices{};  // the plane triple (i, j, k)
 };
+
+namespace detail {
+
+/// The combinatorics of a ConvexPolyhedron (its half-edges, face loops with
+/// their plane triples and vertex fans; the class comment gives the layout).
+/// It does not depend on the number type or on the vertex positions, so a
+/// copy, a rigid image (with_vertices, the posed queries' images) and a
+/// conversion to another number type (convert_from) all share one instance.
+struct PolyhedronTopology {
+  std::vector<HalfEdge> half_edges;
+  std::vector<FaceLoop> faces;
+  std::vector<int> fan_start;  // per vertex v, its fan is fan[fan_start[v], fan_start[v + 1])
+  std::vector<int> fan;
+};
+
+/// A shared, read-only PolyhedronTopology: copies share it (one reference
+/// count increment, no array copy), so moving a shape between polyhedra costs
+/// the same for any size.  edit() gives write access to a topology only this
+/// holder refers to (copying it first otherwise), for the builder of a new
+/// polyhedron.  Never null: a default or moved-from holder refers to one
+/// shared empty topology.
+class SharedTopology {
+ public:
+  SharedTopology() noexcept : p_(empty()) {}
+  SharedTopology(const SharedTopology&) noexcept = default;
+  SharedTopology& operator=(const SharedTopology&) noexcept = default;
+  SharedTopology(SharedTopology&& o) noexcept : p_(std::move(o.p_)) { o.p_ = empty(); }
+  SharedTopology& operator=(SharedTopology&& o) noexcept {
+    if (this != &o) {
+      p_ = std::move(o.p_);
+      o.p_ = empty();
+    }
+    return *this;
+  }
+  const PolyhedronTopology& get() const noexcept { return *p_; }
+  const PolyhedronTopology* operator->() const noexcept { return p_.get(); }
+  /// Write access for building: a topology no other holder refers to.
+  PolyhedronTopology& edit() {
+    if (p_.use_count() != 1) p_ = std::make_shared<PolyhedronTopology>(*p_);
+    return *p_;
+  }
+  /// Whether both refer to the same topology.
+  bool same_as(const SharedTopology& o) const noexcept { return p_ == o.p_; }
+
+ private:
+  static const std::shared_ptr<PolyhedronTopology>& empty() noexcept {
+    static const std::shared_ptr<PolyhedronTopology> e = std::make_shared<PolyhedronTopology>();
+    return e;
+  }
+  std::shared_ptr<PolyhedronTopology> p_;
+};
+
+}  // namespace detail
 
 template <class T>
 struct Plane {
@@ -227,10 +281,7 @@ class ConvexPolyhedron {
         }
       }
     }
-    p.half_edges_ = other.half_edges();
-    p.faces_ = other.faces();
-    p.fan_start_ = other.fan_start();
-    p.fan_ = other.fan();
+    p.topology_ = other.topology_;
     p.check_coordinates();
     p.compute_derived();
     p.check_new_range();
@@ -261,19 +312,19 @@ class ConvexPolyhedron {
   /// planes, edge arrays, lanes and bounds), in one pass over the vertices,
   /// one over the faces and one over the edges (assign_rigid_vertices,
   /// finish_rigid_image), with normal_conditioning() computed along with the
-  /// planes (the robust kernel asks for it on every posed query).  The topology is copied from src
-  /// unless same_topology says *this already holds it.  Reuses the capacity
+  /// planes (the robust kernel asks for it on every posed query).  The topology is src's, shared
+  /// (detail::SharedTopology), never copied.  Reuses the capacity
   /// of *this: no allocation once it has held a shape at least as large.
   /// Throws as with_vertices does (NonFinite, BadScale).
   template <class Point>
-  void assign_rigid_image(const ConvexPolyhedron& src, bool same_topology, Point&& point) {
-    assign_rigid_vertices(src, same_topology, point);
+  void assign_rigid_image(const ConvexPolyhedron& src, Point&& point) {
+    assign_rigid_vertices(src, point);
     finish_rigid_image();
   }
 
   /// assign_rigid_image in two steps, for the posed queries' checks that
   /// need only a few of B's planes (posing.hpp, "Staged posing").  Step 1:
-  /// the topology (unless same_topology), the vertices point(v), the bounds,
+  /// the topology (shared with src), the vertices point(v), the bounds,
   /// centroid, extent and max |coordinate| (the values assign_rigid_image
   /// gives), and the range checks on them (NonFinite, BadScale).  The result
   /// is a *partial* image: planes, per-edge arrays and edge lanes are not
@@ -289,7 +340,7 @@ class ConvexPolyhedron {
   /// point gives (point takes the remainder); the sum then runs over the
   /// written lanes in index order.
   template <class Point, class PointLanes = std::nullptr_t>
-  void assign_rigid_vertices(const ConvexPolyhedron& src, bool same_topology, Point&& point,
+  void assign_rigid_vertices(const ConvexPolyhedron& src, Point&& point,
                              PointLanes&& point_lanes = nullptr);
 
   /// Step 2 of a partial image (after assign_rigid_vertices): the planes of
@@ -321,27 +372,27 @@ class ConvexPolyhedron {
 
   // ---- sizes ----
   int vertex_count() const { return static_cast<int>(vertices_.size()); }
-  int half_edge_count() const { return static_cast<int>(half_edges_.size()); }
+  int half_edge_count() const { return static_cast<int>(topology_->half_edges.size()); }
   int edge_count() const { return half_edge_count() / 2; }
-  int face_count() const { return static_cast<int>(faces_.size()); }
+  int face_count() const { return static_cast<int>(topology_->faces.size()); }
   bool empty() const { return vertices_.empty(); }
   /// A double-sided polygon (two faces with opposite normals).
-  bool is_flat() const { return faces_.size() == 2; }
+  bool is_flat() const { return topology_->faces.size() == 2; }
 
   // ---- vertices ----
   const Vec3<T>& vertex(int v) const { return vertices_[static_cast<std::size_t>(v)]; }
   const std::vector<Vec3<T>>& vertices() const { return vertices_; }
   /// Outgoing half-edges of vertex v.
   std::span<const int> vertex_half_edges(int v) const {
-    const auto b = static_cast<std::size_t>(fan_start_[static_cast<std::size_t>(v)]);
-    const auto e = static_cast<std::size_t>(fan_start_[static_cast<std::size_t>(v) + 1]);
-    return std::span<const int>(fan_.data() + b, e - b);
+    const auto b = static_cast<std::size_t>(topology_->fan_start[static_cast<std::size_t>(v)]);
+    const auto e = static_cast<std::size_t>(topology_->fan_start[static_cast<std::size_t>(v) + 1]);
+    return std::span<const int>(topology_->fan.data() + b, e - b);
   }
 
   // ---- half-edges and edges ----
   static int twin(int h) { return h ^ 1; }
-  const HalfEdge& half_edge(int h) const { return half_edges_[static_cast<std::size_t>(h)]; }
-  const std::vector<HalfEdge>& half_edges() const { return half_edges_; }
+  const HalfEdge& half_edge(int h) const { return topology_->half_edges[static_cast<std::size_t>(h)]; }
+  const std::vector<HalfEdge>& half_edges() const { return topology_->half_edges; }
   int edge_tail(int e) const { return half_edge(2 * e).origin; }
   int edge_head(int e) const { return half_edge(2 * e + 1).origin; }
   /// side 0: the face of half-edge 2e; side 1: the face of half-edge 2e+1.
@@ -394,8 +445,8 @@ class ConvexPolyhedron {
   }
 
   // ---- faces ----
-  const FaceLoop& face(int f) const { return faces_[static_cast<std::size_t>(f)]; }
-  const std::vector<FaceLoop>& faces() const { return faces_; }
+  const FaceLoop& face(int f) const { return topology_->faces[static_cast<std::size_t>(f)]; }
+  const std::vector<FaceLoop>& faces() const { return topology_->faces; }
   const Plane<T>& plane(int f) const { return planes_[static_cast<std::size_t>(f)]; }
   const std::vector<Plane<T>>& planes() const { return planes_; }
   /// The face's vertex indices in loop order.
@@ -459,8 +510,8 @@ class ConvexPolyhedron {
   }();
 
   // raw arrays, for converters and serialisers
-  const std::vector<int>& fan_start() const { return fan_start_; }
-  const std::vector<int>& fan() const { return fan_; }
+  const std::vector<int>& fan_start() const { return topology_->fan_start; }
+  const std::vector<int>& fan() const { return topology_->fan; }
 
  private:
   template <Number U>
@@ -532,11 +583,8 @@ class ConvexPolyhedron {
   void validate_geometry(double scan_pairs = kConvexityScanPairs);
 
   std::vector<Vec3<T>> vertices_;
-  std::vector<HalfEdge> half_edges_;
-  std::vector<FaceLoop> faces_;
+  detail::SharedTopology topology_;  // half-edges, face loops, fans: shared by copies and images
   std::vector<Plane<T>> planes_;
-  std::vector<int> fan_start_;
-  std::vector<int> fan_;
   std::vector<Vec3<T>> edge_dirs_;  // per edge: head - tail
   std::vector<Vec3<T>> edge_n0_;    // per edge: normal of edge_face(e, 0)
   std::vector<Vec3<T>> edge_n1_;    // per edge: normal of edge_face(e, 1)

@@ -27,17 +27,12 @@ namespace sepax {
 
 template <Number T>
 template <class Point, class PointLanes>
-inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& src, bool same_topology,
-                                                       Point&& point, PointLanes&& point_lanes) {
-  if (!same_topology) {
-    half_edges_ = src.half_edges_;
-    faces_ = src.faces_;
-    fan_start_ = src.fan_start_;
-    fan_ = src.fan_;
-  }
+inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& src, Point&& point,
+                                                       PointLanes&& point_lanes) {
+  if (!topology_.same_as(src.topology_)) topology_ = src.topology_;  // shared, not copied
   const std::size_t nv = src.vertices_.size();
   vertices_.resize(nv);
-  planes_.resize(faces_.size());
+  planes_.resize(topology_->faces.size());
   const auto ne = static_cast<std::size_t>(edge_count());
   edge_dirs_.resize(ne);
   edge_n0_.resize(ne);
@@ -114,8 +109,8 @@ inline void ConvexPolyhedron<T>::derive_rigid_part(std::span<const int> faces, s
   }
   for (const int e : edges) {
     const auto k = static_cast<std::size_t>(e);
-    const HalfEdge& h0 = half_edges_[2 * k];
-    const HalfEdge& h1 = half_edges_[2 * k + 1];
+    const HalfEdge& h0 = topology_->half_edges[2 * k];
+    const HalfEdge& h1 = topology_->half_edges[2 * k + 1];
     edge_dirs_[k] = Vec3<T>(vertex(h1.origin) - vertex(h0.origin));
     edge_n0_[k] = planes_[static_cast<std::size_t>(h0.face)].normal;
     edge_n1_[k] = planes_[static_cast<std::size_t>(h1.face)].normal;
@@ -150,8 +145,8 @@ inline bool ConvexPolyhedron<T>::derive_rigid_edges() {
   [[maybe_unused]] const T big = T(0x1p60);
   bool ok = true;
   for (std::size_t e = 0; e < ne; ++e) {
-    const HalfEdge& h0 = half_edges_[2 * e];
-    const HalfEdge& h1 = half_edges_[2 * e + 1];
+    const HalfEdge& h0 = topology_->half_edges[2 * e];
+    const HalfEdge& h1 = topology_->half_edges[2 * e + 1];
     const Vec3<T> d(vertex(h1.origin) - vertex(h0.origin));  // edge_direction(e)
     const Vec3<T>& n0 = planes_[static_cast<std::size_t>(h0.face)].normal;
     const Vec3<T>& n1 = planes_[static_cast<std::size_t>(h1.face)].normal;

@@ -22,6 +22,7 @@ namespace sepax {
 template <Number T>
 inline void ConvexPolyhedron<T>::build_topology(const std::vector<std::vector<int>>& faces) {
   const int nv = vertex_count();
+  detail::PolyhedronTopology& topo = topology_.edit();
   if (faces.size() < 2) fail(ErrorCode::NotManifold, "a closed polyhedron needs at least 2 faces");
   // The directed edges leaving each vertex, in the order the loops list
   // them (out_[out_start[u] ..]), each with its half-edge once assigned:
@@ -42,10 +43,10 @@ inline void ConvexPolyhedron<T>::build_topology(const std::vector<std::vector<in
       if (out[static_cast<std::size_t>(k)].head == v) return out[static_cast<std::size_t>(k)].half_edge;
     return -1;
   };
-  half_edges_.clear();
-  faces_.clear();
-  half_edges_.reserve(out.size() + 1);  // (a valid surface has exactly out.size())
-  faces_.reserve(faces.size());
+  topo.half_edges.clear();
+  topo.faces.clear();
+  topo.half_edges.reserve(out.size() + 1);  // (a valid surface has exactly out.size())
+  topo.faces.reserve(faces.size());
   std::vector<int> loop_edges;  // (face f's half-edges; one buffer for every face)
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const auto& loop = faces[f];
@@ -78,56 +79,56 @@ inline void ConvexPolyhedron<T>::build_topology(const std::vector<std::vector<in
       int h;
       const int twin = seen(v, u);
       if (twin < 0) {
-        const int e = static_cast<int>(half_edges_.size() / 2);
-        half_edges_.push_back(HalfEdge{});
-        half_edges_.push_back(HalfEdge{});
+        const int e = static_cast<int>(topo.half_edges.size() / 2);
+        topo.half_edges.push_back(HalfEdge{});
+        topo.half_edges.push_back(HalfEdge{});
         h = 2 * e;
       } else {
         h = 2 * (twin / 2) + 1;
-        if (half_edges_[static_cast<std::size_t>(h)].face != -1) {
+        if (topo.half_edges[static_cast<std::size_t>(h)].face != -1) {
           fail(ErrorCode::NotManifold, "edge " + std::to_string(key.first) + "-" +
                                            std::to_string(key.second) + " is shared by more than two faces");
         }
       }
       out[static_cast<std::size_t>(out_next[static_cast<std::size_t>(u)]++)] = OutEdge{v, h};
-      half_edges_[static_cast<std::size_t>(h)].origin = u;
-      half_edges_[static_cast<std::size_t>(h)].face = static_cast<int>(f);
+      topo.half_edges[static_cast<std::size_t>(h)].origin = u;
+      topo.half_edges[static_cast<std::size_t>(h)].face = static_cast<int>(f);
       loop_edges.push_back(h);
     }
     for (std::size_t i = 0; i < loop_edges.size(); ++i) {
-      auto& he = half_edges_[static_cast<std::size_t>(loop_edges[i])];
+      auto& he = topo.half_edges[static_cast<std::size_t>(loop_edges[i])];
       he.next = loop_edges[(i + 1) % loop_edges.size()];
       he.prev = loop_edges[(i + loop_edges.size() - 1) % loop_edges.size()];
     }
     fl.edge = loop_edges[0];
-    faces_.push_back(fl);
+    topo.faces.push_back(fl);
   }
-  for (std::size_t h = 0; h < half_edges_.size(); ++h) {
-    if (half_edges_[h].face == -1) {
-      const auto& o = half_edges_[h ^ 1];
+  for (std::size_t h = 0; h < topo.half_edges.size(); ++h) {
+    if (topo.half_edges[h].face == -1) {
+      const auto& o = topo.half_edges[h ^ 1];
       const int u = o.origin;
-      const int v = half_edges_[static_cast<std::size_t>(o.next)].origin;
+      const int v = topo.half_edges[static_cast<std::size_t>(o.next)].origin;
       fail(ErrorCode::NotManifold, "edge " + std::to_string(u) + "-" + std::to_string(v) +
                                        " has only one face: the surface is not closed");
     }
   }
   // vertex fans
   std::vector<int> degree(static_cast<std::size_t>(nv), 0);
-  for (const auto& he : half_edges_) ++degree[static_cast<std::size_t>(he.origin)];
+  for (const auto& he : topo.half_edges) ++degree[static_cast<std::size_t>(he.origin)];
   for (int v = 0; v < nv; ++v) {
     if (degree[static_cast<std::size_t>(v)] == 0) {
       fail(ErrorCode::UnusedVertex, "vertex " + std::to_string(v) + " is on no face");
     }
   }
-  fan_start_.assign(static_cast<std::size_t>(nv) + 1, 0);
+  topo.fan_start.assign(static_cast<std::size_t>(nv) + 1, 0);
   for (int v = 0; v < nv; ++v)
-    fan_start_[static_cast<std::size_t>(v) + 1] =
-        fan_start_[static_cast<std::size_t>(v)] + degree[static_cast<std::size_t>(v)];
-  fan_.assign(half_edges_.size(), -1);
-  std::vector<int> fill(fan_start_.begin(), fan_start_.end() - 1);
-  for (std::size_t h = 0; h < half_edges_.size(); ++h) {
-    const auto o = static_cast<std::size_t>(half_edges_[h].origin);
-    fan_[static_cast<std::size_t>(fill[o]++)] = static_cast<int>(h);
+    topo.fan_start[static_cast<std::size_t>(v) + 1] =
+        topo.fan_start[static_cast<std::size_t>(v)] + degree[static_cast<std::size_t>(v)];
+  topo.fan.assign(topo.half_edges.size(), -1);
+  std::vector<int> fill(topo.fan_start.begin(), topo.fan_start.end() - 1);
+  for (std::size_t h = 0; h < topo.half_edges.size(); ++h) {
+    const auto o = static_cast<std::size_t>(topo.half_edges[h].origin);
+    topo.fan[static_cast<std::size_t>(fill[o]++)] = static_cast<int>(h);
   }
   const long euler =
       static_cast<long>(nv) - static_cast<long>(edge_count()) + static_cast<long>(face_count());
@@ -176,6 +177,7 @@ inline T ConvexPolyhedron<T>::triangle_area2(const Vec3<T>& a, const Vec3<T>& b,
 // the unscaled squares stayed in range.
 template <Number T>
 inline void ConvexPolyhedron<T>::choose_plane_triples() {
+  detail::PolyhedronTopology& topo = topology_.edit();
   std::vector<int> loop;     // (face f's vertices; one buffer for every face)
   std::vector<Vec3<T>> rel;  // (loop vertices relative to loop[0], scaled for float)
   for (int f = 0; f < face_count(); ++f) {
@@ -210,11 +212,11 @@ inline void ConvexPolyhedron<T>::choose_plane_triples() {
     } else {
       best = {loop[0], loop[n / 3], loop[(2 * n) / 3]};
     }
-    faces_[static_cast<std::size_t>(f)].plane_vertices = best;
+    topo.faces[static_cast<std::size_t>(f)].plane_vertices = best;
   }
   if (face_count() == 2) {
-    const auto& t = faces_[0].plane_vertices;
-    faces_[1].plane_vertices = {t[0], t[2], t[1]};
+    const auto& t = topo.faces[0].plane_vertices;
+    topo.faces[1].plane_vertices = {t[0], t[2], t[1]};
   }
 }
 

@@ -108,7 +108,7 @@ void check_rigid(const RigidTransform<T>& x) {
 }
 
 /// Step 1 of posed(src, x) (the header's formula, "Staged posing"): out =
-/// the partial image with src's topology (copied unless same_topology) and
+/// the partial image with src's topology (shared, not copied) and
 /// the vertices x.apply(v), bounds and range checks
 /// (ConvexPolyhedron::assign_rigid_vertices), reusing out's arrays.  One
 /// out-of-line body, so that every caller (the posed queries, their checks
@@ -116,7 +116,7 @@ void check_rigid(const RigidTransform<T>& x) {
 /// contracted or not.
 template <Number T>
 [[gnu::noinline]] void pose_vertices_into(ConvexPolyhedron<T>& out, const ConvexPolyhedron<T>& src,
-                                          bool same_topology, const RigidTransform<T>& x) {
+                                          const RigidTransform<T>& x) {
   check_rigid(x);
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     // x.apply a few vertices at a time (simd_ops.hpp): per lane apply()'s
@@ -135,18 +135,17 @@ template <Number T>
       a = o[0], b = o[1], c = o[2];
     };
     out.assign_rigid_vertices(
-        src, same_topology, [&](const Vec3<T>& v) { return x.apply(v); }, lanes);
+        src, [&](const Vec3<T>& v) { return x.apply(v); }, lanes);
   } else {
-    out.assign_rigid_vertices(src, same_topology, [&](const Vec3<T>& v) { return x.apply(v); });
+    out.assign_rigid_vertices(src, [&](const Vec3<T>& v) { return x.apply(v); });
   }
 }
 
 /// out = posed(src, x): pose_vertices_into, then every plane, edge array and
 /// lane (ConvexPolyhedron::finish_rigid_image).
 template <Number T>
-void pose_into(ConvexPolyhedron<T>& out, const ConvexPolyhedron<T>& src, bool same_topology,
-               const RigidTransform<T>& x) {
-  pose_vertices_into(out, src, same_topology, x);
+void pose_into(ConvexPolyhedron<T>& out, const ConvexPolyhedron<T>& src, const RigidTransform<T>& x) {
+  pose_vertices_into(out, src, x);
   out.finish_rigid_image();
 }
 
@@ -194,7 +193,7 @@ void pose_into(ConvexPolyhedron<T>& out, const ConvexPolyhedron<T>& src, bool sa
 template <Number T>
 ConvexPolyhedron<T> posed(const ConvexPolyhedron<T>& b, const RigidTransform<T>& x) {
   ConvexPolyhedron<T> out;
-  detail::pose_into(out, b, false, x);
+  detail::pose_into(out, b, x);
   return out;
 }
 

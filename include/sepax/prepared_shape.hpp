@@ -83,8 +83,8 @@ inline std::uint64_t next_shape_serial() {
 /// Posing (posing.hpp defines the input exactly): a posed query moves B into
 /// A's frame, B' = posed(B, inverse(pose_a) * pose_b), into per-thread scratch
 /// that keeps its arrays between queries (no heap allocation once a thread
-/// has posed a shape at least as large; the topology is copied only when the
-/// scratch last held another shape), and reuses B' as long as the same shape
+/// has posed a shape at least as large; B' shares B's topology, so posing
+/// another shape copies no half-edges), and reuses B' as long as the same shape
 /// is asked at bit-identical relative pose (a manifold right after its SAT
 /// query poses nothing).
 template <Number T>
@@ -99,7 +99,7 @@ class PreparedShape {
     prepare_faces();
   }
 
-  // Copies share the serial (same content: the scratch may keep the topology);
+  // Copies share the serial (same content: the scratch may keep a posed image);
   // a moved-from shape gets a fresh one and is empty (queries refuse it).
   PreparedShape(const PreparedShape&) = default;
   PreparedShape& operator=(const PreparedShape&) = default;
@@ -238,10 +238,9 @@ class PreparedShape {
   void pose_vertices(S& s, const RigidTransform<T>& x) const {
     if (poly_.empty())
       throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape: the shape is empty (moved from)");
-    const bool same_topology = s.serial == serial_;
     s.stage = S::kNone;
     s.serial = 0;  // until the posing below has finished (it may throw)
-    detail::pose_vertices_into(s.poly, poly_, same_topology, x);
+    detail::pose_vertices_into(s.poly, poly_, x);
     s.serial = serial_;
     s.x = x;
     s.stage = S::kVertices;

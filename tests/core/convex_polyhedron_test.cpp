@@ -249,6 +249,41 @@ TEMPLATE_TEST_CASE("validation: geometric errors", "[polyhedron][errors]", float
   CHECK(contains(r.message, "face 0"));
 }
 
+// The topology (half-edges, loops, fans) is shared by copies, rigid images
+// and conversions, never copied; a new shape builds its own, and a moved-from
+// shape is empty and still usable.
+TEMPLATE_TEST_CASE("copies, images and conversions share the topology", "[polyhedron]", float, double) {
+  using T = TestType;
+  const auto a = shapes::prism<T>(7, 1.5, 0.5);
+  const auto b = shapes::prism<T>(7, 1.5, 0.5);
+  auto same = [](const auto& p, const auto& q) {
+    return p.half_edges().data() == q.half_edges().data() && p.faces().data() == q.faces().data() &&
+           p.fan().data() == q.fan().data() && p.fan_start().data() == q.fan_start().data();
+  };
+  CHECK_FALSE(same(a, b));  // built separately: two topologies with equal contents
+  CHECK(a.half_edges().size() == b.half_edges().size());
+  const ConvexPolyhedron<T> copy = a;
+  CHECK(same(copy, a));
+  std::vector<Vec3<T>> moved = a.vertices();
+  for (auto& v : moved) v = Vec3<T>(v[0] + T(3), v[1], v[2]);
+  const auto image = a.with_vertices(moved);
+  CHECK(same(image, a));
+  const auto exact = ConvexPolyhedron<double>::convert_from(a);
+  CHECK(same(exact, a));
+  RigidTransform<T> x;
+  x.translation = Vec3<T>(T(1), T(2), T(3));
+  ConvexPolyhedron<T> scratch = b;  // holds another topology first
+  detail::pose_into(scratch, a, x);
+  CHECK(same(scratch, a));
+  check_half_edge_invariants(scratch);
+  ConvexPolyhedron<T> from = a;
+  ConvexPolyhedron<T> to = std::move(from);
+  CHECK(same(to, a));
+  CHECK(from.face_count() == 0);  // NOLINT(bugprone-use-after-move): a moved-from shape is empty
+  CHECK(from.half_edge_count() == 0);
+  check_half_edge_invariants(to);
+}
+
 TEMPLATE_TEST_CASE("half-edge invariants on valid shapes", "[polyhedron]", float, double) {
   using T = TestType;
   check_half_edge_invariants(shapes::box<T>(1, 2, 3));

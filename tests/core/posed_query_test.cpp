@@ -88,6 +88,8 @@ TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[po
       }
       if (pass > 0) require_same_derived(prepared[i].posed_scratch(x, false), reference, false);
       require_same_derived(prepared[i].posed_scratch(x), reference);
+      // B' refers to B's topology (shared, not copied into the scratch)
+      CHECK(prepared[i].posed_scratch(x).half_edges().data() == prepared[i].polyhedron().half_edges().data());
       if (pass > 0) require_same_derived(prepared[i].posed_scratch(x, false), reference);  // kept
       require_same_derived(posed(locals[i], x), reference);
       ++checked;
