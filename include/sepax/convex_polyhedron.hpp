@@ -437,6 +437,14 @@ class ConvexPolyhedron {
   // on it, and callers fall back to scalar code when it is false.
   static constexpr int kLanePad = 8;
   bool lanes_bounded() const { return lanes_bounded_; }
+  /// What the support scans (simd::support_scan) need of a shape: its vertex
+  /// lanes hold every vertex, each coordinate finite with |x| <= 2^60, and
+  /// every plane normal a query may read has |n_i| <= 2^60.  Equal to
+  /// lanes_bounded() on a complete shape; on a partial rigid image
+  /// (assign_rigid_vertices) it covers the vertices and the planes derived
+  /// so far (derive_rigid_part), whose edge lanes are not written yet, so
+  /// that the early-out checks on it scan B's vertices in lanes too.
+  bool support_lanes_bounded() const { return support_lanes_bounded_; }
   int lane_edge_stride() const { return lane_edge_stride_; }
   const T* lane_edge(int k) const { return lanes_.data() + static_cast<std::size_t>(k * lane_edge_stride_); }
   int lane_vertex_stride() const { return lane_vertex_stride_; }
@@ -591,6 +599,7 @@ class ConvexPolyhedron {
   std::vector<T> lanes_;            // lane arrays (float/double): 9 edge, then 3 vertex arrays
   int lane_edge_stride_ = 0, lane_vertex_stride_ = 0;
   bool lanes_bounded_ = false;
+  bool support_lanes_bounded_ = false;
   Vec3<T> centroid_ = Vec3<T>(T(0), T(0), T(0));
   Vec3<T> bmin_ = Vec3<T>(T(0), T(0), T(0));
   Vec3<T> bmax_ = Vec3<T>(T(0), T(0), T(0));

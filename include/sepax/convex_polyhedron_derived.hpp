@@ -391,7 +391,7 @@ struct ConvexPolyhedron<T>::NormalConditioningScan {
 template <Number T>
 inline void ConvexPolyhedron<T>::compute_lanes() {
   lane_edge_stride_ = lane_vertex_stride_ = 0;
-  lanes_bounded_ = false;
+  lanes_bounded_ = support_lanes_bounded_ = false;
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     size_lanes();
     const auto vs = static_cast<std::size_t>(lane_vertex_stride_);
@@ -410,7 +410,7 @@ inline void ConvexPolyhedron<T>::compute_lanes() {
     for (const auto& pl : planes_) {
       for (int c = 0; c < 3; ++c) ok &= std::abs(pl.normal[c]) <= big;
     }
-    lanes_bounded_ = ok;
+    lanes_bounded_ = support_lanes_bounded_ = ok;
   } else {
     lanes_.clear();
   }

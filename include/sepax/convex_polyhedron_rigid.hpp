@@ -37,7 +37,7 @@ inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& s
   edge_dirs_.resize(ne);
   edge_n0_.resize(ne);
   edge_n1_.resize(ne);
-  lanes_bounded_ = false;
+  lanes_bounded_ = support_lanes_bounded_ = false;
   normal_conditioning_.store(std::numeric_limits<double>::infinity());
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     size_lanes();
@@ -95,12 +95,22 @@ inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& s
     if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
     check_range(false);
   }
+  // the vertex lanes are written and every coordinate is finite (checked
+  // above); no plane is derived yet
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) support_lanes_bounded_ = max_abs_ <= 0x1p60;
 }
 
 template <Number T>
 inline void ConvexPolyhedron<T>::derive_rigid_part(std::span<const int> faces, std::span<const int> edges) {
   [[maybe_unused]] NormalConditioningScan scan;
-  auto derive = [&](int f) { planes_[static_cast<std::size_t>(f)] = plane_of_triple(f, &scan); };
+  bool normals_bounded = true;  // (false for NaN)
+  auto derive = [&](int f) {
+    const Plane<T> pl = plane_of_triple(f, &scan);
+    planes_[static_cast<std::size_t>(f)] = pl;
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      for (int c = 0; c < 3; ++c) normals_bounded &= std::abs(pl.normal[c]) <= T(0x1p60);
+    }
+  };
   if (is_flat()) {
     derive(0);  // the back face: the front one negated (compute_derived)
     planes_[1] = Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)};
@@ -115,8 +125,10 @@ inline void ConvexPolyhedron<T>::derive_rigid_part(std::span<const int> faces, s
     edge_n0_[k] = planes_[static_cast<std::size_t>(h0.face)].normal;
     edge_n1_[k] = planes_[static_cast<std::size_t>(h1.face)].normal;
   }
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     normal_conditioning_.store(scan.result());
+    support_lanes_bounded_ = support_lanes_bounded_ && normals_bounded;
+  }
 }
 
 template <Number T>
@@ -129,7 +141,7 @@ inline void ConvexPolyhedron<T>::finish_rigid_image(bool edge_lanes) {
     const bool edges_bounded = edge_lanes ? derive_rigid_edges<true>() : derive_rigid_edges<false>();
     // compute_lanes' bound: normals, directions and vertices within 2^60
     // (max_abs_ is the largest |vertex coordinate|, exactly)
-    lanes_bounded_ = pr.normals_bounded && edges_bounded && max_abs_ <= 0x1p60;
+    lanes_bounded_ = support_lanes_bounded_ = pr.normals_bounded && edges_bounded && max_abs_ <= 0x1p60;
   } else {
     compute_derived(true, false);
     check_new_range();

@@ -29,13 +29,16 @@ class PlainKernel {
   static constexpr bool kExactDecisions = number_traits<T>::is_exact;
 
   PlainKernel(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b)
-      : a_(a), b_(b), lanes_(a.lanes_bounded() && b.lanes_bounded()) {}
+      : a_(a),
+        b_(b),
+        lanes_(a.lanes_bounded() && b.lanes_bounded()),
+        support_lanes_(a.support_lanes_bounded() && b.support_lanes_bounded()) {}
 
   const ConvexPolyhedron<T>& a() const { return a_; }
   const ConvexPolyhedron<T>& b() const { return b_; }
 
-  FaceQuery<T> face_query_a(int f) const { return face_query(a_, f, b_, lanes_); }
-  FaceQuery<T> face_query_b(int f) const { return face_query(b_, f, a_, lanes_); }
+  FaceQuery<T> face_query_a(int f) const { return face_query(a_, f, b_, support_lanes_); }
+  FaceQuery<T> face_query_b(int f) const { return face_query(b_, f, a_, support_lanes_); }
 
   // Side axes (both shapes flat, best_axis.hpp): the in-plane
   // outward normal u = (head - tail) x normal(edge_face(e, 0)) of edge e (the
@@ -242,7 +245,8 @@ class PlainKernel {
   }
 
   // Lowest vertex of q along n (first index among equal heights), and its
-  // height n.v - offset.  lanes: q's lane arrays may be used (lanes_bounded).
+  // height n.v - offset.  lanes: q's vertex lanes may be used
+  // (support_lanes_bounded of q and of the shape n comes from).
   static FaceQuery<T> support_below(const Vec3<T>& n, const T& offset, const ConvexPolyhedron<T>& q,
                                     [[maybe_unused]] bool lanes) {
     const auto& vs = q.vertices();
@@ -384,7 +388,8 @@ class PlainKernel {
 
   const ConvexPolyhedron<T>& a_;
   const ConvexPolyhedron<T>& b_;
-  bool lanes_;  // both shapes lanes_bounded(): the SIMD scans apply
+  bool lanes_;          // both shapes lanes_bounded(): the SIMD scans apply
+  bool support_lanes_;  // both shapes support_lanes_bounded(): the support scans apply
 };
 
 template <Number T>

@@ -134,7 +134,7 @@ struct Support {
 /// the minimum alone (index is 0; not with kSecond): the same minimum, fewer
 /// operations per group.  Per lane: the smallest value, the first index
 /// attaining it, and the second smallest value; the lanes are merged at the
-/// end.  Needs lanes_bounded() of q and a finite n with |n_i| <= 2^60 (no
+/// end.  Needs support_lanes_bounded() of q and a finite n with |n_i| <= 2^60 (no
 /// NaN); vertex counts up to 2^24 (indices are kept exactly as T).
 template <bool kSecond, bool kIndex = true, class T>
 SEPAX_SIMD_INLINE inline Support<T> support_scan(const ConvexPolyhedron<T>& q, const Vec3<T>& n) {

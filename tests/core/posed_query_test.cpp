@@ -84,7 +84,11 @@ TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[po
       const ConvexPolyhedron<T> reference = transformed(locals[i], x);
       if (pass == 1) {
         const int f = 0;
-        prepared[i].posed_part_scratch(x, std::span<const int>(&f, 1), std::span<const int>());
+        const ConvexPolyhedron<T>& part =
+            prepared[i].posed_part_scratch(x, std::span<const int>(&f, 1), std::span<const int>());
+        // a partial image: its edge lanes are stale, its vertex lanes and face 0's plane are not
+        CHECK_FALSE(part.lanes_bounded());
+        CHECK(part.support_lanes_bounded() == reference.lanes_bounded());
       }
       if (pass > 0) require_same_derived(prepared[i].posed_scratch(x, false), reference, false);
       require_same_derived(prepared[i].posed_scratch(x), reference);

@@ -32,7 +32,7 @@ class RobustFaceQueries : public RobustValues<T> {
   using Base::face_pair_sign;
   using Base::fallbacks_;
   using Base::height;
-  using Base::lanes_;
+  using Base::support_lanes_;
   using Base::side_normal;
   using Base::snap;
   using Base::snap_exact;
@@ -182,7 +182,7 @@ class RobustFaceQueries : public RobustValues<T> {
   // index among the vertices with exactly minimal N_f . v.
   // The float minimum and second minimum come from the same n.v values
   // either way: a few vertices at a time over q's lane arrays (simd_lanes.hpp;
-  // shapes with more than kScalarSupportMax vertices, lanes_bounded), else
+  // shapes with more than kScalarSupportMax vertices, support_lanes_bounded), else
   // the scalar loop.
   static constexpr int kScalarSupportMax = 4;
   // w: W_P of error_bounds.hpp's "(support)"; wt: W_P rounded up to T (the
@@ -193,7 +193,7 @@ class RobustFaceQueries : public RobustValues<T> {
     const int nv = static_cast<int>(vs.size());
     int best = 0;
     T m, second;
-    if (lanes_ && nv > kScalarSupportMax) {
+    if (support_lanes_ && nv > kScalarSupportMax) {
       const simd::Support<T> s = simd::support_scan<true>(q, pl.normal);
       best = s.index;
       m = s.min;
@@ -231,7 +231,7 @@ class RobustFaceQueries : public RobustValues<T> {
   SEPAX_ROBUST_INLINE T support_min(const Plane<T>& pl, const P& q) const {
     const auto& vs = q.vertices();
     const int nv = static_cast<int>(vs.size());
-    if (lanes_ && nv > kScalarSupportMax) return simd::support_scan<false, false>(q, pl.normal).min;
+    if (support_lanes_ && nv > kScalarSupportMax) return simd::support_scan<false, false>(q, pl.normal).min;
     T m = dot(pl.normal, vs[0]);
     for (int i = 1; i < nv; ++i) {
       const T h = dot(pl.normal, vs[static_cast<std::size_t>(i)]);

@@ -48,7 +48,11 @@ class RobustKernelState : protected ErrorConstants<T> {
 
  protected:
   RobustKernelState(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b)
-      : a_(a), b_(b), e_(a, b), lanes_(a.lanes_bounded() && b.lanes_bounded()) {}
+      : a_(a),
+        b_(b),
+        e_(a, b),
+        lanes_(a.lanes_bounded() && b.lanes_bounded()),
+        support_lanes_(a.support_lanes_bounded() && b.support_lanes_bounded()) {}
 
   using P = ConvexPolyhedron<T>;
   using C = robust::ErrorConstants<T>;
@@ -129,7 +133,8 @@ class RobustKernelState : protected ErrorConstants<T> {
     EdgeAxis axis;
   };
   mutable AxisCache axis_cache_;
-  bool lanes_ = false;  // both shapes lanes_bounded(): the SIMD scans apply
+  bool lanes_ = false;          // both shapes lanes_bounded(): the SIMD scans apply
+  bool support_lanes_ = false;  // both shapes support_lanes_bounded(): the support scans apply
   mutable std::int64_t fallbacks_ = 0;
   mutable bool projection_rule_ = false;
 };
