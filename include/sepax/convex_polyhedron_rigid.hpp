@@ -194,6 +194,7 @@ inline std::size_t ConvexPolyhedron<T>::rigid_vertex_groups(const ConvexPolyhedr
     return 0;
   } else {
     using V = typename L::V;
+    static_assert(sizeof(Vec3<T>) == 3 * sizeof(T), "store_xyz writes Vec3<T> as three contiguous T");
     const std::size_t done = src.vertices_.size() / W * W;
     if (done == 0) return 0;
     const auto vs = static_cast<std::size_t>(lane_vertex_stride_);
@@ -211,8 +212,7 @@ inline std::size_t ConvexPolyhedron<T>::rigid_vertex_groups(const ConvexPolyhedr
       L::store(lv + b, x);
       L::store(lv + vs + b, y);
       L::store(lv + 2 * vs + b, z);
-      for (int k = 0; k < W; ++k)
-        vertices_[b + static_cast<std::size_t>(k)] = Vec3<T>(lv[b + k], lv[vs + b + k], lv[2 * vs + b + k]);
+      L::store_xyz(vertices_[b].data(), x, y, z);  // (Vec3<T> is three contiguous T)
       ok = L::mand(ok,
                    L::mand(L::le(L::abs(x), vmax), L::mand(L::le(L::abs(y), vmax), L::le(L::abs(z), vmax))));
       mn0 = L::min_lt(x, mn0), mn1 = L::min_lt(y, mn1), mn2 = L::min_lt(z, mn2);

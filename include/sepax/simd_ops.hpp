@@ -48,6 +48,9 @@ struct Lanes {  // portable fallback: one lane
   static V set1(T x) { return x; }
   static V iota(T base) { return base; }
   static void store(T* p, V v) { *p = v; }
+  /// p[3i], p[3i + 1], p[3i + 2] = lane i of x, y, z: `width` points
+  /// interleaved (an array of Vec3<T>), copies of the lanes' values.
+  static void store_xyz(T* p, V x, V y, V z) { p[0] = x, p[1] = y, p[2] = z; }
   static V add(V a, V b) { return a + b; }
   static V sub(V a, V b) { return a - b; }
   static V mul(V a, V b) { return a * b; }
@@ -79,6 +82,18 @@ struct Lanes<float> {
   static V set1(float x) { return _mm_set1_ps(x); }
   static V iota(float base) { return _mm_setr_ps(base, base + 1.0f, base + 2.0f, base + 3.0f); }
   static void store(float* p, V v) { _mm_storeu_ps(p, v); }
+  // (x0 y0 z0 x1) (y1 z1 x2 y2) (z2 x3 y3 z3) from two unpacks and six shuffles
+  static void store_xyz(float* p, V x, V y, V z) {
+    const V lo = _mm_unpacklo_ps(x, y);                                // x0 y0 x1 y1
+    const V hi = _mm_unpackhi_ps(x, y);                                // x2 y2 x3 y3
+    const V zx = _mm_shuffle_ps(z, lo, _MM_SHUFFLE(2, 2, 0, 0));      // z0 z0 x1 x1
+    const V yz = _mm_shuffle_ps(lo, z, _MM_SHUFFLE(1, 1, 3, 3));      // y1 y1 z1 z1
+    const V zx3 = _mm_shuffle_ps(z, hi, _MM_SHUFFLE(2, 2, 2, 2));     // z2 z2 x3 x3
+    const V yz3 = _mm_shuffle_ps(hi, z, _MM_SHUFFLE(3, 3, 3, 3));     // y3 y3 z3 z3
+    _mm_storeu_ps(p, _mm_shuffle_ps(lo, zx, _MM_SHUFFLE(2, 0, 1, 0)));  // x0 y0 z0 x1
+    _mm_storeu_ps(p + 4, _mm_shuffle_ps(yz, hi, _MM_SHUFFLE(1, 0, 2, 0)));  // y1 z1 x2 y2
+    _mm_storeu_ps(p + 8, _mm_shuffle_ps(zx3, yz3, _MM_SHUFFLE(2, 0, 2, 0)));  // z2 x3 y3 z3
+  }
   static V add(V a, V b) { return _mm_add_ps(a, b); }
   static V sub(V a, V b) { return _mm_sub_ps(a, b); }
   static V mul(V a, V b) { return _mm_mul_ps(a, b); }
@@ -113,6 +128,12 @@ struct Lanes<double> {
   static V set1(double x) { return _mm_set1_pd(x); }
   static V iota(double base) { return _mm_setr_pd(base, base + 1.0); }
   static void store(double* p, V v) { _mm_storeu_pd(p, v); }
+  // (x0 y0) (z0 x1) (y1 z1)
+  static void store_xyz(double* p, V x, V y, V z) {
+    _mm_storeu_pd(p, _mm_unpacklo_pd(x, y));
+    _mm_storeu_pd(p + 2, _mm_shuffle_pd(z, x, 2));
+    _mm_storeu_pd(p + 4, _mm_unpackhi_pd(y, z));
+  }
   static V add(V a, V b) { return _mm_add_pd(a, b); }
   static V sub(V a, V b) { return _mm_sub_pd(a, b); }
   static V mul(V a, V b) { return _mm_mul_pd(a, b); }
