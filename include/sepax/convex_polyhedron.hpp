@@ -68,27 +68,50 @@ struct PolyhedronTopology {
 /// count increment, no array copy), so moving a shape between polyhedra costs
 /// the same for any size.  edit() gives write access to a topology only this
 /// holder refers to (copying it first otherwise), for the builder of a new
-/// polyhedron.  Never null: a default or moved-from holder refers to one
-/// shared empty topology.
+/// polyhedron, which calls refresh() when it is done.  Never null: a default
+/// or moved-from holder refers to one shared empty topology.  The arrays'
+/// data pointers and sizes are kept beside the pointer, so the accessors of
+/// the hot loops load one pointer, as from a vector member.
 class SharedTopology {
  public:
-  SharedTopology() noexcept : p_(empty()) {}
+  SharedTopology() noexcept : p_(empty()) { refresh(); }
   SharedTopology(const SharedTopology&) noexcept = default;
   SharedTopology& operator=(const SharedTopology&) noexcept = default;
-  SharedTopology(SharedTopology&& o) noexcept : p_(std::move(o.p_)) { o.p_ = empty(); }
+  SharedTopology(SharedTopology&& o) noexcept : SharedTopology(static_cast<const SharedTopology&>(o)) {
+    o.reset();
+  }
   SharedTopology& operator=(SharedTopology&& o) noexcept {
     if (this != &o) {
-      p_ = std::move(o.p_);
-      o.p_ = empty();
+      *this = static_cast<const SharedTopology&>(o);
+      o.reset();
     }
     return *this;
   }
   const PolyhedronTopology& get() const noexcept { return *p_; }
   const PolyhedronTopology* operator->() const noexcept { return p_.get(); }
-  /// Write access for building: a topology no other holder refers to.
+  const HalfEdge* half_edges() const noexcept { return half_edges_; }
+  const FaceLoop* faces() const noexcept { return faces_; }
+  const int* fan_start() const noexcept { return fan_start_; }
+  const int* fan() const noexcept { return fan_; }
+  int half_edge_count() const noexcept { return half_edge_count_; }
+  int face_count() const noexcept { return face_count_; }
+  /// Write access for building: a topology no other holder refers to.  The
+  /// data pointers above are stale once an array is resized, until refresh().
   PolyhedronTopology& edit() {
-    if (p_.use_count() != 1) p_ = std::make_shared<PolyhedronTopology>(*p_);
+    if (p_.use_count() != 1) {
+      p_ = std::make_shared<PolyhedronTopology>(*p_);
+      refresh();
+    }
     return *p_;
+  }
+  /// After edit(): the data pointers and sizes of the arrays as they are now.
+  void refresh() noexcept {
+    half_edges_ = p_->half_edges.data();
+    faces_ = p_->faces.data();
+    fan_start_ = p_->fan_start.data();
+    fan_ = p_->fan.data();
+    half_edge_count_ = static_cast<int>(p_->half_edges.size());
+    face_count_ = static_cast<int>(p_->faces.size());
   }
   /// Whether both refer to the same topology.
   bool same_as(const SharedTopology& o) const noexcept { return p_ == o.p_; }
@@ -98,7 +121,17 @@ class SharedTopology {
     static const std::shared_ptr<PolyhedronTopology> e = std::make_shared<PolyhedronTopology>();
     return e;
   }
+  void reset() noexcept {
+    p_ = empty();
+    refresh();
+  }
   std::shared_ptr<PolyhedronTopology> p_;
+  const HalfEdge* half_edges_ = nullptr;
+  const FaceLoop* faces_ = nullptr;
+  const int* fan_start_ = nullptr;
+  const int* fan_ = nullptr;
+  int half_edge_count_ = 0;
+  int face_count_ = 0;
 };
 
 }  // namespace detail
@@ -372,26 +405,26 @@ class ConvexPolyhedron {
 
   // ---- sizes ----
   int vertex_count() const { return static_cast<int>(vertices_.size()); }
-  int half_edge_count() const { return static_cast<int>(topology_->half_edges.size()); }
+  int half_edge_count() const { return topology_.half_edge_count(); }
   int edge_count() const { return half_edge_count() / 2; }
-  int face_count() const { return static_cast<int>(topology_->faces.size()); }
+  int face_count() const { return topology_.face_count(); }
   bool empty() const { return vertices_.empty(); }
   /// A double-sided polygon (two faces with opposite normals).
-  bool is_flat() const { return topology_->faces.size() == 2; }
+  bool is_flat() const { return topology_.face_count() == 2; }
 
   // ---- vertices ----
   const Vec3<T>& vertex(int v) const { return vertices_[static_cast<std::size_t>(v)]; }
   const std::vector<Vec3<T>>& vertices() const { return vertices_; }
   /// Outgoing half-edges of vertex v.
   std::span<const int> vertex_half_edges(int v) const {
-    const auto b = static_cast<std::size_t>(topology_->fan_start[static_cast<std::size_t>(v)]);
-    const auto e = static_cast<std::size_t>(topology_->fan_start[static_cast<std::size_t>(v) + 1]);
-    return std::span<const int>(topology_->fan.data() + b, e - b);
+    const auto b = static_cast<std::size_t>(topology_.fan_start()[static_cast<std::size_t>(v)]);
+    const auto e = static_cast<std::size_t>(topology_.fan_start()[static_cast<std::size_t>(v) + 1]);
+    return std::span<const int>(topology_.fan() + b, e - b);
   }
 
   // ---- half-edges and edges ----
   static int twin(int h) { return h ^ 1; }
-  const HalfEdge& half_edge(int h) const { return topology_->half_edges[static_cast<std::size_t>(h)]; }
+  const HalfEdge& half_edge(int h) const { return topology_.half_edges()[static_cast<std::size_t>(h)]; }
   const std::vector<HalfEdge>& half_edges() const { return topology_->half_edges; }
   int edge_tail(int e) const { return half_edge(2 * e).origin; }
   int edge_head(int e) const { return half_edge(2 * e + 1).origin; }
@@ -453,7 +486,7 @@ class ConvexPolyhedron {
   }
 
   // ---- faces ----
-  const FaceLoop& face(int f) const { return topology_->faces[static_cast<std::size_t>(f)]; }
+  const FaceLoop& face(int f) const { return topology_.faces()[static_cast<std::size_t>(f)]; }
   const std::vector<FaceLoop>& faces() const { return topology_->faces; }
   const Plane<T>& plane(int f) const { return planes_[static_cast<std::size_t>(f)]; }
   const std::vector<Plane<T>>& planes() const { return planes_; }

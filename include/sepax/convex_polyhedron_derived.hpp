@@ -45,7 +45,7 @@ inline void ConvexPolyhedron<T>::compute_derived(bool eager_conditioning, bool w
 template <Number T>
 inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_planes(
     bool eager_conditioning) {
-  const auto nf = topology_->faces.size();
+  const auto nf = static_cast<std::size_t>(topology_.face_count());
   planes_.resize(nf);
   [[maybe_unused]] NormalConditioningScan scan;
   [[maybe_unused]] const bool cond =
@@ -110,7 +110,7 @@ inline std::size_t ConvexPolyhedron<T>::plane_groups(NormalConditioningScan* sca
     return 0;
   } else {
     using V = typename L::V;
-    const std::size_t done = topology_->faces.size() / W * W;
+    const std::size_t done = static_cast<std::size_t>(topology_.face_count()) / W * W;
     const V vmax = L::set1(std::numeric_limits<T>::max());
     const V vtiny = L::set1(std::numeric_limits<T>::min() * T(0x1p40));  // safe_squared_norm's
     const V big = L::set1(T(0x1p60));
@@ -119,7 +119,7 @@ inline std::size_t ConvexPolyhedron<T>::plane_groups(NormalConditioningScan* sca
     for (std::size_t base = 0; base < done; base += W) {
       alignas(16) T in[9][W];  // v0, v1, v2 of each lane's plane triple, by coordinate
       for (int i = 0; i < W; ++i) {
-        const auto& t = topology_->faces[base + static_cast<std::size_t>(i)].plane_vertices;
+        const auto& t = topology_.faces()[base + static_cast<std::size_t>(i)].plane_vertices;
         const T* p0 = vertices_[static_cast<std::size_t>(t[0])].data();
         const T* p1 = vertices_[static_cast<std::size_t>(t[1])].data();
         const T* p2 = vertices_[static_cast<std::size_t>(t[2])].data();
@@ -182,8 +182,8 @@ inline void ConvexPolyhedron<T>::compute_edge_data() {
   edge_n0_.resize(ne);
   edge_n1_.resize(ne);
   for (std::size_t e = 0; e < ne; ++e) {
-    const HalfEdge& h0 = topology_->half_edges[2 * e];
-    const HalfEdge& h1 = topology_->half_edges[2 * e + 1];
+    const HalfEdge& h0 = topology_.half_edges()[2 * e];
+    const HalfEdge& h1 = topology_.half_edges()[2 * e + 1];
     edge_dirs_[e] = Vec3<T>(vertex(h1.origin) - vertex(h0.origin));  // edge_direction(e)
     edge_n0_[e] = planes_[static_cast<std::size_t>(h0.face)].normal;
     edge_n1_[e] = planes_[static_cast<std::size_t>(h1.face)].normal;
@@ -205,7 +205,7 @@ inline void ConvexPolyhedron<T>::compute_edge_data() {
 template <Number T>
 [[gnu::always_inline]] inline Plane<T> ConvexPolyhedron<T>::plane_of_triple(
     int f, NormalConditioningScan* scan) const {
-  const auto& t = topology_->faces[static_cast<std::size_t>(f)].plane_vertices;
+  const auto& t = topology_.faces()[static_cast<std::size_t>(f)].plane_vertices;
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     const T* p0 = vertex(t[0]).data();
     const T* p1 = vertex(t[1]).data();

@@ -32,7 +32,7 @@ inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& s
   if (!topology_.same_as(src.topology_)) topology_ = src.topology_;  // shared, not copied
   const std::size_t nv = src.vertices_.size();
   vertices_.resize(nv);
-  planes_.resize(topology_->faces.size());
+  planes_.resize(static_cast<std::size_t>(topology_.face_count()));
   const auto ne = static_cast<std::size_t>(edge_count());
   edge_dirs_.resize(ne);
   edge_n0_.resize(ne);
@@ -119,8 +119,8 @@ inline void ConvexPolyhedron<T>::derive_rigid_part(std::span<const int> faces, s
   }
   for (const int e : edges) {
     const auto k = static_cast<std::size_t>(e);
-    const HalfEdge& h0 = topology_->half_edges[2 * k];
-    const HalfEdge& h1 = topology_->half_edges[2 * k + 1];
+    const HalfEdge& h0 = topology_.half_edges()[2 * k];
+    const HalfEdge& h1 = topology_.half_edges()[2 * k + 1];
     edge_dirs_[k] = Vec3<T>(vertex(h1.origin) - vertex(h0.origin));
     edge_n0_[k] = planes_[static_cast<std::size_t>(h0.face)].normal;
     edge_n1_[k] = planes_[static_cast<std::size_t>(h1.face)].normal;
@@ -157,8 +157,8 @@ inline bool ConvexPolyhedron<T>::derive_rigid_edges() {
   [[maybe_unused]] const T big = T(0x1p60);
   bool ok = true;
   for (std::size_t e = 0; e < ne; ++e) {
-    const HalfEdge& h0 = topology_->half_edges[2 * e];
-    const HalfEdge& h1 = topology_->half_edges[2 * e + 1];
+    const HalfEdge& h0 = topology_.half_edges()[2 * e];
+    const HalfEdge& h1 = topology_.half_edges()[2 * e + 1];
     const Vec3<T> d(vertex(h1.origin) - vertex(h0.origin));  // edge_direction(e)
     const Vec3<T>& n0 = planes_[static_cast<std::size_t>(h0.face)].normal;
     const Vec3<T>& n1 = planes_[static_cast<std::size_t>(h1.face)].normal;

@@ -130,6 +130,7 @@ inline void ConvexPolyhedron<T>::build_topology(const std::vector<std::vector<in
     const auto o = static_cast<std::size_t>(topo.half_edges[h].origin);
     topo.fan[static_cast<std::size_t>(fill[o]++)] = static_cast<int>(h);
   }
+  topology_.refresh();  // the arrays are complete: the accessors read them from here on
   const long euler =
       static_cast<long>(nv) - static_cast<long>(edge_count()) + static_cast<long>(face_count());
   if (euler != 2) {
