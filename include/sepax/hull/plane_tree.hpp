@@ -7,13 +7,14 @@
 //   2. max_height: the largest computed height T(dot(n, x) - off) over the planes, a box skipped when its
 //      bound proves every height in it at most the largest found so far (the bound is derived there);
 //   3. first_above: the first plane (in index order) whose computed height exceeds a limit.
-// Used by the measure of points against a built hull (repair.hpp, outside_points) and the quickhull's sweep
-// of kept points (quickhull.hpp, sweep).
+// Used by the measure of points against a built hull (repair.hpp, outside_points), the quickhull's sweep
+// of kept points and its re-assignment over every live face (quickhull.hpp, sweep, assign_live).
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -32,6 +33,9 @@ inline constexpr int kPlaneTreeFaces = 512;
 /// Points from which the sweep's searches go through a PlaneTree (fewer: the tree costs more to build than
 /// the passes it saves).
 inline constexpr double kPlaneTreePoints = 64;
+/// Points a forced quickhull step re-assigns from which it builds its tree of the live faces anew when the
+/// last one is missing or stale (below, a pass over the live faces is cheaper; either gives the same faces).
+inline constexpr std::size_t kPlaneTreeForcedPoints = 16;
 
 /// Float T: planes in a tree of bounding boxes of their coefficients, for the largest height of a point.
 template <Number T>
