@@ -21,19 +21,29 @@
 
 namespace sepax::hull::detail {
 
+// The edge from corner i to corner i + 1 of a face polygon, and the values of it that polygon_distance
+// uses for every point (each computed by the expression polygon_distance would evaluate).
+struct PolygonEdge {
+  Vec3<double> e;    // b - a
+  Vec3<double> out;  // cross(e, n): x is beyond the edge when dot(out, x - a) > 0
+  double l2 = 0;     // squared_norm(e)
+};
+
 // Float T: the faces of an output polyhedron as polygons in double, on the
 // local coordinates, with Newell normals (well conditioned for thin faces).
 struct PolygonFace {
   std::span<const Vec3<double>> v;  // (into PolygonFaces::points)
+  std::span<const PolygonEdge> e;   // (into PolygonFaces::edges) e[i]: v[i] -> v[i + 1]
   Vec3<double> n;
   double off = 0;
   double area = 0;
 };
 
-// Every face of one polyhedron, their corners in one buffer (moved, never
-// copied: the faces point into it).
+// Every face of one polyhedron, their corners and edges in buffers (moved,
+// never copied: the faces point into them).
 struct PolygonFaces {
   std::vector<Vec3<double>> points;
+  std::vector<PolygonEdge> edges;
   std::vector<PolygonFace> faces;
   PolygonFaces() = default;
   PolygonFaces(const PolygonFaces&) = delete;
@@ -74,6 +84,18 @@ inline PolygonFaces polygon_faces(const ConvexPolyhedron<T>& h, const Vec3<T>& c
     fc.area = len / 2;
     fc.off = dot(n, Vec3<double>(m / static_cast<double>(fc.v.size())));
     out.faces.push_back(fc);
+  }
+  out.edges.reserve(out.points.size());
+  for (PolygonFace& fc : out.faces) {
+    const std::size_t first = out.edges.size();
+    for (std::size_t i = 0; i < fc.v.size(); ++i) {
+      PolygonEdge ed;
+      ed.e = Vec3<double>(fc.v[(i + 1) % fc.v.size()] - fc.v[i]);
+      ed.out = cross(ed.e, fc.n);
+      ed.l2 = squared_norm(ed.e);
+      out.edges.push_back(ed);
+    }
+    fc.e = std::span<const PolygonEdge>(out.edges.data() + first, fc.v.size());
   }
   return out;
 }
@@ -179,29 +201,41 @@ inline double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
   const std::size_t count = subset != nullptr ? subset->size() : faces.size();
   heights.resize(count);
   bool any_above = false;
-  for (std::size_t k = 0; k < count; ++k) {
-    const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
-    heights[k] = dot(fc.n, x) - fc.off;
-    any_above = any_above || heights[k] > 0;
+  if (subset != nullptr) {
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto& fc = faces[as_index((*subset)[k])];
+      heights[k] = dot(fc.n, x) - fc.off;
+      any_above |= heights[k] > 0;
+    }
+  } else {
+    for (std::size_t k = 0; k < count; ++k) {
+      heights[k] = dot(faces[k].n, x) - faces[k].off;
+      any_above |= heights[k] > 0;
+    }
   }
   if (!flat && !any_above) return 0.0;
+  double reach = best * (1 + kHullDistanceTie);  // (kept equal to it as best changes)
   for (std::size_t k = 0; k < count; ++k) {
-    const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
     const double h = heights[k];
-    if (std::abs(h) > best * (1 + kHullDistanceTie)) continue;  // (the polygon is no nearer than its plane)
-    bool inside = true;
-    double d = 1e300;
+    if (std::abs(h) > reach) continue;  // (the polygon is no nearer than its plane)
+    const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
+    // (inside: |h|; else the nearest edge, its squared distance taken first: sqrt is correctly rounded,
+    // hence monotone, so the root of the smallest is the smallest root)
     const std::size_t n = fc.v.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3<double>& a = fc.v[i];
-      const Vec3<double>& b = fc.v[(i + 1) % n];
-      const Vec3<double> e(b - a), ax(x - a);
-      if (dot(cross(e, fc.n), ax) > 0) inside = false;
-      const double l2 = squared_norm(e);
-      const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
-      d = std::min(d, std::sqrt(squared_norm(Vec3<double>(ax - t * e))));
+    bool inside = true;
+    for (std::size_t i = 0; i < n && inside; ++i)
+      if (dot(fc.e[i].out, Vec3<double>(x - fc.v[i])) > 0) inside = false;
+    double d = std::abs(h);
+    if (!inside) {
+      double d2 = 1e300;
+      for (std::size_t i = 0; i < n; ++i) {
+        const PolygonEdge& ed = fc.e[i];
+        const Vec3<double> ax(x - fc.v[i]);
+        const double t = ed.l2 > 0 ? std::clamp(dot(ax, ed.e) / ed.l2, 0.0, 1.0) : 0.0;
+        d2 = std::min(d2, squared_norm(Vec3<double>(ax - t * ed.e)));
+      }
+      d = std::sqrt(d2);
     }
-    if (inside) d = std::abs(h);
     if (d < best * (1 - kHullDistanceTie)) {
       best = d;
       above = h > 0;
@@ -209,6 +243,7 @@ inline double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
       best = std::min(best, d);
       above = above || h > 0;
     }
+    reach = best * (1 + kHullDistanceTie);
   }
   return flat || above ? best : 0.0;
 }
