@@ -216,13 +216,11 @@ inline void Builder<T>::index_live_faces(std::size_t points) {
 }
 
 /// assign_among(p, live_faces_), the same decision: on many live faces (float T) through live_tree_ for the
-/// faces it holds and a pass over the faces made since (all later in index order).  The pass finds the first
-/// live face p is outside (height above threshold(p)), else keeps p on the first face of the largest height
-/// if that is above 0.  So: top, the largest height over the live faces (PlaneTree::max_height, the pass's
-/// value bit for bit, a dead face's height taken as -infinity), decides between the two; the face is then
-/// the first live one with height above threshold(p) (top above it) or above the float just below top
-/// (top at most threshold(p): height above it means height == top), found by PlaneTree::first_above, which
-/// returns the first in index order since tree item k precedes item k + 1 in live_faces_.
+/// faces it holds and a pass over the faces made since (all later in index order).  assign_among puts p on
+/// the conflict list of the first live face it is outside (height above threshold(p)), else keeps it on the
+/// first face of the largest height if that is above 0: the tree's first_above_or_highest (a dead face's
+/// height taken as -infinity) answers both for its faces, and the pass goes on from that answer as
+/// assign_among would from the tree's last face.
 template <Number T>
 inline void Builder<T>::assign_live(int p) {
   const std::vector<int>& live = live_faces_;
@@ -233,27 +231,26 @@ inline void Builder<T>::assign_live(int p) {
       assign_among(p, live);
       return;
     }
-    constexpr T kNone = -std::numeric_limits<T>::infinity();
-    auto tree_height = [&](int k) {
-      const Tri& t = tris_[as_index(live_tree_faces_[as_index(k)])];
-      return t.alive ? height(t.pl, p) : kNone;
-    };
-    const auto made_since = std::lower_bound(live.begin(), live.end(), static_cast<int>(live_tree_end_));
-    T top = live_tree_->max_height(local_point(p), tree_height);
-    for (auto it = made_since; it != live.end(); ++it)
-      if (tris_[as_index(*it)].alive) top = std::max(top, height(tris_[as_index(*it)].pl, p));
     const T limit = threshold(p);
-    const bool outside = top > limit;
-    if (!outside && !(top > T(0))) return;  // (on no face: dropped, as assign_among drops it)
-    const T floor = outside ? limit : std::nextafter(top, kNone);
-    const int k = live_tree_->first_above(local_point(p), floor, tree_height);
-    int f = k >= 0 ? live_tree_faces_[as_index(k)] : -1;
-    for (auto it = made_since; f < 0 && it != live.end(); ++it)
-      if (tris_[as_index(*it)].alive && height(tris_[as_index(*it)].pl, p) > floor) f = *it;
-    if (outside) {
-      tris_[as_index(f)].conflict.push_back(p);
-    } else {
-      tris_[as_index(f)].on.push_back(p);
+    auto r = live_tree_->first_above_or_highest(local_point(p), limit, [&](int k) {
+      const Tri& t = tris_[as_index(live_tree_faces_[as_index(k)])];
+      return t.alive ? height(t.pl, p) : -std::numeric_limits<T>::infinity();
+    });
+    if (r.face >= 0) r.face = live_tree_faces_[as_index(r.face)];
+    const auto made_since = std::lower_bound(live.begin(), live.end(), static_cast<int>(live_tree_end_));
+    for (auto it = made_since; !r.above && it != live.end(); ++it) {
+      if (!tris_[as_index(*it)].alive) continue;
+      const T h = height(tris_[as_index(*it)].pl, p);
+      if (h > limit) {
+        r = {*it, h, true};
+      } else if (h > r.height) {
+        r = {*it, h, false};
+      }
+    }
+    if (r.above) {
+      tris_[as_index(r.face)].conflict.push_back(p);
+    } else if (r.height > T(0)) {
+      tris_[as_index(r.face)].on.push_back(p);
     }
   }
 }
