@@ -21,29 +21,19 @@
 
 namespace sepax::hull::detail {
 
-// The edge from corner i to corner i + 1 of a face polygon, and the values of it that polygon_distance
-// uses for every point (each computed by the expression polygon_distance would evaluate).
-struct PolygonEdge {
-  Vec3<double> e;    // b - a
-  Vec3<double> out;  // cross(e, n): x is beyond the edge when dot(out, x - a) > 0
-  double l2 = 0;     // squared_norm(e)
-};
-
 // Float T: the faces of an output polyhedron as polygons in double, on the
 // local coordinates, with Newell normals (well conditioned for thin faces).
 struct PolygonFace {
   std::span<const Vec3<double>> v;  // (into PolygonFaces::points)
-  std::span<const PolygonEdge> e;   // (into PolygonFaces::edges) e[i]: v[i] -> v[i + 1]
   Vec3<double> n;
   double off = 0;
   double area = 0;
 };
 
-// Every face of one polyhedron, their corners and edges in buffers (moved,
-// never copied: the faces point into them).
+// Every face of one polyhedron, their corners in one buffer (moved, never
+// copied: the faces point into it).
 struct PolygonFaces {
   std::vector<Vec3<double>> points;
-  std::vector<PolygonEdge> edges;
   std::vector<PolygonFace> faces;
   PolygonFaces() = default;
   PolygonFaces(const PolygonFaces&) = delete;
@@ -84,18 +74,6 @@ inline PolygonFaces polygon_faces(const ConvexPolyhedron<T>& h, const Vec3<T>& c
     fc.area = len / 2;
     fc.off = dot(n, Vec3<double>(m / static_cast<double>(fc.v.size())));
     out.faces.push_back(fc);
-  }
-  out.edges.reserve(out.points.size());
-  for (PolygonFace& fc : out.faces) {
-    const std::size_t first = out.edges.size();
-    for (std::size_t i = 0; i < fc.v.size(); ++i) {
-      PolygonEdge ed;
-      ed.e = Vec3<double>(fc.v[(i + 1) % fc.v.size()] - fc.v[i]);
-      ed.out = cross(ed.e, fc.n);
-      ed.l2 = squared_norm(ed.e);
-      out.edges.push_back(ed);
-    }
-    fc.e = std::span<const PolygonEdge>(out.edges.data() + first, fc.v.size());
   }
   return out;
 }
@@ -223,16 +201,18 @@ inline double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
     // hence monotone, so the root of the smallest is the smallest root)
     const std::size_t n = fc.v.size();
     bool inside = true;
-    for (std::size_t i = 0; i < n && inside; ++i)
-      if (dot(fc.e[i].out, Vec3<double>(x - fc.v[i])) > 0) inside = false;
+    for (std::size_t i = 0; i < n && inside; ++i) {
+      const Vec3<double> e(fc.v[(i + 1) % n] - fc.v[i]), ax(x - fc.v[i]);
+      if (dot(cross(e, fc.n), ax) > 0) inside = false;
+    }
     double d = std::abs(h);
     if (!inside) {
       double d2 = 1e300;
       for (std::size_t i = 0; i < n; ++i) {
-        const PolygonEdge& ed = fc.e[i];
-        const Vec3<double> ax(x - fc.v[i]);
-        const double t = ed.l2 > 0 ? std::clamp(dot(ax, ed.e) / ed.l2, 0.0, 1.0) : 0.0;
-        d2 = std::min(d2, squared_norm(Vec3<double>(ax - t * ed.e)));
+        const Vec3<double> e(fc.v[(i + 1) % n] - fc.v[i]), ax(x - fc.v[i]);
+        const double l2 = squared_norm(e);
+        const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
+        d2 = std::min(d2, squared_norm(Vec3<double>(ax - t * e)));
       }
       d = std::sqrt(d2);
     }
