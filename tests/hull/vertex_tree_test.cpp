@@ -2,7 +2,8 @@
 // limit, for float and double, at several scales and offsets; and the tree does skip vertices;
 // VertexTree::height_holds.  hull/plane_tree.hpp: PlaneTree::max_height is the largest computed height of a
 // point above the planes, bit for bit the value of a pass over every plane, first_above the first plane a
-// pass finds above a limit; and the tree does skip planes.
+// pass finds above a limit, first_above_or_highest that plane or else the pass's first highest; and the tree
+// does skip planes.
 #include <catch2/catch.hpp>
 
 #include <sepax/convex_hull.hpp>
@@ -188,6 +189,58 @@ TEMPLATE_TEST_CASE("plane tree: the largest height is the pass's, bit for bit", 
   }
   // (the tree skips most planes for points of a sphere against its faces)
   CHECK(visited < total / 2);
+}
+
+TEMPLATE_TEST_CASE("plane tree: first_above_or_highest is a pass's first plane above, else its first highest",
+                   "[hull]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(13);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const double scale : {1e-3, 1.0, 1e3}) {
+    // the faces of a hull of cylinder points (many planes nearly through each point), each plane twice
+    // (ties: the smaller index wins), a third of them passed over as dead (height -infinity)
+    std::vector<Vec3<T>> pts;
+    for (int i = 0; i < 800; ++i) {
+      const double a = 3.14159265358979 * unit(rng);
+      const Vec3<double> x = scale * Vec3<double>(std::cos(a), std::sin(a), unit(rng));
+      pts.emplace_back(T(x[0]), T(x[1]), T(x[2]));
+    }
+    const auto hull = sepax::convex_hull(pts);
+    std::vector<Plane<T>> planes;
+    for (int f = 0; f < hull.face_count(); ++f) planes.push_back(hull.plane(f));
+    for (int f = 0; f < hull.face_count(); ++f) planes.push_back(hull.plane(f));
+    const sepax::hull::detail::PlaneTree<T> tree(
+        static_cast<int>(planes.size()),
+        [&](int f) -> const Plane<T>& { return planes[static_cast<std::size_t>(f)]; });
+    for (int trial = 0; trial < 300; ++trial) {
+      const Vec3<T>& p = pts[static_cast<std::size_t>(trial)];
+      const Vec3<double> xd = trial % 3 == 0 ? Vec3<double>(sepax::vec_to_double(p))
+                                             : Vec3<double>((1 + 1e-6 * unit(rng)) * sepax::vec_to_double(p));
+      const Vec3<T> x(static_cast<T>(xd[0]), static_cast<T>(xd[1]), static_cast<T>(xd[2]));
+      auto height = [&](int f) {
+        return f % 3 == 1 ? -std::numeric_limits<T>::infinity()
+                          : computed_height(planes[static_cast<std::size_t>(f)], x);
+      };
+      for (const T limit : {T(0), T(1e-6 * scale), T(-1)}) {
+        // the pass: the first plane above limit, else the first of the largest height
+        int first = -1, high = -1;
+        T best = -std::numeric_limits<T>::infinity();
+        for (int f = 0; f < static_cast<int>(planes.size()); ++f) {
+          const T h = height(f);
+          if (first < 0 && h > limit) first = f;
+          if (h > best) {
+            best = h;
+            high = f;
+          }
+        }
+        const auto r = tree.first_above_or_highest(x, limit, height);
+        CHECK(r.above == (first >= 0));
+        CHECK(r.face == (first >= 0 ? first : high));
+        if (first < 0) CHECK(r.height == best);
+      }
+    }
+  }
 }
 
 TEMPLATE_TEST_CASE("plane tree: no planes give -infinity", "[hull]", float, double) {

@@ -20,6 +20,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -29,6 +30,7 @@
 #include "../vec3.hpp"
 #include "hull_distance.hpp"
 #include "index.hpp"
+#include "plane_tree.hpp"
 #include "to_polyhedron.hpp"
 #include "traits.hpp"
 
@@ -113,6 +115,8 @@ class Builder {
   void assign(int p, int first);
   template <class Faces>
   void assign_among(int p, const Faces& faces);
+  void index_live_faces(std::size_t points);
+  void assign_live(int p);
   T threshold(int p) const;
   bool sweep();
   static int edge_index(const Tri& t, int from);
@@ -191,6 +195,11 @@ class Builder {
   std::vector<int> nomerge_;     // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;
   bool tent_;  // float: may try tent_hull (not in a tent's own build)
+  /// Float T: the planes of live_faces_ as they were at one forced eye (assign_live), tree item k being
+  /// face live_tree_faces_[k]; the faces made since, tris_[live_tree_end_, ...), are passed over in order.
+  std::optional<std::conditional_t<Traits::kRechecksRounding, PlaneTree<T>, char>> live_tree_;
+  std::vector<int> live_tree_faces_;
+  std::size_t live_tree_end_ = 0;
 };
 
 }  // namespace sepax::hull::detail

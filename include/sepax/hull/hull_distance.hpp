@@ -179,29 +179,43 @@ inline double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
   const std::size_t count = subset != nullptr ? subset->size() : faces.size();
   heights.resize(count);
   bool any_above = false;
-  for (std::size_t k = 0; k < count; ++k) {
-    const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
-    heights[k] = dot(fc.n, x) - fc.off;
-    any_above = any_above || heights[k] > 0;
+  if (subset != nullptr) {
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto& fc = faces[as_index((*subset)[k])];
+      heights[k] = dot(fc.n, x) - fc.off;
+      any_above |= heights[k] > 0;
+    }
+  } else {
+    for (std::size_t k = 0; k < count; ++k) {
+      heights[k] = dot(faces[k].n, x) - faces[k].off;
+      any_above |= heights[k] > 0;
+    }
   }
   if (!flat && !any_above) return 0.0;
+  double reach = best * (1 + kHullDistanceTie);  // (kept equal to it as best changes)
   for (std::size_t k = 0; k < count; ++k) {
-    const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
     const double h = heights[k];
-    if (std::abs(h) > best * (1 + kHullDistanceTie)) continue;  // (the polygon is no nearer than its plane)
-    bool inside = true;
-    double d = 1e300;
+    if (std::abs(h) > reach) continue;  // (the polygon is no nearer than its plane)
+    const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
+    // (inside: |h|; else the nearest edge, its squared distance taken first: sqrt is correctly rounded,
+    // hence monotone, so the root of the smallest is the smallest root)
     const std::size_t n = fc.v.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3<double>& a = fc.v[i];
-      const Vec3<double>& b = fc.v[(i + 1) % n];
-      const Vec3<double> e(b - a), ax(x - a);
+    bool inside = true;
+    for (std::size_t i = 0; i < n && inside; ++i) {
+      const Vec3<double> e(fc.v[(i + 1) % n] - fc.v[i]), ax(x - fc.v[i]);
       if (dot(cross(e, fc.n), ax) > 0) inside = false;
-      const double l2 = squared_norm(e);
-      const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
-      d = std::min(d, std::sqrt(squared_norm(Vec3<double>(ax - t * e))));
     }
-    if (inside) d = std::abs(h);
+    double d = std::abs(h);
+    if (!inside) {
+      double d2 = 1e300;
+      for (std::size_t i = 0; i < n; ++i) {
+        const Vec3<double> e(fc.v[(i + 1) % n] - fc.v[i]), ax(x - fc.v[i]);
+        const double l2 = squared_norm(e);
+        const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
+        d2 = std::min(d2, squared_norm(Vec3<double>(ax - t * e)));
+      }
+      d = std::sqrt(d2);
+    }
     if (d < best * (1 - kHullDistanceTie)) {
       best = d;
       above = h > 0;
@@ -209,6 +223,7 @@ inline double polygon_distance(const std::vector<PolygonFace>& faces, bool flat,
       best = std::min(best, d);
       above = above || h > 0;
     }
+    reach = best * (1 + kHullDistanceTie);
   }
   return flat || above ? best : 0.0;
 }

@@ -6,14 +6,16 @@
 //      the widest of the four);
 //   2. max_height: the largest computed height T(dot(n, x) - off) over the planes, a box skipped when its
 //      bound proves every height in it at most the largest found so far (the bound is derived there);
-//   3. first_above: the first plane (in index order) whose computed height exceeds a limit.
-// Used by the measure of points against a built hull (repair.hpp, outside_points) and the quickhull's sweep
-// of kept points (quickhull.hpp, sweep).
+//   3. first_above: the first plane (in index order) whose computed height exceeds a limit;
+//   4. first_above_or_highest: that plane, or when there is none the first plane of the largest height.
+// Used by the measure of points against a built hull (repair.hpp, outside_points), the quickhull's sweep
+// of kept points and its re-assignment over every live face (quickhull.hpp, sweep, assign_live).
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -32,6 +34,9 @@ inline constexpr int kPlaneTreeFaces = 512;
 /// Points from which the sweep's searches go through a PlaneTree (fewer: the tree costs more to build than
 /// the passes it saves).
 inline constexpr double kPlaneTreePoints = 64;
+/// Points a forced quickhull step re-assigns from which it builds its tree of the live faces anew when the
+/// last one is missing or stale (below, a pass over the live faces is cheaper; either gives the same faces).
+inline constexpr std::size_t kPlaneTreeForcedPoints = 16;
 
 /// Float T: planes in a tree of bounding boxes of their coefficients, for the largest height of a point.
 template <Number T>
@@ -108,6 +113,58 @@ class PlaneTree {
           }
         });
     return first;
+  }
+
+  /// first_above_or_highest's answer: the face, its computed height, and whether that is above the limit.
+  struct Highest {
+    int face = -1;
+    T height = -std::numeric_limits<T>::infinity();
+    bool above = false;
+  };
+
+  /// In one walk: the smallest plane index whose computed height exceeds limit (above), else the largest
+  /// computed height and the smallest index at that height (face -1 for no planes).  A box is skipped when
+  /// max_height's bound u proves every height in it at most limit (u <= limit) and, until a plane above
+  /// limit is found, below the highest so far (u < highest: no larger height and no tie with a smaller
+  /// index); every other plane's height(f) (the same expression) is computed.
+  template <class Height>
+  Highest first_above_or_highest(const Vec3<T>& x, T limit, Height&& height) const {
+    Highest r;
+    if (tree_.nodes().empty()) return r;
+    const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
+                                  static_cast<double>(x[2])};
+    const double lim = static_cast<double>(limit);
+    const double slack = root_slack(q);
+    int stack[64];
+    double bound[64];
+    int top = 0;
+    stack[top] = 0;
+    bound[top++] = upper(tree_.nodes()[0], q, slack);
+    while (top > 0) {
+      --top;
+      const Node& nd = tree_.nodes()[as_index(stack[top])];
+      if (bound[top] <= lim && (r.above || bound[top] < static_cast<double>(r.height))) continue;
+      if (nd.left < 0) {
+        for (int i = nd.begin; i < nd.end; ++i) {
+          const int f = tree_.items()[as_index(i)].id;
+          const T h = height(f);
+          if (h > limit) {
+            if (!r.above || f < r.face) r = Highest{f, h, true};
+          } else if (!r.above && (h > r.height || (h == r.height && f < r.face))) {
+            r = Highest{f, h, false};
+          }
+        }
+      } else {
+        const double bl = upper(tree_.nodes()[as_index(nd.left)], q, slack);
+        const double br = upper(tree_.nodes()[as_index(nd.left + 1)], q, slack);
+        const bool left_first = !(br > bl);
+        stack[top] = left_first ? nd.left + 1 : nd.left;
+        bound[top++] = left_first ? br : bl;
+        stack[top] = left_first ? nd.left : nd.left + 1;
+        bound[top++] = left_first ? bl : br;
+      }
+    }
+    return r;
   }
 
  private:

@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <memory_resource>
 #include <optional>
 #include <stdexcept>
@@ -198,6 +199,62 @@ inline void Builder<T>::assign_among(int p, const Faces& faces) {
   near.keep(*this, p);
 }
 
+/// Float T, a forced eye on many live faces that re-assigns at least kPlaneTreeForcedPoints points: keeps
+/// live_tree_ over live_faces_ (built again once the faces made since number a quarter of its faces; a face
+/// that dies after is passed over by assign_live).
+template <Number T>
+inline void Builder<T>::index_live_faces(std::size_t points) {
+  if constexpr (Traits::kRechecksRounding) {
+    if (live_faces_.size() < as_index(kPlaneTreeFaces) || points < kPlaneTreeForcedPoints) return;
+    if (live_tree_ && 4 * (tris_.size() - live_tree_end_) <= live_tree_faces_.size()) return;
+    live_tree_faces_ = live_faces_;
+    live_tree_end_ = tris_.size();
+    live_tree_.emplace(static_cast<int>(live_tree_faces_.size()), [&](int k) -> const Plane<T>& {
+      return tris_[as_index(live_tree_faces_[as_index(k)])].pl;
+    });
+  }
+}
+
+/// assign_among(p, live_faces_), the same decision: on many live faces (float T) through live_tree_ for the
+/// faces it holds and a pass over the faces made since (all later in index order).  assign_among puts p on
+/// the conflict list of the first live face it is outside (height above threshold(p)), else keeps it on the
+/// first face of the largest height if that is above 0: the tree's first_above_or_highest (a dead face's
+/// height taken as -infinity) answers both for its faces, and the pass goes on from that answer as
+/// assign_among would from the tree's last face.
+template <Number T>
+inline void Builder<T>::assign_live(int p) {
+  const std::vector<int>& live = live_faces_;
+  if constexpr (!Traits::kRechecksRounding) {
+    assign_among(p, live);
+  } else {
+    if (!live_tree_ || live.size() < as_index(kPlaneTreeFaces)) {
+      assign_among(p, live);
+      return;
+    }
+    const T limit = threshold(p);
+    auto r = live_tree_->first_above_or_highest(local_point(p), limit, [&](int k) {
+      const Tri& t = tris_[as_index(live_tree_faces_[as_index(k)])];
+      return t.alive ? height(t.pl, p) : -std::numeric_limits<T>::infinity();
+    });
+    if (r.face >= 0) r.face = live_tree_faces_[as_index(r.face)];
+    const auto made_since = std::lower_bound(live.begin(), live.end(), static_cast<int>(live_tree_end_));
+    for (auto it = made_since; !r.above && it != live.end(); ++it) {
+      if (!tris_[as_index(*it)].alive) continue;
+      const T h = height(tris_[as_index(*it)].pl, p);
+      if (h > limit) {
+        r = {*it, h, true};
+      } else if (h > r.height) {
+        r = {*it, h, false};
+      }
+    }
+    if (r.above) {
+      tris_[as_index(r.face)].conflict.push_back(p);
+    } else if (r.height > T(0)) {
+      tris_[as_index(r.face)].on.push_back(p);
+    }
+  }
+}
+
 // How far above a face p must be to be outside it: eps, or 0 for a point
 // pinned by a repair pass (it becomes a vertex whenever it is outside).
 template <Number T>
@@ -295,6 +352,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<in
   tris_.clear();
   live_faces_.clear();
   live_made_ = 0;
+  live_tree_.reset();
   eye_visits_.assign(q_.size(), 0);
   // Orient the tetrahedron so that its faces point outward.
   if (height(plane_through(local_point(a), local_point(b), local_point(c)), d) > T(0)) std::swap(b, c);
@@ -446,16 +504,20 @@ inline void Builder<T>::expand() {
     // forced, to every live face (listed once, in index order: the faces
     // assign(p, 0) would test, without passing over the dead ones; the list
     // is kept between steps: the faces dead since are dropped and the faces
-    // made since appended, so it stays in index order)
+    // made since appended, so it stays in index order; on many faces searched
+    // through a tree of their planes, assign_live)
     std::vector<int>& live = live_faces_;
     if (forced) {
       std::erase_if(live, [&](int f) { return !tris_[as_index(f)].alive; });
       for (; live_made_ < tris_.size(); ++live_made_)
         if (tris_[live_made_].alive) live.push_back(static_cast<int>(live_made_));
+      std::size_t points = 0;  // (at least the points re-assigned below)
+      for (int f : visible) points += tris_[as_index(f)].conflict.size() + tris_[as_index(f)].on.size();
+      index_live_faces(points);
     }
     auto reassign = [&](int p) {
       if (forced) {
-        assign_among(p, live);
+        assign_live(p);
       } else {
         assign(p, first_new);
       }
