@@ -212,7 +212,8 @@ struct CollisionAlgorithm::State {
   // and the relative pose of the query it came from
   bool kept = false;
   SatResult<float> contact;
-  KeptFace face;  // its side planes when it is a face of A (face_refresh.hpp)
+  KeptFace face;   // its side planes when it is a face of A (face_refresh.hpp)
+  PosedView view;  // B' in part for the kept face (posed_view.hpp), reused between steps
   double sat_separation = 0;
   RigidTransform<float> x0;
   // the last query's answer beyond the margin (coherence.hpp): valid, its
@@ -483,7 +484,7 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     }
     if (keep) {
       bool refreshed = false;
-      kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.face, s.manifold, refreshed);
+      kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.face, s.view, s.manifold, refreshed);
       live.kept.fetch_add(1, std::memory_order_relaxed);
       if (refreshed) live.refreshed.fetch_add(1, std::memory_order_relaxed);
       if (refreshed && s.manifold.candidate_points > 4) live.reduced.fetch_add(1, std::memory_order_relaxed);

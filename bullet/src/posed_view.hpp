@@ -1,0 +1,118 @@
+// The part of B' (B posed in A's frame) a kept face reads, computed without
+// posing the whole shape through PreparedShape::posed_part_scratch (docs/
+// bullet.md, "Coherence"): B's vertices at x, the extent of their bounds,
+// and only the planes the kept face and its manifold read.  Each value is
+// the one the posed image holds, by the same operations:
+//   * a vertex: x.apply(v), transform.hpp; pose_vertices_into's SIMD lanes
+//     evaluate apply()'s operations in its order (posing.hpp);
+//   * the extent: sqrt of the sum over x, y, z of (max - min)^2 in double,
+//     finish_bounds' formula; the minimum and maximum of a coordinate are
+//     the same values in any order of comparison (a zero's sign, which the
+//     order can change, does not change max - min squared);
+//   * a plane: plane_of_triple's operations in its order on the face's
+//     plane triple (convex_polyhedron_derived.hpp), where its cross product
+//     is in range; otherwise the view declines.
+// The view declines (returns false) wherever posing would do more than that
+// - a pose check or range check that could throw, a plane that needs
+// plane_of_triple's rescaling - and the adapter then poses B' as before,
+// which throws or computes as it always did.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include <sepax/convex_polyhedron.hpp>
+#include <sepax/posing.hpp>
+#include <sepax/transform.hpp>
+
+namespace sepax::bullet {
+
+/// B' in part, with the accessors of ConvexPolyhedron<float> the kept face's
+/// functions read (face_refresh.hpp, contact_choice.hpp); topology from B.
+class PosedView {
+ public:
+  /// Poses every vertex of b by x (check_rigid first, as pose_vertices_into,
+  /// which throws the same error on a pose that is not a rotation); false
+  /// when a coordinate or the extent is outside the range below, where
+  /// posing's own checks decide.
+  bool pose(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x) {
+    sepax::detail::check_rigid(x);
+    src_ = &b;
+    const int n = b.vertex_count();
+    vertices_.resize(static_cast<std::size_t>(n));
+    if (planes_.size() != static_cast<std::size_t>(b.face_count()))
+      planes_.resize(static_cast<std::size_t>(b.face_count()));
+    // Posing refuses |coordinate| > FLT_MAX / 16 (and NaN); within 2^64 it
+    // never does, so a view inside that range decides what posing decides.
+    constexpr float kRange = 0x1p64f;
+    bool in_range = true;
+    float lo0 = 0, lo1 = 0, lo2 = 0, hi0 = 0, hi1 = 0, hi2 = 0;
+    for (int i = 0; i < n; ++i) {
+      const Vec3<float> v = x.apply(b.vertex(i));
+      vertices_[static_cast<std::size_t>(i)] = v;
+      in_range &= std::abs(v[0]) <= kRange && std::abs(v[1]) <= kRange && std::abs(v[2]) <= kRange;
+      if (i == 0) {
+        lo0 = hi0 = v[0], lo1 = hi1 = v[1], lo2 = hi2 = v[2];
+        continue;
+      }
+      lo0 = v[0] < lo0 ? v[0] : lo0, lo1 = v[1] < lo1 ? v[1] : lo1, lo2 = v[2] < lo2 ? v[2] : lo2;
+      hi0 = v[0] > hi0 ? v[0] : hi0, hi1 = v[1] > hi1 ? v[1] : hi1, hi2 = v[2] > hi2 ? v[2] : hi2;
+    }
+    if (!in_range || n < 3) return false;
+    const double w0 = static_cast<double>(float(hi0 - lo0)), w1 = static_cast<double>(float(hi1 - lo1)),
+                 w2 = static_cast<double>(float(hi2 - lo2));
+    double d2 = 0;
+    d2 += w0 * w0;
+    d2 += w1 * w1;
+    d2 += w2 * w2;
+    extent_ = std::sqrt(d2);
+    // Posing refuses an extent whose tolerances fall into float's subnormal
+    // range (Tolerances<float>::kCoplanar 1e-5 x kAdjacentCoplanarFraction
+    // 0.25 x extent < FLT_MIN, i.e. extent < 4.8e-33): decline far above.
+    return extent_ >= 1e-30;
+  }
+
+  /// The plane of face f from the posed vertices (plane_of_triple); false
+  /// where plane_of_triple would rescale the cross product.
+  bool derive(int f) {
+    const auto& t = src_->face(f).plane_vertices;
+    const float* p0 = vertex(t[0]).data();
+    const float* p1 = vertex(t[1]).data();
+    const float* p2 = vertex(t[2]).data();
+    const float a0 = p0[0], a1 = p0[1], a2 = p0[2];
+    const float u0 = p1[0] - a0, u1 = p1[1] - a1, u2 = p1[2] - a2;
+    const float w0 = p2[0] - a0, w1 = p2[1] - a1, w2 = p2[2] - a2;
+    float n0 = u1 * w2 - u2 * w1, n1 = u2 * w0 - u0 * w2, n2 = u0 * w1 - u1 * w0;
+    float s = n0 * n0;
+    s = s + n1 * n1;
+    s = s + n2 * n2;
+    if (!sepax::detail::safe_squared_norm(s)) return false;
+    const float len = std::sqrt(s);
+    if (len > 0.0f) n0 = n0 / len, n1 = n1 / len, n2 = n2 / len;
+    float off = n0 * a0;
+    off = off + n1 * a1;
+    off = off + n2 * a2;
+    planes_[static_cast<std::size_t>(f)] = Plane<float>{Vec3<float>(n0, n1, n2), off};
+    return true;
+  }
+
+  int vertex_count() const { return static_cast<int>(vertices_.size()); }
+  int face_count() const { return src_->face_count(); }
+  const Vec3<float>& vertex(int v) const { return vertices_[static_cast<std::size_t>(v)]; }
+  /// Only the planes derived since pose() are B''s.
+  const Plane<float>& plane(int f) const { return planes_[static_cast<std::size_t>(f)]; }
+  const FaceLoop& face(int f) const { return src_->face(f); }
+  const HalfEdge& half_edge(int h) const { return src_->half_edge(h); }
+  std::span<const int> vertex_half_edges(int v) const { return src_->vertex_half_edges(v); }
+  double extent() const { return extent_; }
+
+ private:
+  const ConvexPolyhedron<float>* src_ = nullptr;
+  std::vector<Vec3<float>> vertices_;
+  std::vector<Plane<float>> planes_;
+  double extent_ = 0;
+};
+
+}  // namespace sepax::bullet
