@@ -216,6 +216,7 @@ struct CollisionAlgorithm::State {
   PosedView view;  // B' in part for the kept face (posed_view.hpp), reused between steps
   double sat_separation = 0;
   RigidTransform<float> x0;
+  double defect0 = 0;  // rotation_defect(x0) (coherence.hpp)
   // the last query's answer beyond the margin (coherence.hpp): valid, its
   // separation and the relative pose it was proven at
   bool apart = false;
@@ -484,7 +485,9 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     }
     if (keep) {
       bool refreshed = false;
-      kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.face, s.view, s.manifold, refreshed);
+      const bool rigid = stays_rigid(s.defect0, s.x0, x);
+      kept_manifold(s.a->shape, pa, s.b->shape, x, rigid, s.contact, margin, s.face, s.view, s.manifold,
+                    refreshed);
       live.kept.fetch_add(1, std::memory_order_relaxed);
       if (refreshed) live.refreshed.fetch_add(1, std::memory_order_relaxed);
       if (refreshed && s.manifold.candidate_points > 4) live.reduced.fetch_add(1, std::memory_order_relaxed);
@@ -517,6 +520,7 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
         }
         s.sat_separation = to_double(r.separation);
         s.x0 = x;
+        s.defect0 = rotation_defect(x);
       }
       posed_manifold(s.a->shape, pa, s.b->shape, pb, contact, margin, s.manifold);
     }

@@ -33,14 +33,16 @@ inline SatResult<float> chosen_contact(const PreparedShape<float>& a, const Rigi
 /// manifold is refreshed (face_refresh.hpp; `face`: the kept face's side
 /// planes); where either declines, B' is posed by PreparedShape::
 /// posed_part_scratch and the manifold refreshed on it or, where the refresh
-/// declines, built by posed_manifold_on.  Returns the contact; `refreshed`
-/// says which path built the points.
+/// declines, built by posed_manifold_on.  `rigid`: check_rigid(x) is known
+/// to pass (PosedView::pose).  Returns the contact; `refreshed` says which
+/// path built the points.
 inline SatResult<float> kept_manifold(const PreparedShape<float>& a, const RigidTransform<float>& pose_a,
                                       const PreparedShape<float>& b, const RigidTransform<float>& x,
-                                      const SatResult<float>& last, double margin, const KeptFace& face,
-                                      PosedView& view, ContactManifold<float>& out, bool& refreshed) {
+                                      bool rigid, const SatResult<float>& last, double margin,
+                                      const KeptFace& face, PosedView& view, ContactManifold<float>& out,
+                                      bool& refreshed) {
   const bool face_b = last.feature.type == FeatureType::FaceB;
-  if (view.pose(b.polyhedron(), x) && (!face_b || view.derive(last.feature.b))) {
+  if (view.pose(b.polyhedron(), x, rigid) && (!face_b || view.derive(last.feature.b))) {
     const SatResult<float> r = kept_contact(a.polyhedron(), view, pose_a, last);
     bool planes = true;
     if (r.feature.type == FeatureType::FaceA) {

@@ -34,11 +34,12 @@ namespace sepax::bullet {
 class PosedView {
  public:
   /// Poses every vertex of b by x (check_rigid first, as pose_vertices_into,
-  /// which throws the same error on a pose that is not a rotation); false
-  /// when a coordinate or the extent is outside the range below, where
-  /// posing's own checks decide.
-  bool pose(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x) {
-    sepax::detail::check_rigid(x);
+  /// which throws the same error on a pose that is not a rotation, unless
+  /// `rigid`: the caller has proven that check_rigid(x) passes,
+  /// coherence.hpp's stays_rigid); false when a coordinate or the extent is
+  /// outside the range below, where posing's own checks decide.
+  bool pose(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x, bool rigid) {
+    if (!rigid) sepax::detail::check_rigid(x);
     src_ = &b;
     const int n = b.vertex_count();
     vertices_.resize(static_cast<std::size_t>(n));

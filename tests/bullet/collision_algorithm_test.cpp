@@ -485,6 +485,31 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("bullet: a kept face refuses a pose that is not a rotation, as a query does") {
+  // B's basis scaled by 1 + 4e-4: |R^T R - I|_F = sqrt(3) (s^2 - 1) = 1.4e-3,
+  // beyond posing's 1e-3, while |R1 - R0|_F reach = 6e-4 stays within the
+  // kept face's budget (0.5e-3 x 1.73 m): the kept face's posing must refuse
+  // it (no point, one refused query) exactly as a fresh algorithm does.
+  btBoxShape box(btVector3(0.5f, 0.5f, 0.5f));
+  const btTransform tb = at(0.01f, 0.999f, 0.02f);
+  Pair p(&box, &box, at(0, 0, 0), tb, true);
+  REQUIRE(p.manifold());
+  REQUIRE(p.manifold());
+  CHECK(p.cf->counters().kept == 1);
+  CHECK(p.cf->counters().errors == 0);
+  btTransform scaled = tb;
+  scaled.setBasis(tb.getBasis().scaled(btVector3(1 + 4e-4f, 1 + 4e-4f, 1 + 4e-4f)));
+  p.b.setWorldTransform(scaled);
+  CHECK(p.manifold() == nullptr);
+  CHECK(p.cf->counters().errors == 1);
+  Pair fresh(&box, &box, at(0, 0, 0), scaled, true);
+  CHECK(fresh.manifold() == nullptr);
+  CHECK(fresh.cf->counters().errors == 1);
+  // back at a rotation: points again
+  p.b.setWorldTransform(tb);
+  CHECK(p.manifold() != nullptr);
+}
+
 TEST_CASE("bullet: a shape rescaled in place drops the kept face and queries again") {
   btBoxShape floor(btVector3(5, 0.5f, 5)), box(btVector3(0.5f, 0.5f, 0.5f));
   const btTransform tf = at(0, -0.5f, 0), tb = at(0, 0.499f, 0);
