@@ -7,7 +7,7 @@
 //      clip_polygon, clip_polygon_if_cut, weld_polygon) in inline buffers;
 //      the side planes of a reference face of A are the same at every pose
 //      and computed once (KeptFace); a plane that keeps the whole polygon is
-//      skipped on its heights alone (cuts);
+//      skipped on its heights alone (clip_if_cut);
 //   3. the points within the margin (face_point, face_contact's step 3);
 //   4. more than four of them reduced to four by face_contact's reduction
 //      (reduce_contact_points_into, manifold_reduction.hpp) on the same
@@ -49,16 +49,26 @@ struct KeptFace {
   }
 };
 
-/// True when a vertex of `poly` is above `plane` (clip_polygon_if_cut's test,
-/// on the same heights: clip_detail::height_over), without its buffers; a
-/// large reference face (a ramp under a box) has many side planes that keep
-/// the whole polygon.
+/// clip_polygon_if_cut (clip_polygon.hpp) on a polygon of at most 16
+/// vertices with its heights in a fixed buffer: each vertex's height over
+/// `plane` (clip_detail::height_over) computed once; when none is above the
+/// plane (a large reference face, a ramp under a box, has many side planes
+/// that keep the whole polygon) false and `out` untouched, else `in`
+/// clipped by clip_detail::clip_with on those heights into `out`: the same
+/// heights, decision and clip.
 template <class Poly>
-bool cuts(const Poly& poly, const ClipPlane<float>& plane) {
-  for (const auto& v : poly) {
-    if (clip_detail::height_over(plane, v.point) > 0.0f) return true;
+bool clip_if_cut(const Poly& in, const ClipPlane<float>& plane, int incident_face, Poly& out) {
+  float heights[16];
+  bool all_in = true;
+  std::size_t n = 0;
+  for (const auto& v : in) {
+    heights[n] = clip_detail::height_over(plane, v.point);
+    all_in = all_in && !(heights[n] > 0.0f);
+    ++n;
   }
-  return false;
+  if (all_in) return false;
+  clip_detail::clip_with(in, plane, incident_face, out, [&](std::size_t i) { return heights[i]; });
+  return true;
 }
 
 namespace refresh_detail {
@@ -180,8 +190,9 @@ bool refresh_on(const ConvexPolyhedron<float>& a, const RigidTransform<float>& p
   int h = R.face(ref_face).edge;
   for (int i = 0; i < R.face(ref_face).count && !pp->empty(); ++i, h = R.half_edge(h).next) {
     const ClipPlane<float> cp = cached ? kept.planes[static_cast<std::size_t>(i)] : side_plane(R, h, nr);
-    if (welded && !cuts(*pp, cp)) continue;
-    if (welded && !clip_polygon_if_cut(*pp, cp, inc, *tp)) continue;
+    if (welded &&
+        (pp->size() > 16 ? !clip_polygon_if_cut(*pp, cp, inc, *tp) : !clip_if_cut(*pp, cp, inc, *tp)))
+      continue;
     if (!welded) clip_polygon(*pp, cp, inc, *tp);
     weld_polygon(*tp, weld2);
     welded = true;
