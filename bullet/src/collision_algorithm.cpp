@@ -70,14 +70,15 @@ ConvexPolyhedron<float> local_hull(const btCollisionShape& shape) {
   return convex_hull<float>(pts);
 }
 
+/// Bullet's transform as sepax's, entry for entry (the rotation and the
+/// translation built in place: RigidTransform's default members would be
+/// written first and then overwritten).
 RigidTransform<float> pose_of(const btTransform& t) {
-  RigidTransform<float> x;
   const btMatrix3x3& r = t.getBasis();
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) x.rotation(i, j) = r[i][j];
-    x.translation[i] = t.getOrigin()[i];
-  }
-  return x;
+  const btVector3& o = t.getOrigin();
+  RigidTransform<float>::Matrix3 m;
+  m << r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0], r[2][1], r[2][2];
+  return RigidTransform<float>{m, Vec3<float>(o[0], o[1], o[2])};
 }
 
 btVector3 bt(const Vec3<float>& v) { return btVector3(v[0], v[1], v[2]); }
