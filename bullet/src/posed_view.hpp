@@ -3,8 +3,10 @@
 // bullet.md, "Coherence"): B's vertices at x, the extent of their bounds,
 // and only the planes the kept face and its manifold read.  Each value is
 // the one the posed image holds, by the same operations:
-//   * a vertex: x.apply(v), transform.hpp; pose_vertices_into's SIMD lanes
-//     evaluate apply()'s operations in its order (posing.hpp);
+//   * a vertex: pose_vertices_into's SIMD lane expression for the vertices
+//     it poses in groups, x.apply(v) (transform.hpp) for the rest, as
+//     posing does (posing.hpp; the lanes evaluate apply()'s operations in
+//     its order);
 //   * the extent: sqrt of the sum over x, y, z of (max - min)^2 in double,
 //     finish_bounds' formula; the minimum and maximum of a coordinate are
 //     the same values in any order of comparison (a zero's sign, which the
@@ -25,6 +27,7 @@
 
 #include <sepax/convex_polyhedron.hpp>
 #include <sepax/posing.hpp>
+#include <sepax/simd_ops.hpp>
 #include <sepax/transform.hpp>
 
 namespace sepax::bullet {
@@ -50,9 +53,10 @@ class PosedView {
     constexpr float kRange = 0x1p64f;
     bool in_range = true;
     float lo0 = 0, lo1 = 0, lo2 = 0, hi0 = 0, hi1 = 0, hi2 = 0;
+    const int grouped = pose_groups(b, x);
     for (int i = 0; i < n; ++i) {
-      const Vec3<float> v = x.apply(b.vertex(i));
-      vertices_[static_cast<std::size_t>(i)] = v;
+      if (i >= grouped) vertices_[static_cast<std::size_t>(i)] = x.apply(b.vertex(i));
+      const Vec3<float>& v = vertices_[static_cast<std::size_t>(i)];
       in_range &= std::abs(v[0]) <= kRange && std::abs(v[1]) <= kRange && std::abs(v[2]) <= kRange;
       if (i == 0) {
         lo0 = hi0 = v[0], lo1 = hi1 = v[1], lo2 = hi2 = v[2];
@@ -110,6 +114,44 @@ class PosedView {
   double extent() const { return extent_; }
 
  private:
+  /// Vertices [0, k W) of b posed a SIMD group at a time (W =
+  /// simd::Lanes<float>::width, k W the largest multiple of W up to the
+  /// vertex count) with pose_vertices_into's lane expression, the rest left
+  /// to x.apply as it leaves them: the same instructions for the same
+  /// vertices, so the same values with FMA contraction on or off as long
+  /// as the compiler contracts the same expression alike.  Returns k W.
+  int pose_groups(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x) {
+    using L = simd::Lanes<float>;
+    constexpr int W = L::width;
+    if constexpr (W == 1) {
+      (void)b, (void)x;
+      return 0;
+    } else {
+      using V = typename L::V;
+      const int done = b.vertex_count() / W * W;
+      if (done == 0) return 0;
+      V r[3][3], t[3];
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) r[i][j] = L::set1(x.rotation(i, j));
+        t[i] = L::set1(x.translation[i]);
+      }
+      for (int g = 0; g < done; g += W) {
+        alignas(16) float in[3][W];
+        for (int k = 0; k < W; ++k)
+          for (int c = 0; c < 3; ++c) in[c][k] = b.vertex(g + k)[c];
+        const V a = L::load(in[0]), bb = L::load(in[1]), cc = L::load(in[2]);
+        alignas(16) float out[3][W];
+        for (int i = 0; i < 3; ++i)
+          L::store(
+              out[i],
+              L::add(L::add(L::add(L::mul(r[i][0], a), L::mul(r[i][1], bb)), L::mul(r[i][2], cc)), t[i]));
+        for (int k = 0; k < W; ++k)
+          vertices_[static_cast<std::size_t>(g + k)] = Vec3<float>(out[0][k], out[1][k], out[2][k]);
+      }
+      return done;
+    }
+  }
+
   const ConvexPolyhedron<float>* src_ = nullptr;
   std::vector<Vec3<float>> vertices_;
   std::vector<Plane<float>> planes_;
