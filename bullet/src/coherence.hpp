@@ -70,6 +70,61 @@ inline double motion_slack(const RigidTransform<float>& x0, const RigidTransform
   return kSlack * m;
 }
 
+/// An upper bound on |R^T R - I|_F for x's rotation R (its float entries
+/// taken exactly), evaluated in double with check_rigid's formula and its
+/// rounding bound (posing.hpp): each entry of R^T R - I rounds at most 4
+/// times relative to |R|_F^2 + 1, the Frobenius norm over 9 entries moves by
+/// at most 3x that, and the sum of squares and the square root add a
+/// relative 1e-15 inside the (1 + 1e-10).
+inline double rotation_defect(const RigidTransform<float>& x) {
+  double m[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m[i][j] = static_cast<double>(x.rotation(i, j));
+  double f2 = 0, o2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      f2 += m[i][j] * m[i][j];
+      double g = 0;
+      for (int k = 0; k < 3; ++k) g += m[k][i] * m[k][j];
+      g -= i == j ? 1.0 : 0.0;
+      o2 += g * g;
+    }
+  }
+  const double ud = 0x1p-53;
+  const double fro = std::sqrt(f2) * (1 + 1e-10);
+  return std::sqrt(o2) * (1 + 1e-10) + 13 * ud * (fro * fro + 1);
+}
+
+/// True when check_rigid(x1) (posing.hpp) is certain to pass, given
+/// omega0 = rotation_defect(x0) of a pose x0 that passed it.  With
+/// E = R1 - R0,
+///   R1^T R1 - I = (R0^T R0 - I) + E^T R0 + R0^T E + E^T E,
+/// so |R1^T R1 - I|_F <= omega0 + 2 |R0|_2 |E|_F + |E|_F^2, and
+/// |R0|_2^2 <= 1 + omega0 (the largest eigenvalue of R0^T R0).  e bounds
+/// |E|_F from above: each difference of two floats is within a relative
+/// 2^-53 in double, the sum of squares and the square root within a
+/// relative 1e-15, inside the (1 + 1e-10); the bound's own double
+/// evaluation is inside the same factor.  check_rigid's computed defect
+/// exceeds the exact one by at most a relative 1e-10 plus 1e-13 (its
+/// rounding above, with |R|_F^2 <= 3 (1 + 1e-3)), far inside the 1e-9
+/// kept below its limit of 1e-3.  Its determinant test passes too: every
+/// R0 + t E, t in [0, 1], has the same defect bound < 1, hence no zero
+/// singular value, so det R1 has det R0's sign (positive), and with a
+/// defect <= 1e-3 |det R1| >= (1 - 1e-3)^(3/2), far beyond the rounding of
+/// its double evaluation.  NaN entries fail the comparison: the check runs.
+inline bool stays_rigid(double omega0, const RigidTransform<float>& x0, const RigidTransform<float>& x1) {
+  double r2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      const double d = static_cast<double>(x1.rotation(i, j)) - static_cast<double>(x0.rotation(i, j));
+      r2 += d * d;
+    }
+  }
+  const double e = std::sqrt(r2) * (1 + 1e-10);
+  const double bound = (omega0 + 2 * std::sqrt(1 + omega0) * e + e * e) * (1 + 1e-10);
+  return bound <= 1e-3 - 1e-9;
+}
+
 /// True when the bounding spheres (centres c in local frames, radii r) at
 /// poses (rot_a, ta) and (rot_b, tb) - rotation rows and translations as
 /// Bullet stores them, read before any conversion - are farther apart than

@@ -70,14 +70,15 @@ ConvexPolyhedron<float> local_hull(const btCollisionShape& shape) {
   return convex_hull<float>(pts);
 }
 
+/// Bullet's transform as sepax's, entry for entry (the rotation and the
+/// translation built in place: RigidTransform's default members would be
+/// written first and then overwritten).
 RigidTransform<float> pose_of(const btTransform& t) {
-  RigidTransform<float> x;
   const btMatrix3x3& r = t.getBasis();
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) x.rotation(i, j) = r[i][j];
-    x.translation[i] = t.getOrigin()[i];
-  }
-  return x;
+  const btVector3& o = t.getOrigin();
+  RigidTransform<float>::Matrix3 m;
+  m << r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0], r[2][1], r[2][2];
+  return RigidTransform<float>{m, Vec3<float>(o[0], o[1], o[2])};
 }
 
 btVector3 bt(const Vec3<float>& v) { return btVector3(v[0], v[1], v[2]); }
@@ -212,9 +213,11 @@ struct CollisionAlgorithm::State {
   // and the relative pose of the query it came from
   bool kept = false;
   SatResult<float> contact;
-  KeptFace face;  // its side planes when it is a face of A (face_refresh.hpp)
+  KeptFace face;   // its side planes when it is a face of A (face_refresh.hpp)
+  PosedView view;  // B' in part for the kept face (posed_view.hpp), reused between steps
   double sat_separation = 0;
   RigidTransform<float> x0;
+  double defect0 = 0;  // rotation_defect(x0) (coherence.hpp)
   // the last query's answer beyond the margin (coherence.hpp): valid, its
   // separation and the relative pose it was proven at
   bool apart = false;
@@ -483,7 +486,9 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     }
     if (keep) {
       bool refreshed = false;
-      kept_manifold(s.a->shape, pa, s.b->shape, x, s.contact, margin, s.face, s.manifold, refreshed);
+      const bool rigid = stays_rigid(s.defect0, s.x0, x);
+      kept_manifold(s.a->shape, pa, s.b->shape, x, rigid, s.contact, margin, s.face, s.view, s.manifold,
+                    refreshed);
       live.kept.fetch_add(1, std::memory_order_relaxed);
       if (refreshed) live.refreshed.fetch_add(1, std::memory_order_relaxed);
       if (refreshed && s.manifold.candidate_points > 4) live.reduced.fetch_add(1, std::memory_order_relaxed);
@@ -516,6 +521,7 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
         }
         s.sat_separation = to_double(r.separation);
         s.x0 = x;
+        s.defect0 = rotation_defect(x);
       }
       posed_manifold(s.a->shape, pa, s.b->shape, pb, contact, margin, s.manifold);
     }

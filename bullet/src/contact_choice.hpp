@@ -65,9 +65,10 @@ inline FaceQuery face_query(const ConvexPolyhedron<float>& p, const Vec3<float>&
 }
 
 /// r's face of p: its separation from q (min over q's vertices of n.v -
-/// offset) and q's deepest vertex.
-inline void face_separation(const ConvexPolyhedron<float>& p, const ConvexPolyhedron<float>& q,
-                            FaceQuery& r) {
+/// offset) and q's deepest vertex.  P, Q: ConvexPolyhedron<float> or a
+/// PosedView (posed_view.hpp).
+template <class P, class Q>
+void face_separation(const P& p, const Q& q, FaceQuery& r) {
   const auto& pl = p.plane(r.face);
   const double nx = pl.normal[0], ny = pl.normal[1], nz = pl.normal[2], off = pl.offset;
   r.separation = std::numeric_limits<double>::infinity();
@@ -83,9 +84,10 @@ inline void face_separation(const ConvexPolyhedron<float>& p, const ConvexPolyhe
 
 /// r with its feature replaced by the face q of B (use_b) or of A: q's
 /// separation (unit normals) and support vertex, the axis in world.
-inline SatResult<float> face_result(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float>& bp,
-                                    const RigidTransform<float>& pose_a, const SatResult<float>& r,
-                                    bool use_b, const FaceQuery& q) {
+template <class BP>
+SatResult<float> face_result(const ConvexPolyhedron<float>& a, const BP& bp,
+                             const RigidTransform<float>& pose_a, const SatResult<float>& r, bool use_b,
+                             const FaceQuery& q) {
   SatResult<float> out = r;
   out.separation = Separation<float>{static_cast<float>(q.separation), 1.0f};
   if (use_b) {
@@ -140,9 +142,12 @@ inline SatResult<float> choose_contact(const ConvexPolyhedron<float>& a, const C
 /// The contact of a pair at a new pose from a face feature f (FaceA or
 /// FaceB) the adapter keeps: f's face with its separation and the other
 /// shape's deepest vertex re-evaluated on (a, bp), as choose_contact
-/// evaluates a face; overlap and stats as in `last`.
-inline SatResult<float> kept_contact(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float>& bp,
-                                     const RigidTransform<float>& pose_a, const SatResult<float>& last) {
+/// evaluates a face; overlap and stats as in `last`.  BP: B' as a
+/// ConvexPolyhedron<float> or a PosedView with the kept face's plane when it
+/// is a face of B.
+template <class BP>
+SatResult<float> kept_contact(const ConvexPolyhedron<float>& a, const BP& bp,
+                              const RigidTransform<float>& pose_a, const SatResult<float>& last) {
   const bool use_b = last.feature.type == FeatureType::FaceB;
   detail::FaceQuery q;
   q.face = use_b ? last.feature.b : last.feature.a;

@@ -7,7 +7,7 @@
 //      clip_polygon, clip_polygon_if_cut, weld_polygon) in inline buffers;
 //      the side planes of a reference face of A are the same at every pose
 //      and computed once (KeptFace); a plane that keeps the whole polygon is
-//      skipped on its heights alone (cuts);
+//      skipped on its heights alone (clip_if_cut);
 //   3. the points within the margin (face_point, face_contact's step 3);
 //   4. more than four of them reduced to four by face_contact's reduction
 //      (reduce_contact_points_into, manifold_reduction.hpp) on the same
@@ -49,27 +49,100 @@ struct KeptFace {
   }
 };
 
-/// True when a vertex of `poly` is above `plane` (clip_polygon_if_cut's test,
-/// on the same heights: clip_detail::height_over), without its buffers; a
-/// large reference face (a ramp under a box) has many side planes that keep
-/// the whole polygon.
+/// clip_polygon_if_cut (clip_polygon.hpp) on a polygon of at most 16
+/// vertices with its heights in a fixed buffer: each vertex's height over
+/// `plane` (clip_detail::height_over) computed once; when none is above the
+/// plane (a large reference face, a ramp under a box, has many side planes
+/// that keep the whole polygon) false and `out` untouched, else `in`
+/// clipped by clip_detail::clip_with on those heights into `out`: the same
+/// heights, decision and clip.
 template <class Poly>
-bool cuts(const Poly& poly, const ClipPlane<float>& plane) {
-  for (const auto& v : poly) {
-    if (clip_detail::height_over(plane, v.point) > 0.0f) return true;
+bool clip_if_cut(const Poly& in, const ClipPlane<float>& plane, int incident_face, Poly& out) {
+  float heights[16];
+  bool all_in = true;
+  std::size_t n = 0;
+  for (const auto& v : in) {
+    heights[n] = clip_detail::height_over(plane, v.point);
+    all_in = all_in && !(heights[n] > 0.0f);
+    ++n;
   }
-  return false;
+  if (all_in) return false;
+  clip_detail::clip_with(in, plane, incident_face, out, [&](std::size_t i) { return heights[i]; });
+  return true;
 }
+
+namespace refresh_detail {
+
+// face_contact.hpp's steps on any shape with ConvexPolyhedron<float>'s
+// accessors (B' as a ConvexPolyhedron or a PosedView, posed_view.hpp): the
+// same operations in the same order as the library's templates, which take a
+// ConvexPolyhedron only.
+
+/// most_antiparallel_face (face_contact.hpp).
+template <class P>
+int most_antiparallel_face(const P& p, const Vec3<float>& n, int start_vertex, int& visited) {
+  int best = -1;
+  Separation<float> best_s;
+  for (int h : p.vertex_half_edges(start_vertex)) {
+    const int f = p.half_edge(h).face;
+    const Vec3<float>& m = p.plane(f).normal;
+    const Separation<float> s{float(-dot(n, m)), sepax::detail::norm2_of(m)};
+    ++visited;
+    const int c = best < 0 ? 1 : compare(s, best_s);
+    if (best < 0 || c > 0 || (c == 0 && f < best)) {
+      best = f;
+      best_s = s;
+    }
+  }
+  return best;
+}
+
+/// incident_polygon (face_contact.hpp).
+template <class P, class Poly>
+void incident_polygon(const P& I, int inc, int ref_face, Poly& poly) {
+  int h = I.face(inc).edge;
+  for (int i = 0; i < I.face(inc).count; ++i, h = I.half_edge(h).next) {
+    ClipVertex<float> v;
+    const int o = I.half_edge(h).origin;
+    v.point = I.vertex(o);
+    v.id.a = ShapeFeature::face(ref_face);
+    v.id.b = ShapeFeature::vertex(o);
+    v.next_edge = h / 2;
+    poly.push_back(v);
+  }
+}
+
+/// side_plane (face_contact.hpp).
+template <class P>
+ClipPlane<float> side_plane(const P& R, int h, const Vec3<float>& nr) {
+  const int tail = R.half_edge(h).origin;
+  const int head = R.half_edge(R.half_edge(h).next).origin;
+  ClipPlane<float> cp;
+  cp.normal = cross(Vec3<float>(R.vertex(head) - R.vertex(tail)), nr);
+  cp.offset = dot(cp.normal, R.vertex(tail));
+  cp.edge = h / 2;
+  cp.tail = tail;
+  cp.head = head;
+  return cp;
+}
+
+/// extent_tolerance (manifold_result.hpp), float.
+template <class P>
+float extent_tolerance(const ConvexPolyhedron<float>& a, const P& b, double rel, int power) {
+  const double ext = std::min(a.extent(), b.extent());
+  return static_cast<float>(power == 1 ? rel * ext : (power == 2 ? rel * ext * rel * ext : rel * ext * ext));
+}
+
+}  // namespace refresh_detail
 
 /// face_contact's step 4 where the clip `poly` has more than four points
 /// within the margin: all of them (face_point, in clip order) reduced to
 /// four by face_contact's reduction (reduce_contact_points_into) on the same
 /// positions, depth keys and tolerances; the kept points go to pts[0..count).
 /// Returns the number of points within the margin (candidate_points).
-template <class Poly>
-int reduce_points(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float>& bp, const Poly& poly,
-                  const Plane<float>& rp, bool ref_is_a, float margin, ContactPoint<float> (&pts)[4],
-                  std::size_t& count) {
+template <class BP, class Poly>
+int reduce_points(const ConvexPolyhedron<float>& a, const BP& bp, const Poly& poly, const Plane<float>& rp,
+                  bool ref_is_a, float margin, ContactPoint<float> (&pts)[4], std::size_t& count) {
   const float n2 = sepax::detail::norm2_of(rp.normal);
   SmallVector<ContactPoint<float>, 16> all;
   SmallVector<Vec3<float>, 16> pos;
@@ -81,8 +154,8 @@ int reduce_points(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float
     pos.push_back(c.position);
     keys.push_back(c.separation.num);
   }
-  const float area_tol = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactArea, 3);
-  const float key_tol = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 1);
+  const float area_tol = refresh_detail::extent_tolerance(a, bp, Tolerances<float>::kContactArea, 3);
+  const float key_tol = refresh_detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 1);
   SmallVector<int, 4> keep;
   reduce_contact_points_into(pos, keys, rp.normal, key_tol, area_tol, keep);
   count = 0;
@@ -90,39 +163,36 @@ int reduce_points(const ConvexPolyhedron<float>& a, const ConvexPolyhedron<float
   return static_cast<int>(all.size());
 }
 
-/// The refresh of the header on (a, bp) for the kept face contact r (FaceA
-/// or FaceB, support vertex in r.feature, axis in world); `kept`: the side
-/// planes of r's face of A when r is FaceA and kept.face is that face.
-/// Returns false (out untouched) where the header says it declines.
-inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidTransform<float>& pose_a,
-                                  const ConvexPolyhedron<float>& bp, const SatResult<float>& r, double margin,
-                                  const KeptFace& kept, ContactManifold<float>& out) {
-  const float m = from_double<float>(margin);
-  if (!sepax::detail::within_margin(r.separation, m)) return false;
+namespace refresh_detail {
+
+/// refresh_face_manifold's body with the reference shape R and the incident
+/// shape I (a and bp, in the order r's feature says).
+template <class BP, class RS, class IS>
+bool refresh_on(const ConvexPolyhedron<float>& a, const RigidTransform<float>& pose_a, const BP& bp,
+                const RS& R, const IS& I, const SatResult<float>& r, float m, const KeptFace& kept,
+                ContactManifold<float>& out) {
   const bool ref_is_a = r.feature.type == FeatureType::FaceA;
   const int ref_face = ref_is_a ? r.feature.a : r.feature.b;
   const int support = ref_is_a ? r.feature.b : r.feature.a;
-  const ConvexPolyhedron<float>& R = ref_is_a ? a : bp;
-  const ConvexPolyhedron<float>& I = ref_is_a ? bp : a;
   const Plane<float>& rp = R.plane(ref_face);
   const Vec3<float>& nr = rp.normal;
   int visited = 0;
-  const int inc = sepax::detail::most_antiparallel_face(I, nr, support, visited);
+  const int inc = most_antiparallel_face(I, nr, support, visited);
 
   using Poly = SmallVector<ClipVertex<float>, 16>;
   Poly buf0, buf1;
   Poly* pp = &buf0;
   Poly* tp = &buf1;
-  sepax::detail::incident_polygon(I, inc, ref_face, *pp);
-  const float weld2 = sepax::detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 2);
+  incident_polygon(I, inc, ref_face, *pp);
+  const float weld2 = extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 2);
   const bool cached = ref_is_a && kept.face == ref_face;
   bool welded = false;
   int h = R.face(ref_face).edge;
   for (int i = 0; i < R.face(ref_face).count && !pp->empty(); ++i, h = R.half_edge(h).next) {
-    const ClipPlane<float> cp =
-        cached ? kept.planes[static_cast<std::size_t>(i)] : sepax::detail::side_plane(R, h, nr);
-    if (welded && !cuts(*pp, cp)) continue;
-    if (welded && !clip_polygon_if_cut(*pp, cp, inc, *tp)) continue;
+    const ClipPlane<float> cp = cached ? kept.planes[static_cast<std::size_t>(i)] : side_plane(R, h, nr);
+    if (welded &&
+        (pp->size() > 16 ? !clip_polygon_if_cut(*pp, cp, inc, *tp) : !clip_if_cut(*pp, cp, inc, *tp)))
+      continue;
     if (!welded) clip_polygon(*pp, cp, inc, *tp);
     weld_polygon(*tp, weld2);
     welded = true;
@@ -167,6 +237,26 @@ inline bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidT
     out.points.push_back(c);
   }
   return true;
+}
+
+}  // namespace refresh_detail
+
+/// The refresh of the header on (a, bp) for the kept face contact r (FaceA
+/// or FaceB, support vertex in r.feature, axis in world); `kept`: the side
+/// planes of r's face of A when r is FaceA and kept.face is that face.  BP:
+/// B' as a ConvexPolyhedron<float> or a PosedView (posed_view.hpp) holding
+/// the planes the refresh reads (r's face of B, or B's faces around the
+/// support vertex).  Returns false (out untouched) where the header says it
+/// declines.
+template <class BP>
+bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidTransform<float>& pose_a,
+                           const BP& bp, const SatResult<float>& r, double margin, const KeptFace& kept,
+                           ContactManifold<float>& out) {
+  const float m = from_double<float>(margin);
+  if (!sepax::detail::within_margin(r.separation, m)) return false;
+  if (r.feature.type == FeatureType::FaceA)
+    return refresh_detail::refresh_on(a, pose_a, bp, a, bp, r, m, kept, out);
+  return refresh_detail::refresh_on(a, pose_a, bp, bp, a, r, m, kept, out);
 }
 
 }  // namespace sepax::bullet

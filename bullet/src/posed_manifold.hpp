@@ -13,6 +13,7 @@
 
 #include "contact_choice.hpp"
 #include "face_refresh.hpp"
+#include "posed_view.hpp"
 
 namespace sepax::bullet {
 
@@ -27,17 +28,34 @@ inline SatResult<float> chosen_contact(const PreparedShape<float>& a, const Rigi
 /// (kept_contact), and its manifold, on a partial image of B': B's posed
 /// vertices with only the planes the face and the manifold read (the face
 /// of B; or, for a face of A, B's faces around the support vertex, among
-/// which the manifold picks the incident face), PreparedShape::
-/// posed_part_scratch: the same contact and manifold as on the full B'.
-/// The manifold is refreshed (face_refresh.hpp; `face`: the kept face's
-/// side planes) unless the refresh declines; then posed_manifold_on builds
-/// it.  Returns the contact; `refreshed` says which path built the points.
+/// which the manifold picks the incident face): the same contact and
+/// manifold as on the full B'.  The image is `view` (posed_view.hpp) and the
+/// manifold is refreshed (face_refresh.hpp; `face`: the kept face's side
+/// planes); where either declines, B' is posed by PreparedShape::
+/// posed_part_scratch and the manifold refreshed on it or, where the refresh
+/// declines, built by posed_manifold_on.  `rigid`: check_rigid(x) is known
+/// to pass (PosedView::pose).  Returns the contact; `refreshed` says which
+/// path built the points.
 inline SatResult<float> kept_manifold(const PreparedShape<float>& a, const RigidTransform<float>& pose_a,
                                       const PreparedShape<float>& b, const RigidTransform<float>& x,
-                                      const SatResult<float>& last, double margin, const KeptFace& face,
-                                      ContactManifold<float>& out, bool& refreshed) {
+                                      bool rigid, const SatResult<float>& last, double margin,
+                                      const KeptFace& face, PosedView& view, ContactManifold<float>& out,
+                                      bool& refreshed) {
+  const bool face_b = last.feature.type == FeatureType::FaceB;
+  if (view.pose(b.polyhedron(), x, rigid) && (!face_b || view.derive(last.feature.b))) {
+    const SatResult<float> r = kept_contact(a.polyhedron(), view, pose_a, last);
+    bool planes = true;
+    if (r.feature.type == FeatureType::FaceA) {
+      for (const int h : view.vertex_half_edges(r.feature.b))
+        planes = planes && view.derive(view.half_edge(h).face);
+    }
+    if (planes && refresh_face_manifold(a.polyhedron(), pose_a, view, r, margin, face, out)) {
+      refreshed = true;
+      return r;
+    }
+  }
   const ConvexPolyhedron<float>* bp = nullptr;
-  if (last.feature.type == FeatureType::FaceB) {
+  if (face_b) {
     const int g = last.feature.b;
     bp = &b.posed_part_scratch(x, std::span<const int>(&g, 1), std::span<const int>());
   } else {

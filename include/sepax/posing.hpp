@@ -43,14 +43,16 @@ RigidTransform<T> relative_pose(const RigidTransform<T>& pose_a, const RigidTran
     s = s + a2 * b2;
     return s;
   };
-  RigidTransform<T> x;
+  // built in place and returned as one aggregate: a default RigidTransform
+  // would write the identity first
+  typename RigidTransform<T>::Matrix3 rot;
+  Vec3<T> tr;
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j)
-      x.rotation(i, j) = dot3(ra(0, i), ra(1, i), ra(2, i), rb(0, j), rb(1, j), rb(2, j));
+    for (int j = 0; j < 3; ++j) rot(i, j) = dot3(ra(0, i), ra(1, i), ra(2, i), rb(0, j), rb(1, j), rb(2, j));
     const T back = -dot3(ra(0, i), ra(1, i), ra(2, i), ta[0], ta[1], ta[2]);
-    x.translation[i] = T(dot3(ra(0, i), ra(1, i), ra(2, i), tb[0], tb[1], tb[2]) + back);
+    tr[i] = T(dot3(ra(0, i), ra(1, i), ra(2, i), tb[0], tb[1], tb[2]) + back);
   }
-  return x;
+  return RigidTransform<T>{rot, tr};
 }
 
 namespace detail {

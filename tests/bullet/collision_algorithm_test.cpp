@@ -440,6 +440,76 @@ TEST_CASE("bullet: a kept face whose clip leaves five points is refreshed with t
   CHECK(cnt.reduced < cnt.kept);  // before: four points
 }
 
+TEST_CASE(
+    "bullet: a hull whose vertex count is no multiple of the SIMD width keeps a fresh algorithm's points") {
+  // A pentagonal prism (10 vertices: posing maps the last two outside its
+  // SIMD groups; 5 faces around no vertex, 3 around each) resting on its
+  // pentagon, slightly tilted, 1 mm deep, jittered in position and
+  // rotation within the kept face's budget.  Its clip leaves five points
+  // (reduced to four).  With the floor as body 0 the kept face is a face of
+  // A, with the prism as body 0 a face of B; at every step the points are a
+  // fresh algorithm's.
+  btBoxShape floor(btVector3(5, 0.5f, 5));
+  btConvexHullShape prism;
+  for (int k = 0; k < 5; ++k) {
+    const float t = 2.0f * 3.14159265f * static_cast<float>(k) / 5.0f + 0.1f;
+    prism.addPoint(btVector3(0.1f * std::cos(t), -0.03f, 0.1f * std::sin(t)), false);
+    prism.addPoint(btVector3(0.1f * std::cos(t), 0.03f, 0.1f * std::sin(t)), false);
+  }
+  prism.recalcLocalAabb();
+  const btTransform tf = at(0, -0.5f, 0);
+  const btQuaternion tilt(btVector3(0.3f, 0.1f, 0.8f).normalized(), 2e-3f);
+  for (const bool floor_first : {true, false}) {
+    btCollisionShape* s0 = floor_first ? static_cast<btCollisionShape*>(&floor) : &prism;
+    btCollisionShape* s1 = floor_first ? static_cast<btCollisionShape*>(&prism) : &floor;
+    const btTransform tp = at(0.2f, 0.029f, -0.1f, tilt);
+    Pair kept(s0, s1, floor_first ? tf : tp, floor_first ? tp : tf, true);
+    REQUIRE(kept.manifold());
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-1, 1);
+    std::vector<btTransform> poses;  // body 1: the prism, or the floor
+    for (int step = 0; step < 30; ++step) {
+      const btQuaternion q =
+          tilt * btQuaternion(btVector3(u(rng), u(rng), u(rng)).normalized(), 1e-5f * u(rng));
+      const btVector3 d(1e-6f * u(rng), 1e-6f * u(rng), 1e-6f * u(rng));
+      poses.push_back(floor_first ? btTransform(q, tp.getOrigin() + d)
+                                  : btTransform(btQuaternion::getIdentity(), tf.getOrigin() + d));
+    }
+    const auto counts = follow_fresh(kept, s0, s1, poses);
+    for (const std::size_t n : counts) CHECK(n == 4);
+    const auto cnt = kept.cf->counters();
+    CHECK(cnt.queries == 1);
+    CHECK(cnt.kept == 30);
+    CHECK(cnt.refreshed == cnt.kept);
+    CHECK(cnt.reduced == cnt.kept);
+  }
+}
+
+TEST_CASE("bullet: a kept face refuses a pose that is not a rotation, as a query does") {
+  // B's basis scaled by 1 + 4e-4: |R^T R - I|_F = sqrt(3) (s^2 - 1) = 1.4e-3,
+  // beyond posing's 1e-3, while |R1 - R0|_F reach = 6e-4 stays within the
+  // kept face's budget (0.5e-3 x 1.73 m): the kept face's posing must refuse
+  // it (no point, one refused query) exactly as a fresh algorithm does.
+  btBoxShape box(btVector3(0.5f, 0.5f, 0.5f));
+  const btTransform tb = at(0.01f, 0.999f, 0.02f);
+  Pair p(&box, &box, at(0, 0, 0), tb, true);
+  REQUIRE(p.manifold());
+  REQUIRE(p.manifold());
+  CHECK(p.cf->counters().kept == 1);
+  CHECK(p.cf->counters().errors == 0);
+  btTransform scaled = tb;
+  scaled.setBasis(tb.getBasis().scaled(btVector3(1 + 4e-4f, 1 + 4e-4f, 1 + 4e-4f)));
+  p.b.setWorldTransform(scaled);
+  CHECK(p.manifold() == nullptr);
+  CHECK(p.cf->counters().errors == 1);
+  Pair fresh(&box, &box, at(0, 0, 0), scaled, true);
+  CHECK(fresh.manifold() == nullptr);
+  CHECK(fresh.cf->counters().errors == 1);
+  // back at a rotation: points again
+  p.b.setWorldTransform(tb);
+  CHECK(p.manifold() != nullptr);
+}
+
 TEST_CASE("bullet: a shape rescaled in place drops the kept face and queries again") {
   btBoxShape floor(btVector3(5, 0.5f, 5)), box(btVector3(0.5f, 0.5f, 0.5f));
   const btTransform tf = at(0, -0.5f, 0), tb = at(0, 0.499f, 0);

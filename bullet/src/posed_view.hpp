@@ -1,0 +1,161 @@
+// The part of B' (B posed in A's frame) a kept face reads, computed without
+// posing the whole shape through PreparedShape::posed_part_scratch (docs/
+// bullet.md, "Coherence"): B's vertices at x, the extent of their bounds,
+// and only the planes the kept face and its manifold read.  Each value is
+// the one the posed image holds, by the same operations:
+//   * a vertex: pose_vertices_into's SIMD lane expression for the vertices
+//     it poses in groups, x.apply(v) (transform.hpp) for the rest, as
+//     posing does (posing.hpp; the lanes evaluate apply()'s operations in
+//     its order);
+//   * the extent: sqrt of the sum over x, y, z of (max - min)^2 in double,
+//     finish_bounds' formula; the minimum and maximum of a coordinate are
+//     the same values in any order of comparison (a zero's sign, which the
+//     order can change, does not change max - min squared);
+//   * a plane: plane_of_triple's operations in its order on the face's
+//     plane triple (convex_polyhedron_derived.hpp), where its cross product
+//     is in range; otherwise the view declines.
+// The view declines (returns false) wherever posing would do more than that
+// - a pose check or range check that could throw, a plane that needs
+// plane_of_triple's rescaling - and the adapter then poses B' as before,
+// which throws or computes as it always did.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include <sepax/convex_polyhedron.hpp>
+#include <sepax/posing.hpp>
+#include <sepax/simd_ops.hpp>
+#include <sepax/transform.hpp>
+
+namespace sepax::bullet {
+
+/// B' in part, with the accessors of ConvexPolyhedron<float> the kept face's
+/// functions read (face_refresh.hpp, contact_choice.hpp); topology from B.
+class PosedView {
+ public:
+  /// Poses every vertex of b by x (check_rigid first, as pose_vertices_into,
+  /// which throws the same error on a pose that is not a rotation, unless
+  /// `rigid`: the caller has proven that check_rigid(x) passes,
+  /// coherence.hpp's stays_rigid); false when a coordinate or the extent is
+  /// outside the range below, where posing's own checks decide.
+  bool pose(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x, bool rigid) {
+    if (!rigid) sepax::detail::check_rigid(x);
+    src_ = &b;
+    const int n = b.vertex_count();
+    vertices_.resize(static_cast<std::size_t>(n));
+    if (planes_.size() != static_cast<std::size_t>(b.face_count()))
+      planes_.resize(static_cast<std::size_t>(b.face_count()));
+    // Posing refuses |coordinate| > FLT_MAX / 16 (and NaN); within 2^64 it
+    // never does, so a view inside that range decides what posing decides.
+    constexpr float kRange = 0x1p64f;
+    bool in_range = true;
+    float lo0 = 0, lo1 = 0, lo2 = 0, hi0 = 0, hi1 = 0, hi2 = 0;
+    const int grouped = pose_groups(b, x);
+    for (int i = 0; i < n; ++i) {
+      if (i >= grouped) vertices_[static_cast<std::size_t>(i)] = x.apply(b.vertex(i));
+      const Vec3<float>& v = vertices_[static_cast<std::size_t>(i)];
+      in_range &= std::abs(v[0]) <= kRange && std::abs(v[1]) <= kRange && std::abs(v[2]) <= kRange;
+      if (i == 0) {
+        lo0 = hi0 = v[0], lo1 = hi1 = v[1], lo2 = hi2 = v[2];
+        continue;
+      }
+      lo0 = v[0] < lo0 ? v[0] : lo0, lo1 = v[1] < lo1 ? v[1] : lo1, lo2 = v[2] < lo2 ? v[2] : lo2;
+      hi0 = v[0] > hi0 ? v[0] : hi0, hi1 = v[1] > hi1 ? v[1] : hi1, hi2 = v[2] > hi2 ? v[2] : hi2;
+    }
+    if (!in_range || n < 3) return false;
+    const double w0 = static_cast<double>(float(hi0 - lo0)), w1 = static_cast<double>(float(hi1 - lo1)),
+                 w2 = static_cast<double>(float(hi2 - lo2));
+    double d2 = 0;
+    d2 += w0 * w0;
+    d2 += w1 * w1;
+    d2 += w2 * w2;
+    extent_ = std::sqrt(d2);
+    // Posing refuses an extent whose tolerances fall into float's subnormal
+    // range (Tolerances<float>::kCoplanar 1e-5 x kAdjacentCoplanarFraction
+    // 0.25 x extent < FLT_MIN, i.e. extent < 4.8e-33): decline far above.
+    return extent_ >= 1e-30;
+  }
+
+  /// The plane of face f from the posed vertices (plane_of_triple); false
+  /// where plane_of_triple would rescale the cross product.
+  bool derive(int f) {
+    const auto& t = src_->face(f).plane_vertices;
+    const float* p0 = vertex(t[0]).data();
+    const float* p1 = vertex(t[1]).data();
+    const float* p2 = vertex(t[2]).data();
+    const float a0 = p0[0], a1 = p0[1], a2 = p0[2];
+    const float u0 = p1[0] - a0, u1 = p1[1] - a1, u2 = p1[2] - a2;
+    const float w0 = p2[0] - a0, w1 = p2[1] - a1, w2 = p2[2] - a2;
+    float n0 = u1 * w2 - u2 * w1, n1 = u2 * w0 - u0 * w2, n2 = u0 * w1 - u1 * w0;
+    float s = n0 * n0;
+    s = s + n1 * n1;
+    s = s + n2 * n2;
+    if (!sepax::detail::safe_squared_norm(s)) return false;
+    const float len = std::sqrt(s);
+    if (len > 0.0f) n0 = n0 / len, n1 = n1 / len, n2 = n2 / len;
+    float off = n0 * a0;
+    off = off + n1 * a1;
+    off = off + n2 * a2;
+    planes_[static_cast<std::size_t>(f)] = Plane<float>{Vec3<float>(n0, n1, n2), off};
+    return true;
+  }
+
+  int vertex_count() const { return static_cast<int>(vertices_.size()); }
+  int face_count() const { return src_->face_count(); }
+  const Vec3<float>& vertex(int v) const { return vertices_[static_cast<std::size_t>(v)]; }
+  /// Only the planes derived since pose() are B''s.
+  const Plane<float>& plane(int f) const { return planes_[static_cast<std::size_t>(f)]; }
+  const FaceLoop& face(int f) const { return src_->face(f); }
+  const HalfEdge& half_edge(int h) const { return src_->half_edge(h); }
+  std::span<const int> vertex_half_edges(int v) const { return src_->vertex_half_edges(v); }
+  double extent() const { return extent_; }
+
+ private:
+  /// Vertices [0, k W) of b posed a SIMD group at a time (W =
+  /// simd::Lanes<float>::width, k W the largest multiple of W up to the
+  /// vertex count) with pose_vertices_into's lane expression, the rest left
+  /// to x.apply as it leaves them: the same instructions for the same
+  /// vertices, so the same values with FMA contraction on or off as long
+  /// as the compiler contracts the same expression alike.  Returns k W.
+  int pose_groups(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x) {
+    using L = simd::Lanes<float>;
+    constexpr int W = L::width;
+    if constexpr (W == 1) {
+      (void)b, (void)x;
+      return 0;
+    } else {
+      using V = typename L::V;
+      const int done = b.vertex_count() / W * W;
+      if (done == 0) return 0;
+      V r[3][3], t[3];
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) r[i][j] = L::set1(x.rotation(i, j));
+        t[i] = L::set1(x.translation[i]);
+      }
+      for (int g = 0; g < done; g += W) {
+        alignas(16) float in[3][W];
+        for (int k = 0; k < W; ++k)
+          for (int c = 0; c < 3; ++c) in[c][k] = b.vertex(g + k)[c];
+        const V a = L::load(in[0]), bb = L::load(in[1]), cc = L::load(in[2]);
+        alignas(16) float out[3][W];
+        for (int i = 0; i < 3; ++i)
+          L::store(
+              out[i],
+              L::add(L::add(L::add(L::mul(r[i][0], a), L::mul(r[i][1], bb)), L::mul(r[i][2], cc)), t[i]));
+        for (int k = 0; k < W; ++k)
+          vertices_[static_cast<std::size_t>(g + k)] = Vec3<float>(out[0][k], out[1][k], out[2][k]);
+      }
+      return done;
+    }
+  }
+
+  const ConvexPolyhedron<float>* src_ = nullptr;
+  std::vector<Vec3<float>> vertices_;
+  std::vector<Plane<float>> planes_;
+  double extent_ = 0;
+};
+
+}  // namespace sepax::bullet
