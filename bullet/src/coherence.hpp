@@ -71,29 +71,9 @@ inline double motion_slack(const RigidTransform<float>& x0, const RigidTransform
 }
 
 /// An upper bound on |R^T R - I|_F for x's rotation R (its float entries
-/// taken exactly), evaluated in double with check_rigid's formula and its
-/// rounding bound (posing.hpp): each entry of R^T R - I rounds at most 4
-/// times relative to |R|_F^2 + 1, the Frobenius norm over 9 entries moves by
-/// at most 3x that, and the sum of squares and the square root add a
-/// relative 1e-15 inside the (1 + 1e-10).
-inline double rotation_defect(const RigidTransform<float>& x) {
-  double m[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m[i][j] = static_cast<double>(x.rotation(i, j));
-  double f2 = 0, o2 = 0;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      f2 += m[i][j] * m[i][j];
-      double g = 0;
-      for (int k = 0; k < 3; ++k) g += m[k][i] * m[k][j];
-      g -= i == j ? 1.0 : 0.0;
-      o2 += g * g;
-    }
-  }
-  const double ud = 0x1p-53;
-  const double fro = std::sqrt(f2) * (1 + 1e-10);
-  return std::sqrt(o2) * (1 + 1e-10) + 13 * ud * (fro * fro + 1);
-}
+/// taken exactly): check_rigid's own evaluation with its rounding bound
+/// (posing.hpp, detail::rotation_defect).
+inline double rotation_defect(const RigidTransform<float>& x) { return sepax::detail::rotation_defect(x); }
 
 /// True when check_rigid(x1) (posing.hpp) is certain to pass, given
 /// omega0 = rotation_defect(x0) of a pose x0 that passed it.  With

@@ -73,65 +73,10 @@ bool clip_if_cut(const Poly& in, const ClipPlane<float>& plane, int incident_fac
 
 namespace refresh_detail {
 
-// face_contact.hpp's steps on any shape with ConvexPolyhedron<float>'s
-// accessors (B' as a ConvexPolyhedron or a PosedView, posed_view.hpp): the
-// same operations in the same order as the library's templates, which take a
-// ConvexPolyhedron only.
-
-/// most_antiparallel_face (face_contact.hpp).
-template <class P>
-int most_antiparallel_face(const P& p, const Vec3<float>& n, int start_vertex, int& visited) {
-  int best = -1;
-  Separation<float> best_s;
-  for (int h : p.vertex_half_edges(start_vertex)) {
-    const int f = p.half_edge(h).face;
-    const Vec3<float>& m = p.plane(f).normal;
-    const Separation<float> s{float(-dot(n, m)), sepax::detail::norm2_of(m)};
-    ++visited;
-    const int c = best < 0 ? 1 : compare(s, best_s);
-    if (best < 0 || c > 0 || (c == 0 && f < best)) {
-      best = f;
-      best_s = s;
-    }
-  }
-  return best;
-}
-
-/// incident_polygon (face_contact.hpp).
-template <class P, class Poly>
-void incident_polygon(const P& I, int inc, int ref_face, Poly& poly) {
-  int h = I.face(inc).edge;
-  for (int i = 0; i < I.face(inc).count; ++i, h = I.half_edge(h).next) {
-    ClipVertex<float> v;
-    const int o = I.half_edge(h).origin;
-    v.point = I.vertex(o);
-    v.id.a = ShapeFeature::face(ref_face);
-    v.id.b = ShapeFeature::vertex(o);
-    v.next_edge = h / 2;
-    poly.push_back(v);
-  }
-}
-
-/// side_plane (face_contact.hpp).
-template <class P>
-ClipPlane<float> side_plane(const P& R, int h, const Vec3<float>& nr) {
-  const int tail = R.half_edge(h).origin;
-  const int head = R.half_edge(R.half_edge(h).next).origin;
-  ClipPlane<float> cp;
-  cp.normal = cross(Vec3<float>(R.vertex(head) - R.vertex(tail)), nr);
-  cp.offset = dot(cp.normal, R.vertex(tail));
-  cp.edge = h / 2;
-  cp.tail = tail;
-  cp.head = head;
-  return cp;
-}
-
-/// extent_tolerance (manifold_result.hpp), float.
-template <class P>
-float extent_tolerance(const ConvexPolyhedron<float>& a, const P& b, double rel, int power) {
-  const double ext = std::min(a.extent(), b.extent());
-  return static_cast<float>(power == 1 ? rel * ext : (power == 2 ? rel * ext * rel * ext : rel * ext * ext));
-}
+using sepax::detail::extent_tolerance;  // face_contact.hpp's steps, on B' or its view
+using sepax::detail::incident_polygon;
+using sepax::detail::most_antiparallel_face;
+using sepax::detail::side_plane;
 
 }  // namespace refresh_detail
 

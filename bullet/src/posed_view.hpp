@@ -36,6 +36,7 @@ namespace sepax::bullet {
 /// functions read (face_refresh.hpp, contact_choice.hpp); topology from B.
 class PosedView {
  public:
+  using Scalar = float;
   /// Poses every vertex of b by x (check_rigid first, as pose_vertices_into,
   /// which throws the same error on a pose that is not a rotation, unless
   /// `rigid`: the caller has proven that check_rigid(x) passes,

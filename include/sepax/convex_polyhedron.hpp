@@ -373,8 +373,7 @@ class ConvexPolyhedron {
   /// point gives (point takes the remainder); the sum then runs over the
   /// written lanes in index order.
   template <class Point, class PointLanes = std::nullptr_t>
-  void assign_rigid_vertices(const ConvexPolyhedron& src, Point&& point,
-                             PointLanes&& point_lanes = nullptr);
+  void assign_rigid_vertices(const ConvexPolyhedron& src, Point&& point, PointLanes&& point_lanes = nullptr);
 
   /// Step 2 of a partial image (after assign_rigid_vertices): the planes of
   /// `faces` (both faces of a flat shape) and the per-edge entries of

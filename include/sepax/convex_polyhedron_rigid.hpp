@@ -97,7 +97,8 @@ inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& s
   }
   // the vertex lanes are written and every coordinate is finite (checked
   // above); no plane is derived yet
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) support_lanes_bounded_ = max_abs_ <= 0x1p60;
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
+    support_lanes_bounded_ = max_abs_ <= 0x1p60;
 }
 
 template <Number T>

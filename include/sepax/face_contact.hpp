@@ -33,9 +33,11 @@ namespace sepax::detail {
 /// squared form for rationals; ties to the lower face index).  Restricting the
 /// choice to the faces of the deepest vertex keeps that vertex on the incident
 /// face; the globally most anti-parallel face can lie elsewhere and miss the
-/// overlap region entirely.
-template <Number T>
-int most_antiparallel_face(const ConvexPolyhedron<T>& p, const Vec3<T>& n, int start_vertex, int& visited) {
+/// overlap region entirely.  P: a ConvexPolyhedron, or a partial view of a
+/// posed one with its accessors (vertex_half_edges, half_edge, plane).
+template <class P>
+int most_antiparallel_face(const P& p, const Vec3<typename P::Scalar>& n, int start_vertex, int& visited) {
+  using T = typename P::Scalar;
   auto score = [&](int f) {
     const Vec3<T>& m = p.plane(f).normal;
     return Separation<T>{T(-dot(n, m)), norm2_of(m)};
@@ -77,11 +79,11 @@ int support_vertex(const ConvexPolyhedron<T>& p, const Vec3<T>& n) {
 /// Step 3's input: incident face `inc` of I as a clip polygon, each vertex
 /// with its features (reference face ref_face, incident vertex) and the
 /// incident edge to the next vertex; appended to poly.
-template <Number T, class Poly>
-void incident_polygon(const ConvexPolyhedron<T>& I, int inc, int ref_face, Poly& poly) {
+template <class P, class Poly>
+void incident_polygon(const P& I, int inc, int ref_face, Poly& poly) {
   int h = I.face(inc).edge;
   for (int i = 0; i < I.face(inc).count; ++i, h = I.half_edge(h).next) {
-    ClipVertex<T> v;
+    ClipVertex<typename P::Scalar> v;
     const int o = I.half_edge(h).origin;
     v.point = I.vertex(o);
     v.id.a = ShapeFeature::face(ref_face);
@@ -94,8 +96,8 @@ void incident_polygon(const ConvexPolyhedron<T>& I, int inc, int ref_face, Poly&
 /// The side plane of the reference face's half-edge h (tail -> head), nr the
 /// face's normal: normal (v_head - v_tail) x nr, unnormalised, through the
 /// tail; the points with dot(normal, x) - offset <= 0 are kept.
-template <Number T>
-ClipPlane<T> side_plane(const ConvexPolyhedron<T>& R, int h, const Vec3<T>& nr) {
+template <class P, class T = typename P::Scalar>
+ClipPlane<T> side_plane(const P& R, int h, const Vec3<T>& nr) {
   const int tail = R.half_edge(h).origin;
   const int head = R.half_edge(R.half_edge(h).next).origin;
   ClipPlane<T> cp;

@@ -177,8 +177,8 @@ inline void check_index(int i, int count, const char* what) {
 
 /// A tolerance relative to the smaller of the two shapes' extents (0 for exact
 /// T): power 1 a length rel x ext, 2 its square, 3 an area rel x ext^2.
-template <Number T>
-T extent_tolerance(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, double rel, int power) {
+template <Number T, class P = ConvexPolyhedron<T>>
+T extent_tolerance(const ConvexPolyhedron<T>& a, const P& b, double rel, int power) {
   if constexpr (number_traits<T>::is_exact) {
     (void)a, (void)b, (void)rel, (void)power;
     return T(0);

@@ -57,6 +57,33 @@ RigidTransform<T> relative_pose(const RigidTransform<T>& pose_a, const RigidTran
 
 namespace detail {
 
+/// An upper bound on |R^T R - I|_F for x's rotation R (float/double, its
+/// entries taken exactly), evaluated in double.  Rounding of the evaluation
+/// (u_d = 2^-53): each entry of R^T R - I rounds at most 4 times relative to
+/// |R|_F^2 + 1; a Frobenius norm over 9 entries then moves by at most 3x
+/// the entry error; the sum of squares and the square root add a relative
+/// 1e-15, inside the (1 + 1e-10).
+template <Number T>
+double rotation_defect(const RigidTransform<T>& x) {
+  static_assert(std::is_floating_point_v<T>);
+  double m[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m[i][j] = static_cast<double>(x.rotation(i, j));
+  double f2 = 0, o2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      f2 += m[i][j] * m[i][j];
+      double g = 0;
+      for (int k = 0; k < 3; ++k) g += m[k][i] * m[k][j];
+      g -= i == j ? 1.0 : 0.0;
+      o2 += g * g;
+    }
+  }
+  const double ud = 0x1p-53;
+  const double fro = std::sqrt(f2) * (1 + 1e-10);
+  return std::sqrt(o2) * (1 + 1e-10) + 13 * ud * (fro * fro + 1);
+}
+
 /// Poses must be rigid.  Throws InvalidInput (BadScale) unless x's linear
 /// part R is a rotation: for float/double |R^T R - I|_F <= 1e-3 (with the
 /// rounding of its double evaluation bounded below) and det R > 0 (a
@@ -78,32 +105,16 @@ void check_rigid(const RigidTransform<T>& x) {
     double m[3][3];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) m[i][j] = static_cast<double>(r(i, j));
-    double f2 = 0, o2 = 0, det = 0;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
-        f2 += m[i][j] * m[i][j];
-        double g = 0;
-        for (int k = 0; k < 3; ++k) g += m[k][i] * m[k][j];
-        g -= i == j ? 1.0 : 0.0;
-        o2 += g * g;
-      }
-    }
-    det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-          m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    // Rounding of the double evaluation (u_d = 2^-53): each entry of
-    // M^T M - I rounds at most 4 times relative to |M|_F^2 + 1; a Frobenius
-    // norm over 9 entries then moves by at most 3x the entry error; the sum
-    // of squares and the square root add a relative 1e-15, inside the
-    // (1 + 1e-10).  Within that, |det M| >= (1 - 1e-3)^(3/2), far beyond
-    // the rounding of its double evaluation, so det's computed sign is exact.
-    const double ud = 0x1p-53;
-    const double fro = std::sqrt(f2) * (1 + 1e-10);
-    const double omega = std::sqrt(o2) * (1 + 1e-10) + 13 * ud * (fro * fro + 1);
+    // Within omega <= 1e-3, |det M| >= (1 - 1e-3)^(3/2), far beyond the
+    // rounding of its double evaluation, so det's computed sign is exact.
+    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                       m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    const double omega = rotation_defect(x);
     if (!(omega <= 1e-3) || !(det > 0)) {
       throw InvalidInput(ErrorCode::BadScale,
-                         "pose: the rotation is not a rotation (|R^T R - I| = " +
-                             std::to_string(std::sqrt(o2)) + ", det = " + std::to_string(det) +
+                         "pose: the rotation is not a rotation (|R^T R - I| about " + std::to_string(omega) +
+                             ", det = " + std::to_string(det) +
                              "; sepax needs an orthonormal matrix with det +1 within 1e-3)");
     }
   }

@@ -84,14 +84,14 @@ struct Lanes<float> {
   static void store(float* p, V v) { _mm_storeu_ps(p, v); }
   // (x0 y0 z0 x1) (y1 z1 x2 y2) (z2 x3 y3 z3) from two unpacks and six shuffles
   static void store_xyz(float* p, V x, V y, V z) {
-    const V lo = _mm_unpacklo_ps(x, y);                                // x0 y0 x1 y1
-    const V hi = _mm_unpackhi_ps(x, y);                                // x2 y2 x3 y3
-    const V zx = _mm_shuffle_ps(z, lo, _MM_SHUFFLE(2, 2, 0, 0));      // z0 z0 x1 x1
-    const V yz = _mm_shuffle_ps(lo, z, _MM_SHUFFLE(1, 1, 3, 3));      // y1 y1 z1 z1
-    const V zx3 = _mm_shuffle_ps(z, hi, _MM_SHUFFLE(2, 2, 2, 2));     // z2 z2 x3 x3
-    const V yz3 = _mm_shuffle_ps(hi, z, _MM_SHUFFLE(3, 3, 3, 3));     // y3 y3 z3 z3
-    _mm_storeu_ps(p, _mm_shuffle_ps(lo, zx, _MM_SHUFFLE(2, 0, 1, 0)));  // x0 y0 z0 x1
-    _mm_storeu_ps(p + 4, _mm_shuffle_ps(yz, hi, _MM_SHUFFLE(1, 0, 2, 0)));  // y1 z1 x2 y2
+    const V lo = _mm_unpacklo_ps(x, y);                                       // x0 y0 x1 y1
+    const V hi = _mm_unpackhi_ps(x, y);                                       // x2 y2 x3 y3
+    const V zx = _mm_shuffle_ps(z, lo, _MM_SHUFFLE(2, 2, 0, 0));              // z0 z0 x1 x1
+    const V yz = _mm_shuffle_ps(lo, z, _MM_SHUFFLE(1, 1, 3, 3));              // y1 y1 z1 z1
+    const V zx3 = _mm_shuffle_ps(z, hi, _MM_SHUFFLE(2, 2, 2, 2));             // z2 z2 x3 x3
+    const V yz3 = _mm_shuffle_ps(hi, z, _MM_SHUFFLE(3, 3, 3, 3));             // y3 y3 z3 z3
+    _mm_storeu_ps(p, _mm_shuffle_ps(lo, zx, _MM_SHUFFLE(2, 0, 1, 0)));        // x0 y0 z0 x1
+    _mm_storeu_ps(p + 4, _mm_shuffle_ps(yz, hi, _MM_SHUFFLE(1, 0, 2, 0)));    // y1 z1 x2 y2
     _mm_storeu_ps(p + 8, _mm_shuffle_ps(zx3, yz3, _MM_SHUFFLE(2, 0, 2, 0)));  // z2 x3 y3 z3
   }
   static V add(V a, V b) { return _mm_add_ps(a, b); }

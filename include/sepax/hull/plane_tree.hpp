@@ -82,13 +82,7 @@ class PlaneTree {
       if (nd.left < 0) {
         for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(tree_.items()[as_index(i)].id));
       } else {
-        const double bl = upper(tree_.nodes()[as_index(nd.left)], q, slack);
-        const double br = upper(tree_.nodes()[as_index(nd.left + 1)], q, slack);
-        const bool left_first = !(br > bl);
-        stack[top] = left_first ? nd.left + 1 : nd.left;
-        bound[top++] = left_first ? br : bl;
-        stack[top] = left_first ? nd.left : nd.left + 1;
-        bound[top++] = left_first ? bl : br;
+        push_children(nd, q, slack, stack, bound, top);
       }
     }
     return best;
@@ -155,13 +149,7 @@ class PlaneTree {
           }
         }
       } else {
-        const double bl = upper(tree_.nodes()[as_index(nd.left)], q, slack);
-        const double br = upper(tree_.nodes()[as_index(nd.left + 1)], q, slack);
-        const bool left_first = !(br > bl);
-        stack[top] = left_first ? nd.left + 1 : nd.left;
-        bound[top++] = left_first ? br : bl;
-        stack[top] = left_first ? nd.left : nd.left + 1;
-        bound[top++] = left_first ? bl : br;
+        push_children(nd, q, slack, stack, bound, top);
       }
     }
     return r;
@@ -196,6 +184,19 @@ class PlaneTree {
     s = s + std::abs(x[2]) * root.mag[2];
     s = s + root.mag[3];
     return kSlack * s + kTiny;
+  }
+
+  /// The best-first walks' step: nd's two children pushed with their bounds, the child with the larger
+  /// bound on top (popped first; the left one on a tie).
+  void push_children(const Node& nd, const std::array<double, 3>& q, double slack, int* stack, double* bound,
+                     int& top) const {
+    const double bl = upper(tree_.nodes()[as_index(nd.left)], q, slack);
+    const double br = upper(tree_.nodes()[as_index(nd.left + 1)], q, slack);
+    const bool left_first = !(br > bl);
+    stack[top] = left_first ? nd.left + 1 : nd.left;
+    bound[top++] = left_first ? br : bl;
+    stack[top] = left_first ? nd.left : nd.left + 1;
+    bound[top++] = left_first ? bl : br;
   }
 
   /// A bound u with: every computed height of nd's planes at x is at most lim whenever u <= lim

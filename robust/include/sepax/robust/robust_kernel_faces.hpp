@@ -32,10 +32,10 @@ class RobustFaceQueries : public RobustValues<T> {
   using Base::face_pair_sign;
   using Base::fallbacks_;
   using Base::height;
-  using Base::support_lanes_;
   using Base::side_normal;
   using Base::snap;
   using Base::snap_exact;
+  using Base::support_lanes_;
   using typename Base::P;
 
  public:
