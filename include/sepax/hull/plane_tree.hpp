@@ -65,26 +65,9 @@ class PlaneTree {
   template <class Height>
   T max_height(const Vec3<T>& x, Height&& height) const {
     T best = -std::numeric_limits<T>::infinity();
-    if (tree_.nodes().empty()) return best;
-    const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
-                                  static_cast<double>(x[2])};
-    const double slack = root_slack(q);
-    // (the child with the larger bound first: a high height found early skips more boxes)
-    int stack[64];
-    double bound[64];
-    int top = 0;
-    stack[top] = 0;
-    bound[top++] = upper(tree_.nodes()[0], q, slack);
-    while (top > 0) {
-      --top;
-      const Node& nd = tree_.nodes()[as_index(stack[top])];
-      if (bound[top] <= static_cast<double>(best)) continue;
-      if (nd.left < 0) {
-        for (int i = nd.begin; i < nd.end; ++i) best = std::max(best, height(tree_.items()[as_index(i)].id));
-      } else {
-        push_children(nd, q, slack, stack, bound, top);
-      }
-    }
+    best_first(
+        x, [&](double u) { return u <= static_cast<double>(best); },
+        [&](int f) { best = std::max(best, height(f)); });
     return best;
   }
 
@@ -124,34 +107,17 @@ class PlaneTree {
   template <class Height>
   Highest first_above_or_highest(const Vec3<T>& x, T limit, Height&& height) const {
     Highest r;
-    if (tree_.nodes().empty()) return r;
-    const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
-                                  static_cast<double>(x[2])};
     const double lim = static_cast<double>(limit);
-    const double slack = root_slack(q);
-    int stack[64];
-    double bound[64];
-    int top = 0;
-    stack[top] = 0;
-    bound[top++] = upper(tree_.nodes()[0], q, slack);
-    while (top > 0) {
-      --top;
-      const Node& nd = tree_.nodes()[as_index(stack[top])];
-      if (bound[top] <= lim && (r.above || bound[top] < static_cast<double>(r.height))) continue;
-      if (nd.left < 0) {
-        for (int i = nd.begin; i < nd.end; ++i) {
-          const int f = tree_.items()[as_index(i)].id;
+    best_first(
+        x, [&](double u) { return u <= lim && (r.above || u < static_cast<double>(r.height)); },
+        [&](int f) {
           const T h = height(f);
           if (h > limit) {
             if (!r.above || f < r.face) r = Highest{f, h, true};
           } else if (!r.above && (h > r.height || (h == r.height && f < r.face))) {
             r = Highest{f, h, false};
           }
-        }
-      } else {
-        push_children(nd, q, slack, stack, bound, top);
-      }
-    }
+        });
     return r;
   }
 
@@ -186,17 +152,36 @@ class PlaneTree {
     return kSlack * s + kTiny;
   }
 
-  /// The best-first walks' step: nd's two children pushed with their bounds, the child with the larger
-  /// bound on top (popped first; the left one on a tie).
-  void push_children(const Node& nd, const std::array<double, 3>& q, double slack, int* stack, double* bound,
-                     int& top) const {
-    const double bl = upper(tree_.nodes()[as_index(nd.left)], q, slack);
-    const double br = upper(tree_.nodes()[as_index(nd.left + 1)], q, slack);
-    const bool left_first = !(br > bl);
-    stack[top] = left_first ? nd.left + 1 : nd.left;
-    bound[top++] = left_first ? br : bl;
-    stack[top] = left_first ? nd.left : nd.left + 1;
-    bound[top++] = left_first ? bl : br;
+  /// The best-first walk of max_height and first_above_or_highest at x: the boxes from the root, the child
+  /// with the larger bound u first (the left one on a tie: a high height found early skips more boxes); a
+  /// box is skipped when skip(u), else leaf(f) runs for each plane f of a leaf box.
+  template <class Skip, class Leaf>
+  void best_first(const Vec3<T>& x, Skip&& skip, Leaf&& leaf) const {
+    if (tree_.nodes().empty()) return;
+    const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
+                                  static_cast<double>(x[2])};
+    const double slack = root_slack(q);
+    int stack[64];
+    double bound[64];
+    int top = 0;
+    stack[top] = 0;
+    bound[top++] = upper(tree_.nodes()[0], q, slack);
+    while (top > 0) {
+      --top;
+      const Node& nd = tree_.nodes()[as_index(stack[top])];
+      if (skip(bound[top])) continue;
+      if (nd.left < 0) {
+        for (int i = nd.begin; i < nd.end; ++i) leaf(tree_.items()[as_index(i)].id);
+      } else {
+        const double bl = upper(tree_.nodes()[as_index(nd.left)], q, slack);
+        const double br = upper(tree_.nodes()[as_index(nd.left + 1)], q, slack);
+        const bool left_first = !(br > bl);
+        stack[top] = left_first ? nd.left + 1 : nd.left;
+        bound[top++] = left_first ? br : bl;
+        stack[top] = left_first ? nd.left : nd.left + 1;
+        bound[top++] = left_first ? bl : br;
+      }
+    }
   }
 
   /// A bound u with: every computed height of nd's planes at x is at most lim whenever u <= lim
