@@ -117,10 +117,10 @@ class PosedView {
  private:
   /// Vertices [0, k W) of b posed a SIMD group at a time (W =
   /// simd::Lanes<float>::width, k W the largest multiple of W up to the
-  /// vertex count) with pose_vertices_into's lane expression, the rest left
-  /// to x.apply as it leaves them: the same instructions for the same
-  /// vertices, so the same values with FMA contraction on or off as long
-  /// as the compiler contracts the same expression alike.  Returns k W.
+  /// vertex count) from b's vertex lanes with posing's lane expression
+  /// (detail::PoseLanes, as pose_vertices_into), the rest left to x.apply
+  /// as it leaves them: the same instructions for the same vertices, so the
+  /// same values with FMA contraction on or off.  Returns k W.
   int pose_groups(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x) {
     using L = simd::Lanes<float>;
     constexpr int W = L::width;
@@ -131,23 +131,14 @@ class PosedView {
       using V = typename L::V;
       const int done = b.vertex_count() / W * W;
       if (done == 0) return 0;
-      V r[3][3], t[3];
-      for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) r[i][j] = L::set1(x.rotation(i, j));
-        t[i] = L::set1(x.translation[i]);
-      }
+      const sepax::detail::PoseLanes<float> pose(x);
+      const float* const lx = b.lane_vertex(0);
+      const float* const ly = b.lane_vertex(1);
+      const float* const lz = b.lane_vertex(2);
       for (int g = 0; g < done; g += W) {
-        alignas(16) float in[3][W];
-        for (int k = 0; k < W; ++k)
-          for (int c = 0; c < 3; ++c) in[c][k] = b.vertex(g + k)[c];
-        const V a = L::load(in[0]), bb = L::load(in[1]), cc = L::load(in[2]);
-        alignas(16) float out[3][W];
-        for (int i = 0; i < 3; ++i)
-          L::store(
-              out[i],
-              L::add(L::add(L::add(L::mul(r[i][0], a), L::mul(r[i][1], bb)), L::mul(r[i][2], cc)), t[i]));
-        for (int k = 0; k < W; ++k)
-          vertices_[static_cast<std::size_t>(g + k)] = Vec3<float>(out[0][k], out[1][k], out[2][k]);
+        V vx = L::load(lx + g), vy = L::load(ly + g), vz = L::load(lz + g);
+        pose(vx, vy, vz);
+        L::store_xyz(vertices_[static_cast<std::size_t>(g)].data(), vx, vy, vz);
       }
       return done;
     }

@@ -84,6 +84,31 @@ double rotation_defect(const RigidTransform<T>& x) {
   return std::sqrt(o2) * (1 + 1e-10) + 13 * ud * (fro * fro + 1);
 }
 
+/// x.apply on simd::Lanes<T> vectors of coordinates (float/double), in
+/// place: per lane apply()'s operations in its order,
+/// fl(fl(fl(fl(r_i0 v_0 + r_i1 v_1) + r_i2 v_2) + t_i), so a lane gives
+/// bit for bit what x.apply gives (the same expression wherever it is used,
+/// so contracted alike under FMA contraction).  The lane form of every
+/// posed vertex (pose_vertices_into, and views that pose a shape in part).
+template <class T>
+struct PoseLanes {
+  using L = simd::Lanes<T>;
+  using V = typename L::V;
+  V r[3][3], t[3];
+  explicit PoseLanes(const RigidTransform<T>& x) {
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) r[i][j] = L::set1(x.rotation(i, j));
+      t[i] = L::set1(x.translation[i]);
+    }
+  }
+  SEPAX_SIMD_INLINE void operator()(V& a, V& b, V& c) const {
+    V o[3];
+    for (int i = 0; i < 3; ++i)
+      o[i] = L::add(L::add(L::add(L::mul(r[i][0], a), L::mul(r[i][1], b)), L::mul(r[i][2], c)), t[i]);
+    a = o[0], b = o[1], c = o[2];
+  }
+};
+
 /// Poses must be rigid.  Throws InvalidInput (BadScale) unless x's linear
 /// part R is a rotation: for float/double |R^T R - I|_F <= 1e-3 (with the
 /// rounding of its double evaluation bounded below) and det R > 0 (a
@@ -132,21 +157,8 @@ template <Number T>
                                           const RigidTransform<T>& x) {
   check_rigid(x);
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-    // x.apply a few vertices at a time (simd_ops.hpp): per lane apply()'s
-    // operations in its order, fl(fl(fl(fl(r_i0 v_0 + r_i1 v_1) + r_i2 v_2) + t_i)
-    using L = simd::Lanes<T>;
-    using V = typename L::V;
-    V r[3][3], t[3];
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) r[i][j] = L::set1(x.rotation(i, j));
-      t[i] = L::set1(x.translation[i]);
-    }
-    auto lanes = [&](V& a, V& b, V& c) {
-      V o[3];
-      for (int i = 0; i < 3; ++i)
-        o[i] = L::add(L::add(L::add(L::mul(r[i][0], a), L::mul(r[i][1], b)), L::mul(r[i][2], c)), t[i]);
-      a = o[0], b = o[1], c = o[2];
-    };
+    // x.apply a few vertices at a time (simd_ops.hpp)
+    const PoseLanes<T> lanes(x);
     out.assign_rigid_vertices(
         src, [&](const Vec3<T>& v) { return x.apply(v); }, lanes);
   } else {
