@@ -57,18 +57,12 @@ RigidTransform<T> relative_pose(const RigidTransform<T>& pose_a, const RigidTran
 
 namespace detail {
 
-/// An upper bound on |R^T R - I|_F for x's rotation R (float/double, its
-/// entries taken exactly), evaluated in double.  Rounding of the evaluation
-/// (u_d = 2^-53): each entry of R^T R - I rounds at most 4 times relative to
-/// |R|_F^2 + 1; a Frobenius norm over 9 entries then moves by at most 3x
-/// the entry error; the sum of squares and the square root add a relative
-/// 1e-15, inside the (1 + 1e-10).
-template <Number T>
-double rotation_defect(const RigidTransform<T>& x) {
-  static_assert(std::is_floating_point_v<T>);
-  double m[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m[i][j] = static_cast<double>(x.rotation(i, j));
+/// An upper bound on |R^T R - I|_F for R = m (exact doubles), evaluated in
+/// double.  Rounding of the evaluation (u_d = 2^-53): each entry of
+/// R^T R - I rounds at most 4 times relative to |R|_F^2 + 1; a Frobenius
+/// norm over 9 entries then moves by at most 3x the entry error; the sum of
+/// squares and the square root add a relative 1e-15, inside the (1 + 1e-10).
+inline double rotation_defect(const double (&m)[3][3]) {
   double f2 = 0, o2 = 0;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
@@ -82,6 +76,16 @@ double rotation_defect(const RigidTransform<T>& x) {
   const double ud = 0x1p-53;
   const double fro = std::sqrt(f2) * (1 + 1e-10);
   return std::sqrt(o2) * (1 + 1e-10) + 13 * ud * (fro * fro + 1);
+}
+
+/// The same for x's rotation (float/double, its entries taken exactly).
+template <Number T>
+double rotation_defect(const RigidTransform<T>& x) {
+  static_assert(std::is_floating_point_v<T>);
+  double m[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m[i][j] = static_cast<double>(x.rotation(i, j));
+  return rotation_defect(m);
 }
 
 /// x.apply on simd::Lanes<T> vectors of coordinates (float/double), in
@@ -135,7 +139,7 @@ void check_rigid(const RigidTransform<T>& x) {
     const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
                        m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                        m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    const double omega = rotation_defect(x);
+    const double omega = rotation_defect(m);
     if (!(omega <= 1e-3) || !(det > 0)) {
       throw InvalidInput(ErrorCode::BadScale,
                          "pose: the rotation is not a rotation (|R^T R - I| about " + std::to_string(omega) +
