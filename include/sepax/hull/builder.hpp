@@ -115,6 +115,8 @@ class Builder {
   void assign(int p, int first);
   template <class Faces>
   void assign_among(int p, const Faces& faces);
+  template <class Faces, class Limit>
+  bool conflict_among(int p, const Faces& faces, const Limit& limit, typename Traits::NearFace& near);
   void index_live_faces(std::size_t points);
   void assign_live(int p);
   T threshold(int p) const;
