@@ -73,6 +73,36 @@ class BoxTree {
     }
   }
 
+  /// Best first from the root: each node's bound(node) is taken when its parent is opened, and the child
+  /// with the larger bound is entered first (the left one on a tie), so that a search for a largest value
+  /// finds a high one early; a node for which skip(its bound) holds, tested when it is entered, is passed
+  /// over with its subtree; every other leaf is handed to leaf(node).
+  template <class Bound, class Skip, class Leaf>
+  void best_first(Bound&& bound, Skip&& skip, Leaf&& leaf) const {
+    if (nodes_.empty()) return;
+    int stack[64];
+    double bounds[64];
+    int top = 0;
+    stack[top] = 0;
+    bounds[top++] = bound(nodes_[0]);
+    while (top > 0) {
+      --top;
+      const Node& nd = nodes_[as_index(stack[top])];
+      if (skip(bounds[top])) continue;
+      if (nd.left < 0) {
+        leaf(nd);
+      } else {
+        const double bl = bound(nodes_[as_index(nd.left)]);
+        const double br = bound(nodes_[as_index(nd.left + 1)]);
+        const bool left_first = !(br > bl);
+        stack[top] = left_first ? nd.left + 1 : nd.left;
+        bounds[top++] = left_first ? br : bl;
+        stack[top] = left_first ? nd.left : nd.left + 1;
+        bounds[top++] = left_first ? bl : br;
+      }
+    }
+  }
+
  private:
   static constexpr int kLeaf = 8;  ///< items per leaf at most
 
