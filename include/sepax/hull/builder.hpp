@@ -121,6 +121,7 @@ class Builder {
   void assign_live(int p);
   T threshold(int p) const;
   bool sweep();
+  int first_above_nearby(int p, int f, T reach, std::vector<int>& seen, std::vector<int>& queue) const;
   static int edge_index(const Tri& t, int from);
   std::optional<ConvexPolyhedron<T>> solid(const std::vector<int>& active, int a, int b, int c, int d,
                                            std::vector<int>& reject);

@@ -312,20 +312,7 @@ inline bool Builder<T>::sweep() {
           for (std::size_t k = 0; k < live.size() && out < 0; ++k)
             if (height(tris_[as_index(live[k])].pl, p) > threshold(p)) out = live[k];
         } else {
-          queue.assign(1, f);
-          seen[as_index(f)] = p;
-          for (std::size_t k = 0; k < queue.size(); ++k) {
-            const Tri& t = tris_[as_index(queue[k])];
-            const bool plain = !is_zero(t.pl.normal);
-            const T hq = plain ? height(t.pl, p) : T(0);
-            if (plain && hq > threshold(p) && (out < 0 || queue[k] < out)) out = queue[k];
-            if (plain && hq < reach) continue;
-            for (int g : t.nb)
-              if (seen[as_index(g)] != p) {
-                seen[as_index(g)] = p;
-                queue.push_back(g);
-              }
-          }
+          out = first_above_nearby(p, f, reach, seen, queue);
         }
         if (out >= 0) {
           tris_[as_index(out)].conflict.push_back(p);
@@ -338,6 +325,34 @@ inline bool Builder<T>::sweep() {
     }
     return moved;
   }
+}
+
+// The sweep's search on a large hull for kept point p on face f: among the faces connected to f through
+// faces p is not more than -reach below (a zero-area face passed through), the first in creation order that
+// p is more than threshold(p) above, or -1.  seen (one entry per triangle) marks the faces reached for p;
+// queue is scratch.
+template <Number T>
+inline int Builder<T>::first_above_nearby(int p, int f, T reach, std::vector<int>& seen,
+                                          std::vector<int>& queue) const {
+  const T limit = threshold(p);
+  int out = -1;
+  queue.assign(1, f);
+  seen[as_index(f)] = p;
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const int g = queue[k];
+    const Tri& t = tris_[as_index(g)];
+    if (!is_zero(t.pl.normal)) {
+      const T h = height(t.pl, p);
+      if (h > limit && (out < 0 || g < out)) out = g;
+      if (h < reach) continue;
+    }
+    for (const int n : t.nb)
+      if (seen[as_index(n)] != p) {
+        seen[as_index(n)] = p;
+        queue.push_back(n);
+      }
+  }
+  return out;
 }
 
 // The position of vertex from in t (the edge from -> next).
