@@ -3,7 +3,8 @@
 // Float T: the tree of boxes under VertexTree (vertices, D = 3) and PlaneTree (planes as (n, off), D = 4):
 //   1. BoxTree<D>: items of D coordinates (exactly as doubles) in a binary tree of bounding boxes, median
 //      splits on the widest coordinate down to leaves of kLeaf items;
-//   2. DotBound<T>: the slack of the trees' box tests, for computed 4-term dot products in T bounded in
+//   2. walk (depth first) and best_first (the child with the larger bound first): the trees' searches;
+//   3. DotBound<T>: the slack of the trees' box tests, for computed 4-term dot products in T bounded in
 //      double (derived in VertexTree::may_exceed).
 #pragma once
 
