@@ -3,7 +3,8 @@
 // Float T: the tree of boxes under VertexTree (vertices, D = 3) and PlaneTree (planes as (n, off), D = 4):
 //   1. BoxTree<D>: items of D coordinates (exactly as doubles) in a binary tree of bounding boxes, median
 //      splits on the widest coordinate down to leaves of kLeaf items;
-//   2. DotBound<T>: the slack of the trees' box tests, for computed 4-term dot products in T bounded in
+//   2. walk (depth first) and best_first (the child with the larger bound first): the trees' searches;
+//   3. DotBound<T>: the slack of the trees' box tests, for computed 4-term dot products in T bounded in
 //      double (derived in VertexTree::may_exceed).
 #pragma once
 
@@ -69,6 +70,36 @@ class BoxTree {
       } else {
         stack[top++] = left_first ? nd.left + 1 : nd.left;
         stack[top++] = left_first ? nd.left : nd.left + 1;
+      }
+    }
+  }
+
+  /// Best first from the root: each node's bound(node) is taken when its parent is opened, and the child
+  /// with the larger bound is entered first (the left one on a tie), so that a search for a largest value
+  /// finds a high one early; a node for which skip(its bound) holds, tested when it is entered, is passed
+  /// over with its subtree; every other leaf is handed to leaf(node).
+  template <class Bound, class Skip, class Leaf>
+  void best_first(Bound&& bound, Skip&& skip, Leaf&& leaf) const {
+    if (nodes_.empty()) return;
+    int stack[64];
+    double bounds[64];
+    int top = 0;
+    stack[top] = 0;
+    bounds[top++] = bound(nodes_[0]);
+    while (top > 0) {
+      --top;
+      const Node& nd = nodes_[as_index(stack[top])];
+      if (skip(bounds[top])) continue;
+      if (nd.left < 0) {
+        leaf(nd);
+      } else {
+        const double bl = bound(nodes_[as_index(nd.left)]);
+        const double br = bound(nodes_[as_index(nd.left + 1)]);
+        const bool left_first = !(br > bl);
+        stack[top] = left_first ? nd.left + 1 : nd.left;
+        bounds[top++] = left_first ? br : bl;
+        stack[top] = left_first ? nd.left : nd.left + 1;
+        bounds[top++] = left_first ? bl : br;
       }
     }
   }

@@ -115,10 +115,13 @@ class Builder {
   void assign(int p, int first);
   template <class Faces>
   void assign_among(int p, const Faces& faces);
+  template <class Faces, class Limit>
+  bool conflict_among(int p, const Faces& faces, const Limit& limit, typename Traits::NearFace& near);
   void index_live_faces(std::size_t points);
   void assign_live(int p);
   T threshold(int p) const;
   bool sweep();
+  int first_above_nearby(int p, int f, T reach, std::vector<int>& seen, std::vector<int>& queue) const;
   static int edge_index(const Tri& t, int from);
   std::optional<ConvexPolyhedron<T>> solid(const std::vector<int>& active, int a, int b, int c, int d,
                                            std::vector<int>& reject);

@@ -152,36 +152,17 @@ class PlaneTree {
     return kSlack * s + kTiny;
   }
 
-  /// The best-first walk of max_height and first_above_or_highest at x: the boxes from the root, the child
-  /// with the larger bound u first (the left one on a tie: a high height found early skips more boxes); a
-  /// box is skipped when skip(u), else leaf(f) runs for each plane f of a leaf box.
+  /// The best-first walk of max_height and first_above_or_highest at x (BoxTree::best_first on the bound
+  /// u of upper): a box is skipped when skip(u), else leaf(f) runs for each plane f of a leaf box.
   template <class Skip, class Leaf>
   void best_first(const Vec3<T>& x, Skip&& skip, Leaf&& leaf) const {
-    if (tree_.nodes().empty()) return;
     const std::array<double, 3> q{static_cast<double>(x[0]), static_cast<double>(x[1]),
                                   static_cast<double>(x[2])};
     const double slack = root_slack(q);
-    int stack[64];
-    double bound[64];
-    int top = 0;
-    stack[top] = 0;
-    bound[top++] = upper(tree_.nodes()[0], q, slack);
-    while (top > 0) {
-      --top;
-      const Node& nd = tree_.nodes()[as_index(stack[top])];
-      if (skip(bound[top])) continue;
-      if (nd.left < 0) {
-        for (int i = nd.begin; i < nd.end; ++i) leaf(tree_.items()[as_index(i)].id);
-      } else {
-        const double bl = upper(tree_.nodes()[as_index(nd.left)], q, slack);
-        const double br = upper(tree_.nodes()[as_index(nd.left + 1)], q, slack);
-        const bool left_first = !(br > bl);
-        stack[top] = left_first ? nd.left + 1 : nd.left;
-        bound[top++] = left_first ? br : bl;
-        stack[top] = left_first ? nd.left : nd.left + 1;
-        bound[top++] = left_first ? bl : br;
-      }
-    }
+    tree_.best_first([&](const Node& nd) { return upper(nd, q, slack); }, skip,
+                     [&](const Node& nd) {
+                       for (int i = nd.begin; i < nd.end; ++i) leaf(tree_.items()[as_index(i)].id);
+                     });
   }
 
   /// A bound u with: every computed height of nd's planes at x is at most lim whenever u <= lim

@@ -19,6 +19,7 @@
 #include <limits>
 #include <memory_resource>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -186,17 +187,27 @@ template <Number T>
 template <class Faces>
 inline void Builder<T>::assign_among(int p, const Faces& faces) {
   typename Traits::NearFace near;
-  const auto limit = Traits::outside_limit(*this, p);
+  if (!conflict_among(p, faces, Traits::outside_limit(*this, p), near)) near.keep(*this, p);
+}
+
+// assign_among's rule over faces (ascending; those no longer alive are passed over), from a NearFace that
+// may already hold faces before them: puts p on the conflict list of the first face it is outside (more
+// than limit above, Traits::classify) and returns true; otherwise offers every face to near and returns
+// false (the caller then keeps p on near's face).
+template <Number T>
+template <class Faces, class Limit>
+inline bool Builder<T>::conflict_among(int p, const Faces& faces, const Limit& limit,
+                                       typename Traits::NearFace& near) {
   for (const int f : faces) {
     if (!tris_[as_index(f)].alive) continue;
     const auto side = Traits::classify(*this, f, p, limit);
     if (side.outside) {
       tris_[as_index(f)].conflict.push_back(p);
-      return;
+      return true;
     }
     near.offer(side, f);
   }
-  near.keep(*this, p);
+  return false;
 }
 
 /// Float T, a forced eye on many live faces that re-assigns at least kPlaneTreeForcedPoints points: keeps
@@ -216,11 +227,11 @@ inline void Builder<T>::index_live_faces(std::size_t points) {
 }
 
 /// assign_among(p, live_faces_), the same decision: on many live faces (float T) through live_tree_ for the
-/// faces it holds and a pass over the faces made since (all later in index order).  assign_among puts p on
-/// the conflict list of the first live face it is outside (height above threshold(p)), else keeps it on the
-/// first face of the largest height if that is above 0: the tree's first_above_or_highest (a dead face's
-/// height taken as -infinity) answers both for its faces, and the pass goes on from that answer as
-/// assign_among would from the tree's last face.
+/// faces it holds, then conflict_among over the faces made since (all later in index order).  assign_among
+/// puts p on the conflict list of the first live face it is outside (height above threshold(p)), else keeps
+/// it on the first face of the largest height if that is above 0: the tree's first_above_or_highest (a dead
+/// face's height taken as -infinity) answers both for its faces, and its highest face is offered to the
+/// NearFace that conflict_among goes on with, as assign_among's pass would have offered it.
 template <Number T>
 inline void Builder<T>::assign_live(int p) {
   const std::vector<int>& live = live_faces_;
@@ -231,27 +242,19 @@ inline void Builder<T>::assign_live(int p) {
       assign_among(p, live);
       return;
     }
-    const T limit = threshold(p);
-    auto r = live_tree_->first_above_or_highest(local_point(p), limit, [&](int k) {
+    const T limit = Traits::outside_limit(*this, p);
+    const auto r = live_tree_->first_above_or_highest(local_point(p), limit, [&](int k) {
       const Tri& t = tris_[as_index(live_tree_faces_[as_index(k)])];
       return t.alive ? height(t.pl, p) : -std::numeric_limits<T>::infinity();
     });
-    if (r.face >= 0) r.face = live_tree_faces_[as_index(r.face)];
-    const auto made_since = std::lower_bound(live.begin(), live.end(), static_cast<int>(live_tree_end_));
-    for (auto it = made_since; !r.above && it != live.end(); ++it) {
-      if (!tris_[as_index(*it)].alive) continue;
-      const T h = height(tris_[as_index(*it)].pl, p);
-      if (h > limit) {
-        r = {*it, h, true};
-      } else if (h > r.height) {
-        r = {*it, h, false};
-      }
-    }
     if (r.above) {
-      tris_[as_index(r.face)].conflict.push_back(p);
-    } else if (r.height > T(0)) {
-      tris_[as_index(r.face)].on.push_back(p);
+      tris_[as_index(live_tree_faces_[as_index(r.face)])].conflict.push_back(p);
+      return;
     }
+    typename Traits::NearFace near;
+    if (r.face >= 0) near.offer(typename Traits::Side{false, r.height}, live_tree_faces_[as_index(r.face)]);
+    const auto made_since = std::lower_bound(live.begin(), live.end(), static_cast<int>(live_tree_end_));
+    if (!conflict_among(p, std::span<const int>(made_since, live.end()), limit, near)) near.keep(*this, p);
   }
 }
 
@@ -309,20 +312,7 @@ inline bool Builder<T>::sweep() {
           for (std::size_t k = 0; k < live.size() && out < 0; ++k)
             if (height(tris_[as_index(live[k])].pl, p) > threshold(p)) out = live[k];
         } else {
-          queue.assign(1, f);
-          seen[as_index(f)] = p;
-          for (std::size_t k = 0; k < queue.size(); ++k) {
-            const Tri& t = tris_[as_index(queue[k])];
-            const bool plain = !is_zero(t.pl.normal);
-            const T hq = plain ? height(t.pl, p) : T(0);
-            if (plain && hq > threshold(p) && (out < 0 || queue[k] < out)) out = queue[k];
-            if (plain && hq < reach) continue;
-            for (int g : t.nb)
-              if (seen[as_index(g)] != p) {
-                seen[as_index(g)] = p;
-                queue.push_back(g);
-              }
-          }
+          out = first_above_nearby(p, f, reach, seen, queue);
         }
         if (out >= 0) {
           tris_[as_index(out)].conflict.push_back(p);
@@ -335,6 +325,34 @@ inline bool Builder<T>::sweep() {
     }
     return moved;
   }
+}
+
+// The sweep's search on a large hull for kept point p on face f: among the faces connected to f through
+// faces p is not more than -reach below (a zero-area face passed through), the first in creation order that
+// p is more than threshold(p) above, or -1.  seen (one entry per triangle) marks the faces reached for p;
+// queue is scratch.
+template <Number T>
+inline int Builder<T>::first_above_nearby(int p, int f, T reach, std::vector<int>& seen,
+                                          std::vector<int>& queue) const {
+  const T limit = threshold(p);
+  int out = -1;
+  queue.assign(1, f);
+  seen[as_index(f)] = p;
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const int g = queue[k];
+    const Tri& t = tris_[as_index(g)];
+    if (!is_zero(t.pl.normal)) {
+      const T h = height(t.pl, p);
+      if (h > limit && (out < 0 || g < out)) out = g;
+      if (h < reach) continue;
+    }
+    for (const int n : t.nb)
+      if (seen[as_index(n)] != p) {
+        seen[as_index(n)] = p;
+        queue.push_back(n);
+      }
+  }
+  return out;
 }
 
 // The position of vertex from in t (the edge from -> next).

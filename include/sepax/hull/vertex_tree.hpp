@@ -7,7 +7,7 @@
 //      T(dot(n, x) - off) of each of its vertices is at most the limit (the bound is derived there; its
 //      rounding slack is computed once per plane, on the root box);
 //      every other vertex is handed to the caller, which computes its height as before.
-//   3. max_height: the largest computed height, with the largest found so far as the limit.
+//   3. max_height: the largest computed height, with the largest found so far as the limit (best first).
 // Used by the pre-check (precheck.hpp), the hull's validation (to_polyhedron.hpp) and the slab
 // fallback's widths (fallbacks.hpp, thin_plane).
 #pragma once
@@ -81,12 +81,12 @@ class VertexTree {
     const double n0 = static_cast<double>(pl.normal[0]), n1 = static_cast<double>(pl.normal[1]),
                  n2 = static_cast<double>(pl.normal[2]), off = static_cast<double>(pl.offset);
     const double slack = root_slack(n0, n1, n2, off);
-    tree_.walk(
-        true, [&](const Node& nd) { return at_most(nd, n0, n1, n2, off, slack, static_cast<double>(best)); },
-        [&](const Node& nd) {
-          for (int i = nd.begin; i < nd.end; ++i)
-            best = std::max(best, height(tree_.items()[as_index(i)].id));
-        });
+    tree_.best_first([&](const Node& nd) { return upper(nd, n0, n1, n2, off, slack); },
+                     [&](double u) { return u <= static_cast<double>(best); },
+                     [&](const Node& nd) {
+                       for (int i = nd.begin; i < nd.end; ++i)
+                         best = std::max(best, height(tree_.items()[as_index(i)].id));
+                     });
     return best;
   }
 
@@ -142,13 +142,19 @@ class VertexTree {
   /// Whether the box of nd proves every computed height of its vertices at most lim (may_exceed's bound),
   /// with slack from root_slack().
   static bool at_most(const Node& nd, double n0, double n1, double n2, double off, double slack, double lim) {
+    return upper(nd, n0, n1, n2, off, slack) <= lim;
+  }
+
+  /// may_exceed's bound of nd's box: every computed height of its vertices is at most lim when the value
+  /// is at most lim (slack from root_slack(); a non-finite value skips no box but an infinite limit's).
+  static double upper(const Node& nd, double n0, double n1, double n2, double off, double slack) {
     const double x0 = n0 > 0 ? nd.hi[0] : nd.lo[0], x1 = n1 > 0 ? nd.hi[1] : nd.lo[1],
                  x2 = n2 > 0 ? nd.hi[2] : nd.lo[2];
     double m = n0 * x0;
     m = m + n1 * x1;
     m = m + n2 * x2;
     m = m - off;
-    return m + slack <= lim;
+    return m + slack;
   }
 
   BoxTree<3> tree_;
