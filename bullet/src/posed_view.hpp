@@ -11,9 +11,10 @@
 //     finish_bounds' formula; the minimum and maximum of a coordinate are
 //     the same values in any order of comparison (a zero's sign, which the
 //     order can change, does not change max - min squared);
-//   * a plane: plane_of_triple's operations in its order on the face's
-//     plane triple (convex_polyhedron_derived.hpp), where its cross product
-//     is in range; otherwise the view declines.
+//   * a plane: plane_of_triple's own steps (detail::triple_cross and
+//     detail::unit_plane, convex_polyhedron_derived.hpp) on the face's
+//     plane triple, where its cross product is in range; otherwise the
+//     view declines.
 // The view declines (returns false) wherever posing would do more than that
 // - a pose check or range check that could throw, a plane that needs
 // plane_of_triple's rescaling - and the adapter then poses B' as before,
@@ -83,26 +84,14 @@ class PosedView {
   }
 
   /// The plane of face f from the posed vertices (plane_of_triple); false
-  /// where plane_of_triple would rescale the cross product.
-  bool derive(int f) {
+  /// where plane_of_triple would rescale the cross product.  Inlined into
+  /// its callers, as plane_of_triple is.
+  [[gnu::always_inline]] bool derive(int f) {
     const auto& t = src_->face(f).plane_vertices;
-    const float* p0 = vertex(t[0]).data();
-    const float* p1 = vertex(t[1]).data();
-    const float* p2 = vertex(t[2]).data();
-    const float a0 = p0[0], a1 = p0[1], a2 = p0[2];
-    const float u0 = p1[0] - a0, u1 = p1[1] - a1, u2 = p1[2] - a2;
-    const float w0 = p2[0] - a0, w1 = p2[1] - a1, w2 = p2[2] - a2;
-    float n0 = u1 * w2 - u2 * w1, n1 = u2 * w0 - u0 * w2, n2 = u0 * w1 - u1 * w0;
-    float s = n0 * n0;
-    s = s + n1 * n1;
-    s = s + n2 * n2;
-    if (!sepax::detail::safe_squared_norm(s)) return false;
-    const float len = std::sqrt(s);
-    if (len > 0.0f) n0 = n0 / len, n1 = n1 / len, n2 = n2 / len;
-    float off = n0 * a0;
-    off = off + n1 * a1;
-    off = off + n2 * a2;
-    planes_[static_cast<std::size_t>(f)] = Plane<float>{Vec3<float>(n0, n1, n2), off};
+    const sepax::detail::TripleCross<float> x =
+        sepax::detail::triple_cross(vertex(t[0]).data(), vertex(t[1]).data(), vertex(t[2]).data());
+    if (!sepax::detail::safe_squared_norm(x.s)) return false;
+    planes_[static_cast<std::size_t>(f)] = sepax::detail::unit_plane(x.c0, x.c1, x.c2, x.s, x.a0, x.a1, x.a2);
     return true;
   }
 
