@@ -46,8 +46,18 @@ inline constexpr double kKeepMotion = 0.5;
 /// evaluations below (float images: a few units of 2^-24 of the coordinates).
 inline constexpr double kSlack = 1e-6;
 
-/// delta above for relative poses x0 and x1, in double.
-inline double motion_bound(const RigidTransform<float>& x0, const RigidTransform<float>& x1, double reach) {
+/// How far a relative pose moved from x0 to x1, in double: |R1 - R0|_F and
+/// |t1 - t0| (each difference of two floats, its square and their sums in
+/// double).  The kept face reads both delta and stays_rigid's |E|_F from
+/// one evaluation.
+struct Motion {
+  /// |R1 - R0|_F, dimensionless.
+  double rotation = 0;
+  /// |t1 - t0|, in the translations' length unit.
+  double translation = 0;
+};
+
+inline Motion motion_between(const RigidTransform<float>& x0, const RigidTransform<float>& x1) {
   double r2 = 0, t2 = 0;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
@@ -57,7 +67,15 @@ inline double motion_bound(const RigidTransform<float>& x0, const RigidTransform
     const double d = static_cast<double>(x1.translation[i]) - static_cast<double>(x0.translation[i]);
     t2 += d * d;
   }
-  return std::sqrt(r2) * reach + std::sqrt(t2);
+  return Motion{std::sqrt(r2), std::sqrt(t2)};
+}
+
+/// delta above for a motion m and B's reach, in double.
+inline double motion_bound(const Motion& m, double reach) { return m.rotation * reach + m.translation; }
+
+/// delta above for relative poses x0 and x1, in double.
+inline double motion_bound(const RigidTransform<float>& x0, const RigidTransform<float>& x1, double reach) {
+  return motion_bound(motion_between(x0, x1), reach);
 }
 
 /// The slack of delta and of the separations it bounds: kSlack of the
@@ -76,7 +94,8 @@ inline double motion_slack(const RigidTransform<float>& x0, const RigidTransform
 inline double rotation_defect(const RigidTransform<float>& x) { return sepax::detail::rotation_defect(x); }
 
 /// True when check_rigid(x1) (posing.hpp) is certain to pass, given
-/// omega0 = rotation_defect(x0) of a pose x0 that passed it.  With
+/// omega0 = rotation_defect(x0) of a pose x0 that passed it and the motion
+/// m from x0 to x1 (motion_between).  With
 /// E = R1 - R0,
 ///   R1^T R1 - I = (R0^T R0 - I) + E^T R0 + R0^T E + E^T E,
 /// so |R1^T R1 - I|_F <= omega0 + 2 |R0|_2 |E|_F + |E|_F^2, and
@@ -92,15 +111,8 @@ inline double rotation_defect(const RigidTransform<float>& x) { return sepax::de
 /// singular value, so det R1 has det R0's sign (positive), and with a
 /// defect <= 1e-3 |det R1| >= (1 - 1e-3)^(3/2), far beyond the rounding of
 /// its double evaluation.  NaN entries fail the comparison: the check runs.
-inline bool stays_rigid(double omega0, const RigidTransform<float>& x0, const RigidTransform<float>& x1) {
-  double r2 = 0;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      const double d = static_cast<double>(x1.rotation(i, j)) - static_cast<double>(x0.rotation(i, j));
-      r2 += d * d;
-    }
-  }
-  const double e = std::sqrt(r2) * (1 + 1e-10);
+inline bool stays_rigid(double omega0, const Motion& m) {
+  const double e = m.rotation * (1 + 1e-10);
   const double bound = (omega0 + 2 * std::sqrt(1 + omega0) * e + e * e) * (1 + 1e-10);
   return bound <= 1e-3 - 1e-9;
 }

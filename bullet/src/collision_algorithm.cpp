@@ -477,8 +477,10 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     }
     s.apart = false;
     bool keep = false;
+    Motion moved;
     if (s.kept) {
-      const double delta = motion_bound(s.x0, x, s.b->reach);
+      moved = motion_between(s.x0, x);
+      const double delta = motion_bound(moved, s.b->reach);
       const double slack = motion_slack(s.x0, x, s.b->reach);
       const double budget = kKeepMotion * kAbsTolerance *
                             std::min(s.a->shape.polyhedron().extent(), s.b->shape.polyhedron().extent());
@@ -486,7 +488,7 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     }
     if (keep) {
       bool refreshed = false;
-      const bool rigid = stays_rigid(s.defect0, s.x0, x);
+      const bool rigid = stays_rigid(s.defect0, moved);
       kept_manifold(s.a->shape, pa, s.b->shape, x, rigid, s.contact, margin, s.face, s.view, s.manifold,
                     refreshed);
       live.kept.fetch_add(1, std::memory_order_relaxed);

@@ -59,14 +59,14 @@ struct KeptFace {
 template <class Poly>
 bool clip_if_cut(const Poly& in, const ClipPlane<float>& plane, int incident_face, Poly& out) {
   float heights[16];
-  bool all_in = true;
+  bool cut = false;
   std::size_t n = 0;
   for (const auto& v : in) {
     heights[n] = clip_detail::height_over(plane, v.point);
-    all_in = all_in && !(heights[n] > 0.0f);
+    cut |= heights[n] > 0.0f;
     ++n;
   }
-  if (all_in) return false;
+  if (!cut) return false;
   clip_detail::clip_with(in, plane, incident_face, out, [&](std::size_t i) { return heights[i]; });
   return true;
 }

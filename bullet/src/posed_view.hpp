@@ -11,9 +11,10 @@
 //     finish_bounds' formula; the minimum and maximum of a coordinate are
 //     the same values in any order of comparison (a zero's sign, which the
 //     order can change, does not change max - min squared);
-//   * a plane: plane_of_triple's operations in its order on the face's
-//     plane triple (convex_polyhedron_derived.hpp), where its cross product
-//     is in range; otherwise the view declines.
+//   * a plane: plane_of_triple's own steps (detail::triple_cross and
+//     detail::unit_plane, convex_polyhedron_derived.hpp) on the face's
+//     plane triple, where its cross product is in range; otherwise the
+//     view declines.
 // The view declines (returns false) wherever posing would do more than that
 // - a pose check or range check that could throw, a plane that needs
 // plane_of_triple's rescaling - and the adapter then poses B' as before,
@@ -46,29 +47,31 @@ class PosedView {
     if (!rigid) sepax::detail::check_rigid(x);
     src_ = &b;
     const int n = b.vertex_count();
-    vertices_.resize(static_cast<std::size_t>(n));
+    if (vertices_.size() != static_cast<std::size_t>(n)) vertices_.resize(static_cast<std::size_t>(n));
     if (planes_.size() != static_cast<std::size_t>(b.face_count()))
       planes_.resize(static_cast<std::size_t>(b.face_count()));
     // Posing refuses |coordinate| > FLT_MAX / 16 (and NaN); within 2^64 it
     // never does, so a view inside that range decides what posing decides.
-    constexpr float kRange = 0x1p64f;
     bool in_range = true;
-    float lo0 = 0, lo1 = 0, lo2 = 0, hi0 = 0, hi1 = 0, hi2 = 0;
-    const int grouped = pose_groups(b, x);
-    for (int i = 0; i < n; ++i) {
-      if (i >= grouped) vertices_[static_cast<std::size_t>(i)] = x.apply(b.vertex(i));
-      const Vec3<float>& v = vertices_[static_cast<std::size_t>(i)];
+    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    const int grouped = pose_groups(b, x, lo, hi, in_range);
+    for (int i = grouped; i < n; ++i) {
+      Vec3<float>& v = vertices_[static_cast<std::size_t>(i)];
+      v = x.apply(b.vertex(i));
       in_range &= std::abs(v[0]) <= kRange && std::abs(v[1]) <= kRange && std::abs(v[2]) <= kRange;
-      if (i == 0) {
-        lo0 = hi0 = v[0], lo1 = hi1 = v[1], lo2 = hi2 = v[2];
-        continue;
+      for (int c = 0; c < 3; ++c) {
+        if (i == 0) {
+          lo[c] = hi[c] = v[c];
+          continue;
+        }
+        lo[c] = v[c] < lo[c] ? v[c] : lo[c];
+        hi[c] = v[c] > hi[c] ? v[c] : hi[c];
       }
-      lo0 = v[0] < lo0 ? v[0] : lo0, lo1 = v[1] < lo1 ? v[1] : lo1, lo2 = v[2] < lo2 ? v[2] : lo2;
-      hi0 = v[0] > hi0 ? v[0] : hi0, hi1 = v[1] > hi1 ? v[1] : hi1, hi2 = v[2] > hi2 ? v[2] : hi2;
     }
     if (!in_range || n < 3) return false;
-    const double w0 = static_cast<double>(float(hi0 - lo0)), w1 = static_cast<double>(float(hi1 - lo1)),
-                 w2 = static_cast<double>(float(hi2 - lo2));
+    const double w0 = static_cast<double>(float(hi[0] - lo[0])),
+                 w1 = static_cast<double>(float(hi[1] - lo[1])),
+                 w2 = static_cast<double>(float(hi[2] - lo[2]));
     double d2 = 0;
     d2 += w0 * w0;
     d2 += w1 * w1;
@@ -81,26 +84,14 @@ class PosedView {
   }
 
   /// The plane of face f from the posed vertices (plane_of_triple); false
-  /// where plane_of_triple would rescale the cross product.
-  bool derive(int f) {
+  /// where plane_of_triple would rescale the cross product.  Inlined into
+  /// its callers, as plane_of_triple is.
+  [[gnu::always_inline]] bool derive(int f) {
     const auto& t = src_->face(f).plane_vertices;
-    const float* p0 = vertex(t[0]).data();
-    const float* p1 = vertex(t[1]).data();
-    const float* p2 = vertex(t[2]).data();
-    const float a0 = p0[0], a1 = p0[1], a2 = p0[2];
-    const float u0 = p1[0] - a0, u1 = p1[1] - a1, u2 = p1[2] - a2;
-    const float w0 = p2[0] - a0, w1 = p2[1] - a1, w2 = p2[2] - a2;
-    float n0 = u1 * w2 - u2 * w1, n1 = u2 * w0 - u0 * w2, n2 = u0 * w1 - u1 * w0;
-    float s = n0 * n0;
-    s = s + n1 * n1;
-    s = s + n2 * n2;
-    if (!sepax::detail::safe_squared_norm(s)) return false;
-    const float len = std::sqrt(s);
-    if (len > 0.0f) n0 = n0 / len, n1 = n1 / len, n2 = n2 / len;
-    float off = n0 * a0;
-    off = off + n1 * a1;
-    off = off + n2 * a2;
-    planes_[static_cast<std::size_t>(f)] = Plane<float>{Vec3<float>(n0, n1, n2), off};
+    const sepax::detail::TripleCross<float> x =
+        sepax::detail::triple_cross(vertex(t[0]).data(), vertex(t[1]).data(), vertex(t[2]).data());
+    if (!sepax::detail::safe_squared_norm(x.s)) return false;
+    planes_[static_cast<std::size_t>(f)] = sepax::detail::unit_plane(x.c0, x.c1, x.c2, x.s, x.a0, x.a1, x.a2);
     return true;
   }
 
@@ -115,30 +106,62 @@ class PosedView {
   double extent() const { return extent_; }
 
  private:
+  /// |coordinate| limit of a view, in the shape's length unit (pose above).
+  static constexpr float kRange = 0x1p64f;
+
   /// Vertices [0, k W) of b posed a SIMD group at a time (W =
   /// simd::Lanes<float>::width, k W the largest multiple of W up to the
   /// vertex count) from b's vertex lanes with posing's lane expression
   /// (detail::PoseLanes, as pose_vertices_into), the rest left to x.apply
   /// as it leaves them: the same instructions for the same vertices, so the
-  /// same values with FMA contraction on or off.  Returns k W.
-  int pose_groups(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x) {
+  /// same values with FMA contraction on or off.  When k W > 0, lo and hi
+  /// get the posed vertices' smallest and largest coordinates (minps and
+  /// maxps over the groups, then over the lanes: the same values as any
+  /// order of comparison where no coordinate is NaN) and in_range is false
+  /// when a coordinate is NaN or beyond kRange (cmpleps is false on NaN).
+  /// Returns k W.
+  int pose_groups(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x, float (&lo)[3],
+                  float (&hi)[3], bool& in_range) {
     using L = simd::Lanes<float>;
     constexpr int W = L::width;
     if constexpr (W == 1) {
-      (void)b, (void)x;
+      (void)b, (void)x, (void)lo, (void)hi, (void)in_range;
       return 0;
     } else {
       using V = typename L::V;
+      using M = typename L::M;
       const int done = b.vertex_count() / W * W;
       if (done == 0) return 0;
       const sepax::detail::PoseLanes<float> pose(x);
       const float* const lx = b.lane_vertex(0);
       const float* const ly = b.lane_vertex(1);
       const float* const lz = b.lane_vertex(2);
+      const V range = L::set1(kRange);
+      V mn[3], mx[3];
+      M ok = L::le(range, range);  // every lane true
       for (int g = 0; g < done; g += W) {
         V vx = L::load(lx + g), vy = L::load(ly + g), vz = L::load(lz + g);
         pose(vx, vy, vz);
         L::store_xyz(vertices_[static_cast<std::size_t>(g)].data(), vx, vy, vz);
+        ok = L::mand(ok, L::mand(L::le(L::abs(vx), range),
+                                 L::mand(L::le(L::abs(vy), range), L::le(L::abs(vz), range))));
+        if (g == 0) {
+          mn[0] = mx[0] = vx, mn[1] = mx[1] = vy, mn[2] = mx[2] = vz;
+          continue;
+        }
+        mn[0] = L::min_lt(vx, mn[0]), mn[1] = L::min_lt(vy, mn[1]), mn[2] = L::min_lt(vz, mn[2]);
+        mx[0] = L::max_gt(vx, mx[0]), mx[1] = L::max_gt(vy, mx[1]), mx[2] = L::max_gt(vz, mx[2]);
+      }
+      in_range = L::bits(ok) == (1u << W) - 1;
+      for (int c = 0; c < 3; ++c) {
+        alignas(16) float l[W], h[W];
+        L::store(l, mn[c]);
+        L::store(h, mx[c]);
+        lo[c] = l[0], hi[c] = h[0];
+        for (int i = 1; i < W; ++i) {
+          lo[c] = l[i] < lo[c] ? l[i] : lo[c];
+          hi[c] = h[i] > hi[c] ? h[i] : hi[c];
+        }
       }
       return done;
     }

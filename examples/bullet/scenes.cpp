@@ -3,8 +3,12 @@
 // 60 Hz fixed steps.  docs/bullet.md describes the scenes and the metrics.
 //
 //   sepax_bullet_scenes [--short] [--algorithm bullet|sepax|both] [--iterations N]
-//                       [--one-friction-direction] [SCENE...]
+//                       [--one-friction-direction] [--digest] [SCENE...]
 //   scenes: stack pyramid dice plates pile slope (default: all)
+//
+// --digest prints, per scene and algorithm, a 64-bit FNV-1a hash of every
+// body's final world transform (the bytes of its basis and origin): a change
+// that must leave the simulation as it is leaves the digests the same.
 //
 // --short runs 0.5 s of settling and 1 s of rest (for ctest) and checks: no
 // pair refused by sepax, no stack falls with sepax that stands with Bullet's
@@ -13,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -278,6 +283,7 @@ struct Metrics {
   double ke_per_mass = 0;      // the same divided by the body's mass (J/kg)
   double points_per_pair = 0;  // over the rest window
   double np_us = 0;            // narrowphase time per step
+  std::uint64_t digest = 0;    // FNV-1a of the final transforms (--digest)
   bool standing = true;
   double top_fall = 0;  // the top body's displacement from its start
   sepax::bullet::Counters counters;
@@ -370,6 +376,17 @@ Metrics run(const Scene& sc, bool use_sepax, double settle_s, double rest_s) {
   const double side = std::sqrt(d.x() * d.x() + d.z() * d.z());
   m.standing = !w.stack || (side < 0.1 * top_width && -d.y() < 0.1 * top_start.y());
   if (w.sepax_cf) m.counters = w.sepax_cf->counters();
+  m.digest = 14695981039346656037ull;
+  for (const auto& b : w.bodies) {
+    const btTransform& t = b.rb->getWorldTransform();
+    const btScalar* parts[4] = {&t.getBasis()[0][0], &t.getBasis()[1][0], &t.getBasis()[2][0],
+                                &t.getOrigin()[0]};
+    for (const btScalar* p : parts) {
+      unsigned char bytes[3 * sizeof(btScalar)];
+      std::memcpy(bytes, p, sizeof bytes);
+      for (const unsigned char c : bytes) m.digest = (m.digest ^ c) * 1099511628211ull;
+    }
+  }
   return m;
 }
 
@@ -377,6 +394,7 @@ Metrics run(const Scene& sc, bool use_sepax, double settle_s, double rest_s) {
 
 int main(int argc, char** argv) {
   bool short_mode = false;
+  bool digest = false;
   std::string algo = "both";
   std::vector<std::string> names;
   for (int i = 1; i < argc; ++i) {
@@ -393,10 +411,12 @@ int main(int argc, char** argv) {
       }
     } else if (a == "--one-friction-direction") {
       g_solver.two_friction_directions = false;
+    } else if (a == "--digest") {
+      digest = true;
     } else if (a == "--help" || a == "-h") {
       std::printf(
           "usage: %s [--short] [--algorithm bullet|sepax|both] [--iterations N] [--one-friction-direction]\n"
-          "          [stack pyramid dice plates pile slope]\n",
+          "          [--digest] [stack pyramid dice plates pile slope]\n",
           argv[0]);
       return 0;
     } else {
@@ -431,6 +451,7 @@ int main(int argc, char** argv) {
       std::printf("%-8s %-6s %12.4f %11.4f %11.4f %11.3g %12.3g %8.2f %10.2f %8s\n", sc->name,
                   use_sepax ? "sepax" : "bullet", 1e3 * m.max_penetration, 1e3 * m.drift5, 1e3 * m.drift10,
                   m.ke, m.ke_per_mass, m.points_per_pair, m.np_us, m.standing ? "yes" : "NO");
+      if (digest) std::printf("         digest: %016llx\n", static_cast<unsigned long long>(m.digest));
       if (use_sepax) {
         const auto& c = m.counters;
         std::printf(

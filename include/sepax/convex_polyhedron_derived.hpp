@@ -191,6 +191,49 @@ inline void ConvexPolyhedron<T>::compute_edge_data() {
   compute_lanes();
 }
 
+namespace detail {
+
+/// The first steps of plane_of_triple on three points (float or double):
+/// p0 (a), e1 = p1 - p0 (u), e2 = p2 - p0 (w), c = e1 x e2 and s = c.c
+/// summed left to right, each operation as plane_of_triple does it.
+template <class T>
+struct TripleCross {
+  T a0, a1, a2;
+  T u0, u1, u2;
+  T w0, w1, w2;
+  T c0, c1, c2;
+  T s;
+};
+
+template <class T>
+[[gnu::always_inline]] inline TripleCross<T> triple_cross(const T* p0, const T* p1, const T* p2) {
+  TripleCross<T> r;
+  r.a0 = p0[0], r.a1 = p0[1], r.a2 = p0[2];
+  r.u0 = p1[0] - r.a0, r.u1 = p1[1] - r.a1, r.u2 = p1[2] - r.a2;
+  r.w0 = p2[0] - r.a0, r.w1 = p2[1] - r.a1, r.w2 = p2[2] - r.a2;
+  r.c0 = r.u1 * r.w2 - r.u2 * r.w1, r.c1 = r.u2 * r.w0 - r.u0 * r.w2, r.c2 = r.u0 * r.w1 - r.u1 * r.w0;
+  T s = r.c0 * r.c0;
+  s = s + r.c1 * r.c1;
+  s = s + r.c2 * r.c2;
+  r.s = s;
+  return r;
+}
+
+/// The last steps of plane_of_triple: the normal n / sqrt(s) (n unchanged
+/// where sqrt(s) is 0), s = n.n, and the offset dot(normal, a) left to
+/// right.
+template <class T>
+[[gnu::always_inline]] inline Plane<T> unit_plane(T n0, T n1, T n2, T s, T a0, T a1, T a2) {
+  const T len = std::sqrt(s);
+  if (len > T(0)) n0 = n0 / len, n1 = n1 / len, n2 = n2 / len;
+  T off = n0 * a0;
+  off = off + n1 * a1;
+  off = off + n2 * a2;
+  return Plane<T>{Vec3<T>(n0, n1, n2), off};
+}
+
+}  // namespace detail
+
 // The plane of face f through its plane triple (v0, v1, v2), with scan (if
 // not null) given the face's term of normal_conditioning().  The values of
 // plane_through(v0, v1, v2) and of NormalConditioningScan::add(e1, e2, c),
@@ -200,41 +243,32 @@ inline void ConvexPolyhedron<T>::compute_edge_data() {
 // it.  Float/double on scalars (the Vec3 expressions cost a third more here,
 // the hottest loop of posing); other T through plane_through_cross.  Every
 // plane a ConvexPolyhedron stores is computed here (compute_planes,
-// derive_rigid_part).  Inlined into its loops (as a call it cost a fifth
-// more per face).
+// derive_rigid_part); its scalar steps are detail::triple_cross and
+// detail::unit_plane, which code deriving a plane from three posed points
+// outside a ConvexPolyhedron calls too.  Inlined into its loops (as a call
+// it cost a fifth more per face).
 template <Number T>
 [[gnu::always_inline]] inline Plane<T> ConvexPolyhedron<T>::plane_of_triple(
     int f, NormalConditioningScan* scan) const {
   const auto& t = topology_.faces()[static_cast<std::size_t>(f)].plane_vertices;
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-    const T* p0 = vertex(t[0]).data();
-    const T* p1 = vertex(t[1]).data();
-    const T* p2 = vertex(t[2]).data();
-    const T a0 = p0[0], a1 = p0[1], a2 = p0[2];
-    const T u0 = p1[0] - a0, u1 = p1[1] - a1, u2 = p1[2] - a2;  // e1
-    const T w0 = p2[0] - a0, w1 = p2[1] - a1, w2 = p2[2] - a2;  // e2
-    const T c0 = u1 * w2 - u2 * w1, c1 = u2 * w0 - u0 * w2, c2 = u0 * w1 - u1 * w0;
-    T n0 = c0, n1 = c1, n2 = c2;
-    T s = c0 * c0;
-    s = s + c1 * c1;
-    s = s + c2 * c2;
+    const detail::TripleCross<T> x =
+        detail::triple_cross(vertex(t[0]).data(), vertex(t[1]).data(), vertex(t[2]).data());
+    T n0 = x.c0, n1 = x.c1, n2 = x.c2;
+    T s = x.s;
     if (!detail::safe_squared_norm(s)) [[unlikely]] {
-      const Vec3<T> n = scaled_cross(Vec3<T>(u0, u1, u2), Vec3<T>(w0, w1, w2), Vec3<T>(c0, c1, c2));
+      const Vec3<T> n =
+          scaled_cross(Vec3<T>(x.u0, x.u1, x.u2), Vec3<T>(x.w0, x.w1, x.w2), Vec3<T>(x.c0, x.c1, x.c2));
       n0 = n[0], n1 = n[1], n2 = n[2];
       s = n0 * n0;
       s = s + n1 * n1;
       s = s + n2 * n2;
     }
-    const T len = std::sqrt(s);
-    if (len > T(0)) n0 = n0 / len, n1 = n1 / len, n2 = n2 / len;
-    T off = n0 * a0;
-    off = off + n1 * a1;
-    off = off + n2 * a2;
     if (scan != nullptr) {
-      auto sq = [](double x, double y, double z) { return x * x + y * y + z * z; };
-      scan->add_squares(sq(u0, u1, u2), sq(w0, w1, w2), sq(c0, c1, c2));
+      auto sq = [](double x0, double x1, double x2) { return x0 * x0 + x1 * x1 + x2 * x2; };
+      scan->add_squares(sq(x.u0, x.u1, x.u2), sq(x.w0, x.w1, x.w2), sq(x.c0, x.c1, x.c2));
     }
-    return Plane<T>{Vec3<T>(n0, n1, n2), off};
+    return detail::unit_plane(n0, n1, n2, s, x.a0, x.a1, x.a2);
   } else {
     (void)scan;
     const Vec3<T>& v0 = vertex(t[0]);
