@@ -115,10 +115,10 @@ class PosedView {
   /// (detail::PoseLanes, as pose_vertices_into), the rest left to x.apply
   /// as it leaves them: the same instructions for the same vertices, so the
   /// same values with FMA contraction on or off.  When k W > 0, lo and hi
-  /// get the posed vertices' smallest and largest coordinates (minps and
-  /// maxps over the groups, then over the lanes: the same values as any
-  /// order of comparison where no coordinate is NaN) and in_range is false
-  /// when a coordinate is NaN or beyond kRange (cmpleps is false on NaN).
+  /// get the posed vertices' smallest and largest coordinates
+  /// (simd::LaneBounds: over the groups, then over the lanes; the same
+  /// values as any order of comparison where no coordinate is NaN) and
+  /// in_range is false when a coordinate is NaN or beyond kRange.
   /// Returns k W.
   int pose_groups(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x, float (&lo)[3],
                   float (&hi)[3], bool& in_range) {
@@ -129,40 +129,21 @@ class PosedView {
       return 0;
     } else {
       using V = typename L::V;
-      using M = typename L::M;
       const int done = b.vertex_count() / W * W;
       if (done == 0) return 0;
       const sepax::detail::PoseLanes<float> pose(x);
       const float* const lx = b.lane_vertex(0);
       const float* const ly = b.lane_vertex(1);
       const float* const lz = b.lane_vertex(2);
-      const V range = L::set1(kRange);
-      V mn[3], mx[3];
-      M ok = L::le(range, range);  // every lane true
+      simd::LaneBounds<float> box(kRange);
       for (int g = 0; g < done; g += W) {
         V vx = L::load(lx + g), vy = L::load(ly + g), vz = L::load(lz + g);
         pose(vx, vy, vz);
         L::store_xyz(vertices_[static_cast<std::size_t>(g)].data(), vx, vy, vz);
-        ok = L::mand(ok, L::mand(L::le(L::abs(vx), range),
-                                 L::mand(L::le(L::abs(vy), range), L::le(L::abs(vz), range))));
-        if (g == 0) {
-          mn[0] = mx[0] = vx, mn[1] = mx[1] = vy, mn[2] = mx[2] = vz;
-          continue;
-        }
-        mn[0] = L::min_lt(vx, mn[0]), mn[1] = L::min_lt(vy, mn[1]), mn[2] = L::min_lt(vz, mn[2]);
-        mx[0] = L::max_gt(vx, mx[0]), mx[1] = L::max_gt(vy, mx[1]), mx[2] = L::max_gt(vz, mx[2]);
+        box.add(vx, vy, vz);
       }
-      in_range = L::bits(ok) == (1u << W) - 1;
-      for (int c = 0; c < 3; ++c) {
-        alignas(16) float l[W], h[W];
-        L::store(l, mn[c]);
-        L::store(h, mx[c]);
-        lo[c] = l[0], hi[c] = h[0];
-        for (int i = 1; i < W; ++i) {
-          lo[c] = l[i] < lo[c] ? l[i] : lo[c];
-          hi[c] = h[i] > hi[c] ? h[i] : hi[c];
-        }
-      }
+      in_range = box.within();
+      box.reduce(lo, hi);
       return done;
     }
   }

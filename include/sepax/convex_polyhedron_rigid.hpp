@@ -202,11 +202,7 @@ inline std::size_t ConvexPolyhedron<T>::rigid_vertex_groups(const ConvexPolyhedr
     const auto ss = static_cast<std::size_t>(src.lane_vertex_stride_);
     const T* const sx = src.lanes_.data() + 9 * static_cast<std::size_t>(src.lane_edge_stride_);
     T* const lv = lanes_.data() + 9 * static_cast<std::size_t>(lane_edge_stride_);
-    const V vmax = L::set1(std::numeric_limits<T>::max());
-    const V inf = L::set1(std::numeric_limits<T>::infinity()),
-            ninf = L::set1(-std::numeric_limits<T>::infinity());
-    V mn0 = inf, mn1 = inf, mn2 = inf, mx0 = ninf, mx1 = ninf, mx2 = ninf;
-    auto ok = L::le(vmax, vmax);  // every lane true
+    simd::LaneBounds<T> box(std::numeric_limits<T>::max());
     for (std::size_t b = 0; b < done; b += W) {
       V x = L::load(sx + b), y = L::load(sx + ss + b), z = L::load(sx + 2 * ss + b);
       point_lanes(x, y, z);
@@ -214,19 +210,13 @@ inline std::size_t ConvexPolyhedron<T>::rigid_vertex_groups(const ConvexPolyhedr
       L::store(lv + vs + b, y);
       L::store(lv + 2 * vs + b, z);
       L::store_xyz(vertices_[b].data(), x, y, z);  // (Vec3<T> is three contiguous T)
-      ok = L::mand(ok,
-                   L::mand(L::le(L::abs(x), vmax), L::mand(L::le(L::abs(y), vmax), L::le(L::abs(z), vmax))));
-      mn0 = L::min_lt(x, mn0), mn1 = L::min_lt(y, mn1), mn2 = L::min_lt(z, mn2);
-      mx0 = L::max_gt(x, mx0), mx1 = L::max_gt(y, mx1), mx2 = L::max_gt(z, mx2);
+      box.add(x, y, z);
     }
-    finite &= L::bits(ok) == (1u << W) - 1;
-    alignas(16) T m[6][W];
-    const V mv[6] = {mn0, mn1, mn2, mx0, mx1, mx2};
-    for (int k = 0; k < 6; ++k) L::store(m[k], mv[k]);
-    T* const bound[6] = {&lo0, &lo1, &lo2, &hi0, &hi1, &hi2};
+    finite &= box.within();
+    T lo[3], hi[3];
+    box.reduce(lo, hi);  // (done > 0)
     for (int c = 0; c < 6; ++c) {
-      T& r = *bound[c];
-      for (int k = 0; k < W; ++k) r = c < 3 ? (m[c][k] < r ? m[c][k] : r) : (m[c][k] > r ? m[c][k] : r);
+      T& r = c < 3 ? lo[c] : hi[c - 3];
       if (r == T(0)) {
         // A zero bound: its sign is that of the first zero in index order
         // (the sequential comparisons keep the first of equal values), so
@@ -237,6 +227,7 @@ inline std::size_t ConvexPolyhedron<T>::rigid_vertex_groups(const ConvexPolyhedr
           r = c < 3 ? (lane[k] < r ? lane[k] : r) : (lane[k] > r ? lane[k] : r);
       }
     }
+    lo0 = lo[0], lo1 = lo[1], lo2 = lo[2], hi0 = hi[0], hi1 = hi[1], hi2 = hi[2];
     return done;
   }
 }

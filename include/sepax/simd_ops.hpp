@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #if defined(__SSE2__) && !defined(SEPAX_NO_SIMD)
@@ -187,5 +188,59 @@ inline typename L::V dot3(typename L::V x, typename L::V y, typename L::V z, typ
                           typename L::V by, typename L::V bz) {
   return L::add(L::add(L::mul(x, bx), L::mul(y, by)), L::mul(z, bz));
 }
+
+/// The bounds of points added a SIMD group at a time (posing's vertex
+/// groups): per lane the lowest and the highest x, y and z, compared as the
+/// scalar loops compare (min_lt / max_gt: of equal values the first stays),
+/// and whether every |coordinate| added was at most `limit` (false for NaN).
+template <class T>
+struct LaneBounds {
+  using L = Lanes<T>;
+  using V = typename L::V;
+  using M = typename L::M;
+
+  /// No point yet: lowest +infinity, highest -infinity, every lane within.
+  explicit LaneBounds(T limit)
+      : lo{L::set1(kInf), L::set1(kInf), L::set1(kInf)},
+        hi{L::set1(-kInf), L::set1(-kInf), L::set1(-kInf)},
+        limit_(L::set1(limit)),
+        within_(L::le(limit_, limit_)) {}
+
+  /// Lane i of x, y, z is one more point of lane i.
+  SEPAX_SIMD_INLINE void add(V x, V y, V z) {
+    within_ = L::mand(within_, L::mand(L::le(L::abs(x), limit_),
+                                       L::mand(L::le(L::abs(y), limit_), L::le(L::abs(z), limit_))));
+    lo[0] = L::min_lt(x, lo[0]), lo[1] = L::min_lt(y, lo[1]), lo[2] = L::min_lt(z, lo[2]);
+    hi[0] = L::max_gt(x, hi[0]), hi[1] = L::max_gt(y, hi[1]), hi[2] = L::max_gt(z, hi[2]);
+  }
+
+  /// Every coordinate added was within the limit (and none was NaN).
+  bool within() const { return L::bits(within_) == (1u << L::width) - 1; }
+
+  /// The lowest and highest coordinates over every lane into out_lo,
+  /// out_hi, the lanes compared in order (of equal values the earlier
+  /// stays: a zero's sign is the first lane's with a zero, not necessarily
+  /// the first point's in the order added).  At least one group added.
+  void reduce(T (&out_lo)[3], T (&out_hi)[3]) const {
+    for (int c = 0; c < 3; ++c) {
+      alignas(16) T l[L::width], h[L::width];
+      L::store(l, lo[c]);
+      L::store(h, hi[c]);
+      out_lo[c] = l[0], out_hi[c] = h[0];
+      for (int k = 1; k < L::width; ++k) {
+        out_lo[c] = l[k] < out_lo[c] ? l[k] : out_lo[c];
+        out_hi[c] = h[k] > out_hi[c] ? h[k] : out_hi[c];
+      }
+    }
+  }
+
+  V lo[3];  ///< per lane, the lowest x, y, z added (+infinity before any)
+  V hi[3];  ///< per lane, the highest x, y, z added (-infinity before any)
+
+ private:
+  static constexpr T kInf = std::numeric_limits<T>::infinity();
+  V limit_;   ///< |coordinate| limit, in every lane
+  M within_;  ///< per lane: every coordinate so far within limit_
+};
 
 }  // namespace sepax::simd
