@@ -179,6 +179,39 @@ struct Exact {
   }
 };
 
+// The kernel of the reference run (mpq + gauss_map): PlainKernel<mpq> on the
+// exact images, with two of its steps read from values the reference has
+// already computed, each the value the kernel would compute itself (so the run
+// and its result are the same):
+//   * minkowski_faces: the Minkowski-face verdict of every edge pair from
+//     E.arcs (exact_arc_signs), whose four signs are PlainKernel<mpq>::arc_signs'
+//     (signs of the same triple products times a positive power of two;
+//     tests/fuzz/classify_test.cpp compares them), and HasMinkowskiFaces asks
+//     for exactly arc_signs(ea, eb).minkowski_face() (sat_kernel.hpp).  The
+//     Gauss map's O(E_A E_B) rational arc tests are what this removes.
+//   * face_query_a, face_query_b: E.fqA, E.fqB, which are this kernel's
+//     face_query_a, face_query_b.
+class ReferenceKernel : public PlainKernel<Q> {
+ public:
+  explicit ReferenceKernel(const Exact& e) : PlainKernel<Q>(e.A, e.B), e_(e) {}
+
+  FaceQuery<Q> face_query_a(int f) const { return e_.fqA[static_cast<std::size_t>(f)]; }
+  FaceQuery<Q> face_query_b(int f) const { return e_.fqB[static_cast<std::size_t>(f)]; }
+
+  int minkowski_faces(int ea, int lo, int hi, int* out) const {
+    const ArcSigns* row =
+        e_.arcs.data() + static_cast<std::size_t>(ea) * static_cast<std::size_t>(e_.B.edge_count());
+    int n = 0;
+    for (int eb = lo; eb < hi; ++eb)
+      if (row[eb].minkowski_face()) out[n++] = eb;
+    return n;
+  }
+
+ private:
+  const Exact& e_;
+};
+static_assert(SatKernel<ReferenceKernel> && HasMinkowskiFaces<ReferenceKernel>);
+
 }  // namespace
 
 // The exact side of vertex v of face f's plane in the exact image of p:
@@ -1023,7 +1056,10 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
     E.nlenB.push_back(bounds::sqrt_lower(squared_norm(E.B.plane(f).normal).get_d()));
   }
   E.arcs = exact_arc_signs(Af, Bf);
-  E.ref = run_sat<policy::Plain>(Sat::gauss_map, E.A, E.B);
+  {
+    ReferenceKernel rk(E);
+    E.ref = sat::gauss_map_with(rk);
+  }
   E.convex = exactly_convex(Af) && exactly_convex(Bf);
   rep.configs_run.push_back("mpq/gauss_map");
 
