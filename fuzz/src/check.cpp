@@ -905,8 +905,19 @@ template <class T>
 void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, Exact& E,
                       const std::string& cfg, bool skip_reference, const CheckOptions& opt, Recorder& rec,
                       std::optional<SatResult<T>>* gauss_out = nullptr) {
-  const auto A = ConvexPolyhedron<T>::convert_from(Af);
-  const auto B = ConvexPolyhedron<T>::convert_from(Bf);
+  // mpq: the reference's own exact images E.A, E.B (the same conversion)
+  std::optional<ConvexPolyhedron<T>> own_a, own_b;
+  const ConvexPolyhedron<T>* pa = nullptr;
+  const ConvexPolyhedron<T>* pb = nullptr;
+  if constexpr (std::is_same_v<T, Q>) {
+    pa = &E.A;
+    pb = &E.B;
+  } else {
+    pa = &own_a.emplace(ConvexPolyhedron<T>::convert_from(Af));
+    pb = &own_b.emplace(ConvexPolyhedron<T>::convert_from(Bf));
+  }
+  const ConvexPolyhedron<T>& A = *pa;
+  const ConvexPolyhedron<T>& B = *pb;
   const double cost =
       static_cast<double>(A.edge_count()) * B.edge_count() * (A.vertex_count() + B.vertex_count());
   for (Sat sat : all_sats()) {
