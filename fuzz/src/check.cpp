@@ -958,75 +958,133 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
 
 }  // namespace
 
-std::vector<ArcSigns> exact_arc_signs(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B) {
-  // Every float is an integer times 2^-S for a common S: scale both shapes by
-  // 2^S (exact, a power of two) and evaluate the four triple products in
-  // integers.  Signs are invariant under the positive scaling, so these are
-  // the signs PlainKernel<mpq>::arc_signs computes, without rational
-  // normalisation (gcds) -- the exact reference is the cost of the fuzzer.
-  int S = 0;
-  for (const auto* p : {&A, &B})
-    for (const auto& v : p->vertices())
-      for (int c = 0; c < 3; ++c)
-        if (v[c] != 0.0f) {
-          int e;
-          std::frexp(double(v[c]), &e);
-          S = std::max(S, 24 - e);
-        }
-  using Z = mpz_class;
-  using VZ = std::array<Z, 3>;
-  auto to_z = [&](const ConvexPolyhedron<float>& p) {
-    std::vector<VZ> out;
-    for (const auto& v : p.vertices())
-      out.push_back(
-          {Z(std::ldexp(double(v[0]), S)), Z(std::ldexp(double(v[1]), S)), Z(std::ldexp(double(v[2]), S))});
-    return out;
-  };
-  auto sub = [](const VZ& a, const VZ& b) { return VZ{Z(a[0] - b[0]), Z(a[1] - b[1]), Z(a[2] - b[2])}; };
-  auto crs = [](const VZ& a, const VZ& b) {
+namespace {
+
+using Z = mpz_class;
+using VZ = std::array<Z, 3>;
+
+// Both shapes scaled by a common power of two 2^S to integers: every float is
+// an integer times 2^-S for a common S, so the scaling is exact, and every sign
+// below (of n.d, or of the difference of two heights n.v) is the sign of the
+// same rational expression times a positive power of two.  The integers need
+// no normalisation (gcds) -- the exact reference is the cost of the fuzzer.
+//   n   face normals (t1 - t0) x (t2 - t0) of the plane triples: positive
+//       multiples of ConvexPolyhedron<mpq>'s plane normals (a flat shape's
+//       back face has the reversed triple, as its plane is the front negated);
+//   d   edge directions head - tail.
+struct IntegerImages {
+  std::vector<VZ> va, vb, na, nb, da, db;
+
+  IntegerImages(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B) {
+    int S = 0;
+    for (const auto* p : {&A, &B})
+      for (const auto& v : p->vertices())
+        for (int c = 0; c < 3; ++c)
+          if (v[c] != 0.0f) {
+            int e;
+            std::frexp(double(v[c]), &e);
+            S = std::max(S, 24 - e);
+          }
+    auto to_z = [&](const ConvexPolyhedron<float>& p) {
+      std::vector<VZ> out;
+      for (const auto& v : p.vertices())
+        out.push_back(
+            {Z(std::ldexp(double(v[0]), S)), Z(std::ldexp(double(v[1]), S)), Z(std::ldexp(double(v[2]), S))});
+      return out;
+    };
+    auto normals = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
+      std::vector<VZ> out;
+      for (int f = 0; f < p.face_count(); ++f) {
+        const auto& t = p.face(f).plane_vertices;
+        out.push_back(crs(sub(v[static_cast<std::size_t>(t[1])], v[static_cast<std::size_t>(t[0])]),
+                          sub(v[static_cast<std::size_t>(t[2])], v[static_cast<std::size_t>(t[0])])));
+      }
+      return out;
+    };
+    auto dirs = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
+      std::vector<VZ> out;
+      for (int e = 0; e < p.edge_count(); ++e)
+        out.push_back(
+            sub(v[static_cast<std::size_t>(p.edge_head(e))], v[static_cast<std::size_t>(p.edge_tail(e))]));
+      return out;
+    };
+    va = to_z(A);
+    vb = to_z(B);
+    na = normals(A, va);
+    nb = normals(B, vb);
+    da = dirs(A, va);
+    db = dirs(B, vb);
+  }
+
+  static VZ sub(const VZ& a, const VZ& b) { return VZ{Z(a[0] - b[0]), Z(a[1] - b[1]), Z(a[2] - b[2])}; }
+  static VZ crs(const VZ& a, const VZ& b) {
     return VZ{Z(a[1] * b[2] - a[2] * b[1]), Z(a[2] * b[0] - a[0] * b[2]), Z(a[0] * b[1] - a[1] * b[0])};
-  };
-  auto normals = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
-    std::vector<VZ> out;
-    for (int f = 0; f < p.face_count(); ++f) {
-      const auto& t = p.face(f).plane_vertices;
-      out.push_back(crs(sub(v[static_cast<std::size_t>(t[1])], v[static_cast<std::size_t>(t[0])]),
-                        sub(v[static_cast<std::size_t>(t[2])], v[static_cast<std::size_t>(t[0])])));
-    }
-    return out;
-  };
-  auto dirs = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
-    std::vector<VZ> out;
-    for (int e = 0; e < p.edge_count(); ++e)
-      out.push_back(
-          sub(v[static_cast<std::size_t>(p.edge_head(e))], v[static_cast<std::size_t>(p.edge_tail(e))]));
-    return out;
-  };
-  const auto va = to_z(A), vb = to_z(B);
-  const auto na = normals(A, va), nb = normals(B, vb);
-  const auto da = dirs(A, va), db = dirs(B, vb);
-  Z acc;
-  auto dsign = [&](const VZ& n, const VZ& d) {
+  }
+  // acc = n . d
+  static void dot_into(Z& acc, const VZ& n, const VZ& d) {
     mpz_mul(acc.get_mpz_t(), n[0].get_mpz_t(), d[0].get_mpz_t());
     mpz_addmul(acc.get_mpz_t(), n[1].get_mpz_t(), d[1].get_mpz_t());
     mpz_addmul(acc.get_mpz_t(), n[2].get_mpz_t(), d[2].get_mpz_t());
+  }
+};
+
+// Face f of p (normals n) against the vertices v of the other shape: the
+// lowest-index vertex of least n.v, the support vertex PlainKernel<mpq>'s
+// face query picks (support_below: the first strict minimum of the same
+// heights up to the positive factor 2^(3S)).
+std::vector<int> face_supports(const std::vector<VZ>& n, const std::vector<VZ>& v) {
+  std::vector<int> out;
+  out.reserve(n.size());
+  Z best, h;
+  for (const VZ& nf : n) {
+    int arg = 0;
+    IntegerImages::dot_into(best, nf, v[0]);
+    for (std::size_t i = 1; i < v.size(); ++i) {
+      IntegerImages::dot_into(h, nf, v[i]);
+      if (h < best) {
+        mpz_swap(best.get_mpz_t(), h.get_mpz_t());
+        arg = static_cast<int>(i);
+      }
+    }
+    out.push_back(arg);
+  }
+  return out;
+}
+
+std::vector<ArcSigns> arc_signs_of(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B,
+                                   const IntegerImages& I) {
+  Z acc;
+  auto dsign = [&](const VZ& n, const VZ& d) {
+    IntegerImages::dot_into(acc, n, d);
     return mpz_sgn(acc.get_mpz_t());
   };
   std::vector<ArcSigns> out;
   out.reserve(static_cast<std::size_t>(A.edge_count()) * static_cast<std::size_t>(B.edge_count()));
   for (int ea = 0; ea < A.edge_count(); ++ea) {
-    const VZ& a0 = na[static_cast<std::size_t>(A.edge_face(ea, 0))];
-    const VZ& a1 = na[static_cast<std::size_t>(A.edge_face(ea, 1))];
+    const VZ& a0 = I.na[static_cast<std::size_t>(A.edge_face(ea, 0))];
+    const VZ& a1 = I.na[static_cast<std::size_t>(A.edge_face(ea, 1))];
     for (int eb = 0; eb < B.edge_count(); ++eb) {
       ArcSigns s;
-      s.cba = dsign(nb[static_cast<std::size_t>(B.edge_face(eb, 0))], da[static_cast<std::size_t>(ea)]);
-      s.dba = dsign(nb[static_cast<std::size_t>(B.edge_face(eb, 1))], da[static_cast<std::size_t>(ea)]);
-      s.adc = -dsign(a0, db[static_cast<std::size_t>(eb)]);
-      s.bdc = -dsign(a1, db[static_cast<std::size_t>(eb)]);
+      s.cba = dsign(I.nb[static_cast<std::size_t>(B.edge_face(eb, 0))], I.da[static_cast<std::size_t>(ea)]);
+      s.dba = dsign(I.nb[static_cast<std::size_t>(B.edge_face(eb, 1))], I.da[static_cast<std::size_t>(ea)]);
+      s.adc = -dsign(a0, I.db[static_cast<std::size_t>(eb)]);
+      s.bdc = -dsign(a1, I.db[static_cast<std::size_t>(eb)]);
       out.push_back(s);
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<ArcSigns> exact_arc_signs(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B) {
+  // the signs PlainKernel<mpq>::arc_signs computes, in integers (IntegerImages)
+  return arc_signs_of(A, B, IntegerImages(A, B));
+}
+
+std::vector<int> exact_face_supports(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B) {
+  const IntegerImages I(A, B);
+  return face_supports(I.na, I.vb);
 }
 
 CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
@@ -1058,15 +1116,21 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   E.A = CPQ::convert_from(Af);
   E.B = CPQ::convert_from(Bf);
   E.k = std::make_unique<PlainKernel<Q>>(E.A, E.B);
+  // The face queries E.k->face_query_a/b(f) would give: the support vertex
+  // decided in integers (face_supports), its height in rationals.
+  const IntegerImages I(Af, Bf);
+  const std::vector<int> supA = face_supports(I.na, I.vb), supB = face_supports(I.nb, I.va);
   for (int f = 0; f < E.A.face_count(); ++f) {
-    E.fqA.push_back(E.k->face_query_a(f));
+    const int v = supA[static_cast<std::size_t>(f)];
+    E.fqA.push_back(FaceQuery<Q>{E.k->face_separation_a(f, v), v});
     E.nlenA.push_back(bounds::sqrt_lower(squared_norm(E.A.plane(f).normal).get_d()));
   }
   for (int f = 0; f < E.B.face_count(); ++f) {
-    E.fqB.push_back(E.k->face_query_b(f));
+    const int v = supB[static_cast<std::size_t>(f)];
+    E.fqB.push_back(FaceQuery<Q>{E.k->face_separation_b(f, v), v});
     E.nlenB.push_back(bounds::sqrt_lower(squared_norm(E.B.plane(f).normal).get_d()));
   }
-  E.arcs = exact_arc_signs(Af, Bf);
+  E.arcs = arc_signs_of(Af, Bf, I);
   {
     ReferenceKernel rk(E);
     E.ref = sat::gauss_map_with(rk);
