@@ -179,6 +179,39 @@ struct Exact {
   }
 };
 
+// The kernel of the reference run (mpq + gauss_map): PlainKernel<mpq> on the
+// exact images, with two of its steps read from values the reference has
+// already computed, each the value the kernel would compute itself (so the run
+// and its result are the same):
+//   * minkowski_faces: the Minkowski-face verdict of every edge pair from
+//     E.arcs (exact_arc_signs), whose four signs are PlainKernel<mpq>::arc_signs'
+//     (signs of the same triple products times a positive power of two;
+//     tests/fuzz/classify_test.cpp compares them), and HasMinkowskiFaces asks
+//     for exactly arc_signs(ea, eb).minkowski_face() (sat_kernel.hpp).  The
+//     Gauss map's O(E_A E_B) rational arc tests are what this removes.
+//   * face_query_a, face_query_b: E.fqA, E.fqB, which are this kernel's
+//     face_query_a, face_query_b.
+class ReferenceKernel : public PlainKernel<Q> {
+ public:
+  explicit ReferenceKernel(const Exact& e) : PlainKernel<Q>(e.A, e.B), e_(e) {}
+
+  FaceQuery<Q> face_query_a(int f) const { return e_.fqA[static_cast<std::size_t>(f)]; }
+  FaceQuery<Q> face_query_b(int f) const { return e_.fqB[static_cast<std::size_t>(f)]; }
+
+  int minkowski_faces(int ea, int lo, int hi, int* out) const {
+    const ArcSigns* row =
+        e_.arcs.data() + static_cast<std::size_t>(ea) * static_cast<std::size_t>(e_.B.edge_count());
+    int n = 0;
+    for (int eb = lo; eb < hi; ++eb)
+      if (row[eb].minkowski_face()) out[n++] = eb;
+    return n;
+  }
+
+ private:
+  const Exact& e_;
+};
+static_assert(SatKernel<ReferenceKernel> && HasMinkowskiFaces<ReferenceKernel>);
+
 }  // namespace
 
 // The exact side of vertex v of face f's plane in the exact image of p:
@@ -872,8 +905,19 @@ template <class T>
 void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, Exact& E,
                       const std::string& cfg, bool skip_reference, const CheckOptions& opt, Recorder& rec,
                       std::optional<SatResult<T>>* gauss_out = nullptr) {
-  const auto A = ConvexPolyhedron<T>::convert_from(Af);
-  const auto B = ConvexPolyhedron<T>::convert_from(Bf);
+  // mpq: the reference's own exact images E.A, E.B (the same conversion)
+  std::optional<ConvexPolyhedron<T>> own_a, own_b;
+  const ConvexPolyhedron<T>* pa = nullptr;
+  const ConvexPolyhedron<T>* pb = nullptr;
+  if constexpr (std::is_same_v<T, Q>) {
+    pa = &E.A;
+    pb = &E.B;
+  } else {
+    pa = &own_a.emplace(ConvexPolyhedron<T>::convert_from(Af));
+    pb = &own_b.emplace(ConvexPolyhedron<T>::convert_from(Bf));
+  }
+  const ConvexPolyhedron<T>& A = *pa;
+  const ConvexPolyhedron<T>& B = *pb;
   const double cost =
       static_cast<double>(A.edge_count()) * B.edge_count() * (A.vertex_count() + B.vertex_count());
   for (Sat sat : all_sats()) {
@@ -914,75 +958,133 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
 
 }  // namespace
 
-std::vector<ArcSigns> exact_arc_signs(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B) {
-  // Every float is an integer times 2^-S for a common S: scale both shapes by
-  // 2^S (exact, a power of two) and evaluate the four triple products in
-  // integers.  Signs are invariant under the positive scaling, so these are
-  // the signs PlainKernel<mpq>::arc_signs computes, without rational
-  // normalisation (gcds) -- the exact reference is the cost of the fuzzer.
-  int S = 0;
-  for (const auto* p : {&A, &B})
-    for (const auto& v : p->vertices())
-      for (int c = 0; c < 3; ++c)
-        if (v[c] != 0.0f) {
-          int e;
-          std::frexp(double(v[c]), &e);
-          S = std::max(S, 24 - e);
-        }
-  using Z = mpz_class;
-  using VZ = std::array<Z, 3>;
-  auto to_z = [&](const ConvexPolyhedron<float>& p) {
-    std::vector<VZ> out;
-    for (const auto& v : p.vertices())
-      out.push_back(
-          {Z(std::ldexp(double(v[0]), S)), Z(std::ldexp(double(v[1]), S)), Z(std::ldexp(double(v[2]), S))});
-    return out;
-  };
-  auto sub = [](const VZ& a, const VZ& b) { return VZ{Z(a[0] - b[0]), Z(a[1] - b[1]), Z(a[2] - b[2])}; };
-  auto crs = [](const VZ& a, const VZ& b) {
+namespace {
+
+using Z = mpz_class;
+using VZ = std::array<Z, 3>;
+
+// Both shapes scaled by a common power of two 2^S to integers: every float is
+// an integer times 2^-S for a common S, so the scaling is exact, and every sign
+// below (of n.d, or of the difference of two heights n.v) is the sign of the
+// same rational expression times a positive power of two.  The integers need
+// no normalisation (gcds) -- the exact reference is the cost of the fuzzer.
+//   n   face normals (t1 - t0) x (t2 - t0) of the plane triples: positive
+//       multiples of ConvexPolyhedron<mpq>'s plane normals (a flat shape's
+//       back face has the reversed triple, as its plane is the front negated);
+//   d   edge directions head - tail.
+struct IntegerImages {
+  std::vector<VZ> va, vb, na, nb, da, db;
+
+  IntegerImages(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B) {
+    int S = 0;
+    for (const auto* p : {&A, &B})
+      for (const auto& v : p->vertices())
+        for (int c = 0; c < 3; ++c)
+          if (v[c] != 0.0f) {
+            int e;
+            std::frexp(double(v[c]), &e);
+            S = std::max(S, 24 - e);
+          }
+    auto to_z = [&](const ConvexPolyhedron<float>& p) {
+      std::vector<VZ> out;
+      for (const auto& v : p.vertices())
+        out.push_back(
+            {Z(std::ldexp(double(v[0]), S)), Z(std::ldexp(double(v[1]), S)), Z(std::ldexp(double(v[2]), S))});
+      return out;
+    };
+    auto normals = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
+      std::vector<VZ> out;
+      for (int f = 0; f < p.face_count(); ++f) {
+        const auto& t = p.face(f).plane_vertices;
+        out.push_back(crs(sub(v[static_cast<std::size_t>(t[1])], v[static_cast<std::size_t>(t[0])]),
+                          sub(v[static_cast<std::size_t>(t[2])], v[static_cast<std::size_t>(t[0])])));
+      }
+      return out;
+    };
+    auto dirs = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
+      std::vector<VZ> out;
+      for (int e = 0; e < p.edge_count(); ++e)
+        out.push_back(
+            sub(v[static_cast<std::size_t>(p.edge_head(e))], v[static_cast<std::size_t>(p.edge_tail(e))]));
+      return out;
+    };
+    va = to_z(A);
+    vb = to_z(B);
+    na = normals(A, va);
+    nb = normals(B, vb);
+    da = dirs(A, va);
+    db = dirs(B, vb);
+  }
+
+  static VZ sub(const VZ& a, const VZ& b) { return VZ{Z(a[0] - b[0]), Z(a[1] - b[1]), Z(a[2] - b[2])}; }
+  static VZ crs(const VZ& a, const VZ& b) {
     return VZ{Z(a[1] * b[2] - a[2] * b[1]), Z(a[2] * b[0] - a[0] * b[2]), Z(a[0] * b[1] - a[1] * b[0])};
-  };
-  auto normals = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
-    std::vector<VZ> out;
-    for (int f = 0; f < p.face_count(); ++f) {
-      const auto& t = p.face(f).plane_vertices;
-      out.push_back(crs(sub(v[static_cast<std::size_t>(t[1])], v[static_cast<std::size_t>(t[0])]),
-                        sub(v[static_cast<std::size_t>(t[2])], v[static_cast<std::size_t>(t[0])])));
-    }
-    return out;
-  };
-  auto dirs = [&](const ConvexPolyhedron<float>& p, const std::vector<VZ>& v) {
-    std::vector<VZ> out;
-    for (int e = 0; e < p.edge_count(); ++e)
-      out.push_back(
-          sub(v[static_cast<std::size_t>(p.edge_head(e))], v[static_cast<std::size_t>(p.edge_tail(e))]));
-    return out;
-  };
-  const auto va = to_z(A), vb = to_z(B);
-  const auto na = normals(A, va), nb = normals(B, vb);
-  const auto da = dirs(A, va), db = dirs(B, vb);
-  Z acc;
-  auto dsign = [&](const VZ& n, const VZ& d) {
+  }
+  // acc = n . d
+  static void dot_into(Z& acc, const VZ& n, const VZ& d) {
     mpz_mul(acc.get_mpz_t(), n[0].get_mpz_t(), d[0].get_mpz_t());
     mpz_addmul(acc.get_mpz_t(), n[1].get_mpz_t(), d[1].get_mpz_t());
     mpz_addmul(acc.get_mpz_t(), n[2].get_mpz_t(), d[2].get_mpz_t());
+  }
+};
+
+// Face f of p (normals n) against the vertices v of the other shape: the
+// lowest-index vertex of least n.v, the support vertex PlainKernel<mpq>'s
+// face query picks (support_below: the first strict minimum of the same
+// heights up to the positive factor 2^(3S)).
+std::vector<int> face_supports(const std::vector<VZ>& n, const std::vector<VZ>& v) {
+  std::vector<int> out;
+  out.reserve(n.size());
+  Z best, h;
+  for (const VZ& nf : n) {
+    int arg = 0;
+    IntegerImages::dot_into(best, nf, v[0]);
+    for (std::size_t i = 1; i < v.size(); ++i) {
+      IntegerImages::dot_into(h, nf, v[i]);
+      if (h < best) {
+        mpz_swap(best.get_mpz_t(), h.get_mpz_t());
+        arg = static_cast<int>(i);
+      }
+    }
+    out.push_back(arg);
+  }
+  return out;
+}
+
+std::vector<ArcSigns> arc_signs_of(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B,
+                                   const IntegerImages& I) {
+  Z acc;
+  auto dsign = [&](const VZ& n, const VZ& d) {
+    IntegerImages::dot_into(acc, n, d);
     return mpz_sgn(acc.get_mpz_t());
   };
   std::vector<ArcSigns> out;
   out.reserve(static_cast<std::size_t>(A.edge_count()) * static_cast<std::size_t>(B.edge_count()));
   for (int ea = 0; ea < A.edge_count(); ++ea) {
-    const VZ& a0 = na[static_cast<std::size_t>(A.edge_face(ea, 0))];
-    const VZ& a1 = na[static_cast<std::size_t>(A.edge_face(ea, 1))];
+    const VZ& a0 = I.na[static_cast<std::size_t>(A.edge_face(ea, 0))];
+    const VZ& a1 = I.na[static_cast<std::size_t>(A.edge_face(ea, 1))];
     for (int eb = 0; eb < B.edge_count(); ++eb) {
       ArcSigns s;
-      s.cba = dsign(nb[static_cast<std::size_t>(B.edge_face(eb, 0))], da[static_cast<std::size_t>(ea)]);
-      s.dba = dsign(nb[static_cast<std::size_t>(B.edge_face(eb, 1))], da[static_cast<std::size_t>(ea)]);
-      s.adc = -dsign(a0, db[static_cast<std::size_t>(eb)]);
-      s.bdc = -dsign(a1, db[static_cast<std::size_t>(eb)]);
+      s.cba = dsign(I.nb[static_cast<std::size_t>(B.edge_face(eb, 0))], I.da[static_cast<std::size_t>(ea)]);
+      s.dba = dsign(I.nb[static_cast<std::size_t>(B.edge_face(eb, 1))], I.da[static_cast<std::size_t>(ea)]);
+      s.adc = -dsign(a0, I.db[static_cast<std::size_t>(eb)]);
+      s.bdc = -dsign(a1, I.db[static_cast<std::size_t>(eb)]);
       out.push_back(s);
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<ArcSigns> exact_arc_signs(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B) {
+  // the signs PlainKernel<mpq>::arc_signs computes, in integers (IntegerImages)
+  return arc_signs_of(A, B, IntegerImages(A, B));
+}
+
+std::vector<int> exact_face_supports(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B) {
+  const IntegerImages I(A, B);
+  return face_supports(I.na, I.vb);
 }
 
 CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
@@ -1014,16 +1116,25 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   E.A = CPQ::convert_from(Af);
   E.B = CPQ::convert_from(Bf);
   E.k = std::make_unique<PlainKernel<Q>>(E.A, E.B);
+  // The face queries E.k->face_query_a/b(f) would give: the support vertex
+  // decided in integers (face_supports), its height in rationals.
+  const IntegerImages I(Af, Bf);
+  const std::vector<int> supA = face_supports(I.na, I.vb), supB = face_supports(I.nb, I.va);
   for (int f = 0; f < E.A.face_count(); ++f) {
-    E.fqA.push_back(E.k->face_query_a(f));
+    const int v = supA[static_cast<std::size_t>(f)];
+    E.fqA.push_back(FaceQuery<Q>{E.k->face_separation_a(f, v), v});
     E.nlenA.push_back(bounds::sqrt_lower(squared_norm(E.A.plane(f).normal).get_d()));
   }
   for (int f = 0; f < E.B.face_count(); ++f) {
-    E.fqB.push_back(E.k->face_query_b(f));
+    const int v = supB[static_cast<std::size_t>(f)];
+    E.fqB.push_back(FaceQuery<Q>{E.k->face_separation_b(f, v), v});
     E.nlenB.push_back(bounds::sqrt_lower(squared_norm(E.B.plane(f).normal).get_d()));
   }
-  E.arcs = exact_arc_signs(Af, Bf);
-  E.ref = run_sat<policy::Plain>(Sat::gauss_map, E.A, E.B);
+  E.arcs = arc_signs_of(Af, Bf, I);
+  {
+    ReferenceKernel rk(E);
+    E.ref = sat::gauss_map_with(rk);
+  }
   E.convex = exactly_convex(Af) && exactly_convex(Bf);
   rep.configs_run.push_back("mpq/gauss_map");
 

@@ -247,7 +247,7 @@ TEST_CASE("forward error bounds hold against exact arithmetic", "[fuzz][bounds]"
   check_orientation_bound<double>(400);
 }
 
-TEST_CASE("integer arc signs equal the rational kernel's", "[fuzz][arcs]") {
+TEST_CASE("integer arc signs and face supports equal the rational kernel's", "[fuzz][arcs]") {
   for (const std::string fam : {"boxes", "flat", "tetra", "scales", "touching", "perturbed"}) {
     for (std::uint64_t seed = 0; seed < 6; ++seed) {
       const FuzzCase c = generate(fam, seed);
@@ -275,6 +275,13 @@ TEST_CASE("integer arc signs equal the rational kernel's", "[fuzz][arcs]") {
           REQUIRE(x.adc == y.adc);
           REQUIRE(x.bdc == y.bdc);
         }
+      // the integer support vertices are the rational face queries' (ties
+      // included: the lowest index of least height), faces of A and of B
+      const auto sa = exact_face_supports(a, b), sb = exact_face_supports(b, a);
+      for (int f = 0; f < a.face_count(); ++f)
+        REQUIRE(sa[static_cast<std::size_t>(f)] == k.face_query_a(f).support_vertex);
+      for (int f = 0; f < b.face_count(); ++f)
+        REQUIRE(sb[static_cast<std::size_t>(f)] == k.face_query_b(f).support_vertex);
     }
   }
 }

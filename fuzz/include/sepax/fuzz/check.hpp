@@ -140,6 +140,11 @@ struct CheckOptions {
 /// the arc_sign comparison; equal to PlainKernel<mpq>::arc_signs).
 std::vector<ArcSigns> exact_arc_signs(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B);
 
+/// The support vertex of every face of A over B's vertices (index f), exactly,
+/// in integers as exact_arc_signs: the vertex PlainKernel<mpq>::face_query_a
+/// reports (the lowest index of least height), without rational arithmetic.
+std::vector<int> exact_face_supports(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B);
+
 /// Is the exact image of p exactly convex: every face's vertices exactly on
 /// the plane through its plane triple, every vertex on or below every face
 /// plane?  Decided exactly (a semi-static filter, rationals where it cannot

@@ -6,7 +6,7 @@
 // (posing.hpp, posed_queries.hpp, sat_cache.hpp).  check_posed draws the poses
 // from the case seed (B near A) and compares, per configuration and SAT:
 //   posed           the posed query against the same SAT on (A, B'), bit for bit;
-//   posed_exact     robust decisions against mpq on the exact images;
+//   posed_exact     robust decisions against exact arithmetic (Epeck::FT) on the exact images;
 //   posed_rational  exact rational poses stay exact;
 //   warm            cached queries along a coherent sequence against fresh ones.
 // Every difference is unexplained: these are identities the library states,
@@ -37,7 +37,7 @@ namespace sepax::fuzz {
 ///                   manifold equals contact_manifold(A, B', local result) with
 ///                   its points mapped by pose_a (SAT "manifold")
 ///   posed_exact     robust configurations: the posed query's overlap verdict
-///                   and feature equal the mpq run of the same SAT on the exact
+///                   and feature equal the exact (Epeck::FT) run of the same SAT on the exact
 ///                   images of A and B' (the input the robust decisions are
 ///                   exact for), when E_A E_B <= posed_exact_pair_budget
 ///   posed_rational  exact rational poses stay exact: mpq prepared shapes at
