@@ -183,16 +183,16 @@ class Builder {
   std::vector<char> removed_;       // points the clean-up rejected (put back when pinned)
   std::vector<char> pinned_;        // float: points a repair pass put back
   bool any_pinned_ = false;
-  bool resumable_ = false;              // float: tris_ is the triangulation of the last pass's (solid) result
-  std::vector<char> out_vertex_;        // vertices of the last output
-  std::vector<std::vector<int>> star_;  // float: vertex -> live triangles around it
-  std::vector<int> next_vertex_;        // scratch, per welded point (-1: none)
-  std::vector<int> gone_;               // scratch, per eye
-  std::vector<int> live_faces_;         // live triangles in index order, among tris_[0, live_made_)
-  std::size_t live_made_ = 0;           // (updated at each eye whose visible region was forced)
-  std::vector<Vec3<double>> qd_;        // exact T: q_ as doubles, when shadow_
-  bool shadow_ = false;                 // exact T: every welded coordinate is exactly a double
-  std::vector<std::array<int, 3>> horizon_;           // scratch, per eye
+  bool resumable_ = false;                   // float: tris_ is the last (solid) result's triangulation
+  std::vector<char> out_vertex_;             // vertices of the last output
+  std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
+  std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)
+  std::vector<int> gone_;                    // scratch, per eye
+  std::vector<int> live_faces_;              // live triangles in index order, among tris_[0, live_made_)
+  std::size_t live_made_ = 0;                // (updated at each eye whose visible region was forced)
+  std::vector<Vec3<double>> qd_;             // exact T: q_ as doubles, when shadow_
+  bool shadow_ = false;                      // exact T: every welded coordinate is exactly a double
+  std::vector<std::array<int, 3>> horizon_;  // scratch, per eye
   static constexpr std::size_t kHorizonPool = 16384;  ///< bytes: a horizon of ~200 edges without allocation
   std::vector<std::byte> horizon_pool_ = std::vector<std::byte>(kHorizonPool);  // the horizon map's storage
   std::vector<int> moved_;       // scratch, per eye: the points of a removed face
