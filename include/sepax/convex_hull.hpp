@@ -47,10 +47,12 @@ ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent)
   builder.check_input();
   builder.weld();
   RepairLog<T> log;
+  std::vector<int> pinned;  // (float T: the points the last repair pass pinned)
   for (int pass = 0;; ++pass) {
     // 2-7. Initial simplex (or the flat hull), quickhull, face merge, loops and clean-up, pre-check,
-    // validation; rebuilt without the points the clean-up rejects.  A repair pass may lose too many.
-    std::optional<ConvexPolyhedron<T>> hull = builder.build_pass(log.nearest.has_value());
+    // validation; rebuilt without the points the clean-up rejects.  A repair pass may lose too many; it
+    // goes on from the last pass's triangles with the pinned points when it can.
+    std::optional<ConvexPolyhedron<T>> hull = builder.build_pass(log.nearest.has_value(), pinned);
     if constexpr (!HullTraits<T>::kRepairs) {
       return std::move(*hull);  // exact T: the exact hull holds every point
     } else {
@@ -60,6 +62,7 @@ ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent)
       if (hull) builder.measure(std::move(*hull), outside, log);
       if (!hull || outside.empty() || pass == kHullMaxRepairs) return builder.choose_result(log);
       builder.pin(outside);
+      pinned = std::move(outside);
     }
   }
 }

@@ -83,7 +83,7 @@ class Builder {
   // The steps build_hull calls, in order.
   void check_input();
   void weld();
-  std::optional<ConvexPolyhedron<T>> build_pass(bool may_fail);
+  std::optional<ConvexPolyhedron<T>> build_pass(bool may_fail, const std::vector<int>& pinned = {});
   void measure(ConvexPolyhedron<T> result, std::vector<int>& outside, RepairLog<T>& log);
   void pin(const std::vector<int>& outside);
   ConvexPolyhedron<T> choose_result(RepairLog<T>& log);
@@ -95,6 +95,7 @@ class Builder {
   using Group = FaceGroup<T>;
 
   // ---- repair.hpp ----
+  std::optional<ConvexPolyhedron<T>> resume(const std::vector<int>& pinned, std::vector<int>& reject);
   void try_simplex(RepairLog<T>& log);
   std::optional<ConvexPolyhedron<T>> try_projected_slab(const RepairLog<T>& log);
   std::optional<ConvexPolyhedron<T>> try_tent(const ConvexPolyhedron<T>& chosen);
@@ -125,6 +126,7 @@ class Builder {
   static int edge_index(const Tri& t, int from);
   std::optional<ConvexPolyhedron<T>> solid(const std::vector<int>& active, int a, int b, int c, int d,
                                            std::vector<int>& reject);
+  std::optional<ConvexPolyhedron<T>> quickhull_and_faces(std::vector<int>& reject);
   void expand();
   // ---- flat_hull.hpp ----
   std::optional<ConvexPolyhedron<T>> polygon(const std::vector<int>& active, const Vec3<T>& n,
@@ -181,6 +183,7 @@ class Builder {
   std::vector<char> removed_;       // points the clean-up rejected (put back when pinned)
   std::vector<char> pinned_;        // float: points a repair pass put back
   bool any_pinned_ = false;
+  bool resumable_ = false;                   // float: tris_ is the last (solid) result's triangulation
   std::vector<char> out_vertex_;             // vertices of the last output
   std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
   std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)

@@ -384,7 +384,14 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<in
   tris_[as_index(t3)].nb = {t2, t1, t0};
   for (int p : active)
     if (p != a && p != b && p != c && p != d) assign(p, 0);
+  return quickhull_and_faces(reject);
+}
 
+// Quickhull until every conflict list is empty (and, float T, the sweep moves no point), then the faces
+// merged and extracted.  From solid's tetrahedron, or (float T, a repair pass) from the previous pass's
+// triangles with the pinned points on conflict lists (resume, repair.hpp).
+template <Number T>
+inline std::optional<ConvexPolyhedron<T>> Builder<T>::quickhull_and_faces(std::vector<int>& reject) {
   do {
     // (a step whose visible region was widened can leave points on
     // conflict lists of faces the pass is already past)

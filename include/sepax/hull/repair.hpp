@@ -4,7 +4,8 @@
 //   1. welding (welded_points.hpp);
 //   2. build passes: build, and rebuild without the points the clean-up rejects, until a hull validates;
 //   3. float T: every point that is not a vertex is measured against the result (outside_points); points
-//      more than kHullRepairTolerance x eps out are pinned and put back, and the hull rebuilt, for at most
+//      more than kHullRepairTolerance x eps out are pinned and put back, and the hull rebuilt (from the last
+//      pass's quickhull triangles when they can take the pinned points, resume), for at most
 //      kHullMaxRepairs repair passes, keeping the best result;
 //   4. float T: the fallback policy (fallbacks.hpp) when no pass keeps every point within that tolerance.
 #pragma once
@@ -25,28 +26,87 @@
 #include "fallbacks.hpp"
 #include "hull_distance.hpp"
 #include "plane_tree.hpp"
+#include "quickhull.hpp"
 
 namespace sepax::hull::detail {
 
 /// Build, and rebuild without the points the clean-up rejects, until a hull validates.  A pass after the
 /// first (may_fail) may reject points until the rest is Collinear or too few: it then returns none, and the
-/// best earlier pass is kept.
+/// best earlier pass is kept.  A repair pass (float T) first offers the points it pinned to the previous
+/// pass's triangles (resume); it builds from the start when they cannot take them.
 template <Number T>
-inline std::optional<ConvexPolyhedron<T>> Builder<T>::build_pass(bool may_fail) {
+inline std::optional<ConvexPolyhedron<T>> Builder<T>::build_pass(bool may_fail,
+                                                                 const std::vector<int>& pinned) {
   try {
+    if (!pinned.empty()) {
+      std::vector<int> reject;
+      if (std::optional<ConvexPolyhedron<T>> result = resume(pinned, reject)) return result;
+      for (int r : reject) removed_[as_index(r)] = 1;
+    }
+    resumable_ = false;
     for (;;) {
       std::vector<int> active;
       for (std::size_t i = 0; i < pts_.size(); ++i)
         if (!removed_[i]) active.push_back(static_cast<int>(i));
       std::vector<int> reject;
       std::optional<ConvexPolyhedron<T>> result = build(active, reject);
-      if (result) return result;
+      if (result) {
+        resumable_ = !result->is_flat();
+        return result;
+      }
       if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
       for (int r : reject) removed_[as_index(r)] = 1;
     }
   } catch (const InvalidInput&) {
     if (!may_fail) throw;
     return std::nullopt;
+  }
+}
+
+/// Float T, a repair pass: the previous pass's quickhull triangles (its result's, every conflict list
+/// empty) take the points just pinned, instead of a build from the start: each is taken off the face it
+/// was kept on and put on the conflict list of the first live face it is above (its threshold is 0 now,
+/// as in a build from the start), and quickhull goes on from there (eyes, sweep), then the face stage.
+/// The result is measured like any pass's.  None with reject empty when the triangles cannot take the
+/// points (the last result flat; a pinned point a vertex of the triangles, or above none of them; more
+/// points x faces than kHullPointScanPairs to search): the pass then builds from the start.  None with
+/// reject filled when the clean-up rejects points: the pass builds from the start without them.
+template <Number T>
+inline std::optional<ConvexPolyhedron<T>> Builder<T>::resume(const std::vector<int>& pinned,
+                                                             std::vector<int>& reject) {
+  if constexpr (!Traits::kRepairs) {
+    return std::nullopt;
+  } else {
+    if (!resumable_) return std::nullopt;
+    resumable_ = false;
+    std::vector<char> mark(q_.size(), 0);  // 1: pinned now; 2: a vertex of a live triangle
+    std::size_t live = 0;
+    for (const Tri& t : tris_) {
+      if (!t.alive) continue;
+      ++live;
+      for (int v : t.v) mark[as_index(v)] = 2;
+    }
+    if (static_cast<double>(pinned.size()) * static_cast<double>(live) > kHullPointScanPairs)
+      return std::nullopt;
+    for (int p : pinned) {
+      if (mark[as_index(p)] == 2) return std::nullopt;
+      mark[as_index(p)] = 1;
+    }
+    for (Tri& t : tris_)
+      if (t.alive) std::erase_if(t.on, [&](int p) { return mark[as_index(p)] == 1; });
+    for (int p : pinned) {
+      typename Traits::NearFace near;
+      if (!conflict_among(p, FaceIndexRange{0, static_cast<int>(tris_.size())},
+                          Traits::outside_limit(*this, p), near))
+        return std::nullopt;  // (the build from the start resets the triangles)
+    }
+    eye_visits_.assign(q_.size(), 0);  // (kHullMaxEyeVisits counts within one pass)
+    active_.insert(active_.end(), pinned.begin(), pinned.end());
+    std::sort(active_.begin(), active_.end());
+    active_.erase(std::unique(active_.begin(), active_.end()), active_.end());
+    std::optional<ConvexPolyhedron<T>> result = quickhull_and_faces(reject);
+    if (result) resumable_ = !result->is_flat();
+    return result;
   }
 }
 
