@@ -4,7 +4,10 @@
 // also checked on its own: whenever it returns a sign, that sign is exact.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <random>
 
 #include <sepax/robust/number_types.hpp>
@@ -192,4 +195,68 @@ TEST_CASE("orient3d is det[q-p, r-p, s-p]", "[orientation]") {
   CHECK(orient3d(p, qx, ry, Vec3<double>(0, 0, 1)) == 1);
   CHECK(orient3d(p, qx, ry, Vec3<double>(0, 0, -1)) == -1);
   CHECK(orient3d(p, qx, ry, Vec3<double>(5, 7, 0)) == 0);
+}
+
+TEST_CASE("orient_sign_integer: the rational sign within its exponent spread, declines beyond",
+          "[orientation]") {
+  // Coordinates m 2^k with random 24-bit mantissas and exponents k drawn from
+  // a window of `spread` binades: within kIntegerExponentSpread the integer
+  // stage decides and equals the rational sign; beyond it, it declines (and
+  // orient_sign_exact's ExactFloat stage decides, checked by check()).
+  // Degenerate sets (c = a + b, a repeated vector, aligned boxes' faces) make
+  // the exact zeros that reach this stage in practice.
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<std::int32_t> mant(-(1 << 24) + 1, (1 << 24) - 1);
+  Counts n;
+  int decided = 0, declined = 0, zeros = 0;
+  for (int spread : {0, 1, 8, 15, 16, 17, 20, 40}) {
+    std::uniform_int_distribution<int> ex(-30, -30 + spread);
+    auto coord = [&] {
+      const std::int32_t m = mant(rng);
+      return m % 7 == 0 ? 0.0f : std::ldexp(static_cast<float>(m), ex(rng));
+    };
+    auto v = [&] { return Vec3<float>(coord(), coord(), coord()); };
+    for (int i = 0; i < 3000; ++i) {
+      const Vec3<float> a0 = v(), a1 = v(), b0 = v(), b1 = v(), c0 = v(), c1 = v();
+      // every third set: c1 - c0 = (a1 - a0) exactly when representable (a
+      // repeated difference vector, determinant 0)
+      const bool repeat = i % 3 == 0;
+      const Vec3<float> cc0 = repeat ? a0 : c0, cc1 = repeat ? a1 : c1;
+      const int want = oracle(a0, a1, b0, b1, cc0, cc1);
+      const int got = orient_sign_integer(a0, a1, b0, b1, cc0, cc1);
+      int emin = std::numeric_limits<int>::max(), emax = std::numeric_limits<int>::min();
+      for (const Vec3<float>* p : {&a0, &a1, &b0, &b1, &cc0, &cc1})
+        for (int c = 0; c < 3; ++c)
+          if ((*p)[c] != 0.0f) {
+            int e = 0;
+            std::frexp((*p)[c], &e);
+            emin = std::min(emin, e);
+            emax = std::max(emax, e);
+          }
+      INFO("spread " << spread << " set " << i);
+      if (emax - emin <= kIntegerExponentSpread) {
+        REQUIRE(got == want);
+        ++decided;
+        zeros += want == 0;
+      } else {
+        REQUIRE(got == kUncertain);
+        ++declined;
+      }
+      check(a0, a1, b0, b1, cc0, cc1, n);
+    }
+  }
+  CHECK(decided > 10000);
+  CHECK(declined > 5000);
+  CHECK(zeros > 3000);
+  // the extremes of the range: exponents exactly kIntegerExponentSpread apart
+  // with the largest mantissas (the bound's worst case), and a subnormal
+  const float big = std::nextafter(0x1p17f, 0.0f), small = 1.0f;  // exponent fields 16 apart
+  const Vec3<float> z(0, 0, 0);
+  const Vec3<float> ax(big, -big, big), by(-big, big, big), cz(big, big, -big), s(small, -small, small);
+  CHECK(orient_sign_integer(Vec3<float>(-ax), ax, Vec3<float>(-by), by, Vec3<float>(-cz), cz) ==
+        oracle(Vec3<float>(-ax), ax, Vec3<float>(-by), by, Vec3<float>(-cz), cz));
+  CHECK(orient_sign_integer(s, ax, z, by, z, cz) == oracle(s, ax, z, by, z, cz));
+  CHECK(orient_sign_integer(z, Vec3<float>(std::numeric_limits<float>::denorm_min(), 0, 0), z, by, z, cz) ==
+        kUncertain);
+  CHECK(orient_sign_integer(z, z, z, z, z, z) == 0);
 }

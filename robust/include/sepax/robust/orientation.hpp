@@ -10,11 +10,15 @@
 //   1. a semi-static filter in double that decides almost every call with ~30
 //      flops (its derivation: sepax/orientation_filter.hpp, core, double only,
 //      shared with the hull's exact-type predicates);
-//   2. when the filter cannot decide, an exact evaluation with ExactFloat
-//      (exact_float.hpp) from the coordinates.
+//   2. when the filter cannot decide, an exact evaluation: for float
+//      coordinates whose exponents lie within kIntegerExponentSpread of each
+//      other, in 64- and 128-bit integers (orient_sign_integer: the aligned
+//      and touching shapes whose exact ties reach this stage); otherwise with
+//      ExactFloat (exact_float.hpp) from the coordinates.
 // The result is exact for all finite inputs, with or without FMA contraction.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -39,10 +43,76 @@ inline int orient_filter(double a0x, double a0y, double a0z, double a1x, double 
   return s.det > 0 ? 1 : -1;
 }
 
-/// Stage 2 only: the exact sign, from the coordinates.
+/// The largest difference between the exponent fields of the nonzero
+/// coordinates that orient_sign_integer evaluates (its bound below).
+inline constexpr int kIntegerExponentSpread = 16;
+
+/// Stage 2a: the exact sign in integers for float coordinates, or kUncertain
+/// when the coordinates are outside its range (a subnormal, an infinity or
+/// NaN, exponents more than kIntegerExponentSpread apart, or no 128-bit
+/// integer type).
+///
+/// A normal float x with exponent field e (1..254) and stored mantissa bits m
+/// is +-(2^23 + m) 2^(e - 150).  With e0 the least exponent field among the
+/// nonzero coordinates, every coordinate is the integer
+/// X = +-(2^23 + m) 2^(e - e0) (0 for a zero) times the common factor
+/// 2^(e0 - 150) > 0, and the determinant, a cubic form in the coordinates,
+/// is the integer determinant of the X times 2^(3 (e0 - 150)): the same sign.
+/// Bounds with e - e0 <= 16: |X| < 2^24 2^16 = 2^40 (int64); a difference
+/// |X1 - X0| < 2^41; a cross product component, a difference of two products
+/// of such differences, < 2 2^82 = 2^83; the dot product, three products of a
+/// difference and a component, < 3 2^41 2^83 < 2^126: every value fits in a
+/// signed 128-bit integer and every operation is exact.
+inline int orient_sign_integer(const Vec3<float>& a0, const Vec3<float>& a1, const Vec3<float>& b0,
+                               const Vec3<float>& b1, const Vec3<float>& c0, const Vec3<float>& c1) {
+#if defined(__SIZEOF_INT128__)
+  const Vec3<float>* const p[6] = {&a0, &a1, &b0, &b1, &c0, &c1};
+  std::uint32_t bits[18];
+  int emin = 255, emax = 0;
+  for (int k = 0; k < 18; ++k) {
+    bits[k] = std::bit_cast<std::uint32_t>((*p[k / 3])[k % 3]);
+    if ((bits[k] & 0x7fffffffu) == 0) continue;  // +-0
+    const int e = static_cast<int>((bits[k] >> 23) & 0xffu);
+    if (e == 0 || e == 255) return kUncertain;  // subnormal, infinity, NaN
+    emin = e < emin ? e : emin;
+    emax = e > emax ? e : emax;
+  }
+  if (emax - emin > kIntegerExponentSpread) return kUncertain;
+  std::int64_t x[18];
+  for (int k = 0; k < 18; ++k) {
+    if ((bits[k] & 0x7fffffffu) == 0) {
+      x[k] = 0;
+      continue;
+    }
+    const int e = static_cast<int>((bits[k] >> 23) & 0xffu);
+    const std::int64_t v = static_cast<std::int64_t>((bits[k] & 0x7fffffu) | 0x800000u) << (e - emin);
+    x[k] = (bits[k] >> 31) ? -v : v;
+  }
+  __extension__ typedef __int128 I;  // (__extension__: a GNU type, accepted under -Wpedantic)
+  // the difference vectors a1 - a0, b1 - b0, c1 - c0
+  const std::int64_t a[3] = {x[3] - x[0], x[4] - x[1], x[5] - x[2]};
+  const std::int64_t b[3] = {x[9] - x[6], x[10] - x[7], x[11] - x[8]};
+  const std::int64_t c[3] = {x[15] - x[12], x[16] - x[13], x[17] - x[14]};
+  const I bc0 = I(b[1]) * c[2] - I(b[2]) * c[1];
+  const I bc1 = I(b[2]) * c[0] - I(b[0]) * c[2];
+  const I bc2 = I(b[0]) * c[1] - I(b[1]) * c[0];
+  const I det = a[0] * bc0 + a[1] * bc1 + a[2] * bc2;
+  return det > 0 ? 1 : (det < 0 ? -1 : 0);
+#else
+  (void)a0, (void)a1, (void)b0, (void)b1, (void)c0, (void)c1;
+  return kUncertain;
+#endif
+}
+
+/// Stage 2 only: the exact sign, from the coordinates (orient_sign_integer
+/// where it applies, else ExactFloat).
 template <class F>
 SEPAX_ROBUST_COLD int orient_sign_exact(const Vec3<F>& a0, const Vec3<F>& a1, const Vec3<F>& b0,
                                         const Vec3<F>& b1, const Vec3<F>& c0, const Vec3<F>& c1) {
+  if constexpr (std::is_same_v<F, float>) {
+    const int s = orient_sign_integer(a0, a1, b0, b1, c0, c1);
+    if (s != kUncertain) return s;
+  }
   const auto a = exact_diff(a1, a0);
   const auto b = exact_diff(b1, b0);
   const auto c = exact_diff(c1, c0);
