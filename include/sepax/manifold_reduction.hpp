@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "simd_ops.hpp"  // SEPAX_SIMD_INLINE
 #include "small_vector.hpp"
 
 #include "vec3.hpp"
@@ -50,8 +51,10 @@ inline bool lex_less(std::array<int, 3> x, std::array<int, 3> y) {
 /// The triangles of the fan from q[0]: fan(t, u) = orient(P(q[0]), P(q[t]),
 /// P(q[u]), normal) for positions 1 <= t < u < q.size().  The reduction reads
 /// each several times (the convexity test, the scan, its tie rule, the
-/// degenerate cases): tabulated once when q has at most `Inline` points,
-/// evaluated on each read beyond (the same expression, so the same values).
+/// degenerate cases): tabulated once when q has at most `Inline` points (on
+/// the stack), evaluated on each read beyond (the same expression, so the
+/// same values; the reduction's scans then evaluate their triangles in
+/// place, where the compiler keeps a row's common terms in registers).
 template <Number T, std::size_t Inline, class Points, class Seq>
 class FanOrients {
  public:
@@ -67,6 +70,9 @@ class FanOrients {
   T operator()(std::size_t t, std::size_t u) const {
     return table_.empty() ? evaluate(t, u) : table_[t * n_ + u];
   }
+
+  /// The triangles are in the table (at most Inline points).
+  bool tabulated() const { return !table_.empty(); }
 
  private:
   T evaluate(std::size_t t, std::size_t u) const { return orient(point(0), point(t), point(u), normal_); }
@@ -280,10 +286,13 @@ void reduce_contact_points_into(const Points& points, const Keys& keys, const Ve
     // sigma normal: the fan's triangle, negated when sigma < 0 (orient about
     // -normal is the value about normal negated: each product and sum of its
     // dot product changes sign, exactly).
-    auto tri = [&](int a, int c) {
-      const T t = fan_at(a, c);
-      return sigma > 0 ? t : T(-t);
-    };
+    const Vec3<T> ns = sigma > 0 ? normal : Vec3<T>(-normal);
+    auto tri = [&](int a, int c)
+                   SEPAX_SIMD_INLINE {  // (inlined: GCC outlines a lambda called from several places)
+                     if (!fan.tabulated()) return orient(P(d), P(Q(a)), P(Q(c)), ns);
+                     const T t = fan_at(a, c);
+                     return sigma > 0 ? t : T(-t);
+                   };
     const int m = n - 1;
     SmallVector<T, kReductionInlinePoints> bj(static_cast<std::size_t>(n)), bl(static_cast<std::size_t>(n));
     for (int c = 2; c <= m - 1; ++c) {
@@ -371,8 +380,11 @@ void reduce_contact_points_into(const Points& points, const Keys& keys, const Ve
         // b exchanged when d lies between them: the cross product's two
         // products exchanged, the value negated exactly, the same absolute
         // value; under FMA contraction within its rounding)
-        const int ta = cyc(a), tb = cyc(b);
-        const T h = abs_of(ta < tb ? fan_at(ta, tb) : fan_at(tb, ta));
+        auto at_positions = [&] {
+          const int ta = cyc(a), tb = cyc(b);
+          return ta < tb ? fan_at(ta, tb) : fan_at(tb, ta);
+        };
+        const T h = abs_of(fan.tabulated() ? at_positions() : orient(P(d), P(a), P(b), normal));
         if (pass == 0) {
           if (h > m3) m3 = h;
         } else if (!(h < floor)) {
