@@ -287,12 +287,12 @@ void reduce_contact_points_into(const Points& points, const Keys& keys, const Ve
     // -normal is the value about normal negated: each product and sum of its
     // dot product changes sign, exactly).
     const Vec3<T> ns = sigma > 0 ? normal : Vec3<T>(-normal);
-    auto tri = [&](int a, int c)
-                   SEPAX_SIMD_INLINE {  // (inlined: GCC outlines a lambda called from several places)
-                     if (!fan.tabulated()) return orient(P(d), P(Q(a)), P(Q(c)), ns);
-                     const T t = fan_at(a, c);
-                     return sigma > 0 ? t : T(-t);
-                   };
+    // (inlined: GCC outlines a lambda called from several places)
+    auto tri = [&](int a, int c) SEPAX_SIMD_INLINE {
+      if (!fan.tabulated()) return orient(P(d), P(Q(a)), P(Q(c)), ns);
+      const T t = fan_at(a, c);
+      return sigma > 0 ? t : T(-t);
+    };
     const int m = n - 1;
     SmallVector<T, kReductionInlinePoints> bj(static_cast<std::size_t>(n)), bl(static_cast<std::size_t>(n));
     for (int c = 2; c <= m - 1; ++c) {
