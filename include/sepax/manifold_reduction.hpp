@@ -22,7 +22,6 @@
 #include <utility>
 #include <vector>
 
-#include "simd_ops.hpp"  // SEPAX_SIMD_INLINE
 #include "small_vector.hpp"
 
 #include "vec3.hpp"
@@ -47,43 +46,6 @@ inline bool lex_less(std::array<int, 3> x, std::array<int, 3> y) {
   sort3(y);
   return x < y;
 }
-
-/// The triangles of the fan from q[0]: fan(t, u) = orient(P(q[0]), P(q[t]),
-/// P(q[u]), normal) for positions 1 <= t < u < q.size().  The reduction reads
-/// each several times (the convexity test, the scan, its tie rule, the
-/// degenerate cases): tabulated once when q has at most `Inline` points (on
-/// the stack), evaluated on each read beyond (the same expression, so the
-/// same values; the reduction's scans then evaluate their triangles in
-/// place, where the compiler keeps a row's common terms in registers).
-template <Number T, std::size_t Inline, class Points, class Seq>
-class FanOrients {
- public:
-  FanOrients(const Points& points, const Seq& q, const Vec3<T>& normal)
-      : points_(points), q_(q), normal_(normal), n_(q.size()) {
-    if (n_ > Inline) return;
-    table_.assign(n_ * n_, T(0));
-    for (std::size_t t = 1; t < n_; ++t)
-      for (std::size_t u = t + 1; u < n_; ++u) table_[t * n_ + u] = evaluate(t, u);
-  }
-
-  /// orient(P(q[0]), P(q[t]), P(q[u]), normal), t < u.
-  T operator()(std::size_t t, std::size_t u) const {
-    return table_.empty() ? evaluate(t, u) : table_[t * n_ + u];
-  }
-
-  /// The triangles are in the table (at most Inline points).
-  bool tabulated() const { return !table_.empty(); }
-
- private:
-  T evaluate(std::size_t t, std::size_t u) const { return orient(point(0), point(t), point(u), normal_); }
-  const Vec3<T>& point(std::size_t t) const { return points_[static_cast<std::size_t>(q_[t])]; }
-
-  const Points& points_;
-  const Seq& q_;
-  const Vec3<T>& normal_;
-  std::size_t n_;
-  SmallVector<T, Inline * Inline> table_;
-};
 
 }  // namespace detail
 
@@ -118,25 +80,9 @@ T contact_hull_area2(const std::vector<Vec3<T>>& points, const std::vector<int>&
 /// count as straight: a polygon convex up to rounding and near-collinear clip
 /// points takes the O(n^2) scan, whose H then differs from the hull area by no
 /// more than such tolerances (near-ties).
-template <Number T, class Points, class Seq, class Fan>
-bool weakly_convex_sequence_fan(const Points& points, const Seq& q, const Vec3<T>& normal, int& sigma,
-                                const T& tol, const Fan& fan);
-
 template <Number T, class Points = std::vector<Vec3<T>>, class Seq = std::vector<int>>
 bool weakly_convex_sequence(const Points& points, const Seq& q, const Vec3<T>& normal, int& sigma,
                             const T& tol = T(0)) {
-  auto fan = [&](std::size_t t, std::size_t u) {
-    return detail::orient(points[static_cast<std::size_t>(q[0])], points[static_cast<std::size_t>(q[t])],
-                          points[static_cast<std::size_t>(q[u])], normal);
-  };
-  return weakly_convex_sequence_fan(points, q, normal, sigma, tol, fan);
-}
-
-/// weakly_convex_sequence with the fan's triangles from `fan`
-/// (detail::FanOrients: fan(t, u) = orient(q[0], q[t], q[u]) about normal).
-template <Number T, class Points, class Seq, class Fan>
-bool weakly_convex_sequence_fan(const Points& points, const Seq& q, const Vec3<T>& normal, int& sigma,
-                                const T& tol, const Fan& fan) {
   const std::size_t n = q.size();
   auto P = [&](std::size_t i) -> const Vec3<T>& { return points[static_cast<std::size_t>(q[i % n])]; };
   auto sgn_tol = [&](const T& x) { return x > tol ? 1 : (x < T(-tol) ? -1 : 0); };
@@ -147,7 +93,7 @@ bool weakly_convex_sequence_fan(const Points& points, const Seq& q, const Vec3<T
     return false;
   // Fan from q[0]: the angles of q[1..n-1] around q[0] must be monotone ...
   for (std::size_t t = 1; t + 1 < n; ++t) {
-    const int s = sgn_tol(fan(t, t + 1));
+    const int s = sgn_tol(orient(P(0), P(t), P(t + 1), normal));
     if (s == 0) continue;
     if (sigma == 0) sigma = s;
     if (s != sigma) return false;
@@ -156,9 +102,9 @@ bool weakly_convex_sequence_fan(const Points& points, const Seq& q, const Vec3<T
   // ... and within a half-turn: every point on the inner side of the first ray
   // q0->q1 and of the last ray q0->q[n-1] (no second winding around q0).
   for (std::size_t t = 2; t < n; ++t)
-    if (sgn_tol(fan(1, t)) == -sigma) return false;
+    if (sgn_tol(orient(P(0), P(1), P(t), normal)) == -sigma) return false;
   for (std::size_t t = 1; t + 1 < n; ++t)
-    if (sgn_tol(fan(t, n - 1)) == -sigma) return false;
+    if (sgn_tol(orient(P(0), P(t), P(n - 1), normal)) == -sigma) return false;
   // With the angles around q[0] monotone within a half-turn the polygon is
   // simple and star-shaped from q[0]; a simple polygon whose every turn goes
   // the same way (or straight) is convex.
@@ -271,39 +217,26 @@ void reduce_contact_points_into(const Points& points, const Keys& keys, const Ve
     for (std::size_t i = 0; i < k; ++i) out.push_back(others[i]);
   };
 
-  // The fan's triangles about d, read by every step below.
-  const detail::FanOrients<T, kReductionInlineGeneral, Points, decltype(q)> fan(points, q, normal);
-  auto fan_at = [&](int t, int u) { return fan(static_cast<std::size_t>(t), static_cast<std::size_t>(u)); };
-
   // 2./3. M4 and the best triple.
   bool have4 = false;
   T m4(0);
   std::array<int, 3> best4{-1, -1, -1};
   int sigma = 0;
-  if (!force_general && weakly_convex_sequence_fan(points, q, normal, sigma, area_tol, fan)) {
+  if (!force_general && weakly_convex_sequence(points, q, normal, sigma, area_tol)) {
     // O(n^2): H(d, j, k, l) = sigma (T(d,j,k) + T(d,k,l)) for positions
-    // 1 <= a < c < b <= n-1 of j, k, l.  tri(a, c) = T(d, Q(a), Q(c)) about
-    // sigma normal: the fan's triangle, negated when sigma < 0 (orient about
-    // -normal is the value about normal negated: each product and sum of its
-    // dot product changes sign, exactly).
+    // 1 <= a < c < b <= n-1 of j, k, l.
     const Vec3<T> ns = sigma > 0 ? normal : Vec3<T>(-normal);
-    // (inlined: GCC outlines a lambda called from several places)
-    auto tri = [&](int a, int c) SEPAX_SIMD_INLINE {
-      if (!fan.tabulated()) return orient(P(d), P(Q(a)), P(Q(c)), ns);
-      const T t = fan_at(a, c);
-      return sigma > 0 ? t : T(-t);
-    };
     const int m = n - 1;
     SmallVector<T, kReductionInlinePoints> bj(static_cast<std::size_t>(n)), bl(static_cast<std::size_t>(n));
     for (int c = 2; c <= m - 1; ++c) {
-      T x = tri(1, c);
+      T x = orient(P(d), P(Q(1)), P(Q(c)), ns);
       for (int a = 2; a < c; ++a) {
-        const T y = tri(a, c);
+        const T y = orient(P(d), P(Q(a)), P(Q(c)), ns);
         if (y > x) x = y;
       }
-      T z = tri(c, c + 1);
+      T z = orient(P(d), P(Q(c)), P(Q(c + 1)), ns);
       for (int b = c + 2; b <= m; ++b) {
-        const T y = tri(c, b);
+        const T y = orient(P(d), P(Q(c)), P(Q(b)), ns);
         if (y > z) z = y;
       }
       bj[static_cast<std::size_t>(c)] = x;
@@ -320,10 +253,10 @@ void reduce_contact_points_into(const Points& points, const Keys& keys, const Ve
       const T sj = bj[static_cast<std::size_t>(c)], sl = bl[static_cast<std::size_t>(c)];
       if (sj + sl < floor) continue;
       for (int a = 1; a < c; ++a) {
-        const T y = tri(a, c);
+        const T y = orient(P(d), P(Q(a)), P(Q(c)), ns);
         if (y + sl < floor) continue;
         for (int b = c + 1; b <= m; ++b) {
-          const T z = tri(c, b);
+          const T z = orient(P(d), P(Q(c)), P(Q(b)), ns);
           if (y + z < floor) continue;
           const std::array<int, 3> cand{Q(a), Q(c), Q(b)};
           if (best4[0] < 0 || lex_less(cand, best4)) best4 = cand;
@@ -376,15 +309,7 @@ void reduce_contact_points_into(const Points& points, const Keys& keys, const Ve
       if (a == d) continue;
       for (int b = a + 1; b < n; ++b) {
         if (b == d) continue;
-        // T(d, a, b) is the fan's triangle at the positions of a and b (a and
-        // b exchanged when d lies between them: the cross product's two
-        // products exchanged, the value negated exactly, the same absolute
-        // value; under FMA contraction within its rounding)
-        auto at_positions = [&] {
-          const int ta = cyc(a), tb = cyc(b);
-          return ta < tb ? fan_at(ta, tb) : fan_at(tb, ta);
-        };
-        const T h = abs_of(fan.tabulated() ? at_positions() : orient(P(d), P(a), P(b), normal));
+        const T h = abs_of(orient(P(d), P(a), P(b), normal));
         if (pass == 0) {
           if (h > m3) m3 = h;
         } else if (!(h < floor)) {
