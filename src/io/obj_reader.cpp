@@ -125,7 +125,11 @@ std::vector<ObjObject> read_obj_objects(std::istream& in, const std::string& nam
   }
   if (!any_content) r.fail("empty file: no 'v' or 'f' statements");
   if (out.vertices.empty()) r.fail("no vertices ('v' lines) in the file");
-  if (out.faces.empty()) r.fail("no faces ('f' lines) in the file (for a point set, use a points file)");
+  if (out.faces.empty()) {
+    // Only 'v' lines: a point cloud (a scan exported as OBJ), one point set to be hulled.
+    out.kind = ShapeData::Kind::Points;
+    return {ObjObject{"", std::move(out)}};
+  }
 
   // Objects by 'o' name when the file has 'o' statements, else by 'g' name;
   // statements of the same name are one object, in order of first use.

@@ -69,9 +69,8 @@ ShapeData read_off(std::istream& in, const std::string& name) {
   const long long nf = parse_count(r, counts[1], "the face count", kMaxCount);
   if (counts.size() == 3) (void)parse_count(r, counts[2], "the edge count", 3 * kMaxCount);
   if (nv < 3) r.fail("the file declares " + std::to_string(nv) + " vertices; a polyhedron needs at least 3");
-  if (nf < 1) {
-    r.fail("the file declares 0 faces; a shape needs at least 1 (one face is a double-sided polygon)");
-  }
+  // 0 faces: the vertices are a point set (an OFF point cloud), to be hulled.
+  if (nf == 0) out.kind = ShapeData::Kind::Points;
 
   for (long long i = 0; i < nv; ++i) {
     if (!next_tokens()) {

@@ -246,7 +246,7 @@ const char* builtin_shapes_help() {
          "  FILE.off|.obj|.ply|.stl   a face list (one face: a double-sided polygon; a closed\n"
          "                     convex mesh, e.g. triangulated, is the polyhedron it bounds)\n"
          "  FILE.obj#NAME|#K   one object ('o', else 'g') of an OBJ file (K counts from 0)\n"
-         "  FILE.pts|.xyz|.txt points (hulled)\n"
+         "  FILE.pts|.xyz|.txt points (hulled); so is a .ply/.obj/.off of vertices without faces\n"
          "  hull:SHAPE         the convex hull of SHAPE's vertices\n"
          "  -, -:FORMAT        standard input (FORMAT off, obj, ply, stl or pts; - alone guesses)\n";
 }

@@ -38,9 +38,9 @@ ShapeData soup(const std::string& name, const char* format, Read&& read) {
   if (!ok)
     fail(name, std::string("not a readable ") + format + " file (the reader stopped on malformed content)");
   if (points.empty()) fail(name, "no vertices in the file");
-  if (polygons.empty()) fail(name, "no faces in the file (for a point set, use a points file)");
   ShapeData out;
-  out.kind = ShapeData::Kind::Faces;
+  // No faces (a PLY point cloud, as scanners write): a point set, to be hulled.
+  out.kind = polygons.empty() ? ShapeData::Kind::Points : ShapeData::Kind::Faces;
   out.name = name;
   out.from_file = true;
   for (std::size_t i = 0; i < points.size(); ++i) {

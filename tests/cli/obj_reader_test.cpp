@@ -65,7 +65,6 @@ TEST_CASE("obj: malformed files are rejected naming FILE:LINE and the problem", 
       {"", 1, "empty file"},
       {"# nothing\n\n", 2, "empty file"},
       {"g only\nvt 0 0\n", 2, "no vertices"},
-      {v, 8, "no faces"},
       {"v 1 2\n", 1, "vertex 1 has 2 values"},
       {"v 1 2 3 4 5\n", 1, "vertex 1 has 5 values"},
       {"v 1 2 3 2\n", 1, "only w = 1"},
@@ -83,6 +82,17 @@ TEST_CASE("obj: malformed files are rejected naming FILE:LINE and the problem", 
   };
   test::check_malformed(
       cases, [](const std::string& text) { (void)read(text, "bad.obj"); }, "bad.obj");
+}
+
+TEST_CASE("obj: a file of 'v' lines only is a point set (hulled), whatever its 'o' statements", "[obj]") {
+  std::istringstream in("o scan\n" + std::string(kVerts) + "o second\nv 9 9 9\n");
+  const auto objects = io::read_obj_objects(in, "cloud.obj");
+  REQUIRE(objects.size() == 1);
+  const io::ShapeData& d = objects[0].shape;
+  CHECK(d.kind == io::ShapeData::Kind::Points);
+  CHECK(d.vertices.size() == 9);
+  CHECK(d.faces.empty());
+  CHECK(d.vertices.back() == Vec3<double>(9, 9, 9));
 }
 
 TEST_CASE("obj: a missing file is an error naming it", "[obj]") {

@@ -51,6 +51,14 @@ TEST_CASE("off: a plain cube", "[off]") {
   CHECK(d.face_lines[5] == 16);
 }
 
+TEST_CASE("off: a file declaring 0 faces is a point set (hulled)", "[off]") {
+  const auto d = read("OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  CHECK(d.kind == io::ShapeData::Kind::Points);
+  REQUIRE(d.vertices.size() == 4);
+  CHECK(d.vertices[1] == Vec3<double>(1, 0, 0));
+  CHECK(d.faces.empty());
+}
+
 TEST_CASE("off: accepted quirks give the same shape", "[off]") {
   const std::string variants[] = {
       // comments, blank lines, CRLF, trailing comments
@@ -98,7 +106,6 @@ TEST_CASE("off: malformed files are rejected naming FILE:LINE and the problem", 
       {"OFF\n-8 6 12\n", 2, "vertex count is negative"},
       {"OFF\n99999999999 6 12\n", 2, "too large"},
       {"OFF\n2 6 0\n", 2, "at least 3"},
-      {"OFF\n8 0 0\n", 2, "declares 0 faces; a shape needs at least 1"},
       {"OFF\n8 6 12\n" + v8.substr(0, 17) + "1 1\n", 5, "vertex 2 has 2 values"},
       {"OFF\n8 6 12\n-1 -1 -1 7\n", 3, "vertex 0 has 4 values"},
       {"OFF\n8 6 12\n-1 -1 1.0.0\n", 3, "bad number '1.0.0' for coordinate z of vertex 0"},

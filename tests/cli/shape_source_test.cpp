@@ -101,6 +101,22 @@ TEST_CASE("shape source: files are read by extension", "[shapes]") {
   CHECK(io::load_shape(pts).vertices.size() == 5);
   CHECK(io::load_shape(txt).kind == io::ShapeData::Kind::Points);
   CHECK(io::load_shape(dir.write("c.pts", "0 0 0\n")).vertices.size() == 1);
+  // a mesh file of vertices without faces (a scanner's point cloud) is a point set, hulled like a points file
+  const std::string cloud = "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n0 0 0\n";
+  const std::string ply_header =
+      "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+      "end_header\n";
+  const std::string obj_cloud = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nv 0 0 0\n";
+  for (const auto& file : {dir.write("cloud.ply", ply_header + cloud), dir.write("cloud.obj", obj_cloud),
+                           dir.write("cloud.off", "OFF\n5 0 0\n" + cloud)}) {
+    INFO(file);
+    const auto d = io::load_shape(file);
+    CHECK(d.kind == io::ShapeData::Kind::Points);
+    CHECK(d.vertices == io::load_shape(pts).vertices);
+    const auto h = io::load_shape("hull:" + file);
+    CHECK(h.kind == io::ShapeData::Kind::Points);
+    CHECK(h.vertices.size() == 5);
+  }
 
   CHECK_THROWS_WITH(io::load_shape(dir.write("c.3ds", "solid")), Catch::Contains("known extension"));
   // .stl and .ply are read (soup_reader.hpp): an STL without facets is an error naming it

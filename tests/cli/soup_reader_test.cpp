@@ -66,6 +66,17 @@ TEST_CASE("soup readers: a binary PLY and polygons of more than three vertices",
   CHECK(d.faces[0] == std::vector<int>{0, 1, 2, 3});
 }
 
+TEST_CASE("soup readers: a PLY of vertices only (a scanner's point cloud) is a point set", "[soup]") {
+  std::istringstream in(
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  const io::ShapeData d = io::read_ply(in, "cloud.ply");
+  CHECK(d.kind == io::ShapeData::Kind::Points);
+  REQUIRE(d.vertices.size() == 4);
+  CHECK(d.vertices[3] == Vec3<double>(0, 0, 1));
+  CHECK(d.faces.empty());
+}
+
 TEST_CASE("soup readers: malformed files are errors naming the file, never a crash", "[soup]") {
   const test::TempDir dir("sepax_soup_reader_test");
   const struct {
@@ -84,10 +95,6 @@ TEST_CASE("soup readers: malformed files are errors naming the file, never a cra
        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
        "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
        "vertex index 7 is out of range"},
-      {"points_only.ply",
-       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-       "end_header\n0 0 0\n1 0 0\n0 1 0\n",
-       "no faces"},
       {"garbage.stl", "solid x\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 zero\n",
        "no vertices"},
       {"empty.stl", "", "no vertices"},
