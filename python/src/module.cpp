@@ -890,6 +890,24 @@ class InvalidInput(ValueError):
       "(vertices are input points; coplanar points give a flat double-sided polygon).  Raises "
       "sepax.InvalidInput: NonFinite (NaN/inf, naming the point), TooFewPoints, Collinear, BadScale.");
   m.def(
+      "convex_hull_local",
+      [](const py::object& points) {
+        std::vector<Vec3<double>> p = points_from(points, "points");
+        LocalHull<double> h = [&] {
+          py::gil_scoped_release release;
+          return convex_hull_local<double>(p);
+        }();
+        py::array_t<double> origin(3);
+        for (int c = 0; c < 3; ++c) origin.mutable_at(c) = h.origin[c];
+        return py::make_tuple(Shape(std::move(h.shape)), origin);
+      },
+      py::arg("points"),
+      "convex_hull_local(points) -> (Shape, origin): the hull in its own frame, for points far from the "
+      "world origin (a small piece of a decomposition in world coordinates): shape is the hull of "
+      "points - origin, origin (3,) chosen so that every subtraction is exact, and every vertex + origin is "
+      "exactly an input point.  Query it at the pose (R, t + R @ origin) for a world pose (R, t).  Raises "
+      "as convex_hull.");
+  m.def(
       "box", [](double hx, double hy, double hz) { return Shape(shapes::box<double>(hx, hy, hz)); },
       py::arg("hx"), py::arg("hy"), py::arg("hz"),
       "box(hx, hy, hz) -> Shape: the axis-aligned box with these half extents.");

@@ -453,3 +453,31 @@ def test_audit_random_pairs_and_refusals():
         assert r.stats["minkowski_faces"] == int((t["minkowski_exact"] & ~t["parallel_exact"]).sum())
     with pytest.raises(ValueError, match="float or double"):
         sepax.audit(sepax.cube(), sepax.cube(), number="exact")
+
+
+def test_convex_hull_local_keeps_a_far_piece_at_its_own_scale():
+    # a 0.1-unit piece a million units out: double cannot validate it in world coordinates,
+    # and its hull in its own frame answers as the same piece at a pose
+    rng = np.random.default_rng(11)
+    local_points = rng.uniform(-0.05, 0.05, size=(60, 3))
+    world = local_points + 1.0e6
+    with pytest.raises(sepax.InvalidInput) as err:
+        sepax.convex_hull(world)
+    assert err.value.code == sepax.ErrorCode.BadScale
+    shape, origin = sepax.convex_hull_local(world)
+    assert origin.shape == (3,)
+    v = shape.vertices
+    # every vertex + origin is exactly an input point
+    inputs = {tuple(p) for p in world}
+    assert all(tuple(p) in inputs for p in v + origin)
+    # the piece at its world place (pose: the origin) against its copy 0.2 along x gives what the
+    # same piece near the world origin gives; float poses cannot hold a million units to 0.2 (float's
+    # spacing there is 0.0625), so float is asked in a frame near the pair, as an engine would
+    near = sepax.convex_hull(local_points)
+    for number in NUMBERS:
+        at = origin if number != "float" else np.zeros(3)
+        far_r = sepax.query(shape, shape, at, at + [0.2, 0, 0], number=number)
+        near_r = sepax.query(near, near, None, [0.2, 0, 0], number=number)
+        assert far_r.overlap is False and near_r.overlap is False
+        assert far_r.separation == pytest.approx(near_r.separation, rel=1e-6)
+        assert far_r.feature.type == near_r.feature.type
