@@ -485,7 +485,8 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("bullet: a kept face whose polygon exceeds the fixed clip buffers keeps a fresh algorithm's points") {
+TEST_CASE(
+    "bullet: a kept face whose polygon exceeds the fixed clip buffers keeps a fresh algorithm's points") {
   // A 40-sided prism (80 vertices) resting on its cap, slightly tilted and
   // jittered within the kept face's budget: the clip's polygon has 40
   // vertices, more than the refresh's fixed buffers hold (FixedPoly, 32),
