@@ -255,6 +255,9 @@ bool same_ids(const btManifoldPoint& x, const NewPoint& y) {
 struct Material {
   btScalar friction, restitution, rolling, spinning, damping, stiff;
   bool stiffness, anchor;
+  /// btPlaneSpace1 of the pair's normal on body 1, which addContactPoint
+  /// computes for each point (the same normal: the same directions).
+  btVector3 lateral1, lateral2;
 };
 
 /// Every field of `p` that a point constructed by addContactPoint for `q`
@@ -291,7 +294,8 @@ void fill(btManifoldPoint& p, const NewPoint& q, const btVector3& normal_on_b, c
     p.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
   }
   if (mat.anchor) p.m_contactPointFlags |= BT_CONTACT_FLAG_FRICTION_ANCHOR;
-  btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
+  p.m_lateralFrictionDir1 = mat.lateral1;
+  p.m_lateralFrictionDir2 = mat.lateral2;
 }
 
 /// Writes the world-space manifold m of (w0, w1) into `man` (see the header):
@@ -325,6 +329,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
   mat.damping = mat.stiffness ? gCalculateCombinedContactDampingCallback(o0, o1) : btScalar(0);
   mat.stiff = mat.stiffness ? gCalculateCombinedContactStiffnessCallback(o0, o1) : btScalar(0);
   mat.anchor = flags & btCollisionObject::CF_HAS_FRICTION_ANCHOR;
+  btPlaneSpace1(normal_on_b, mat.lateral1, mat.lateral2);
 
   NewPoint pts[MANIFOLD_CACHE_SIZE];
   int count = 0;
@@ -489,8 +494,11 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     if (keep) {
       bool refreshed = false;
       const bool rigid = stays_rigid(s.defect0, moved);
-      kept_manifold(s.a->shape, pa, s.b->shape, x, rigid, s.contact, margin, s.face, s.view, s.manifold,
-                    refreshed);
+      // write_points reads the point on the Bullet manifold's body 1: A's
+      // when the manifold's bodies are in the other order
+      const bool world_a = manifold_->getBody0() != body0->getCollisionObject();
+      kept_manifold(s.a->shape, pa, s.b->shape, x, rigid, s.contact, margin, s.face, world_a, s.view,
+                    s.manifold, refreshed);
       live.kept.fetch_add(1, std::memory_order_relaxed);
       if (refreshed) live.refreshed.fetch_add(1, std::memory_order_relaxed);
       if (refreshed && s.manifold.candidate_points > 4) live.reduced.fetch_add(1, std::memory_order_relaxed);

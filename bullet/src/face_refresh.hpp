@@ -4,7 +4,8 @@
 //      vertex, as face_contact chooses it;
 //   2. the incident polygon clipped by the reference face's side planes with
 //      face_contact's own steps (incident_polygon, side_plane,
-//      clip_polygon, clip_polygon_if_cut, weld_polygon) in inline buffers;
+//      clip_polygon, clip_polygon_if_cut, weld_polygon) in fixed buffers
+//      (FixedPoly; SmallVector beyond 32 vertices);
 //      the side planes of a reference face of A are the same at every pose
 //      and computed once (KeptFace); a plane that keeps the whole polygon is
 //      skipped on its heights alone (clip_if_cut);
@@ -12,12 +13,14 @@
 //   4. more than four of them reduced to four by face_contact's reduction
 //      (reduce_contact_points_into, manifold_reduction.hpp) on the same
 //      positions, depth keys and tolerances;
-//   5. the kept points mapped to world by pose_a as posed_manifold_on maps
-//      them.
+//   5. of each kept point, the one the adapter's writer reads (point_a or
+//      point_b: the point on the Bullet manifold's body 1) mapped to world by
+//      pose_a as posed_manifold_on maps it; position and the other point
+//      stay in A's frame (the writer reads neither).
 // When that leaves no point (face_contact's support-vertex fallback) or the
 // contact's own separation is beyond the margin (contact_manifold returns no
 // point), the refresh declines and the adapter builds the manifold with
-// posed_manifold_on.  Otherwise the points are those posed_manifold_on gives,
+// posed_manifold_on.  Otherwise the points read are those posed_manifold_on gives,
 // bit for bit: the same functions on the same inputs.
 #pragma once
 
@@ -197,7 +200,7 @@ enum class Refresh { Declined, Done, Overflowed };
 template <class BP, class RS, class IS, class Poly>
 Refresh refresh_on(const ConvexPolyhedron<float>& a, const RigidTransform<float>& pose_a, const BP& bp,
                    const RS& R, const IS& I, const SatResult<float>& r, float m, const KeptFace& kept,
-                   Poly& buf0, Poly& buf1, ContactManifold<float>& out) {
+                   bool world_a, Poly& buf0, Poly& buf1, ContactManifold<float>& out) {
   const bool ref_is_a = r.feature.type == FeatureType::FaceA;
   const int ref_face = ref_is_a ? r.feature.a : r.feature.b;
   const int support = ref_is_a ? r.feature.b : r.feature.a;
@@ -256,12 +259,14 @@ Refresh refresh_on(const ConvexPolyhedron<float>& a, const RigidTransform<float>
   out.support_fallback = false;
   out.clip_steps.clear();
   out.points.clear();
-  // posed_manifold_on's map to world
+  // posed_manifold_on's map to world, of the one point the writer reads
   for (std::size_t i = 0; i < count; ++i) {
-    ContactPoint<float> c = pts[i];
-    c.position = pose_a.apply(c.position);
-    c.point_a = pose_a.apply(c.point_a);
-    c.point_b = pose_a.apply(c.point_b);
+    ContactPoint<float>& c = pts[i];
+    if (world_a) {
+      c.point_a = pose_a.apply(c.point_a);
+    } else {
+      c.point_b = pose_a.apply(c.point_b);
+    }
     out.points.push_back(c);
   }
   return Refresh::Done;
@@ -272,14 +277,14 @@ Refresh refresh_on(const ConvexPolyhedron<float>& a, const RigidTransform<float>
 template <class BP, class RS, class IS>
 bool refresh_with(const ConvexPolyhedron<float>& a, const RigidTransform<float>& pose_a, const BP& bp,
                   const RS& R, const IS& I, const SatResult<float>& r, float m, const KeptFace& kept,
-                  ContactManifold<float>& out) {
+                  bool world_a, ContactManifold<float>& out) {
   {
     FixedPoly<ClipVertex<float>> buf0, buf1;
-    const Refresh done = refresh_on(a, pose_a, bp, R, I, r, m, kept, buf0, buf1, out);
+    const Refresh done = refresh_on(a, pose_a, bp, R, I, r, m, kept, world_a, buf0, buf1, out);
     if (done != Refresh::Overflowed) return done == Refresh::Done;
   }
   SmallVector<ClipVertex<float>, 16> buf0, buf1;
-  return refresh_on(a, pose_a, bp, R, I, r, m, kept, buf0, buf1, out) == Refresh::Done;
+  return refresh_on(a, pose_a, bp, R, I, r, m, kept, world_a, buf0, buf1, out) == Refresh::Done;
 }
 
 }  // namespace refresh_detail
@@ -289,17 +294,18 @@ bool refresh_with(const ConvexPolyhedron<float>& a, const RigidTransform<float>&
 /// planes of r's face of A when r is FaceA and kept.face is that face.  BP:
 /// B' as a ConvexPolyhedron<float> or a PosedView (posed_view.hpp) holding
 /// the planes the refresh reads (r's face of B, or B's faces around the
-/// support vertex).  Returns false (out untouched) where the header says it
+/// support vertex).  `world_a`: map point_a to world, else point_b (step 5
+/// of the header).  Returns false (out untouched) where the header says it
 /// declines.
 template <class BP>
 bool refresh_face_manifold(const ConvexPolyhedron<float>& a, const RigidTransform<float>& pose_a,
                            const BP& bp, const SatResult<float>& r, double margin, const KeptFace& kept,
-                           ContactManifold<float>& out) {
+                           bool world_a, ContactManifold<float>& out) {
   const float m = from_double<float>(margin);
   if (!sepax::detail::within_margin(r.separation, m)) return false;
   if (r.feature.type == FeatureType::FaceA)
-    return refresh_detail::refresh_with(a, pose_a, bp, a, bp, r, m, kept, out);
-  return refresh_detail::refresh_with(a, pose_a, bp, bp, a, r, m, kept, out);
+    return refresh_detail::refresh_with(a, pose_a, bp, a, bp, r, m, kept, world_a, out);
+  return refresh_detail::refresh_with(a, pose_a, bp, bp, a, r, m, kept, world_a, out);
 }
 
 }  // namespace sepax::bullet
