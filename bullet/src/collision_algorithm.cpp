@@ -114,6 +114,39 @@ ShapeKey shape_key(const btCollisionShape& shape) {
   return k;
 }
 
+namespace {
+
+/// shape_key(shape) == k, read in place with an early exit at the first
+/// field that differs (no ShapeKey built): the same fields, the same
+/// comparisons (float ==, as the defaulted operator== compares them).
+bool key_matches(const btCollisionShape& shape, const ShapeKey& k) {
+  const int type = shape.getShapeType();
+  if (!is_supported(type)) return k == ShapeKey{};
+  if (type != k.type) return false;
+  const btVector3& s = shape.getLocalScaling();
+  for (int i = 0; i < 3; ++i) {
+    if (!(static_cast<float>(s[i]) == k.scaling[i])) return false;
+  }
+  if (type == BOX_SHAPE_PROXYTYPE) {
+    const btVector3 h = static_cast<const btBoxShape&>(shape).getHalfExtentsWithMargin();
+    for (int i = 0; i < 3; ++i) {
+      if (!(static_cast<float>(h[i]) == k.size[i])) return false;
+    }
+    return k.points == nullptr && k.point_count == 0;
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (!(k.size[i] == 0.0f)) return false;
+  }
+  if (type == CONVEX_HULL_SHAPE_PROXYTYPE) {
+    const auto& hull = static_cast<const btConvexHullShape&>(shape);
+    return hull.getUnscaledPoints() == k.points && hull.getNumPoints() == k.point_count;
+  }
+  const auto& cloud = static_cast<const btConvexPointCloudShape&>(shape);
+  return cloud.getUnscaledPoints() == k.points && cloud.getNumPoints() == k.point_count;
+}
+
+}  // namespace
+
 // ---- ShapeCache ----------------------------------------------------------------
 
 ShapeCache::ShapeCache() = default;
@@ -446,14 +479,15 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     // The prepared hulls: looked up again only when a shape or its key changed.
     const btCollisionShape* sa = body0->getCollisionShape();
     const btCollisionShape* sb = body1->getCollisionShape();
-    const ShapeKey ka = shape_key(*sa), kb = shape_key(*sb);
-    if (sa != s.shape_a || !(ka == s.key_a) || !s.a) {
+    if (sa != s.shape_a || !s.a || !key_matches(*sa, s.key_a)) {
+      const ShapeKey ka = shape_key(*sa);
       s.a = owner_.shapes_.get(*sa, ka);
       s.shape_a = sa;
       s.key_a = ka;
       s.forget_shape_state();
     }
-    if (sb != s.shape_b || !(kb == s.key_b) || !s.b) {
+    if (sb != s.shape_b || !s.b || !key_matches(*sb, s.key_b)) {
+      const ShapeKey kb = shape_key(*sb);
       s.b = owner_.shapes_.get(*sb, kb);
       s.shape_b = sb;
       s.key_b = kb;
