@@ -58,15 +58,20 @@ struct Motion {
 };
 
 inline Motion motion_between(const RigidTransform<float>& x0, const RigidTransform<float>& x1) {
+  // the sums in the order (i, j) row by row, written out (the loops were
+  // not unrolled)
   double r2 = 0, t2 = 0;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      const double d = static_cast<double>(x1.rotation(i, j)) - static_cast<double>(x0.rotation(i, j));
-      r2 += d * d;
-    }
+  auto rot = [&](int i, int j) {
+    const double d = static_cast<double>(x1.rotation(i, j)) - static_cast<double>(x0.rotation(i, j));
+    r2 += d * d;
+  };
+  auto tra = [&](int i) {
     const double d = static_cast<double>(x1.translation[i]) - static_cast<double>(x0.translation[i]);
     t2 += d * d;
-  }
+  };
+  rot(0, 0), rot(0, 1), rot(0, 2), tra(0);
+  rot(1, 0), rot(1, 1), rot(1, 2), tra(1);
+  rot(2, 0), rot(2, 1), rot(2, 2), tra(2);
   return Motion{std::sqrt(r2), std::sqrt(t2)};
 }
 
@@ -125,16 +130,24 @@ template <class Basis, class Origin>
 bool spheres_beyond(const Basis& rot_a, const Origin& ta, const std::array<double, 3>& ca, double ra,
                     const Basis& rot_b, const Origin& tb, const std::array<double, 3>& cb, double rb,
                     double margin) {
+  // Each centre's row i as t_i + r_i0 c_0 + r_i1 c_1 + r_i2 c_2, summed left
+  // to right; written out (the loops over i and j were not unrolled).
+  auto centre = [](const Basis& rot, const Origin& t, const std::array<double, 3>& c, int i) {
+    double w = static_cast<double>(t[i]);
+    w += static_cast<double>(rot[i][0]) * c[0];
+    w += static_cast<double>(rot[i][1]) * c[1];
+    w += static_cast<double>(rot[i][2]) * c[2];
+    return w;
+  };
   double d2 = 0, scale = ra + rb;
-  for (int i = 0; i < 3; ++i) {
-    double wa = static_cast<double>(ta[i]), wb = static_cast<double>(tb[i]);
-    for (int j = 0; j < 3; ++j) {
-      wa += static_cast<double>(rot_a[i][j]) * ca[static_cast<std::size_t>(j)];
-      wb += static_cast<double>(rot_b[i][j]) * cb[static_cast<std::size_t>(j)];
-    }
+  auto add_row = [&](int i) {
+    const double wa = centre(rot_a, ta, ca, i), wb = centre(rot_b, tb, cb, i);
     d2 += (wb - wa) * (wb - wa);
     scale += std::abs(wa) + std::abs(wb);
-  }
+  };
+  add_row(0);
+  add_row(1);
+  add_row(2);
   const double reach = ra + rb + margin + kSlack * scale;
   return d2 > reach * reach;
 }

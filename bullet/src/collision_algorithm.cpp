@@ -114,6 +114,39 @@ ShapeKey shape_key(const btCollisionShape& shape) {
   return k;
 }
 
+namespace {
+
+/// shape_key(shape) == k, read in place with an early exit at the first
+/// field that differs (no ShapeKey built): the same fields, the same
+/// comparisons (float ==, as the defaulted operator== compares them).
+bool key_matches(const btCollisionShape& shape, const ShapeKey& k) {
+  const int type = shape.getShapeType();
+  if (!is_supported(type)) return k == ShapeKey{};
+  if (type != k.type) return false;
+  const btVector3& s = shape.getLocalScaling();
+  for (int i = 0; i < 3; ++i) {
+    if (!(static_cast<float>(s[i]) == k.scaling[i])) return false;
+  }
+  if (type == BOX_SHAPE_PROXYTYPE) {
+    const btVector3 h = static_cast<const btBoxShape&>(shape).getHalfExtentsWithMargin();
+    for (int i = 0; i < 3; ++i) {
+      if (!(static_cast<float>(h[i]) == k.size[i])) return false;
+    }
+    return k.points == nullptr && k.point_count == 0;
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (!(k.size[i] == 0.0f)) return false;
+  }
+  if (type == CONVEX_HULL_SHAPE_PROXYTYPE) {
+    const auto& hull = static_cast<const btConvexHullShape&>(shape);
+    return hull.getUnscaledPoints() == k.points && hull.getNumPoints() == k.point_count;
+  }
+  const auto& cloud = static_cast<const btConvexPointCloudShape&>(shape);
+  return cloud.getUnscaledPoints() == k.points && cloud.getNumPoints() == k.point_count;
+}
+
+}  // namespace
+
 // ---- ShapeCache ----------------------------------------------------------------
 
 ShapeCache::ShapeCache() = default;
@@ -255,6 +288,9 @@ bool same_ids(const btManifoldPoint& x, const NewPoint& y) {
 struct Material {
   btScalar friction, restitution, rolling, spinning, damping, stiff;
   bool stiffness, anchor;
+  /// btPlaneSpace1 of the pair's normal on body 1, which addContactPoint
+  /// computes for each point (the same normal: the same directions).
+  btVector3 lateral1, lateral2;
 };
 
 /// Every field of `p` that a point constructed by addContactPoint for `q`
@@ -291,7 +327,8 @@ void fill(btManifoldPoint& p, const NewPoint& q, const btVector3& normal_on_b, c
     p.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
   }
   if (mat.anchor) p.m_contactPointFlags |= BT_CONTACT_FLAG_FRICTION_ANCHOR;
-  btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
+  p.m_lateralFrictionDir1 = mat.lateral1;
+  p.m_lateralFrictionDir2 = mat.lateral2;
 }
 
 /// Writes the world-space manifold m of (w0, w1) into `man` (see the header):
@@ -325,6 +362,7 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
   mat.damping = mat.stiffness ? gCalculateCombinedContactDampingCallback(o0, o1) : btScalar(0);
   mat.stiff = mat.stiffness ? gCalculateCombinedContactStiffnessCallback(o0, o1) : btScalar(0);
   mat.anchor = flags & btCollisionObject::CF_HAS_FRICTION_ANCHOR;
+  btPlaneSpace1(normal_on_b, mat.lateral1, mat.lateral2);
 
   NewPoint pts[MANIFOLD_CACHE_SIZE];
   int count = 0;
@@ -441,14 +479,15 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     // The prepared hulls: looked up again only when a shape or its key changed.
     const btCollisionShape* sa = body0->getCollisionShape();
     const btCollisionShape* sb = body1->getCollisionShape();
-    const ShapeKey ka = shape_key(*sa), kb = shape_key(*sb);
-    if (sa != s.shape_a || !(ka == s.key_a) || !s.a) {
+    if (sa != s.shape_a || !s.a || !key_matches(*sa, s.key_a)) {
+      const ShapeKey ka = shape_key(*sa);
       s.a = owner_.shapes_.get(*sa, ka);
       s.shape_a = sa;
       s.key_a = ka;
       s.forget_shape_state();
     }
-    if (sb != s.shape_b || !(kb == s.key_b) || !s.b) {
+    if (sb != s.shape_b || !s.b || !key_matches(*sb, s.key_b)) {
+      const ShapeKey kb = shape_key(*sb);
       s.b = owner_.shapes_.get(*sb, kb);
       s.shape_b = sb;
       s.key_b = kb;
@@ -489,8 +528,11 @@ void CollisionAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
     if (keep) {
       bool refreshed = false;
       const bool rigid = stays_rigid(s.defect0, moved);
-      kept_manifold(s.a->shape, pa, s.b->shape, x, rigid, s.contact, margin, s.face, s.view, s.manifold,
-                    refreshed);
+      // write_points reads the point on the Bullet manifold's body 1: A's
+      // when the manifold's bodies are in the other order
+      const bool world_a = manifold_->getBody0() != body0->getCollisionObject();
+      kept_manifold(s.a->shape, pa, s.b->shape, x, rigid, s.contact, margin, s.face, world_a, s.view,
+                    s.manifold, refreshed);
       live.kept.fetch_add(1, std::memory_order_relaxed);
       if (refreshed) live.refreshed.fetch_add(1, std::memory_order_relaxed);
       if (refreshed && s.manifold.candidate_points > 4) live.reduced.fetch_add(1, std::memory_order_relaxed);

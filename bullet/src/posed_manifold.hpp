@@ -34,13 +34,14 @@ inline SatResult<float> chosen_contact(const PreparedShape<float>& a, const Rigi
 /// planes); where either declines, B' is posed by PreparedShape::
 /// posed_part_scratch and the manifold refreshed on it or, where the refresh
 /// declines, built by posed_manifold_on.  `rigid`: check_rigid(x) is known
-/// to pass (PosedView::pose).  Returns the contact; `refreshed` says which
-/// path built the points.
+/// to pass (PosedView::pose); `world_a`: of a refreshed manifold's points
+/// only point_a (else point_b) is in world (refresh_face_manifold).
+/// Returns the contact; `refreshed` says which path built the points.
 inline SatResult<float> kept_manifold(const PreparedShape<float>& a, const RigidTransform<float>& pose_a,
                                       const PreparedShape<float>& b, const RigidTransform<float>& x,
                                       bool rigid, const SatResult<float>& last, double margin,
-                                      const KeptFace& face, PosedView& view, ContactManifold<float>& out,
-                                      bool& refreshed) {
+                                      const KeptFace& face, bool world_a, PosedView& view,
+                                      ContactManifold<float>& out, bool& refreshed) {
   const bool face_b = last.feature.type == FeatureType::FaceB;
   if (view.pose(b.polyhedron(), x, rigid) && (!face_b || view.derive(last.feature.b))) {
     const SatResult<float> r = kept_contact(a.polyhedron(), view, pose_a, last);
@@ -49,7 +50,7 @@ inline SatResult<float> kept_manifold(const PreparedShape<float>& a, const Rigid
       for (const int h : view.vertex_half_edges(r.feature.b))
         planes = planes && view.derive(view.half_edge(h).face);
     }
-    if (planes && refresh_face_manifold(a.polyhedron(), pose_a, view, r, margin, face, out)) {
+    if (planes && refresh_face_manifold(a.polyhedron(), pose_a, view, r, margin, face, world_a, out)) {
       refreshed = true;
       return r;
     }
@@ -67,7 +68,7 @@ inline SatResult<float> kept_manifold(const PreparedShape<float>& a, const Rigid
     for (const int h : bp->vertex_half_edges(r.feature.b)) faces.push_back(bp->half_edge(h).face);
     bp = &b.posed_part_scratch(x, std::span<const int>(faces.data(), faces.size()), std::span<const int>());
   }
-  refreshed = refresh_face_manifold(a.polyhedron(), pose_a, *bp, r, margin, face, out);
+  refreshed = refresh_face_manifold(a.polyhedron(), pose_a, *bp, r, margin, face, world_a, out);
   if (refreshed) return r;
   SatOptions opt;
   opt.margin = margin;

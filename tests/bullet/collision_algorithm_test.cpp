@@ -485,6 +485,49 @@ TEST_CASE(
   }
 }
 
+TEST_CASE(
+    "bullet: a kept face whose polygon exceeds the fixed clip buffers keeps a fresh algorithm's points") {
+  // A 40-sided prism (80 vertices) resting on its cap, slightly tilted and
+  // jittered within the kept face's budget: the clip's polygon has 40
+  // vertices, more than the refresh's fixed buffers hold (FixedPoly, 32),
+  // so the refresh clips again in SmallVector buffers.  With the floor as
+  // body 0 and as body 1; at every step the points are a fresh algorithm's.
+  btBoxShape floor(btVector3(5, 0.5f, 5));
+  btConvexHullShape prism;
+  for (int k = 0; k < 40; ++k) {
+    const float t = 2.0f * 3.14159265f * static_cast<float>(k) / 40.0f + 0.05f;
+    prism.addPoint(btVector3(0.1f * std::cos(t), -0.03f, 0.1f * std::sin(t)), false);
+    prism.addPoint(btVector3(0.1f * std::cos(t), 0.03f, 0.1f * std::sin(t)), false);
+  }
+  prism.recalcLocalAabb();
+  const btTransform tf = at(0, -0.5f, 0);
+  const btQuaternion tilt(btVector3(0.3f, 0.1f, 0.8f).normalized(), 2e-3f);
+  for (const bool floor_first : {true, false}) {
+    btCollisionShape* s0 = floor_first ? static_cast<btCollisionShape*>(&floor) : &prism;
+    btCollisionShape* s1 = floor_first ? static_cast<btCollisionShape*>(&prism) : &floor;
+    const btTransform tp = at(0.2f, 0.029f, -0.1f, tilt);
+    Pair kept(s0, s1, floor_first ? tf : tp, floor_first ? tp : tf, true);
+    REQUIRE(kept.manifold());
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<float> u(-1, 1);
+    std::vector<btTransform> poses;  // body 1: the prism, or the floor
+    for (int step = 0; step < 20; ++step) {
+      const btQuaternion q =
+          tilt * btQuaternion(btVector3(u(rng), u(rng), u(rng)).normalized(), 1e-5f * u(rng));
+      const btVector3 d(1e-6f * u(rng), 1e-6f * u(rng), 1e-6f * u(rng));
+      poses.push_back(floor_first ? btTransform(q, tp.getOrigin() + d)
+                                  : btTransform(btQuaternion::getIdentity(), tf.getOrigin() + d));
+    }
+    const auto counts = follow_fresh(kept, s0, s1, poses);
+    for (const std::size_t n : counts) CHECK(n == 4);
+    const auto cnt = kept.cf->counters();
+    CHECK(cnt.queries == 1);
+    CHECK(cnt.kept == 20);
+    CHECK(cnt.refreshed == cnt.kept);
+    CHECK(cnt.reduced == cnt.kept);
+  }
+}
+
 TEST_CASE("bullet: a kept face refuses a pose that is not a rotation, as a query does") {
   // B's basis scaled by 1 + 4e-4: |R^T R - I|_F = sqrt(3) (s^2 - 1) = 1.4e-3,
   // beyond posing's 1e-3, while |R1 - R0|_F reach = 6e-4 stays within the
