@@ -9,7 +9,7 @@
 //      its boundary is the horizon, coned to the eye; the removed faces' points are assigned to new faces.
 //   4. sweep (float T): points kept on a face within eps are tested against the faces around them again.
 //   5. merge_and_build (face_merge.hpp) groups the triangles into faces.
-//   6. remove_vertices (float T, large hulls): the vertices the clean-up rejects out of the triangles, each
+//   6. remove_vertices (float, large hulls): the vertices the clean-up rejects out of the triangles, each
 //      vertex's star replaced by a cap over its link, and quickhull and the face stage go on from there.
 // The predicates (outside, sees, zero_area, the eye) are HullTraits<T>'s (traits.hpp).
 #pragma once
@@ -24,6 +24,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -580,15 +581,15 @@ inline void Builder<T>::expand() {
   }
 }
 
-/// Float T, on a triangulation of at least kLocalRemovalFaces live triangles: the vertices the clean-up
+/// Float (not double), on at least kLocalRemovalFaces live triangles: the vertices the clean-up
 /// rejected are taken out of the last build's quickhull triangles one at a time (remove_vertex), so the
-/// build goes on from there (quickhull_and_faces) instead of starting over without them.  Exact T (whose
-/// output must not depend on it) and small hulls (cheap to build again) always start over.  False when
-/// the triangles cannot take the removal (not a solid build's; a vertex's hole that remove_vertex does not
-/// fill): the caller then builds from the start, which resets the triangles.
+/// build goes on from there (quickhull_and_faces) instead of starting over without them.  Exact T, double
+/// (whose results stay those of the builds from the start) and small hulls (cheap to build again) always
+/// start over.  False when the triangles cannot take the removal (not a solid build's; a vertex's hole
+/// that remove_vertex does not fill): the caller then builds from the start, which resets the triangles.
 template <Number T>
 inline bool Builder<T>::remove_vertices(const std::vector<int>& reject) {
-  if constexpr (!Traits::kRepairs) {
+  if constexpr (!Traits::kRepairs || !std::is_same_v<T, float>) {
     return false;
   } else {
     if (!solid_tris_) return false;

@@ -2,7 +2,7 @@
 //
 // The whole build (Builder::run):
 //   1. welding (welded_points.hpp);
-//   2. build passes: build, then the points the clean-up rejects taken out of the triangles (float T, large
+//   2. build passes: build, then the points the clean-up rejects taken out of the triangles (float, large
 //      hulls: remove_vertices, quickhull.hpp) or the hull rebuilt without them, until a hull validates;
 //   3. float T: every point that is not a vertex is measured against the result (outside_points); points
 //      more than kHullRepairTolerance x eps out are pinned and put back, and the hull rebuilt (from the last
