@@ -581,6 +581,27 @@ TEMPLATE_TEST_CASE("large hull: a height-field grid whose corner defeats the win
   CHECK(max_outside(h, pts) <= kHullRepairTolerance);
 }
 
+// Dense points on a sphere in float: the faces merged within eps have corners within eps of their
+// neighbours' line, which the clean-up rejects; on this many triangles they are taken out of the last
+// quickhull triangles (Builder::remove_vertices) rather than the hull built again.  The result holds the
+// guarantees of a build from the start.
+TEST_CASE("large hull: the clean-up's rejected corners taken out of the triangles", "[hull][large]") {
+  using T = float;
+  std::mt19937 rng(42);
+  std::normal_distribution<double> nd;
+  std::vector<Vec3<T>> pts;
+  while (pts.size() < 20000) {
+    const double x = nd(rng), y = nd(rng), z = nd(rng), l = std::sqrt(x * x + y * y + z * z);
+    pts.push_back(vec_cast<T>(Vec3<double>(x / l, y / l, z / l)));
+  }
+  const auto h = convex_hull(pts);
+  INFO(h.vertex_count() << " vertices, " << h.face_count() << " faces");
+  CHECK(h.vertex_count() < static_cast<int>(pts.size()));  // (faces merged: corners tested)
+  CHECK(vertices_are_inputs(h, pts));
+  CHECK(max_vertex_height(h) <= Tolerances<T>::kConvexity * h.extent());
+  CHECK(max_outside(h, pts) <= kHullRepairTolerance);
+}
+
 // A 0.4-unit piece 150 units from the origin: built in its own frame, whose
 // origin makes every subtraction exact, so every world vertex is an input point.
 TEMPLATE_TEST_CASE("far piece: convex_hull_local builds it in its own frame", "[hull][local]", float,

@@ -128,6 +128,8 @@ class Builder {
                                            std::vector<int>& reject);
   std::optional<ConvexPolyhedron<T>> quickhull_and_faces(std::vector<int>& reject);
   void expand();
+  bool remove_vertices(const std::vector<int>& reject);
+  bool remove_vertex(int v, int from);
   // ---- flat_hull.hpp ----
   std::optional<ConvexPolyhedron<T>> polygon(const std::vector<int>& active, const Vec3<T>& n,
                                              std::vector<int>& reject);
@@ -184,6 +186,7 @@ class Builder {
   std::vector<char> pinned_;        // float: points a repair pass put back
   bool any_pinned_ = false;
   bool resumable_ = false;                   // float: tris_ is the last (solid) result's triangulation
+  bool solid_tris_ = false;                  ///< tris_ is the last solid build's quickhull triangulation
   std::vector<char> out_vertex_;             // vertices of the last output
   std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
   std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)

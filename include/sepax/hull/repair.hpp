@@ -2,7 +2,8 @@
 //
 // The whole build (Builder::run):
 //   1. welding (welded_points.hpp);
-//   2. build passes: build, and rebuild without the points the clean-up rejects, until a hull validates;
+//   2. build passes: build, then the points the clean-up rejects taken out of the triangles (float, large
+//      hulls: remove_vertices, quickhull.hpp) or the hull rebuilt without them, until a hull validates;
 //   3. float T: every point that is not a vertex is measured against the result (outside_points); points
 //      more than kHullRepairTolerance x eps out are pinned and put back, and the hull rebuilt (from the last
 //      pass's quickhull triangles when they can take the pinned points, resume), for at most
@@ -30,7 +31,8 @@
 
 namespace sepax::hull::detail {
 
-/// Build, and rebuild without the points the clean-up rejects, until a hull validates.  A pass after the
+/// Build, then take the points the clean-up rejects out of the triangles and go on from there
+/// (remove_vertices), or when they cannot be, rebuild without them, until a hull validates.  A pass after the
 /// first (may_fail) may reject points until the rest is Collinear or too few: it then returns none, and the
 /// best earlier pass is kept.  A repair pass (float T) first offers the points it pinned to the previous
 /// pass's triangles (resume); it builds from the start when they cannot take them.
@@ -38,24 +40,33 @@ template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::build_pass(bool may_fail,
                                                                  const std::vector<int>& pinned) {
   try {
-    if (!pinned.empty()) {
-      std::vector<int> reject;
-      if (std::optional<ConvexPolyhedron<T>> result = resume(pinned, reject)) return result;
-      for (int r : reject) removed_[as_index(r)] = 1;
-    }
+    std::optional<ConvexPolyhedron<T>> result;
+    std::vector<int> reject;
+    if (!pinned.empty()) result = resume(pinned, reject);
+    bool built = result || !reject.empty();  // (none with reject empty: the triangles could not resume)
     resumable_ = false;
     for (;;) {
-      std::vector<int> active;
-      for (std::size_t i = 0; i < pts_.size(); ++i)
-        if (!removed_[i]) active.push_back(static_cast<int>(i));
-      std::vector<int> reject;
-      std::optional<ConvexPolyhedron<T>> result = build(active, reject);
+      if (!built) {
+        std::vector<int> active;
+        for (std::size_t i = 0; i < pts_.size(); ++i)
+          if (!removed_[i]) active.push_back(static_cast<int>(i));
+        result = build(active, reject);
+      }
+      built = false;
+      // the clean-up's rejects out of the triangles where they can be (remove_vertices), else the next
+      // build starts over without them
+      while (!result && !reject.empty()) {
+        for (int r : reject) removed_[as_index(r)] = 1;
+        if (!remove_vertices(reject)) break;
+        reject.clear();
+        result = quickhull_and_faces(reject);
+      }
       if (result) {
         resumable_ = !result->is_flat();
         return result;
       }
       if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
-      for (int r : reject) removed_[as_index(r)] = 1;
+      reject.clear();
     }
   } catch (const InvalidInput&) {
     if (!may_fail) throw;
