@@ -721,7 +721,8 @@ inline bool Builder<T>::remove_vertex(int v, int from) {
     o.nb[as_index(edge_index(o, e.b))] = nt;
     // its other edges x -> y (at position k): met by the open edge x -> y, else open for y -> x
     const std::array<std::array<int, 3>, 2> sides{{{e.b, best, 1}, {best, e.a, 2}}};
-    for (const auto& [x, y, k] : sides) {
+    for (const std::array<int, 3>& side : sides) {
+      const int x = side[0], y = side[1], k = side[2];  // (named ints: lambdas below capture them)
       const auto match =
           std::find_if(open.begin(), open.end(), [&](const Open& m) { return m.a == x && m.b == y; });
       if (match != open.end()) {
