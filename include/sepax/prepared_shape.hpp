@@ -55,14 +55,12 @@ PoseScratch<T>& pose_scratch() {
 template <Number T>
 bool same_pose(const RigidTransform<T>& p, const RigidTransform<T>& q) {
   if constexpr (std::is_floating_point_v<T>) {
-    // bit-identical (the posed vertices are then bit-identical too)
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
-        if (std::memcmp(&p.rotation(i, j), &q.rotation(i, j), sizeof(T)) != 0) return false;
-      }
-      if (std::memcmp(&p.translation[i], &q.translation[i], sizeof(T)) != 0) return false;
-    }
-    return true;
+    // bit-identical (the posed vertices are then bit-identical too): the
+    // rotation's nine and the translation's three values, compared as bytes
+    static_assert(sizeof(typename RigidTransform<T>::Matrix3) == 9 * sizeof(T) &&
+                  sizeof(Vec3<T>) == 3 * sizeof(T));
+    return std::memcmp(p.rotation.data(), q.rotation.data(), 9 * sizeof(T)) == 0 &&
+           std::memcmp(p.translation.data(), q.translation.data(), 3 * sizeof(T)) == 0;
   } else {
     return p.rotation == q.rotation && p.translation == q.translation;
   }
