@@ -1,7 +1,7 @@
 // sepax/convex_polyhedron.hpp
 //
 // ConvexPolyhedron<T>: a validated convex polyhedron as a half-edge mesh, and
-// the records it is made of (HalfEdge, FaceLoop, Plane, plane_through()).
+// the records it is made of (HalfEdge, FaceLoop; its planes: plane.hpp).
 // The class declares everything here, with the public accessors; its larger
 // steps are defined in one header per concept, included at the end:
 //   convex_polyhedron_topology.hpp    face lists to half-edges, vertex fans and
@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "error.hpp"
+#include "plane.hpp"
 #include "number_traits.hpp"
 #include "tolerances.hpp"
 #include "simd_ops.hpp"
@@ -136,34 +137,7 @@ class SharedTopology {
 
 }  // namespace detail
 
-template <class T>
-struct Plane {
-  Vec3<T> normal;  // outward; unit length iff number_traits<T>::normalizes
-  T offset;        // normal . x == offset on the plane
-};
-
 namespace detail {
-
-/// Float and double: |N| / L^2 for N = (b - a) x (c - a) and L the longest
-/// side of triangle abc, i.e. its height over its longest side (computed on the
-/// sides scaled by a power of two, so at any scale; 0 for a zero or
-/// non-finite side).  Rounding alone gives collinear points an aspect up to
-/// about 14u; ConvexPolyhedron refuses faces whose plane triangle has an
-/// aspect not above Tolerances::sliver (and the hull builder checks 2x that).
-template <class T>
-double triangle_aspect(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
-  static_assert(std::is_floating_point_v<T>);
-  Vec3<T> u(b - a), w(c - a);
-  const T m = max_abs2(u, w);
-  if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return 0;
-  const int e = pow2_exponent(m);
-  u = scale_pow2(u, e);
-  w = scale_pow2(w, e);
-  const double n = std::sqrt(static_cast<double>(squared_norm(cross(u, w))));
-  const double l2 =
-      static_cast<double>(std::max({squared_norm(u), squared_norm(w), squared_norm(Vec3<T>(w - u))}));
-  return n / l2;
-}
 
 /// A double computed on demand and kept: NaN means "not computed yet".  A
 /// relaxed atomic, so concurrent readers of a const shape may all compute it
@@ -187,38 +161,6 @@ class LazyDouble {
 };
 
 }  // namespace detail
-
-/// Plane through three points, normalised when T normalises.
-///
-/// For float and double the unit normal is scale-safe (scaled_cross in
-/// vec3.hpp): when |N|^2 of N = (b - a) x (c - a) would overflow or underflow
-/// (coordinates beyond about 1e+-77 for double, 1e+-9 for float), N is taken
-/// from b - a and c - a scaled by a power of two.  Wherever the unscaled
-/// formula neither overflows nor underflows the normal is bit for bit the one
-/// it gives -- the same planes as before, and the robust kernel's error bound
-/// on them (robust_kernel.hpp, normal_error; normal_conditioning() here)
-/// still holds.  If b - a or c - a themselves overflow, the normal is not
-/// finite; ConvexPolyhedron reports that as BadScale.
-template <Number T>
-inline Plane<T> plane_through_cross(const Vec3<T>& a, const Vec3<T>& e1, const Vec3<T>& e2, const Vec3<T>& c);
-template <Number T>
-inline Plane<T> plane_through(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
-  const Vec3<T> e1(b - a), e2(c - a);
-  return plane_through_cross(a, e1, e2, Vec3<T>(cross(e1, e2)));
-}
-/// plane_through(a, a + e1, a + e2) given e1 = b - a, e2 = c - a (as T
-/// computes them) and c = cross(e1, e2), computed by the caller.
-template <Number T>
-inline Plane<T> plane_through_cross(const Vec3<T>& a, const Vec3<T>& e1, const Vec3<T>& e2,
-                                    const Vec3<T>& c) {
-  Vec3<T> n = scaled_cross(e1, e2, c);
-  if constexpr (number_traits<T>::normalizes) {
-    const T len = number_traits<T>::sqrt(squared_norm(n));
-    if (len > T(0)) n = Vec3<T>(n[0] / len, n[1] / len, n[2] / len);
-  }
-  const T off = dot(n, a);
-  return Plane<T>{n, off};
-}
 
 namespace hull::detail {
 template <class T>
