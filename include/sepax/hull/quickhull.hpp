@@ -375,7 +375,7 @@ template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<int>& active, int a, int b,
                                                             int c, int d, std::vector<int>& reject) {
   tris_.clear();
-  solid_tris_ = true;
+  tris_state_ = TrisState::solid_build;
   live_faces_.clear();
   live_made_ = 0;
   live_tree_.reset();
@@ -592,8 +592,8 @@ inline bool Builder<T>::remove_vertices(const std::vector<int>& reject) {
   if constexpr (!Traits::kRepairs || !std::is_same_v<T, float>) {
     return false;
   } else {
-    if (!solid_tris_) return false;
-    solid_tris_ = false;                    // (until every removal has succeeded)
+    if (tris_state_ == TrisState::none) return false;
+    tris_state_ = TrisState::none;          // (until every removal has succeeded)
     std::vector<int> where(q_.size(), -2);  // rejected point -> a live triangle around it (-1: none found)
     for (int r : reject) where[as_index(r)] = -1;
     std::size_t live = 0;
@@ -615,7 +615,7 @@ inline bool Builder<T>::remove_vertices(const std::vector<int>& reject) {
       if (t < 0 || !remove_vertex(r, t)) return false;
     }
     std::erase_if(active_, [&](int p) { return where[as_index(p)] != -2; });
-    solid_tris_ = true;
+    tris_state_ = TrisState::solid_build;
     return true;
   }
 }
