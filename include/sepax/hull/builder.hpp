@@ -69,6 +69,13 @@ struct RepairLog {
   double nearest_out = 0, nearest_height = 0, lowest_height = 0;  ///< x eps
 };
 
+/// What Builder::tris_ holds.
+enum class TrisState {
+  none,          ///< nothing to go on from (no build yet, a flat build, or a removal that failed)
+  solid_build,   ///< the last solid build's quickhull triangulation (its clean-up may have rejected points)
+  solid_result,  ///< float: that triangulation is the last pass's solid result's, every conflict list empty
+};
+
 /// The hull algorithm of convex_hull (convex_hull.hpp); allow_tent is false for a tent's own build.
 template <Number T>
 ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent);
@@ -185,8 +192,7 @@ class Builder {
   std::vector<char> removed_;       // points the clean-up rejected (put back when pinned)
   std::vector<char> pinned_;        // float: points a repair pass put back
   bool any_pinned_ = false;
-  bool resumable_ = false;                   // float: tris_ is the last (solid) result's triangulation
-  bool solid_tris_ = false;                  ///< tris_ is the last solid build's quickhull triangulation
+  TrisState tris_state_ = TrisState::none;   ///< what tris_ holds: remove_vertices and resume go on from it
   std::vector<char> out_vertex_;             // vertices of the last output
   std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
   std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)

@@ -26,7 +26,7 @@ namespace sepax::hull::detail {
 template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::polygon(const std::vector<int>& active,
                                                               const Vec3<T>& n, std::vector<int>& reject) {
-  solid_tris_ = false;
+  tris_state_ = TrisState::none;
   // Sort on the two coordinates other than n's largest component (exact
   // for exact T); decide turns in 3D against n.
   int k = 0;

@@ -375,7 +375,7 @@ template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<int>& active, int a, int b,
                                                             int c, int d, std::vector<int>& reject) {
   tris_.clear();
-  solid_tris_ = true;
+  tris_state_ = TrisState::solid_build;
   live_faces_.clear();
   live_made_ = 0;
   live_tree_.reset();
@@ -592,8 +592,8 @@ inline bool Builder<T>::remove_vertices(const std::vector<int>& reject) {
   if constexpr (!Traits::kRepairs || !std::is_same_v<T, float>) {
     return false;
   } else {
-    if (!solid_tris_) return false;
-    solid_tris_ = false;                    // (until every removal has succeeded)
+    if (tris_state_ == TrisState::none) return false;
+    tris_state_ = TrisState::none;          // (until every removal has succeeded)
     std::vector<int> where(q_.size(), -2);  // rejected point -> a live triangle around it (-1: none found)
     for (int r : reject) where[as_index(r)] = -1;
     std::size_t live = 0;
@@ -615,7 +615,7 @@ inline bool Builder<T>::remove_vertices(const std::vector<int>& reject) {
       if (t < 0 || !remove_vertex(r, t)) return false;
     }
     std::erase_if(active_, [&](int p) { return where[as_index(p)] != -2; });
-    solid_tris_ = true;
+    tris_state_ = TrisState::solid_build;
     return true;
   }
 }
@@ -630,9 +630,12 @@ inline bool Builder<T>::remove_vertices(const std::vector<int>& reject) {
 /// edge between the other points, so the link's edges stay edges and the cap is the hull's there.  The cap
 /// is kept only as a disk (every edge met twice, 2 I + B - 2 triangles on B boundary and I inner
 /// vertices) of triangles with area, each convex within eps across each of its edges both ways (a
-/// neighbour's far vertex at most eps above it, and its own at most eps above the neighbour); else false,
-/// the triangles left changed.  The candidates that are not vertices of the cap are assigned to the cap's
-/// triangles (a conflict list, or kept on a face within eps), and quickhull goes on from there.
+/// neighbour's far vertex at most eps above it, and its own at most eps above the neighbour).  A cap not
+/// kept (its triangles left dead) is wrapped again over the link's points alone, the hull of the link,
+/// held to the same test; the star's other points then go back to quickhull with the rest.  When neither
+/// cap is kept, false, the triangles left changed.  The candidates that are not vertices of the cap are
+/// assigned to the cap's triangles (a conflict list, or kept on a face within eps), and quickhull goes on
+/// from there: its cone steps add those outside the cap.
 template <Number T>
 inline bool Builder<T>::remove_vertex(int v, int from) {
   std::vector<int> star(1, from);
@@ -679,79 +682,101 @@ inline bool Builder<T>::remove_vertex(int v, int from) {
     std::vector<int>().swap(t.conflict);
     std::vector<int>().swap(t.on);
   }
-  const int first_cap = static_cast<int>(tris_.size());
   const std::size_t boundary = open.size();
-  while (!open.empty()) {
-    if (tris_.size() - as_index(first_cap) > 2 * cand.size()) return false;
-    const Open e = open.back();
-    open.pop_back();
-    const Vec3<T>& pa = local_point(e.a);
-    const Vec3<T>& pb = local_point(e.b);
-    const Plane<T>& outer = tris_[as_index(e.across)].pl;
-    auto facing = [&](int q) {
-      return dot(cross(Vec3<T>(pb - pa), Vec3<T>(local_point(q) - pa)), up) > T(0) &&
-             !(height(outer, q) > T(0));
+  std::vector<int> link;  // (the link's points: the second attempt's candidates)
+  for (const Open& e : open) link.push_back(e.a);
+  std::sort(link.begin(), link.end());
+  const std::vector<Open> hole = open;
+  std::vector<int> cap_vertices;  // (sorted, of the last cap wrapped)
+  // The cap gift-wrapped from the hole's boundary over the candidates pool, its triangles from tris_[first]:
+  // false when it is not kept (its triangles then dead, the boundary's neighbours still pointing at them).
+  auto wrap = [&](const std::vector<int>& pool, int first) {
+    auto fail = [&] {
+      for (std::size_t f = as_index(first); f < tris_.size(); ++f) tris_[f].alive = false;
+      return false;
     };
-    int p = -1;
-    Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};
-    for (const int q : cand) {
-      if (q == e.a || q == e.b || !facing(q)) continue;
-      if (p < 0 || height(pl, q) > T(0)) {
-        p = q;
-        pl = plane_through(pa, pb, local_point(q));
+    open = hole;
+    while (!open.empty()) {
+      if (tris_.size() - as_index(first) > 2 * pool.size()) return fail();
+      const Open e = open.back();
+      open.pop_back();
+      const Vec3<T>& pa = local_point(e.a);
+      const Vec3<T>& pb = local_point(e.b);
+      const Plane<T>& outer = tris_[as_index(e.across)].pl;
+      auto facing = [&](int q) {
+        return dot(cross(Vec3<T>(pb - pa), Vec3<T>(local_point(q) - pa)), up) > T(0) &&
+               !(height(outer, q) > T(0));
+      };
+      int p = -1;
+      Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};
+      for (const int q : pool) {
+        if (q == e.a || q == e.b || !facing(q)) continue;
+        if (p < 0 || height(pl, q) > T(0)) {
+          p = q;
+          pl = plane_through(pa, pb, local_point(q));
+        }
+      }
+      if (p < 0) return fail();
+      // (the Delaunay choice among the ties: the largest angle at p)
+      T best_cos(2);
+      int best = p;
+      for (const int q : pool) {
+        if (q == e.a || q == e.b || !facing(q) || height(pl, q) < -tie) continue;
+        const Vec3<T> qa(pa - local_point(q)), qb(pb - local_point(q));
+        const T c = T(dot(qa, qb) / (length(qa) * length(qb)));
+        if (c < best_cos) {
+          best_cos = c;
+          best = q;
+        }
+      }
+      const int nt = new_tri(e.a, e.b, best);
+      if (Traits::zero_area(*this, nt)) return fail();
+      Tri& o = tris_[as_index(e.across)];
+      tris_[as_index(nt)].nb[0] = e.across;
+      o.nb[as_index(edge_index(o, e.b))] = nt;
+      // its other edges x -> y (at position k): met by the open edge x -> y, else open for y -> x
+      const std::array<std::array<int, 3>, 2> sides{{{e.b, best, 1}, {best, e.a, 2}}};
+      for (const std::array<int, 3>& side : sides) {
+        const int x = side[0], y = side[1], k = side[2];  // (named ints: lambdas below capture them)
+        const auto match =
+            std::find_if(open.begin(), open.end(), [&](const Open& m) { return m.a == x && m.b == y; });
+        if (match != open.end()) {
+          Tri& m = tris_[as_index(match->across)];
+          tris_[as_index(nt)].nb[as_index(k)] = match->across;
+          m.nb[as_index(edge_index(m, y))] = nt;
+          open.erase(match);
+        } else {
+          if (std::any_of(open.begin(), open.end(), [&](const Open& m) { return m.a == y && m.b == x; }))
+            return fail();  // (the edge y -> x already needed: the cap would not be a surface)
+          open.push_back({y, x, nt});
+        }
       }
     }
-    if (p < 0) return false;
-    // (the Delaunay choice among the ties: the largest angle at p)
-    T best_cos(2);
-    int best = p;
-    for (const int q : cand) {
-      if (q == e.a || q == e.b || !facing(q) || height(pl, q) < -tie) continue;
-      const Vec3<T> qa(pa - local_point(q)), qb(pb - local_point(q));
-      const T c = T(dot(qa, qb) / (length(qa) * length(qb)));
-      if (c < best_cos) {
-        best_cos = c;
-        best = q;
+    // a disk, convex within eps across each of its edges
+    cap_vertices.clear();
+    for (std::size_t f = as_index(first); f < tris_.size(); ++f)
+      for (const int u : tris_[f].v) cap_vertices.push_back(u);
+    std::sort(cap_vertices.begin(), cap_vertices.end());
+    cap_vertices.erase(std::unique(cap_vertices.begin(), cap_vertices.end()), cap_vertices.end());
+    const std::size_t inner = cap_vertices.size() - boundary;
+    if (tris_.size() - as_index(first) != 2 * inner + boundary - 2) return fail();
+    for (std::size_t f = as_index(first); f < tris_.size(); ++f) {
+      const Tri& t = tris_[f];
+      for (int i = 0; i < 3; ++i) {
+        const Tri& n = tris_[as_index(t.nb[as_index(i)])];
+        const int across = n.v[as_index((edge_index(n, t.v[as_index(i)]) + 1) % 3)];
+        if (height(t.pl, across) > eps_ || height(n.pl, t.v[as_index((i + 2) % 3)]) > eps_) {
+          return fail();
+        }
       }
     }
-    const int nt = new_tri(e.a, e.b, best);
-    if (Traits::zero_area(*this, nt)) return false;
-    Tri& o = tris_[as_index(e.across)];
-    tris_[as_index(nt)].nb[0] = e.across;
-    o.nb[as_index(edge_index(o, e.b))] = nt;
-    // its other edges x -> y (at position k): met by the open edge x -> y, else open for y -> x
-    const std::array<std::array<int, 3>, 2> sides{{{e.b, best, 1}, {best, e.a, 2}}};
-    for (const std::array<int, 3>& side : sides) {
-      const int x = side[0], y = side[1], k = side[2];  // (named ints: lambdas below capture them)
-      const auto match =
-          std::find_if(open.begin(), open.end(), [&](const Open& m) { return m.a == x && m.b == y; });
-      if (match != open.end()) {
-        Tri& m = tris_[as_index(match->across)];
-        tris_[as_index(nt)].nb[as_index(k)] = match->across;
-        m.nb[as_index(edge_index(m, y))] = nt;
-        open.erase(match);
-      } else {
-        if (std::any_of(open.begin(), open.end(), [&](const Open& m) { return m.a == y && m.b == x; }))
-          return false;  // (the edge y -> x already needed: the cap would not be a surface)
-        open.push_back({y, x, nt});
-      }
-    }
-  }
-  // a disk, convex within eps across each of its edges
-  std::vector<int> cap_vertices;
-  for (std::size_t f = as_index(first_cap); f < tris_.size(); ++f)
-    for (const int u : tris_[f].v) cap_vertices.push_back(u);
-  std::sort(cap_vertices.begin(), cap_vertices.end());
-  cap_vertices.erase(std::unique(cap_vertices.begin(), cap_vertices.end()), cap_vertices.end());
-  const std::size_t inner = cap_vertices.size() - boundary;
-  if (tris_.size() - as_index(first_cap) != 2 * inner + boundary - 2) return false;
-  for (std::size_t f = as_index(first_cap); f < tris_.size(); ++f) {
-    const Tri& t = tris_[f];
-    for (int i = 0; i < 3; ++i) {
-      const Tri& n = tris_[as_index(t.nb[as_index(i)])];
-      const int across = n.v[as_index((edge_index(n, t.v[as_index(i)]) + 1) % 3)];
-      if (height(t.pl, across) > eps_ || height(n.pl, t.v[as_index((i + 2) % 3)]) > eps_) return false;
-    }
+    return true;
+  };
+  int first_cap = static_cast<int>(tris_.size());
+  if (!wrap(cand, first_cap)) {
+    if (cand.size() == link.size()) return false;  // (the link is every candidate: the same cap)
+    first_cap = static_cast<int>(tris_.size());
+    if (!wrap(link, first_cap)) return false;
   }
   for (const int q : cand)
     if (q != v && !std::binary_search(cap_vertices.begin(), cap_vertices.end(), q)) assign(q, first_cap);

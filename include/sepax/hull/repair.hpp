@@ -44,7 +44,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::build_pass(bool may_fail,
     std::vector<int> reject;
     if (!pinned.empty()) result = resume(pinned, reject);
     bool built = result || !reject.empty();  // (none with reject empty: the triangles could not resume)
-    resumable_ = false;
+    if (tris_state_ == TrisState::solid_result) tris_state_ = TrisState::solid_build;
     for (;;) {
       if (!built) {
         std::vector<int> active;
@@ -62,7 +62,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::build_pass(bool may_fail,
         result = quickhull_and_faces(reject);
       }
       if (result) {
-        resumable_ = !result->is_flat();
+        if (!result->is_flat()) tris_state_ = TrisState::solid_result;  // (a flat one is polygon's: none)
         return result;
       }
       if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
@@ -88,8 +88,8 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::resume(const std::vector<i
   if constexpr (!Traits::kRepairs) {
     return std::nullopt;
   } else {
-    if (!resumable_) return std::nullopt;
-    resumable_ = false;
+    if (tris_state_ != TrisState::solid_result) return std::nullopt;
+    tris_state_ = TrisState::solid_build;
     std::vector<char> mark(q_.size(), 0);  // 1: pinned now; 2: a vertex of a live triangle
     std::size_t live = 0;
     for (const Tri& t : tris_) {
@@ -116,7 +116,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::resume(const std::vector<i
     std::sort(active_.begin(), active_.end());
     active_.erase(std::unique(active_.begin(), active_.end()), active_.end());
     std::optional<ConvexPolyhedron<T>> result = quickhull_and_faces(reject);
-    if (result) resumable_ = !result->is_flat();
+    if (result && !result->is_flat()) tris_state_ = TrisState::solid_result;
     return result;
   }
 }
