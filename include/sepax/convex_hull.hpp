@@ -30,6 +30,7 @@
 #include "hull/quickhull.hpp"
 #include "hull/repair.hpp"
 #include "hull/traits.hpp"
+#include "hull/vertex_removal.hpp"
 #include "hull/welded_points.hpp"
 #include "number_traits.hpp"
 #include "tolerances.hpp"

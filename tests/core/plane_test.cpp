@@ -42,8 +42,8 @@ TEMPLATE_TEST_CASE("plane_through: scale-safe where |N|^2 would overflow or unde
   }
 }
 
-TEMPLATE_TEST_CASE("plane_through_cross is plane_through given the differences and cross product",
-                   "[plane]", float, double) {
+TEMPLATE_TEST_CASE("plane_through_cross is plane_through given the differences and cross product", "[plane]",
+                   float, double) {
   using T = TestType;
   const Vec3<T> a(T(0.25), T(-1.5), T(2)), b(T(1.75), T(0.5), T(-1)), c(T(-0.5), T(2.25), T(0.75));
   const Vec3<T> e1(b - a), e2(c - a);
@@ -51,8 +51,7 @@ TEMPLATE_TEST_CASE("plane_through_cross is plane_through given the differences a
   const Plane<T> q = plane_through_cross(a, e1, e2, Vec3<T>(cross(e1, e2)));
   for (int i = 0; i < 3; ++i) CHECK(p.normal[i] == q.normal[i]);
   CHECK(p.offset == q.offset);
-  CHECK(std::abs(static_cast<double>(squared_norm(p.normal)) - 1.0) <
-        8 * std::numeric_limits<T>::epsilon());
+  CHECK(std::abs(static_cast<double>(squared_norm(p.normal)) - 1.0) < 8 * std::numeric_limits<T>::epsilon());
   // every vertex on the plane, within rounding of the offset
   for (const Vec3<T>* v : {&a, &b, &c})
     CHECK(std::abs(static_cast<double>(dot(p.normal, *v)) - static_cast<double>(p.offset)) <

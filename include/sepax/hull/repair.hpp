@@ -3,7 +3,7 @@
 // The whole build (Builder::run):
 //   1. welding (welded_points.hpp);
 //   2. build passes: build, then the points the clean-up rejects taken out of the triangles (float, large
-//      hulls: remove_vertices, quickhull.hpp) or the hull rebuilt without them, until a hull validates;
+//      hulls: remove_vertices, vertex_removal.hpp) or the hull rebuilt without them, until a hull validates;
 //   3. float T: every point that is not a vertex is measured against the result (outside_points); points
 //      more than kHullRepairTolerance x eps out are pinned and put back, and the hull rebuilt (from the last
 //      pass's quickhull triangles when they can take the pinned points, resume), for at most
@@ -28,6 +28,7 @@
 #include "hull_distance.hpp"
 #include "plane_tree.hpp"
 #include "quickhull.hpp"
+#include "vertex_removal.hpp"
 
 namespace sepax::hull::detail {
 
