@@ -58,8 +58,11 @@ struct KeptFace {
 
 /// A clip polygon in a fixed array of kCapacity vertices: the
 /// subset of SmallVector (small_vector.hpp) that incident_polygon,
-/// clip_polygon, clip_detail::clip_with and weld_polygon use, without
-/// SmallVector's choice between inline and heap storage at every access.
+/// clip_polygon, clip_detail::clip_with and weld_polygon use, with a
+/// push_back that never leaves the caller: SmallVector's grows through an
+/// out-of-line call, across which the clip loop reloads both polygons'
+/// storage and sizes and the heights at every vertex (about 3% more
+/// instructions in the resting stack's narrowphase, docs/bullet.md).
 /// The same functions on the same vertices: the same polygon.  A vertex
 /// pushed beyond the capacity is dropped and `overflowed` set: the caller
 /// then discards the result and clips again in SmallVector buffers (a clip
