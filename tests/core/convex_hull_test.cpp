@@ -617,6 +617,22 @@ TEST_CASE("large hull: a removed corner's cap wrapped again over its link", "[hu
   CHECK(max_outside(h, pts) <= kHullRepairTolerance);
 }
 
+// The same 3 x 10^4 points: each clean-up round and each sweep after the first keeps the points whose
+// search of the faces around their own reached only faces still alive, without searching again
+// (Builder::sweep, sweep_memo_).  Such a search would find what it found before, so the polytope is the
+// one every point searched again gives: these counts are those of the build that searched every point at
+// every sweep.
+TEST_CASE("large hull: the sweep's records of kept points give the same polytope", "[hull][large]") {
+  using T = float;
+  const auto pts = to_t<T>(bench_point_set("sphere", 30000));
+  const auto h = convex_hull(pts);
+  CHECK(h.vertex_count() == 28300);
+  CHECK(h.face_count() == 44063);
+  CHECK(vertices_are_inputs(h, pts));
+  CHECK(max_vertex_height(h) <= Tolerances<T>::kConvexity * h.extent());
+  CHECK(max_outside(h, pts) <= kHullRepairTolerance);
+}
+
 // A 0.4-unit piece 150 units from the origin: built in its own frame, whose
 // origin makes every subtraction exact, so every world vertex is an input point.
 TEMPLATE_TEST_CASE("far piece: convex_hull_local builds it in its own frame", "[hull][local]", float,

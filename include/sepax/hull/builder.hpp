@@ -61,6 +61,15 @@ struct FaceGroup {
   std::vector<int> splits;                       ///< sorted ids of the split faces its triangles came from
 };
 
+/// The sweep's record of a point it kept after searching the faces around its own (first_above_nearby).
+template <Number T>
+struct SweepMemo {
+  int face = -1;          ///< the face the point was kept on (-1: no record)
+  T limit = T(0);         ///< the threshold it was tested with
+  std::size_t start = 0;  ///< the faces the search reached: Builder::sweep_faces_[start, start + size)
+  std::size_t size = 0;   ///< (every face tested, and every neighbour of a face passed through)
+};
+
 /// Float T: the best results of the repair passes (repair.hpp).
 template <Number T>
 struct RepairLog {
@@ -215,6 +224,10 @@ class Builder {
   std::optional<std::conditional_t<Traits::kRechecksRounding, PlaneTree<T>, char>> live_tree_;
   std::vector<int> live_tree_faces_;
   std::size_t live_tree_end_ = 0;
+  /// Per welded point: what the last sweep's search found for it when it kept it (SweepMemo::face -1
+  /// otherwise); the next sweep keeps it without a search while every face reached is still alive.
+  std::vector<SweepMemo<T>> sweep_memo_;
+  std::vector<int> sweep_faces_;  ///< the faces each record of sweep_memo_ reached, one after another
 };
 
 }  // namespace sepax::hull::detail

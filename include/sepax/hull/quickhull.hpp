@@ -275,6 +275,9 @@ inline T Builder<T>::threshold(int p) const {
 // point against every live face; one more than eps above any face goes
 // back to that face's conflict list and the quickhull loop runs again.
 // Each sweep that moves a point adds a vertex or drops an eye, so the sweeps terminate.
+// A point the last sweep kept after a search of the faces around its own is kept again without one while
+// its face, its threshold and every face that search reached are unchanged (sweep_memo_): a clean-up
+// round or an eye then costs searches only around the faces it replaced.
 template <Number T>
 inline bool Builder<T>::sweep() {
   if constexpr (!Traits::kRechecksRounding) {
@@ -293,6 +296,23 @@ inline bool Builder<T>::sweep() {
     const bool scan = on_count * static_cast<double>(live.size()) <= kHullPointScanPairs;
     const T reach = -(static_cast<T>(kHullOutsideBound) * eps_);
     std::vector<int> seen(scan ? 0 : tris_.size(), -1), queue;
+    // (the search's answer for a kept point is a function of the point, its face, its threshold and the
+    // faces the search reached: while every one of those is still alive, their neighbours are the same
+    // faces and the answer is the last sweep's, none above; sweep_memo_ holds what it needs to know)
+    std::vector<SweepMemo<T>> memo(scan ? 0 : q_.size());
+    std::vector<int> memo_faces;
+    if (!scan) memo_faces.reserve(sweep_faces_.size());
+    auto recall = [&](int p, int f) {
+      if (as_index(p) >= sweep_memo_.size()) return false;
+      const SweepMemo<T>& m = sweep_memo_[as_index(p)];
+      if (m.face != f || !(m.limit == threshold(p))) return false;
+      const auto first = sweep_faces_.begin() + static_cast<std::ptrdiff_t>(m.start);
+      const auto last = first + static_cast<std::ptrdiff_t>(m.size);
+      if (!std::all_of(first, last, [&](int g) { return tris_[as_index(g)].alive; })) return false;
+      memo[as_index(p)] = SweepMemo<T>{f, m.limit, memo_faces.size(), m.size};
+      memo_faces.insert(memo_faces.end(), first, last);
+      return true;
+    };
     // (the scan's first live face above a point, through a tree of their planes on many faces: the same
     // face)
     std::optional<PlaneTree<T>> planes;
@@ -314,8 +334,12 @@ inline bool Builder<T>::sweep() {
         } else if (scan) {
           for (std::size_t k = 0; k < live.size() && out < 0; ++k)
             if (height(tris_[as_index(live[k])].pl, p) > threshold(p)) out = live[k];
-        } else {
+        } else if (!recall(p, f)) {
           out = first_above_nearby(p, f, reach, seen, queue);
+          if (out < 0) {
+            memo[as_index(p)] = SweepMemo<T>{f, threshold(p), memo_faces.size(), queue.size()};
+            memo_faces.insert(memo_faces.end(), queue.begin(), queue.end());
+          }
         }
         if (out >= 0) {
           tris_[as_index(out)].conflict.push_back(p);
@@ -326,6 +350,8 @@ inline bool Builder<T>::sweep() {
       }
       on.resize(keep);
     }
+    sweep_memo_ = std::move(memo);
+    sweep_faces_ = std::move(memo_faces);
     return moved;
   }
 }
@@ -371,6 +397,8 @@ template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<int>& active, int a, int b,
                                                             int c, int d, std::vector<int>& reject) {
   tris_.clear();
+  sweep_memo_.clear();  // (the triangle indices it holds are reused)
+  sweep_faces_.clear();
   tris_state_ = TrisState::solid_build;
   live_faces_.clear();
   live_made_ = 0;
