@@ -581,6 +581,18 @@ TEMPLATE_TEST_CASE("large hull: a height-field grid whose corner defeats the win
   CHECK(max_outside(h, pts) <= kHullRepairTolerance);
 }
 
+namespace {
+
+// The guarantees of a float hull built from the start: every vertex an input point, convex within the
+// convexity tolerance, every point inside within the repair tolerance.
+void check_large_float_hull(const ConvexPolyhedron<float>& h, const std::vector<Vec3<float>>& pts) {
+  CHECK(vertices_are_inputs(h, pts));
+  CHECK(max_vertex_height(h) <= Tolerances<float>::kConvexity * h.extent());
+  CHECK(max_outside(h, pts) <= kHullRepairTolerance);
+}
+
+}  // namespace
+
 // Dense points on a sphere in float: the faces merged within eps have corners within eps of their
 // neighbours' line, which the clean-up rejects; on this many triangles they are taken out of the last
 // quickhull triangles (Builder::remove_vertices) rather than the hull built again.  The result holds the
@@ -597,40 +609,25 @@ TEST_CASE("large hull: the clean-up's rejected corners taken out of the triangle
   const auto h = convex_hull(pts);
   INFO(h.vertex_count() << " vertices, " << h.face_count() << " faces");
   CHECK(h.vertex_count() < static_cast<int>(pts.size()));  // (faces merged: corners tested)
-  CHECK(vertices_are_inputs(h, pts));
-  CHECK(max_vertex_height(h) <= Tolerances<T>::kConvexity * h.extent());
-  CHECK(max_outside(h, pts) <= kHullRepairTolerance);
+  check_large_float_hull(h, pts);
 }
 
-// The benchmark's 3 x 10^4 points on the sphere in float: among the corners the clean-up rejects is one
+// The benchmark's 3 x 10^4 points on the sphere in float.  Among the corners the clean-up rejects is one
 // whose cap over all the star's points is not kept, so it is wrapped again over the link's points alone
-// and the star's other points go back to quickhull (Builder::remove_vertex).  The result holds the
-// guarantees of a build from the start.
-TEST_CASE("large hull: a removed corner's cap wrapped again over its link", "[hull][large]") {
+// and the star's other points go back to quickhull (Builder::remove_vertex).  Each clean-up round and
+// each sweep after the first keeps the points whose search of the faces around their own reached only
+// faces still alive, without searching again (Builder::sweep, sweep_memo_): such a search would find what
+// it found before, so the counts are those of the build that searched every point at every sweep.  The
+// result holds the guarantees of a build from the start.
+TEST_CASE("large hull: a cap wrapped again over its link, and the sweep's records, give the same polytope",
+          "[hull][large]") {
   using T = float;
   const auto pts = to_t<T>(bench_point_set("sphere", 30000));
   const auto h = convex_hull(pts);
   INFO(h.vertex_count() << " vertices, " << h.face_count() << " faces");
-  CHECK(h.vertex_count() < static_cast<int>(pts.size()));
-  CHECK(vertices_are_inputs(h, pts));
-  CHECK(max_vertex_height(h) <= Tolerances<T>::kConvexity * h.extent());
-  CHECK(max_outside(h, pts) <= kHullRepairTolerance);
-}
-
-// The same 3 x 10^4 points: each clean-up round and each sweep after the first keeps the points whose
-// search of the faces around their own reached only faces still alive, without searching again
-// (Builder::sweep, sweep_memo_).  Such a search would find what it found before, so the polytope is the
-// one every point searched again gives: these counts are those of the build that searched every point at
-// every sweep.
-TEST_CASE("large hull: the sweep's records of kept points give the same polytope", "[hull][large]") {
-  using T = float;
-  const auto pts = to_t<T>(bench_point_set("sphere", 30000));
-  const auto h = convex_hull(pts);
   CHECK(h.vertex_count() == 28300);
   CHECK(h.face_count() == 44063);
-  CHECK(vertices_are_inputs(h, pts));
-  CHECK(max_vertex_height(h) <= Tolerances<T>::kConvexity * h.extent());
-  CHECK(max_outside(h, pts) <= kHullRepairTolerance);
+  check_large_float_hull(h, pts);
 }
 
 // A 0.4-unit piece 150 units from the origin: built in its own frame, whose
