@@ -47,6 +47,25 @@ RigidTransform<T> relative_pose(const RigidTransform<T>& pose_a, const RigidTran
   // would write the identity first
   typename RigidTransform<T>::Matrix3 rot;
   Vec3<T> tr;
+  if constexpr (std::is_same_v<T, float> && simd::Lanes<float>::width == 4) {
+    // Four lanes, lane i the dot products with col_i(R_a) (the rows of R_a
+    // loaded as lanes): the same products and sums in the same order per
+    // lane, so the same values (about 60 instructions instead of 200).
+    using L = simd::Lanes<float>;
+    using V = typename L::V;
+    V x0, x1, x2;  // lane i of xk: R_a(k, i)
+    L::rows3x3(ra.data(), x0, x1, x2);
+    auto dots = [&](float b0, float b1, float b2) {
+      V s = L::mul(x0, L::set1(b0));
+      s = L::add(s, L::mul(x1, L::set1(b1)));
+      return L::add(s, L::mul(x2, L::set1(b2)));
+    };
+    const float* b = rb.data();  // column-major: b[k + 3 j] = R_b(k, j)
+    L::store_cols3x3(rot.data(), dots(b[0], b[1], b[2]), dots(b[3], b[4], b[5]), dots(b[6], b[7], b[8]));
+    const V back = L::neg(dots(ta[0], ta[1], ta[2]));
+    L::store3(tr.data(), L::add(dots(tb[0], tb[1], tb[2]), back));
+    return RigidTransform<T>{rot, tr};
+  }
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) rot(i, j) = dot3(ra(0, i), ra(1, i), ra(2, i), rb(0, j), rb(1, j), rb(2, j));
     const T back = -dot3(ra(0, i), ra(1, i), ra(2, i), ta[0], ta[1], ta[2]);

@@ -58,6 +58,7 @@ struct Lanes {  // portable fallback: one lane
   static V div(V a, V b) { return a / b; }
   static V sqrt(V a) { return std::sqrt(a); }
   static V abs(V a) { return std::abs(a); }
+  static V neg(V a) { return -a; }
   static M lt(V a, V b) { return a < b; }
   static M gt(V a, V b) { return a > b; }
   static M ge(V a, V b) { return a >= b; }
@@ -101,6 +102,7 @@ struct Lanes<float> {
   static V div(V a, V b) { return _mm_div_ps(a, b); }
   static V sqrt(V a) { return _mm_sqrt_ps(a); }
   static V abs(V a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }  // the sign bit cleared
+  static V neg(V a) { return _mm_xor_ps(_mm_set1_ps(-0.0f), a); }     // the sign bit flipped (as -x)
   static M lt(V a, V b) { return _mm_cmplt_ps(a, b); }
   static M gt(V a, V b) { return _mm_cmpgt_ps(a, b); }
   static M ge(V a, V b) { return _mm_cmpge_ps(a, b); }
@@ -118,6 +120,36 @@ struct Lanes<float> {
   }
   static unsigned bits(M m) { return static_cast<unsigned>(_mm_movemask_ps(m)); }
   static float first(V v) { return _mm_cvtss_f32(v); }
+  /// The rows of the column-major 3x3 matrix at m (9 floats, none read
+  /// beyond): lane i of row k is m[k + 3 i], lane 3 zero.
+  static void rows3x3(const float* m, V& r0, V& r1, V& r2) {
+    const V c0 = _mm_loadu_ps(m);                                  // m0 m1 m2 m3
+    const V c1 = _mm_loadu_ps(m + 3);                              // m3 m4 m5 m6
+    const V c5 = _mm_loadu_ps(m + 5);                              // m5 m6 m7 m8
+    const V c2 = _mm_shuffle_ps(c5, c5, _MM_SHUFFLE(3, 3, 2, 1));  // m6 m7 m8 m8
+    const V z = _mm_setzero_ps();
+    const V lo01 = _mm_unpacklo_ps(c0, c1);  // m0 m3 m1 m4
+    const V hi01 = _mm_unpackhi_ps(c0, c1);  // m2 m5 m3 m6
+    const V lo2 = _mm_unpacklo_ps(c2, z);    // m6 0 m7 0
+    const V hi2 = _mm_unpackhi_ps(c2, z);    // m8 0 m8 0
+    r0 = _mm_movelh_ps(lo01, lo2);           // m0 m3 m6 0
+    r1 = _mm_movehl_ps(lo2, lo01);           // m1 m4 m7 0
+    r2 = _mm_movelh_ps(hi01, hi2);           // m2 m5 m8 0
+  }
+  /// Stores lanes 0-2 of c0, c1, c2 as the columns of the column-major 3x3
+  /// matrix at m (9 floats, none written beyond).
+  static void store_cols3x3(float* m, V c0, V c1, V c2) {
+    _mm_storeu_ps(m, c0);      // m0-m2 (m3 written again below)
+    _mm_storeu_ps(m + 3, c1);  // m3-m5 (m6 written again below)
+    // (c1[2], c2[0], c2[1], c2[2]) at m + 5
+    const V c2r = _mm_shuffle_ps(c2, c2, _MM_SHUFFLE(2, 1, 0, 0));
+    _mm_storeu_ps(m + 5, _mm_move_ss(c2r, _mm_shuffle_ps(c1, c1, _MM_SHUFFLE(2, 2, 2, 2))));
+  }
+  /// Stores lanes 0-2 of v at p (3 floats).
+  static void store3(float* p, V v) {
+    _mm_storel_pi(reinterpret_cast<__m64*>(p), v);
+    _mm_store_ss(p + 2, _mm_movehl_ps(v, v));
+  }
 };
 
 template <>
@@ -141,6 +173,7 @@ struct Lanes<double> {
   static V div(V a, V b) { return _mm_div_pd(a, b); }
   static V sqrt(V a) { return _mm_sqrt_pd(a); }
   static V abs(V a) { return _mm_andnot_pd(_mm_set1_pd(-0.0), a); }  // the sign bit cleared
+  static V neg(V a) { return _mm_xor_pd(_mm_set1_pd(-0.0), a); }     // the sign bit flipped (as -x)
   static M lt(V a, V b) { return _mm_cmplt_pd(a, b); }
   static M gt(V a, V b) { return _mm_cmpgt_pd(a, b); }
   static M ge(V a, V b) { return _mm_cmpge_pd(a, b); }

@@ -102,20 +102,40 @@ TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[po
   CHECK(checked == 3 * int(locals.size()));
 }
 
-// relative_pose spells out pose_a.inverse() * pose_b: the same value, bit for
-// bit, for poses near and far from the origin.
+// relative_pose spells out pose_a.inverse() * pose_b (float: in SIMD
+// lanes): the same value, bit for bit, for poses near and far from the
+// origin and for zeros of either sign.
+template <class T>
+void same_bits(const RigidTransform<T>& x, const RigidTransform<T>& y) {
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) REQUIRE(std::memcmp(&x.rotation(r, c), &y.rotation(r, c), sizeof(T)) == 0);
+    REQUIRE(std::memcmp(&x.translation[r], &y.translation[r], sizeof(T)) == 0);
+  }
+}
+
 TEMPLATE_TEST_CASE("relative_pose is pose_a.inverse() * pose_b bit for bit", "[posed]", float, double) {
   using T = TestType;
   std::mt19937_64 rng(4111);
   for (int i = 0; i < 500; ++i) {
     const double reach = i % 2 ? 1.0 : 1e4;
     const RigidTransform<T> pa = random_pose<T>(rng, reach), pb = random_pose<T>(rng, reach);
-    const RigidTransform<T> x = relative_pose(pa, pb), y = pa.inverse() * pb;
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) REQUIRE(std::memcmp(&x.rotation(r, c), &y.rotation(r, c), sizeof(T)) == 0);
-      REQUIRE(std::memcmp(&x.translation[r], &y.translation[r], sizeof(T)) == 0);
-    }
+    same_bits(relative_pose(pa, pb), pa.inverse() * pb);
   }
+  // zeros of both signs in the translations and rotations (the sign of a
+  // zero sum depends on the order and on how the negation is taken)
+  int zeros = 0;
+  for (int k = 0; k < 64; ++k) {
+    RigidTransform<T> pa = RigidTransform<T>::identity(), pb = RigidTransform<T>::identity();
+    for (int i = 0; i < 3; ++i) {
+      pa.translation[i] = (k >> i) & 1 ? T(-0.0) : T(0.0);
+      pb.translation[i] = (k >> (i + 3)) & 1 ? T(-0.0) : T(0.0);
+    }
+    if (k & 8) pb.rotation(0, 1) = T(-0.0);
+    const RigidTransform<T> x = relative_pose(pa, pb);
+    same_bits(x, pa.inverse() * pb);
+    for (int i = 0; i < 3; ++i) zeros += std::signbit(x.translation[i]) ? 1 : 0;
+  }
+  CHECK(zeros > 0);  // some translation is -0: the case is exercised
 }
 
 // Posing maps B's vertices a few at a time (SIMD lanes) and folds the lanes
