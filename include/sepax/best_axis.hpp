@@ -22,8 +22,10 @@ class BestAxis {
  public:
   using T = typename K::FT;
 
-  /// Offer a candidate; returns true when it became the best.
-  bool consider(const K& k, const Separation<T>& s, const Feature& f) {
+  /// Offer a candidate; returns true when it became the best.  below, if
+  /// given, is set to whether the candidate is exactly below the best it met
+  /// (false when there was none).
+  bool consider(const K& k, const Separation<T>& s, const Feature& f, bool* below = nullptr) {
     if constexpr (kBounded) {
       // The best's error bound is kept: one bound per candidate (the one its
       // kernel call has just computed, e.g. the cached edge axis), not the
@@ -36,6 +38,7 @@ class BestAxis {
         return true;
       }
       const int c = k.compare_bounded(s, f, e, sep_, feature_, err_);
+      if (below) *below = c < 0;
       if (c > 0 || (c == 0 && precedes(f, feature_))) {
         set(s, f);
         err_ = e;
@@ -48,6 +51,7 @@ class BestAxis {
         return true;
       }
       const int c = k.compare(s, f, sep_, feature_);
+      if (below) *below = c < 0;
       if (c > 0 || (c == 0 && precedes(f, feature_))) {
         set(s, f);
         return true;

@@ -35,6 +35,7 @@ class TraversalArcWalk : public TraversalClimb<K> {
   using Base::offer;
   using Base::opt_;
   using Base::prune_arcs_;
+  using Base::rest_below_best;
   using Base::stats_;
   using Base::support_bounds_arc;
   using Base::ts_;
@@ -61,13 +62,17 @@ class TraversalArcWalk : public TraversalClimb<K> {
   }
 
   // A strictly crossing pair: a candidate axis unless the edges are parallel.
-  // Returns true on early out.
-  bool pair(int ea, int eb) {
+  // Returns true on early out; below: whether the pair's separation is
+  // exactly below the best (false for parallel edges), the same decision
+  // for every kernel.
+  bool pair(int ea, int eb, bool& below) {
+    below = false;
     if constexpr (HasEdgePairBelow<K>) {
       // Certainly below the best (so not parallel, and not separating): what
       // offer would conclude, without the unit axis and its bound.
       if (best_.pair_certainly_below(k_, ea, eb)) {
         ++stats_.minkowski_faces;
+        below = true;
         return false;
       }
     }
@@ -75,8 +80,12 @@ class TraversalArcWalk : public TraversalClimb<K> {
     ++stats_.minkowski_faces;
     const auto s = k_.edge_separation(ea, eb);
     const Feature feat = Feature::edges(ea, eb);
-    offer(s, feat);
+    below = offer(s, feat);
     return stops_early(k_, s, feat, opt_);
+  }
+  bool pair(int ea, int eb) {
+    bool below;
+    return pair(ea, eb, below);
   }
 
   // Arc ea against every arc of -B (O(E_B), what sat::gauss_map does per
@@ -186,7 +195,14 @@ class TraversalArcWalk : public TraversalClimb<K> {
           ++ts_.pruned_crossings;
           return false;
         }
-        if (pair(ea, exit_edge)) return true;
+        bool below;
+        if (pair(ea, exit_edge, below)) return true;
+        // This crossing below the best bounds the rest of the walk with v.
+        if (below && rest_below_best(ea, fe, v)) {
+          ++ts_.pruned_crossings;
+          ++ts_.pruned_rest;
+          return false;
+        }
         entry = exit_edge;
         continue;
       }

@@ -126,11 +126,14 @@ class TraversalPruning : public TraversalState<K> {
     }
   }
 
-  void offer(const Separation<T>& s, const Feature& f) {
+  // Returns whether the candidate is exactly below the best it met (false
+  // when there was none): the same decision for every kernel.
+  bool offer(const Separation<T>& s, const Feature& f) {
     if constexpr (kBounded) {
-      if (best_.has() && vs_best(s, f) < 0) return;  // the common case: one filter
+      if (best_.has() && vs_best(s, f) < 0) return true;  // the common case: one filter
     }
-    if (best_.consider(k_, s, f)) {
+    bool below = false;
+    if (best_.consider(k_, s, f, &below)) {
       if constexpr (kBounded) {
         best_err_ = k_.error_bound(f);
         cut_a_ = k_.compare_width(k_.error_bound(Feature::face_a(0, 0)), best_err_);
@@ -139,6 +142,7 @@ class TraversalPruning : public TraversalState<K> {
       set_thresholds();
       best_sign_ = 2;
     }
+    return below;
   }
 
   // The best so far has separation <= 0 (exactly).
@@ -237,6 +241,23 @@ class TraversalPruning : public TraversalState<K> {
   SEPAX_TRAVERSAL_INLINE bool crossing_below_best(int ea, int f0, int f1, int v) {
     return prune_arcs_ && best_.has() && face_below_best<true>(f0, v) && face_below_best<true>(f1, v) &&
            outside_wedge(ea, v);
+  }
+
+  // The same bound on the rest of the walk only, from a crossing exactly
+  // below the best to the walk's end face fe, entering vertex v.  Along
+  // the arc of ea, every Minkowski face's separation at its normal n is at
+  // most n.(v - a) (a on ea, v in B), a linear function of n whose value at
+  // the crossing's normal is the crossing's own separation (v ends the
+  // crossed edge, B's support there); with that below the best and v's
+  // height over fe below the best, the function is below the best on the
+  // whole part of the arc still to walk unless its maximum there is
+  // inside, which the wedge condition excludes as in arc_below_best (the
+  // part lies within the arc, so outside the edge's wedge is outside the
+  // part's; with a best <= 0 the nearer end's height argument holds for
+  // the part as for the arc).  Exact decisions (face_below_best,
+  // in_edge_wedge_a), asked in the same order by every kernel.
+  SEPAX_TRAVERSAL_INLINE bool rest_below_best(int ea, int fe, int v) {
+    return prune_arcs_ && best_.has() && face_below_best<true>(fe, v) && outside_wedge(ea, v);
   }
 
   // arc()'s bound with x = the support vertex of end f (certified state s;

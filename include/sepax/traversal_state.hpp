@@ -62,6 +62,7 @@ struct TraversalStats {
   std::int64_t late_pruned_arcs = 0;  // of them, skipped after climbing an end (arc())
   std::int64_t late_certified = 0;    // pruned faces climbed on for an arc walk
   std::int64_t pruned_crossings = 0;  // arc walks ended at a crossing below the best
+  std::int64_t pruned_rest = 0;       // of them, by the bound on the rest of the walk
   std::int64_t wedge_tests = 0;       // k.in_edge_wedge_a calls (arc bounds with a best > 0)
 };
 

@@ -11,6 +11,8 @@
 
 #include <sepax/robust/number_types.hpp>
 #include <sepax/robust/robust_kernel.hpp>
+#include <sepax/sat_brute_force.hpp>
+#include <sepax/sat_gauss_map.hpp>
 #include <sepax/sat_traversal.hpp>
 #include <sepax/shapes.hpp>
 
@@ -115,6 +117,53 @@ TEST_CASE("the wedge bound prunes arcs below a positive best and changes no answ
        << " / " << robust_d.arc_tests_without << ", robust float " << robust_f.arc_tests << " / "
        << robust_f.arc_tests_without << ", plain float " << plain_f.arc_tests << " / "
        << plain_f.arc_tests_without);
+}
+
+// The bound on the rest of an arc walk (traversal_pruning.hpp,
+// rest_below_best): after a crossing exactly below the best, the entered
+// vertex's height over the walk's end face bounds every crossing left.
+// Overlapping 32-sided prisms (the caps' fans of arcs cross many arcs of the
+// other shape): the bound must end walks, every kernel the same number of
+// times and after the same arc tests, and the answer must be the brute
+// force's.
+TEST_CASE("the bound on the rest of an arc walk ends walks and changes no answer", "[traversal][pruning]") {
+  std::mt19937_64 rng(3301);
+  std::uniform_real_distribution<double> off(-1.0, 1.0);
+  const auto cyl = shapes::prism<double>(32, 1.0, 1.5);
+  std::int64_t rest_exact = 0;
+  int pairs = 0;
+  for (int it = 0; it < 12; ++it) {
+    const test::V3 d = test::random_unit(rng) * (0.8 + 0.6 * off(rng));
+    const auto b = test::moved(cyl, test::random_rotation(rng), d);
+    const auto aq = ConvexPolyhedron<mpq_class>::convert_from(cyl);
+    const auto bq = ConvexPolyhedron<mpq_class>::convert_from(b);
+    const GaussMapWalk wa(cyl), wb(b);
+    sat::TraversalStats te, tr;
+    PlainKernel<mpq_class> ke(aq, bq);
+    RobustKernel<double> kr(cyl, b);
+    const auto re = sat::traversal_with(ke, wa, wb, SatOptions{}, &te);
+    const auto rr = sat::traversal_with(kr, wa, wb, SatOptions{}, &tr);
+    // exact: the brute force's answer; robust: the Gauss-map SAT's (the
+    // same kernel calls per axis, so the same separation bit for bit)
+    const auto refe = sat::brute_force(aq, bq);
+    const auto ref = sat::gauss_map<policy::Robust>(cyl, b);
+    INFO("pair " << it << ": traversal " << to_string(rr.feature) << ", Gauss map "
+                 << to_string(ref.feature));
+    CHECK(re.feature == refe.feature);
+    CHECK(compare(re.separation, refe.separation) == 0);
+    CHECK(re.overlap == refe.overlap);
+    CHECK(rr.feature == refe.feature);
+    CHECK(rr.feature == ref.feature);
+    CHECK(rr.overlap == ref.overlap);
+    CHECK(rr.separation.num == ref.separation.num);
+    CHECK(rr.separation.norm2 == ref.separation.norm2);
+    CHECK(tr.pruned_rest == te.pruned_rest);
+    CHECK(tr.arc_tests == te.arc_tests);
+    rest_exact += te.pruned_rest;
+    pairs += re.overlap ? 1 : 0;
+  }
+  CHECK(pairs > 6);
+  CHECK(rest_exact > 0);
 }
 
 TEST_CASE("the wedge of a box edge", "[traversal][pruning][wedge]") {
