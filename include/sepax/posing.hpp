@@ -51,16 +51,16 @@ RigidTransform<T> relative_pose(const RigidTransform<T>& pose_a, const RigidTran
     // Four lanes, lane i the dot products with col_i(R_a) (the rows of R_a
     // loaded as lanes): the same products and sums in the same order per
     // lane, so the same values (about 60 instructions instead of 200).
-    using L = simd::Lanes<float>;
+    using L = simd::Lanes<T>;  // (dependent: without SSE2 this branch is not instantiated)
     using V = typename L::V;
     V x0, x1, x2;  // lane i of xk: R_a(k, i)
     L::rows3x3(ra.data(), x0, x1, x2);
-    auto dots = [&](float b0, float b1, float b2) {
+    auto dots = [&](T b0, T b1, T b2) {
       V s = L::mul(x0, L::set1(b0));
       s = L::add(s, L::mul(x1, L::set1(b1)));
       return L::add(s, L::mul(x2, L::set1(b2)));
     };
-    const float* b = rb.data();  // column-major: b[k + 3 j] = R_b(k, j)
+    const T* b = rb.data();  // column-major: b[k + 3 j] = R_b(k, j)
     L::store_cols3x3(rot.data(), dots(b[0], b[1], b[2]), dots(b[3], b[4], b[5]), dots(b[6], b[7], b[8]));
     const V back = L::neg(dots(ta[0], ta[1], ta[2]));
     L::store3(tr.data(), L::add(dots(tb[0], tb[1], tb[2]), back));
