@@ -5,7 +5,8 @@
 //   welded_points.hpp  input checks, tolerances, welding
 //   quickhull.hpp      initial simplex, conflict lists, visible region, horizon, cone, re-assignment
 //   flat_hull.hpp      a point set within the flat tolerance of a plane: its 2D hull as a double-sided face
-//   face_merge.hpp     coplanar triangles into faces (union-find), zero-area triangles, fold splits
+//   face_merge.hpp     coplanar triangles into faces (union-find; after a local removal only around it),
+//                      zero-area triangles, fold splits
 //   face_loops.hpp     each face's boundary loop, vertices in the middle of an edge, strictly convex corners
 //   precheck.hpp       float: what ConvexPolyhedron validation will check, with half its tolerances
 //   repair.hpp         float: points left outside are pinned and the hull rebuilt; the fallback policy

@@ -2,7 +2,8 @@
 //
 // Triangles into faces (union-find over the live triangles, Builder::merge_and_build):
 //   1. plane merges: adjacent groups that are coplanar (exact T: exactly; float T: either sees every vertex
-//      of the other less than eps below its area-weighted plane) are united, until nothing changes;
+//      of the other less than eps below its area-weighted plane) are united, until nothing changes (float T
+//      after a local removal: merge_locally, only around the replaced triangles, the rest as recorded);
 //   2. zero-area triangles join the face across their longest edge (then plane merges again);
 //   3. float T with pinned points: a merge that would strand a pinned vertex (strands_vertex) is refused,
 //      and faces folded over one are split back into their triangles (fold_choice, split_groups);
