@@ -5,7 +5,8 @@
 //   welded_points.hpp  input checks, tolerances, welding
 //   quickhull.hpp      initial simplex, conflict lists, visible region, horizon, cone, re-assignment
 //   flat_hull.hpp      a point set within the flat tolerance of a plane: its 2D hull as a double-sided face
-//   face_merge.hpp     coplanar triangles into faces (union-find), zero-area triangles, fold splits
+//   face_merge.hpp     coplanar triangles into faces (union-find; after a local removal only around it),
+//                      zero-area triangles, fold splits
 //   face_loops.hpp     each face's boundary loop, vertices in the middle of an edge, strictly convex corners
 //   precheck.hpp       float: what ConvexPolyhedron validation will check, with half its tolerances
 //   repair.hpp         float: points left outside are pinned and the hull rebuilt; the fallback policy
@@ -14,6 +15,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <map>
 #include <optional>
@@ -69,6 +71,33 @@ struct SweepMemo {
   std::size_t start = 0;  ///< the faces the search reached: Builder::sweep_faces_[start, start + size)
   std::size_t size = 0;   ///< (every face tested, and every neighbour of a face passed through)
 };
+
+/// Live triangles from which the clean-up's rejected vertices are taken out of the triangles
+/// (Builder::remove_vertices, vertex_removal.hpp) rather than the hull built again from the start.
+inline constexpr std::size_t kLocalRemovalFaces = 4096;
+
+/// An edge slot's pair of groups (roots) found apart, with the versions they had then (Builder::plane_merges).
+struct ApartPair {
+  int x = -1, y = -1, vx = 0, vy = 0;
+};
+
+/// Float T: the plane merges of the last face stage (Builder::merge_and_build), from which the next face stage
+/// on the same triangles, after a local removal and quickhull (remove_vertices), merges again only around
+/// the triangles that changed (Builder::merge_locally).
+template <Number T>
+struct MergeRecord {
+  bool valid = false;                              ///< (reset when the triangles start over: solid)
+  std::vector<int> root;                           ///< per triangle: its group's root (-1: dead)
+  std::vector<std::array<int, 6>> tri;             ///< per triangle: its vertices and its neighbours
+  std::vector<std::pair<int, FaceGroup<T>>> kept;  ///< roots united after the record, as recorded
+  bool recorded = false;                           ///< the stage is past its plane merges: unite keeps
+};
+
+/// Whether float face stages after a local removal merge only around what changed (merge_locally); false
+/// makes every face stage merge all the triangles, which must give the same faces (the hull tests compare).
+inline bool local_face_merges = true;
+/// The float face stages that merged only around what changed (merge_locally), for the tests to see.
+inline std::atomic<std::size_t> local_face_stages{0};
 
 /// Float T: the best results of the repair passes (repair.hpp).
 template <Number T>
@@ -155,6 +184,11 @@ class Builder {
   int find(int x);
   void unite(int x, int y);
   std::optional<ConvexPolyhedron<T>> merge_and_build(std::vector<int>& reject);
+  void init_group(int f);
+  void plane_merges(const std::vector<int>& tris, const std::vector<char>* among,
+                    std::vector<ApartPair>& apart);
+  bool merge_locally(const std::vector<int>& live);
+  void record_merges(const std::vector<int>& live, bool valid);
   bool strands_vertex(int x, int y);
   std::vector<int> fold_choice(const std::vector<int>& live, const std::map<int, std::vector<int>>& folds);
   bool split_groups(const std::vector<int>& live, std::vector<int> ids);
@@ -198,12 +232,14 @@ class Builder {
   Vec3<T> base_normal_;                         // normal of its initial triangle
   std::vector<Group> groups_;
   std::vector<int> group_version_;  // per group root: the unions it has taken (face_merge.hpp)
+  MergeRecord<T> merge_record_;     // float: the last face stage's plane merges (face_merge.hpp)
   std::vector<char> removed_;       // points the clean-up rejected (put back when pinned)
   std::vector<char> pinned_;        // float: points a repair pass put back
   bool any_pinned_ = false;
   TrisState tris_state_ = TrisState::none;   ///< what tris_ holds: remove_vertices and resume go on from it
   std::vector<char> out_vertex_;             // vertices of the last output
   std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
+  std::vector<std::vector<int>> loop_pool_;  // face loops' storage between extractions (face_loops.hpp)
   std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)
   std::vector<int> gone_;                    // scratch, per eye
   std::vector<int> live_faces_;              // live triangles in index order, among tris_[0, live_made_)

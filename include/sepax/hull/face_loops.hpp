@@ -17,6 +17,7 @@
 #include <optional>
 #include <span>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -69,6 +70,20 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     return polygon(active_, base_normal_, reject);
   }
   std::vector<std::vector<int>> loops;
+  // (float T: each loop's storage comes from loop_pool_ and goes back to it when this extraction ends, so
+  // the extractions of a build's clean-up rounds allocate about once per face; other types, which extract
+  // about once per build, free it)
+  struct ReturnLoops {
+    std::vector<std::vector<int>>& loops;
+    std::vector<std::vector<int>>* pool;
+    ~ReturnLoops() {
+      if (pool == nullptr) return;
+      try {
+        for (auto& l : loops) pool->push_back(std::move(l));
+      } catch (...) {  // (out of memory: the loops not returned are freed)
+      }
+    }
+  } return_loops{loops, std::is_same_v<T, float> ? &loop_pool_ : nullptr};
   std::vector<int> loop_group;
   loops.reserve(roots.size());
   loop_group.reserve(roots.size());
@@ -92,6 +107,11 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     }
     // the loop through the first edge; any other edges form extra loops
     std::vector<int> loop;
+    if (!loop_pool_.empty()) {
+      loop = std::move(loop_pool_.back());
+      loop_pool_.pop_back();
+      loop.clear();
+    }
     loop.reserve(edges.size());  // (a disk's loop: one vertex per boundary edge)
     const int start = edges.front().from;
     int cur = start;

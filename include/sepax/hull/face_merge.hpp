@@ -2,7 +2,8 @@
 //
 // Triangles into faces (union-find over the live triangles, Builder::merge_and_build):
 //   1. plane merges: adjacent groups that are coplanar (exact T: exactly; float T: either sees every vertex
-//      of the other less than eps below its area-weighted plane) are united, until nothing changes;
+//      of the other less than eps below its area-weighted plane) are united, until nothing changes (float T
+//      after a local removal: merge_locally, only around the replaced triangles, the rest as recorded);
 //   2. zero-area triangles join the face across their longest edge (then plane merges again);
 //   3. float T with pinned points: a merge that would strand a pinned vertex (strands_vertex) is refused,
 //      and faces folded over one are split back into their triangles (fold_choice, split_groups);
@@ -10,6 +11,8 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -17,6 +20,7 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -68,6 +72,13 @@ inline void Builder<T>::unite(int x, int y) {
   if (x == y) return;
   Group& gx = groups_[as_index(x)];
   Group& gy = groups_[as_index(y)];
+  if constexpr (std::is_same_v<T, float>) {
+    // (a union after the recorded plane merges: the root's recorded group kept for merge_locally)
+    auto& kept = merge_record_.kept;
+    if (merge_record_.recorded &&
+        std::none_of(kept.begin(), kept.end(), [&](const auto& k) { return k.first == x; }))
+      kept.emplace_back(x, gx);
+  }
   std::vector<int> vs;
   std::set_union(gx.verts.begin(), gx.verts.end(), gy.verts.begin(), gy.verts.end(), std::back_inserter(vs));
   gx.verts = std::move(vs);
@@ -88,12 +99,34 @@ inline void Builder<T>::unite(int x, int y) {
   Traits::refit(*this, gx);
 }
 
+// Triangle f's own group (reset in place, keeping its vectors' storage across the merges and rebuilds of one
+// build; its plane is set by init_group_plane where the traits read it, float T, and exact T never reads it).
+template <Number T>
+inline void Builder<T>::init_group(int f) {
+  const Tri& t = tris_[as_index(f)];
+  Group& g = groups_[as_index(f)];
+  g.verts.assign({t.v[0], t.v[1], t.v[2]});
+  std::sort(g.verts.begin(), g.verts.end());
+  g.plane_tri = f;
+  Traits::init_group_plane(*this, g, f);
+  g.degenerate = Traits::zero_area(*this, f);
+  g.splits.clear();
+  if (nomerge_[as_index(f)] != 0) g.splits.push_back(nomerge_[as_index(f)]);
+  g.area = Traits::triangle_area(*this, t);
+}
+
 // Groups the live triangles into faces, then extracts their loops.
 template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vector<int>& reject) {
   std::vector<int> live;
   for (std::size_t f = 0; f < tris_.size(); ++f)
     if (tris_[f].alive) live.push_back(static_cast<int>(f));
+  merge_record_.recorded = false;
+  if (merge_locally(live)) {
+    local_face_stages.fetch_add(1, std::memory_order_relaxed);
+    record_merges(live, true);
+    return extract(live, reject);
+  }
   parent_.assign(tris_.size(), 0);
   std::iota(parent_.begin(), parent_.end(), 0);
   // (read only by strands_vertex, which needs a pinned point)
@@ -102,61 +135,23 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
     for (int f : live)
       for (int v : tris_[as_index(f)].v) star_[as_index(v)].push_back(f);
   }
-  // (a group per triangle index, read only for live triangles: each is reset in place, keeping its
-  // vectors' storage across the merges and rebuilds of one build; its plane is set by init_group_plane
-  // where the traits read it, float T, and exact T never reads it)
+  // (a group per triangle index, read only for live triangles)
   groups_.resize(tris_.size(), Group{});  // (new entries copied from one: cheap for shared T values)
+  bool any_degenerate = false;
   for (int f : live) {
-    const Tri& t = tris_[as_index(f)];
-    Group& g = groups_[as_index(f)];
-    g.verts.assign({t.v[0], t.v[1], t.v[2]});
-    std::sort(g.verts.begin(), g.verts.end());
-    g.plane_tri = f;
-    Traits::init_group_plane(*this, g, f);
-    g.degenerate = Traits::zero_area(*this, f);
-    g.splits.clear();
-    if (nomerge_[as_index(f)] != 0) g.splits.push_back(nomerge_[as_index(f)]);
-    g.area = Traits::triangle_area(*this, t);
+    init_group(f);
+    any_degenerate = any_degenerate || groups_[as_index(f)].degenerate;
   }
   // Plane merges until nothing changes; then zero-area triangles join a
   // neighbouring face, and if any did, plane merges again: a zero-area
   // triangle between two coplanar faces kept them apart, and once it has
   // joined one of them they are adjacent (left unmerged, validation would
   // refuse the pair and the clean-up would drop a real corner).
-  //
-  // A pair of groups found apart (split apart, certainly apart or not coplanar: functions of the two
-  // groups alone) stays apart until one of them changes: each edge slot remembers the pair and the
-  // groups' versions (bumped by unite) it was found apart with, and is not tested again while they hold.
-  // (strands_vertex depends on the other groups too: a pair it kept apart is tested again.)
-  struct Apart {
-    int x = -1, y = -1, vx = 0, vy = 0;
-  };
-  std::vector<Apart> apart(tris_.size() * 3);
+  std::vector<ApartPair> apart(live.size() * 3);
   group_version_.assign(tris_.size(), 0);
   for (bool joined = true; joined;) {
     joined = false;
-    for (bool changed = true; changed;) {
-      changed = false;
-      for (int f : live) {
-        for (int i = 0; i < 3; ++i) {
-          const int x = find(f), y = find(tris_[as_index(f)].nb[as_index(i)]);
-          if (x == y || groups_[as_index(x)].degenerate || groups_[as_index(y)].degenerate) continue;
-          Apart& known = apart[as_index(3 * f + i)];
-          const int vx = group_version_[as_index(x)], vy = group_version_[as_index(y)];
-          if (known.x == x && known.y == y && known.vx == vx && known.vy == vy) continue;
-          if (split_apart(groups_[as_index(x)], groups_[as_index(y)]) ||
-              Traits::certainly_apart(*this, x, y) ||
-              !Traits::coplanar(*this, groups_[as_index(x)], groups_[as_index(y)])) {
-            known = Apart{x, y, vx, vy};
-            continue;
-          }
-          if (!strands_vertex(x, y)) {
-            unite(x, y);
-            changed = true;
-          }
-        }
-      }
-    }
+    plane_merges(live, nullptr, apart);
     // Zero-area triangles join the face across their longest edge.
     for (bool changed = true; changed;) {
       changed = false;
@@ -190,7 +185,169 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
     if (groups_[as_index(find(f))].degenerate)
       throw std::logic_error("convex_hull: a zero-area face could not be merged (a bug)");
   }
+  record_merges(live, !any_degenerate);
   return extract(live, reject);
+}
+
+// Plane merges among the triangles tris (ascending), passes over them until nothing changes: adjacent groups
+// that are coplanar (and not split apart, nor, with pinned points, stranding one) are united.  With among
+// (per triangle), only across the edges between two triangles it marks.
+//
+// A pair of groups found apart (split apart, certainly apart or not coplanar: functions of the two groups
+// alone) stays apart until one of them changes: each edge slot (apart[3 k + i] for tris[k]'s edge i)
+// remembers the pair and the groups' versions (bumped by unite) it was found apart with, and is not tested
+// again while they hold.  (strands_vertex depends on the other groups too: a pair it kept apart is tested
+// again.)
+template <Number T>
+inline void Builder<T>::plane_merges(const std::vector<int>& tris, const std::vector<char>* among,
+                                     std::vector<ApartPair>& apart) {
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t k = 0; k < tris.size(); ++k) {
+      const int f = tris[k];
+      for (int i = 0; i < 3; ++i) {
+        const int n = tris_[as_index(f)].nb[as_index(i)];
+        if (among != nullptr && !(*among)[as_index(n)]) continue;
+        const int x = find(f), y = find(n);
+        if (x == y || groups_[as_index(x)].degenerate || groups_[as_index(y)].degenerate) continue;
+        ApartPair& known = apart[3 * k + as_index(i)];
+        const int vx = group_version_[as_index(x)], vy = group_version_[as_index(y)];
+        if (known.x == x && known.y == y && known.vx == vx && known.vy == vy) continue;
+        if (split_apart(groups_[as_index(x)], groups_[as_index(y)]) || Traits::certainly_apart(*this, x, y) ||
+            !Traits::coplanar(*this, groups_[as_index(x)], groups_[as_index(y)])) {
+          known = ApartPair{x, y, vx, vy};
+          continue;
+        }
+        if (!strands_vertex(x, y)) {
+          unite(x, y);
+          changed = true;
+        }
+      }
+    }
+  }
+}
+
+// Float T, a face stage after a local removal (remove_vertices: the last face stage's triangles, some of them
+// replaced by quickhull since): its plane merges done again only where they can differ.  The plane merges of
+// a group of triangles depend on its own triangles and on the tests across its border, every one of which
+// failed (one that passed would have united the two groups): a group whose triangles and neighbours are
+// unchanged, among groups whose are, merges as recorded (merge_record_).  The groups that lost a triangle or
+// whose triangles' vertices or neighbours changed are merged again from their triangles, with the new
+// triangles (plane_merges: in index order, as the passes over every triangle, across the edges among them);
+// each group merged again that borders the rest must come out as recorded (its triangles, and so every test
+// it took, the same), else the groups it borders are merged again too, until it does.  The rest keeps its
+// recorded roots and groups.  False (the caller merges every triangle) without a record to go on from, with
+// pinned points (strands_vertex depends on the groups around a vertex), split faces or a zero-area triangle.
+template <Number T>
+inline bool Builder<T>::merge_locally(const std::vector<int>& live) {
+  if constexpr (!std::is_same_v<T, float>) {
+    return false;
+  } else {
+    MergeRecord<T>& rec = merge_record_;
+    if (!local_face_merges || !rec.valid || any_pinned_ || splits_ != 0 || rec.root.size() > tris_.size())
+      return false;
+    const std::size_t old = rec.root.size();
+    // the recorded groups' triangles: members[start[r], start[r + 1]) for root r, ascending
+    std::vector<int> start(old + 1, 0), members;
+    for (std::size_t f = 0; f < old; ++f)
+      if (rec.root[f] >= 0) ++start[as_index(rec.root[f]) + 1];
+    for (std::size_t r = 0; r < old; ++r) start[r + 1] += start[r];
+    members.resize(as_index(start[old]));
+    {
+      std::vector<int> fill(start.begin(), start.end() - 1);
+      for (std::size_t f = 0; f < old; ++f)
+        if (rec.root[f] >= 0) members[as_index(fill[as_index(rec.root[f])]++)] = static_cast<int>(f);
+    }
+    // per recorded root: 0 kept, 1 merged again, 2 merged again having lost a triangle
+    std::vector<char> again(old, 0);
+    for (std::size_t f = 0; f < old; ++f) {
+      const int r = rec.root[f];
+      if (r < 0) continue;
+      const Tri& t = tris_[f];
+      if (!t.alive) {
+        again[as_index(r)] = 2;
+      } else if (again[as_index(r)] == 0 &&
+                 rec.tri[f] != std::array<int, 6>{t.v[0], t.v[1], t.v[2], t.nb[0], t.nb[1], t.nb[2]}) {
+        again[as_index(r)] = 1;
+      }
+    }
+    for (int f : live)
+      if (as_index(f) < old && rec.root[as_index(f)] < 0) return false;  // (not the recorded triangles)
+    parent_.resize(tris_.size());
+    groups_.resize(tris_.size(), Group{});
+    group_version_.resize(tris_.size(), 0);
+    for (auto& [r, g] : rec.kept) groups_[as_index(r)] = std::move(g);
+    rec.kept.clear();
+    for (int f : live) parent_[as_index(f)] = as_index(f) < old ? rec.root[as_index(f)] : f;
+    std::vector<char> among(tris_.size(), 0);
+    std::vector<int> region, count(tris_.size(), 0);
+    std::vector<char> as_recorded(old, 0);  // per root merged again: 0 not known, 1 as recorded, 2 not
+    std::vector<ApartPair> apart;
+    for (;;) {
+      region.clear();
+      for (int f : live) {
+        const bool in = as_index(f) >= old || again[as_index(rec.root[as_index(f)])] != 0;
+        among[as_index(f)] = in;
+        if (in) region.push_back(f);
+      }
+      for (int f : region) {
+        parent_[as_index(f)] = f;
+        init_group(f);
+        group_version_[as_index(f)] = 0;
+        if (groups_[as_index(f)].degenerate) return false;
+      }
+      apart.assign(region.size() * 3, ApartPair{});
+      plane_merges(region, &among, apart);
+      for (int f : region) ++count[as_index(find(f))];
+      std::fill(as_recorded.begin(), as_recorded.end(), 0);
+      auto recorded = [&](int f) {  // f's group as recorded, its triangles all alive
+        const int r = as_index(f) < old ? rec.root[as_index(f)] : -1;
+        if (r < 0 || again[as_index(r)] == 2) return false;
+        if (as_recorded[as_index(r)] == 0) {
+          const int g = find(f);
+          bool same = g == r && count[as_index(g)] == start[as_index(r) + 1] - start[as_index(r)];
+          for (int k = start[as_index(r)]; k < start[as_index(r) + 1] && same; ++k)
+            same = find(members[as_index(k)]) == g;
+          as_recorded[as_index(r)] = same ? 1 : 2;
+        }
+        return as_recorded[as_index(r)] == 1;
+      };
+      bool grown = false;
+      for (int f : region)
+        for (const int n : tris_[as_index(f)].nb) {
+          if (among[as_index(n)]) continue;
+          if (as_index(n) >= old || rec.root[as_index(n)] < 0)
+            return false;  // (not a live recorded triangle)
+          if (!recorded(f) && again[as_index(rec.root[as_index(n)])] == 0) {
+            again[as_index(rec.root[as_index(n)])] = 1;
+            grown = true;
+          }
+        }
+      for (int f : region) count[as_index(find(f))] = 0;
+      if (!grown) return true;  // (no zero-area triangle: the zero-area joins have nothing to do)
+    }
+  }
+}
+
+// Float T: the plane merges just done recorded for the next face stage (merge_locally), when it can go on
+// from them: on triangles a removal may go on from (kLocalRemovalFaces), with no pinned point, split face
+// or zero-area triangle.
+template <Number T>
+inline void Builder<T>::record_merges(const std::vector<int>& live, bool valid) {
+  if constexpr (std::is_same_v<T, float>) {
+    MergeRecord<T>& rec = merge_record_;
+    rec.valid = valid && !any_pinned_ && splits_ == 0 && live.size() >= kLocalRemovalFaces;
+    rec.kept.clear();
+    rec.recorded = rec.valid;
+    if (!rec.valid) return;
+    rec.root.assign(tris_.size(), -1);
+    for (int f : live) rec.root[as_index(f)] = find(f);
+    rec.tri.resize(tris_.size());
+    for (std::size_t f = 0; f < tris_.size(); ++f) {
+      const Tri& t = tris_[f];
+      rec.tri[f] = {t.v[0], t.v[1], t.v[2], t.nb[0], t.nb[1], t.nb[2]};
+    }
+  }
 }
 
 // Float T: would merging groups x and y (roots) leave a vertex they share

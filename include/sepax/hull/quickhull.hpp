@@ -397,7 +397,8 @@ template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<int>& active, int a, int b,
                                                             int c, int d, std::vector<int>& reject) {
   tris_.clear();
-  sweep_memo_.clear();  // (the triangle indices it holds are reused)
+  merge_record_.valid = false;  // (its triangle indices are reused)
+  sweep_memo_.clear();          // (the triangle indices it holds are reused)
   sweep_faces_.clear();
   tris_state_ = TrisState::solid_build;
   live_faces_.clear();

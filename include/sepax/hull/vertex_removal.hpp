@@ -22,10 +22,6 @@
 
 namespace sepax::hull::detail {
 
-/// Live triangles from which the clean-up's rejected vertices are taken out of the triangles
-/// (Builder::remove_vertices) rather than the hull built again from the start.
-inline constexpr std::size_t kLocalRemovalFaces = 4096;
-
 /// Float (not double), on at least kLocalRemovalFaces live triangles: the vertices the clean-up
 /// rejected are taken out of the last build's quickhull triangles one at a time (remove_vertex), so the
 /// build goes on from there (quickhull_and_faces) instead of starting over without them.  Exact T, double
