@@ -641,13 +641,13 @@ TEST_CASE("large hull: the face stages merging only around what changed give the
   using T = float;
   const auto pts = to_t<T>(bench_point_set("sphere", 40000));
   struct Restore {
-    ~Restore() { hull::detail::local_face_merges = true; }
+    ~Restore() { hull::detail::local_face_merges.store(true); }
   } restore;
-  hull::detail::local_face_merges = false;
+  hull::detail::local_face_merges.store(false);
   const std::size_t before = hull::detail::local_face_stages.load();
   const auto full = convex_hull(pts);
   CHECK(hull::detail::local_face_stages.load() == before);
-  hull::detail::local_face_merges = true;
+  hull::detail::local_face_merges.store(true);
   const auto local = convex_hull(pts);
   CHECK(hull::detail::local_face_stages.load() > before);  // (some face stage merged locally)
   REQUIRE(local.vertex_count() == full.vertex_count());

@@ -95,7 +95,8 @@ struct MergeRecord {
 
 /// Whether float face stages after a local removal merge only around what changed (merge_locally); false
 /// makes every face stage merge all the triangles, which must give the same faces (the hull tests compare).
-inline bool local_face_merges = true;
+/// (An atomic, read once per face stage: a test may switch it while other threads build hulls.)
+inline std::atomic<bool> local_face_merges{true};
 /// The float face stages that merged only around what changed (merge_locally), for the tests to see.
 inline std::atomic<std::size_t> local_face_stages{0};
 

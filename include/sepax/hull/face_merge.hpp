@@ -244,7 +244,8 @@ inline bool Builder<T>::merge_locally(const std::vector<int>& live) {
     return false;
   } else {
     MergeRecord<T>& rec = merge_record_;
-    if (!local_face_merges || !rec.valid || any_pinned_ || splits_ != 0 || rec.root.size() > tris_.size())
+    if (!local_face_merges.load(std::memory_order_relaxed) || !rec.valid || any_pinned_ || splits_ != 0 ||
+        rec.root.size() > tris_.size())
       return false;
     const std::size_t old = rec.root.size();
     // the recorded groups' triangles: members[start[r], start[r + 1]) for root r, ascending
