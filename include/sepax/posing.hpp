@@ -51,7 +51,7 @@ RigidTransform<T> relative_pose(const RigidTransform<T>& pose_a, const RigidTran
     // Four lanes, lane i the dot products with col_i(R_a) (the rows of R_a
     // loaded as lanes): the same products and sums in the same order per
     // lane, so the same values (about 60 instructions instead of 200).
-    using L = simd::Lanes<T>;  // (dependent: without SSE2 this branch is not instantiated)
+    using L = simd::Lanes<T>;  // (through T: without SSE2 this block is discarded unchecked)
     using V = typename L::V;
     V x0, x1, x2;  // lane i of xk: R_a(k, i)
     L::rows3x3(ra.data(), x0, x1, x2);
