@@ -76,13 +76,8 @@ ConvexPolyhedron<float> local_hull(const btCollisionShape& shape) {
 RigidTransform<float> pose_of(const btTransform& t) {
   const btMatrix3x3& r = t.getBasis();
   const btVector3& o = t.getOrigin();
-  // entry by entry into the column-major storage (Eigen's comma initializer
-  // cost about 50 instructions more a call)
   RigidTransform<float>::Matrix3 m;
-  float* d = m.data();
-  for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 3; ++i) d[i + 3 * j] = static_cast<float>(r[i][j]);
-  }
+  m << r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0], r[2][1], r[2][2];
   return RigidTransform<float>{m, Vec3<float>(o[0], o[1], o[2])};
 }
 
