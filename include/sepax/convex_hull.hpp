@@ -10,8 +10,9 @@
 //   6. float T: the pre-check of what validation will check (precheck.hpp);
 //   7. validation by ConvexPolyhedron<T>::from_faces (a failure there is a builder bug, std::logic_error);
 //   8. float T: repair passes and the fallback policy (repair.hpp, fallbacks.hpp).
-// Float T decides on the points translated by the centre of their bounding box; the output vertices are the
-// input points (except the documented fallbacks).  Exact T makes every decision exactly.
+// Float T decides on the points translated by the centre of their bounding box, and far from unit size on
+// a power of two times them (working_scale.hpp); the output vertices are the input points (except the
+// documented fallbacks).  Exact T makes every decision exactly.
 #pragma once
 
 #include <optional>
@@ -32,6 +33,7 @@
 #include "hull/traits.hpp"
 #include "hull/vertex_removal.hpp"
 #include "hull/welded_points.hpp"
+#include "hull/working_scale.hpp"
 #include "number_traits.hpp"
 #include "tolerances.hpp"
 #include "vec3.hpp"
@@ -72,10 +74,18 @@ ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent)
 
 /// The convex hull of points (docs/hull.md for the steps and the guarantees).
 /// Throws InvalidInput: NonFinite (naming the point), TooFewPoints (< 3
-/// distinct points), Collinear, BadScale (float extent overflow, or points too
-/// far from the origin for float to resolve: use convex_hull_local).
+/// distinct points), Collinear, BadScale (float/double: an extent outside the
+/// range ConvexPolyhedron<T> accepts, or points too far from the origin for
+/// float to resolve: use convex_hull_local).
 template <Number T>
 ConvexPolyhedron<T> convex_hull(std::span<const Vec3<T>> points) {
+  if constexpr (hull::detail::HullTraits<T>::kWorkingScale) {
+    // float / double far from unit size: built at a power of two times the points (working_scale.hpp)
+    if (const int k = hull::detail::working_scale(points); k != 0) {
+      const std::vector<Vec3<T>> scaled = hull::detail::scaled_points(points, k);
+      return hull::detail::scaled_back(hull::detail::build_hull<T>(scaled, true), k);
+    }
+  }
   return hull::detail::build_hull<T>(points, true);
 }
 

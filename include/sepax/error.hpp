@@ -25,7 +25,7 @@ enum class ErrorCode {
   NonConvexFace,   // a face polygon that turns the wrong way or has collinear corners
   NotConvex,       // a vertex above some face plane, or two adjacent faces coplanar
   InwardFaces,     // faces are oriented inward (clockwise seen from outside)
-  BadScale,        // extent zero, or coordinates too large for the number type
+  BadScale,        // extent zero or too small, or coordinates too large, for the number type
   Parse,           // a malformed input file
 };
 

@@ -39,9 +39,11 @@ namespace sepax {
 ///   coplanar/4 x extent >= min(T)      (the smallest tolerance is a normal
 ///                                       number: extent >= ~9e-298 for double,
 ///                                       ~5e-33 for float)
-/// refusing anything else with BadScale.  (The hull builder also refuses an
-/// extent whose cube overflows double or whose square overflows T: about
-/// 2.8e102 for double, 9e18 for float.)
+/// refusing anything else with BadScale.  The hull builder covers the same
+/// range: it builds a point set whose bounding box is wider than
+/// kHullExtentHigh or narrower than kHullExtentLow at a power of two times its
+/// coordinates (exactly) and validates the result at the input's scale
+/// (hull/working_scale.hpp).
 template <class T>
 struct Tolerances {
   /// Hull builder: points closer than this are one point, x extent.
@@ -87,6 +89,17 @@ struct Tolerances {
   /// (doubled) area; squared distances and areas within it of the largest are
   /// ties.  x extent^2.
   static constexpr double kContactArea = 0;
+  /// Hull builder (float, double): the widths of the points' bounding box it
+  /// builds at as given.  Its predicates multiply up to four coordinate
+  /// differences and compare them with squared tolerances (a squared
+  /// cross-product length against (flat x length)^2), so they need
+  /// extent^4 x flat^2 to be a normal number of T and 16 extent^4 to be
+  /// finite; a point set whose largest width is outside the range is built at
+  /// a power of two times its coordinates (hull/working_scale.hpp).
+  /// Absolute: units of the coordinates (the only ones in this file, and not a
+  /// tolerance: a power of two changes no decision within them).
+  static constexpr double kHullExtentLow = 0;
+  static constexpr double kHullExtentHigh = 0;
 };
 
 template <>
@@ -101,6 +114,10 @@ struct Tolerances<float> {
   static constexpr double kParallel = 1e-4;
   static constexpr double kContactWeld = 1e-5;
   static constexpr double kContactArea = 1e-6;
+  /// 2^-80 x (2e-5)^2 = 3.3e-34 >= 1.2e-38 (the smallest normal float);
+  /// 16 x 2^120 = 2.1e37 <= 3.4e38.
+  static constexpr double kHullExtentLow = 0x1p-20;
+  static constexpr double kHullExtentHigh = 0x1p30;
 };
 
 template <>
@@ -115,6 +132,9 @@ struct Tolerances<double> {
   static constexpr double kParallel = 1e-8;
   static constexpr double kContactWeld = 1e-10;
   static constexpr double kContactArea = 1e-14;
+  /// 2^-800 x (2e-10)^2 = 6e-261 >= 2.2e-308; 16 x 2^800 = 1e242 <= 1.8e308.
+  static constexpr double kHullExtentLow = 0x1p-200;
+  static constexpr double kHullExtentHigh = 0x1p200;
 };
 
 /// The brute force's support tolerance (PlainKernel::support_tolerance) adds

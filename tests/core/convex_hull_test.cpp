@@ -266,6 +266,67 @@ TEMPLATE_TEST_CASE("scale and offset do not change the combinatorics", "[hull]",
   }
 }
 
+TEMPLATE_TEST_CASE("every scale ConvexPolyhedron accepts: the hull of 2^e x points is 2^e x the hull",
+                   "[hull]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(5);
+  std::vector<Vec3<double>> base = sphere_points(60, rng);
+  for (const auto& p : cube_corners(0.4)) base.push_back(p + Vec3<double>(1.5, 0, 0));
+  const std::vector<Vec3<T>> unit = to_t<T>(base);
+  const auto ref = convex_hull(unit);
+  auto times = [](const Vec3<T>& p, int e) {
+    return Vec3<T>(std::ldexp(p[0], e), std::ldexp(p[1], e), std::ldexp(p[2], e));
+  };
+  // the builder's predicates underflow about 2^-35 (float) and 2^-300 (double) without the working scale,
+  // and overflow above 2^63 (float) and 2^340 (double)
+  const bool is_float = std::is_same_v<T, float>;
+  const std::vector<int> exponents = is_float ? std::vector<int>{-100, -64, -40, -21, 31, 64, 100, 120}
+                                              : std::vector<int>{-980, -600, -300, -201, 201, 340, 700, 1000};
+  for (int e : exponents) {
+    INFO("2^" << e);
+    std::vector<Vec3<T>> pts;
+    for (const auto& p : unit) pts.push_back(times(p, e));
+    const auto h = convex_hull(pts);
+    REQUIRE(h.vertex_count() == ref.vertex_count());
+    REQUIRE(h.face_count() == ref.face_count());
+    for (int v = 0; v < h.vertex_count(); ++v) CHECK(h.vertex(v) == times(ref.vertex(v), e));
+    for (int f = 0; f < h.face_count(); ++f) CHECK(h.face_vertices(f) == ref.face_vertices(f));
+    check_valid(h);
+  }
+  // a flat set (one plane) at a tiny scale is the double-sided polygon
+  std::vector<Vec3<T>> flat;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j)
+      flat.push_back(times(Vec3<T>(T(i), T(j * j % 7), T(0)), is_float ? -90 : -900));
+  const auto fh = convex_hull(flat);
+  CHECK(fh.is_flat());
+  CHECK(vertices_are_inputs(fh, flat));
+  // beyond what ConvexPolyhedron accepts: BadScale naming the problem
+  for (int e : is_float ? std::vector<int>{-115, 124} : std::vector<int>{-1010, 1020}) {
+    INFO("2^" << e);
+    std::vector<Vec3<T>> pts;
+    for (const auto& p : unit) pts.push_back(times(p, e));
+    ErrorCode code = ErrorCode::Parse;  // (none thrown)
+    try {
+      (void)convex_hull(pts);
+    } catch (const InvalidInput& x) {
+      code = x.code();
+    }
+    CHECK(code == ErrorCode::BadScale);
+  }
+  // decimal scales far from 1: a hull holding every point
+  for (double scale : is_float ? std::vector<double>{1e-25, 1e25} : std::vector<double>{1e-250, 1e250}) {
+    INFO("scale " << scale);
+    std::vector<Vec3<double>> scaled;
+    for (const auto& p : base) scaled.push_back(p * scale);
+    const std::vector<Vec3<T>> pts = to_t<T>(scaled);
+    const auto h = convex_hull(pts);
+    CHECK(h.vertex_count() == ref.vertex_count());
+    CHECK(vertices_are_inputs(h, pts));
+    check_valid(h);
+  }
+}
+
 TEST_CASE("double hull far from the origin", "[hull]") {
   std::mt19937 rng(9);
   for (int rep = 0; rep < 5; ++rep) {

@@ -13,7 +13,7 @@
 //   refit, triangle_area, add_area  float: a group's area-weighted plane
 //   collinear, left_turn, convex_corner  the tolerant (float) or exact turn tests
 //   rounding_case                 a case only rounding causes: for exact T a builder bug
-// and the capabilities kRepairs, kRechecksRounding, kPrechecks, kTriangleFacesConvex.
+// and the capabilities kRepairs, kRechecksRounding, kPrechecks, kTriangleFacesConvex, kWorkingScale.
 #pragma once
 
 #include <algorithm>
@@ -47,6 +47,8 @@ struct ExactHullTraits {
   static constexpr bool kPrechecks = false;
   /// A face that is one triangle with area turns left at every corner (by |normal|^2).
   static constexpr bool kTriangleFacesConvex = true;
+  /// No exponent range to stay within: built at the input's scale.
+  static constexpr bool kWorkingScale = false;
   /// Suffixes of the error messages naming the tolerance.
   static constexpr const char* kWeldNote = "";
   static constexpr const char* kFlatNote = "";
@@ -238,6 +240,9 @@ struct FloatHullTraits {
   static constexpr bool kPrechecks = true;
   /// Every corner is tested against eps, single triangles too.
   static constexpr bool kTriangleFacesConvex = false;
+  /// A point set wider than Tolerances<T>::kHullExtentHigh or narrower than kHullExtentLow is built at a
+  /// power of two times its coordinates (working_scale.hpp).
+  static constexpr bool kWorkingScale = true;
   static constexpr const char* kWeldNote = " (points closer than the weld tolerance)";
   static constexpr const char* kFlatNote = " (within the flat tolerance)";
   static constexpr const char* kLineNote = " (within tolerance)";
