@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <unordered_map>
 #include <utility>
 #include <sstream>
 
@@ -168,6 +169,38 @@ struct Exact {
   // classified Classification::nonconvex (see check.hpp).
   bool convex = true;
   std::array<std::optional<SatResult<Q>>, 3> ref_by_sat;
+  // The exact Gauss-map axis k->axis(Feature::edges(ea, eb)) of every edge
+  // pair that is an exact Minkowski face (arcs) and not exactly parallel
+  // (k->edges_parallel), by pair index ea * EB + eb (fill_minkowski_axes).
+  // The four float configurations' axis_side comparisons and decision checks
+  // read these instead of each computing the same rational cross products:
+  // the same kernel functions on the same exact images give the same values.
+  std::unordered_map<std::size_t, Vec3<Q>> minkowski_axes;
+
+  void fill_minkowski_axes() {
+    const int EB = B.edge_count();
+    for (int ea = 0; ea < A.edge_count(); ++ea)
+      for (int eb = 0; eb < EB; ++eb) {
+        const std::size_t i =
+            static_cast<std::size_t>(ea) * static_cast<std::size_t>(EB) + static_cast<std::size_t>(eb);
+        if (arcs[i].minkowski_face() && !k->edges_parallel(ea, eb))
+          minkowski_axes.emplace(i, k->axis(Feature::edges(ea, eb)));
+      }
+  }
+  /// The exact axis of edge pair (ea, eb) when it is an exact Minkowski face
+  /// that is not exactly parallel; null otherwise.
+  const Vec3<Q>* minkowski_axis(int ea, int eb) const {
+    const auto it =
+        minkowski_axes.find(static_cast<std::size_t>(ea) * static_cast<std::size_t>(B.edge_count()) +
+                            static_cast<std::size_t>(eb));
+    return it == minkowski_axes.end() ? nullptr : &it->second;
+  }
+  /// k->axis(f), read from minkowski_axes when it is there.
+  Vec3<Q> axis(const Feature& f) const {
+    if (f.type == FeatureType::EdgePair)
+      if (const Vec3<Q>* x = minkowski_axis(f.a, f.b)) return *x;
+    return k->axis(f);
+  }
 
   const SatResult<Q>& ref_for(Sat sat) const {
     const auto& r = ref_by_sat[static_cast<std::size_t>(sat)];
@@ -444,7 +477,7 @@ const char* side_name(int i) {
 // its small error of +-the exact axis.)
 template <class K>
 bool orientation_flipped(const K& k, const Exact& E, const Feature& f) {
-  return sgn(dot(vec_cast<Q>(k.axis(f)), E.k->axis(f))) <= 0;
+  return sgn(dot(vec_cast<Q>(k.axis(f)), E.axis(f))) <= 0;
 }
 
 // Does the exact brute force accept edge pair f in orientation plus / minus
@@ -579,8 +612,7 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
   for (int ea = 0; ea < E.A.edge_count() && bad.empty(); ++ea)
     for (int eb = 0; eb < EB && bad.empty(); ++eb) {
       const Feature f = Feature::edges(ea, eb);
-      const bool exact_candidate =
-          E.arcs[static_cast<std::size_t>(ea * EB + eb)].minkowski_face() && !E.k->edges_parallel(ea, eb);
+      const bool exact_candidate = E.minkowski_axis(ea, eb) != nullptr;  // Minkowski face, not parallel
       const bool skipped = k.edges_parallel(ea, eb);
       const bool taken =
           !skipped && (brute ? k.edge_separation_full(ea, eb).has_value() : k.minkowski_face(ea, eb));
@@ -780,11 +812,11 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
         }
         // the orientation of the Gauss-map edge axis (sat_kernel.hpp
         // edge_separation), for every pair both sides measure
-        if (!fs.minkowski_face() || !es.minkowski_face() || E.k->edges_parallel(ea, eb) ||
-            k.edges_parallel(ea, eb))
-          continue;
+        if (!fs.minkowski_face()) continue;
+        const Vec3<Q>* exact_axis = E.minkowski_axis(ea, eb);  // es a Minkowski face, not exactly parallel
+        if (exact_axis == nullptr || k.edges_parallel(ea, eb)) continue;
         const Feature fpair = Feature::edges(ea, eb);
-        const bool flipped = sgn(dot(vec_cast<Q>(k.axis(fpair)), E.k->axis(fpair))) <= 0;
+        const bool flipped = sgn(dot(vec_cast<Q>(k.axis(fpair)), *exact_axis)) <= 0;
         if (!flipped) {
           ++agree_sides;
           continue;
@@ -901,10 +933,14 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
   }
 }
 
+// given_a, given_b: the case's images in T when check_case has converted
+// them already (ConvexPolyhedron<T>::convert_from of Af, Bf), else null.
 template <class T>
 void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, Exact& E,
                       const std::string& cfg, bool skip_reference, const CheckOptions& opt, Recorder& rec,
-                      std::optional<SatResult<T>>* gauss_out = nullptr) {
+                      std::optional<SatResult<T>>* gauss_out = nullptr,
+                      const ConvexPolyhedron<T>* given_a = nullptr,
+                      const ConvexPolyhedron<T>* given_b = nullptr) {
   // mpq: the reference's own exact images E.A, E.B (the same conversion)
   std::optional<ConvexPolyhedron<T>> own_a, own_b;
   const ConvexPolyhedron<T>* pa = nullptr;
@@ -912,6 +948,9 @@ void check_exact_type(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<
   if constexpr (std::is_same_v<T, Q>) {
     pa = &E.A;
     pb = &E.B;
+  } else if (given_a != nullptr && given_b != nullptr) {
+    pa = given_a;
+    pb = given_b;
   } else {
     pa = &own_a.emplace(ConvexPolyhedron<T>::convert_from(Af));
     pb = &own_b.emplace(ConvexPolyhedron<T>::convert_from(Bf));
@@ -1136,20 +1175,31 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
     E.ref = sat::gauss_map_with(rk);
   }
   E.convex = exactly_convex(Af) && exactly_convex(Bf);
+  E.fill_minkowski_axes();
   rep.configs_run.push_back("mpq/gauss_map");
 
   // exact types among themselves
   check_exact_type<Q>(Af, Bf, E, "mpq", true, opt, rec);
-  CaseGaussMaps gauss;  // each configuration's Gauss-map result, shared with the manifold check
-  if (static_cast<std::int64_t>(E.A.edge_count()) * E.B.edge_count() <= opt.gmpq_pair_budget)
-    check_exact_type<CGAL::Gmpq>(Af, Bf, E, "gmpq", false, opt, rec, &gauss.gmpq);
-  else
+  // Each configuration's Gauss-map result and the images it was computed on,
+  // converted once here and shared with the manifold and posed checks.
+  CaseGaussMaps gauss;
+  std::optional<ConvexPolyhedron<CGAL::Gmpq>> Ag, Bg;
+  if (static_cast<std::int64_t>(E.A.edge_count()) * E.B.edge_count() <= opt.gmpq_pair_budget) {
+    Ag.emplace(ConvexPolyhedron<CGAL::Gmpq>::convert_from(Af));
+    Bg.emplace(ConvexPolyhedron<CGAL::Gmpq>::convert_from(Bf));
+    gauss.gmpq_a = &*Ag;
+    gauss.gmpq_b = &*Bg;
+    check_exact_type<CGAL::Gmpq>(Af, Bf, E, "gmpq", false, opt, rec, &gauss.gmpq, &*Ag, &*Bg);
+  } else {
     for (Sat sat : all_sats()) rec.skip("exact", "gmpq", sat_name(sat));
+  }
   check_exact_type<CGAL::Epeck::FT>(Af, Bf, E, "epeck", false, opt, rec);
 
   // float configurations on identical inputs
   const auto Ad = ConvexPolyhedron<double>::convert_from(Af);
   const auto Bd = ConvexPolyhedron<double>::convert_from(Bf);
+  gauss.double_a = &Ad;
+  gauss.double_b = &Bd;
   check_float<float, policy::Plain>(E, Af, Bf, "float_plain", false, opt, rec, gauss.float_plain);
   check_float<double, policy::Plain>(E, Ad, Bd, "double_plain", false, opt, rec, gauss.double_plain);
 #if SEPAX_FUZZ_HAS_ROBUST
@@ -1157,7 +1207,7 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   check_float<double, policy::Robust>(E, Ad, Bd, "double_robust", true, opt, rec, gauss.double_robust);
 #endif
   if (opt.manifolds) check_manifolds(Af, Bf, E.A, E.B, E.ref, gauss, opt, rep);
-  if (opt.posed) check_posed(Af, Bf, c.seed, opt, rep);
+  if (opt.posed) check_posed(Af, Bf, Ad, Bd, E.A, E.B, c.seed, opt, rep);
   return rep;
 }
 

@@ -884,10 +884,14 @@ ExactSide make_exact(const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& B
 
 // Gmpq against mpq: identical ids and exactly equal values.
 void check_gmpq(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, const ExactSide& E,
-                Recorder& rec, const std::optional<SatResult<CGAL::Gmpq>>& given) {
+                Recorder& rec, const CaseGaussMaps& maps) {
   using G = CGAL::Gmpq;
-  const auto A = ConvexPolyhedron<G>::convert_from(Af);
-  const auto B = ConvexPolyhedron<G>::convert_from(Bf);
+  std::optional<ConvexPolyhedron<G>> own_a, own_b;
+  const ConvexPolyhedron<G>& A =
+      maps.gmpq_a ? *maps.gmpq_a : own_a.emplace(ConvexPolyhedron<G>::convert_from(Af));
+  const ConvexPolyhedron<G>& B =
+      maps.gmpq_b ? *maps.gmpq_b : own_b.emplace(ConvexPolyhedron<G>::convert_from(Bf));
+  const std::optional<SatResult<G>>& given = maps.gmpq;
   const SatResult<G> r = given ? *given : run_sat<policy::Plain>(Sat::gauss_map, A, B);
   ManifoldOptions all_opt;
   all_opt.reduce = false;
@@ -929,9 +933,12 @@ void check_manifolds(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<f
   Recorder rec{rep, opt};
   const ExactSide E = make_exact(Aq, Bq, exact_sat);
   if (static_cast<std::int64_t>(Aq.edge_count()) * Bq.edge_count() <= opt.gmpq_pair_budget)
-    check_gmpq(Af, Bf, E, rec, given.gmpq);
-  const auto Ad = ConvexPolyhedron<double>::convert_from(Af);
-  const auto Bd = ConvexPolyhedron<double>::convert_from(Bf);
+    check_gmpq(Af, Bf, E, rec, given);
+  std::optional<ConvexPolyhedron<double>> own_a, own_b;
+  const ConvexPolyhedron<double>& Ad =
+      given.double_a ? *given.double_a : own_a.emplace(ConvexPolyhedron<double>::convert_from(Af));
+  const ConvexPolyhedron<double>& Bd =
+      given.double_b ? *given.double_b : own_b.emplace(ConvexPolyhedron<double>::convert_from(Bf));
   check_config<float, policy::Plain>(Af, Bf, E, "float_plain", rec, given.float_plain);
   check_config<double, policy::Plain>(Ad, Bd, E, "double_plain", rec, given.double_plain);
 #if SEPAX_FUZZ_HAS_ROBUST

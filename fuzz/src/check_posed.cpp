@@ -233,7 +233,7 @@ void posed_config(const ConvexPolyhedron<F>& A, const ConvexPolyhedron<F>& B, co
 
 // Exact rational poses stay exact: mpq shapes at integer-quaternion poses
 // against the mpq SAT on the shapes moved exactly.
-void posed_rational(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, std::uint64_t seed,
+void posed_rational(const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq, std::uint64_t seed,
                     Recorder& rec) {
   Rng r(case_seed(seed, name_hash("posed_rational")));
   auto pose = [&] {
@@ -245,8 +245,6 @@ void posed_rational(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<fl
     return from_integer_quaternion<Q>(q[0], q[1], q[2], q[3], t);
   };
   const RigidTransform<Q> xa = pose(), xb = pose();
-  const auto Aq = ConvexPolyhedron<Q>::convert_from(Af);
-  const auto Bq = ConvexPolyhedron<Q>::convert_from(Bf);
   const PreparedShape<Q> pa(Aq), pb(Bq);
   const ConvexPolyhedron<Q> Aw = transformed(Aq, xa), Bw = transformed(Bq, xb);
   for (Sat sat : {Sat::gauss_map, Sat::traversal}) {
@@ -264,7 +262,9 @@ void posed_rational(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<fl
 
 }  // namespace
 
-void check_posed(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, std::uint64_t seed,
+void check_posed(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
+                 const ConvexPolyhedron<double>& Ad, const ConvexPolyhedron<double>& Bd,
+                 const ConvexPolyhedron<Q>& Aq, const ConvexPolyhedron<Q>& Bq, std::uint64_t seed,
                  const CheckOptions& opt, CaseReport& rep) {
   Recorder rec{rep, opt, {}};
   double extent = 0;
@@ -272,8 +272,6 @@ void check_posed(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float
     for (const auto& v : p->vertices())
       for (int c = 0; c < 3; ++c) extent = std::max(extent, std::abs(double(v[c])));
   const Poses P = draw_poses(seed, extent > 0 ? extent : 1.0);
-  const auto Ad = ConvexPolyhedron<double>::convert_from(Af);
-  const auto Bd = ConvexPolyhedron<double>::convert_from(Bf);
   posed_config<float, policy::Plain>(Af, Bf, P, "float_plain", false, rec);
   posed_config<double, policy::Plain>(Ad, Bd, P, "double_plain", false, rec);
 #if SEPAX_FUZZ_HAS_ROBUST
@@ -281,7 +279,7 @@ void check_posed(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float
   posed_config<double, policy::Robust>(Ad, Bd, P, "double_robust", true, rec);
 #endif
   if (static_cast<std::int64_t>(Af.edge_count()) * Bf.edge_count() <= opt.posed_exact_pair_budget)
-    posed_rational(Af, Bf, seed, rec);
+    posed_rational(Aq, Bq, seed, rec);
   else
     for (Sat sat : {Sat::gauss_map, Sat::traversal}) rec.skip("posed_rational", "mpq", sat_name(sat));
 }

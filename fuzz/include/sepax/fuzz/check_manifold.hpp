@@ -29,10 +29,17 @@ namespace sepax::fuzz {
 /// has already computed (check.cpp runs them for the SAT comparisons): the
 /// manifold check builds its manifolds from these instead of running the same
 /// deterministic queries on the same inputs again.  One that is missing is run.
+/// The double and Gmpq images of the case's shapes those results were computed
+/// on (ConvexPolyhedron<T>::convert_from of the float shapes, converted once
+/// per case) are shared the same way; a null one is converted again.
 struct CaseGaussMaps {
   std::optional<SatResult<float>> float_plain, float_robust;
   std::optional<SatResult<double>> double_plain, double_robust;
   std::optional<SatResult<CGAL::Gmpq>> gmpq;
+  const ConvexPolyhedron<double>* double_a = nullptr;
+  const ConvexPolyhedron<double>* double_b = nullptr;
+  const ConvexPolyhedron<CGAL::Gmpq>* gmpq_a = nullptr;
+  const ConvexPolyhedron<CGAL::Gmpq>* gmpq_b = nullptr;
 };
 
 /// Compare the float and exact manifolds of one case and record them in

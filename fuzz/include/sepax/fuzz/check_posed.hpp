@@ -15,8 +15,11 @@
 
 #include <cstdint>
 
+#include <gmpxx.h>
+
 #include <sepax/convex_polyhedron.hpp>
 #include <sepax/fuzz/check.hpp>
+#include <sepax/robust/number_types.hpp>
 
 namespace sepax::fuzz {
 
@@ -52,7 +55,12 @@ namespace sepax::fuzz {
 ///                   decision, and the fresh result whenever it does not exit
 /// Every difference is unexplained: these are identities the library states,
 /// not roundings.  Skips above the budget are counted (CaseReport::skipped).
-void check_posed(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf, std::uint64_t seed,
-                 const CheckOptions& opt, CaseReport& rep);
+/// Ad, Bd and Aq, Bq are the case's double and mpq images
+/// (ConvexPolyhedron<T>::convert_from of Af, Bf), converted once per case by
+/// check_case.
+void check_posed(const ConvexPolyhedron<float>& Af, const ConvexPolyhedron<float>& Bf,
+                 const ConvexPolyhedron<double>& Ad, const ConvexPolyhedron<double>& Bd,
+                 const ConvexPolyhedron<mpq_class>& Aq, const ConvexPolyhedron<mpq_class>& Bq,
+                 std::uint64_t seed, const CheckOptions& opt, CaseReport& rep);
 
 }  // namespace sepax::fuzz
