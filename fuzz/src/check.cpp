@@ -224,12 +224,38 @@ struct Exact {
 //     Gauss map's O(E_A E_B) rational arc tests are what this removes.
 //   * face_query_a, face_query_b: E.fqA, E.fqB, which are this kernel's
 //     face_query_a, face_query_b.
+//   * edges_parallel and edge_separation of a pair that E.arcs makes a
+//     Minkowski face (the only pairs the Gauss map measures): parallel when
+//     E.minkowski_axes has no axis for it (it holds this kernel's axis of
+//     every such pair that is not exactly parallel), and the separation
+//     PlainKernel<mpq>::edge_separation computes from that axis n (its
+//     edge_axis): dot(n, tail_B - tail_A) over squared_norm(n), in rationals,
+//     so the same values.
 class ReferenceKernel : public PlainKernel<Q> {
  public:
   explicit ReferenceKernel(const Exact& e) : PlainKernel<Q>(e.A, e.B), e_(e) {}
 
   FaceQuery<Q> face_query_a(int f) const { return e_.fqA[static_cast<std::size_t>(f)]; }
   FaceQuery<Q> face_query_b(int f) const { return e_.fqB[static_cast<std::size_t>(f)]; }
+
+  bool edges_parallel(int ea, int eb) const {
+    if (!e_.arcs[pair_index(ea, eb)].minkowski_face()) return PlainKernel<Q>::edges_parallel(ea, eb);
+    return e_.minkowski_axis(ea, eb) == nullptr;
+  }
+
+  Separation<Q> edge_separation(int ea, int eb) const {
+    const Vec3<Q>* n = e_.minkowski_axis(ea, eb);
+    if (n == nullptr) return PlainKernel<Q>::edge_separation(ea, eb);
+    const Vec3<Q>& pa = e_.A.vertex(e_.A.edge_tail(ea));
+    const Vec3<Q>& pb = e_.B.vertex(e_.B.edge_tail(eb));
+    return Separation<Q>{dot(*n, Vec3<Q>(Q(pb[0] - pa[0]), Q(pb[1] - pa[1]), Q(pb[2] - pa[2]))),
+                         squared_norm(*n)};
+  }
+
+  std::size_t pair_index(int ea, int eb) const {
+    return static_cast<std::size_t>(ea) * static_cast<std::size_t>(e_.B.edge_count()) +
+           static_cast<std::size_t>(eb);
+  }
 
   int minkowski_faces(int ea, int lo, int hi, int* out) const {
     const ArcSigns* row =
@@ -1170,12 +1196,12 @@ CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
     E.nlenB.push_back(bounds::sqrt_lower(squared_norm(E.B.plane(f).normal).get_d()));
   }
   E.arcs = arc_signs_of(Af, Bf, I);
+  E.fill_minkowski_axes();
   {
     ReferenceKernel rk(E);
     E.ref = sat::gauss_map_with(rk);
   }
   E.convex = exactly_convex(Af) && exactly_convex(Bf);
-  E.fill_minkowski_axes();
   rep.configs_run.push_back("mpq/gauss_map");
 
   // exact types among themselves
