@@ -1116,24 +1116,67 @@ std::vector<int> face_supports(const std::vector<VZ>& n, const std::vector<VZ>& 
   return out;
 }
 
+// The float coordinates (as doubles, exactly) of the plane triples of p's
+// faces (t0, t1, t2: 9 per face) and of the endpoints of its edges (tail,
+// head: 6 per edge), for the filter in arc_signs_of.
+std::vector<double> triple_coordinates(const ConvexPolyhedron<float>& p) {
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(p.face_count()) * 9);
+  for (int f = 0; f < p.face_count(); ++f)
+    for (int v : p.face(f).plane_vertices)
+      for (int c = 0; c < 3; ++c) out.push_back(double(p.vertex(v)[c]));
+  return out;
+}
+std::vector<double> edge_coordinates(const ConvexPolyhedron<float>& p) {
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(p.edge_count()) * 6);
+  for (int e = 0; e < p.edge_count(); ++e)
+    for (int v : {p.edge_tail(e), p.edge_head(e)})
+      for (int c = 0; c < 3; ++c) out.push_back(double(p.vertex(v)[c]));
+  return out;
+}
+
+// Each sign is sign(n . d) for the normal n of a face of one shape and the
+// direction d of an edge of the other.  The semi-static filter decides it
+// first on the float coordinates: n . d = det[head - tail, t1 - t0, t2 - t0]
+// (orientation_filter.hpp, whose every certain sign is the exact sign); the
+// integers (IntegerImages: the same value times a positive power of two)
+// decide the rest, an exact zero included (the filter is never certain of 0).
 std::vector<ArcSigns> arc_signs_of(const ConvexPolyhedron<float>& A, const ConvexPolyhedron<float>& B,
                                    const IntegerImages& I) {
   Z acc;
-  auto dsign = [&](const VZ& n, const VZ& d) {
+  const std::vector<double> ta = triple_coordinates(A), tb = triple_coordinates(B);
+  const std::vector<double> ea_xyz = edge_coordinates(A), eb_xyz = edge_coordinates(B);
+  // sign(n_f . d_e): t the triple of face f (9 doubles), x the endpoints of
+  // edge e (6 doubles), n and d their integer images
+  auto dsign = [&](const double* t, const double* x, const VZ& n, const VZ& d) {
+    const FilteredSign fs = orientation_filter(x[0], x[1], x[2], x[3], x[4], x[5], t[0], t[1], t[2], t[3],
+                                               t[4], t[5], t[0], t[1], t[2], t[6], t[7], t[8]);
+    if (fs.certain) return fs.det > 0 ? 1 : -1;
     IntegerImages::dot_into(acc, n, d);
     return mpz_sgn(acc.get_mpz_t());
   };
   std::vector<ArcSigns> out;
   out.reserve(static_cast<std::size_t>(A.edge_count()) * static_cast<std::size_t>(B.edge_count()));
   for (int ea = 0; ea < A.edge_count(); ++ea) {
-    const VZ& a0 = I.na[static_cast<std::size_t>(A.edge_face(ea, 0))];
-    const VZ& a1 = I.na[static_cast<std::size_t>(A.edge_face(ea, 1))];
+    const int fa0 = A.edge_face(ea, 0), fa1 = A.edge_face(ea, 1);
+    const VZ& a0 = I.na[static_cast<std::size_t>(fa0)];
+    const VZ& a1 = I.na[static_cast<std::size_t>(fa1)];
+    const double* ta0 = ta.data() + static_cast<std::size_t>(fa0) * 9;
+    const double* ta1 = ta.data() + static_cast<std::size_t>(fa1) * 9;
+    const double* xa = ea_xyz.data() + static_cast<std::size_t>(ea) * 6;
+    const VZ& da = I.da[static_cast<std::size_t>(ea)];
     for (int eb = 0; eb < B.edge_count(); ++eb) {
+      const int fb0 = B.edge_face(eb, 0), fb1 = B.edge_face(eb, 1);
+      const double* xb = eb_xyz.data() + static_cast<std::size_t>(eb) * 6;
+      const VZ& db = I.db[static_cast<std::size_t>(eb)];
       ArcSigns s;
-      s.cba = dsign(I.nb[static_cast<std::size_t>(B.edge_face(eb, 0))], I.da[static_cast<std::size_t>(ea)]);
-      s.dba = dsign(I.nb[static_cast<std::size_t>(B.edge_face(eb, 1))], I.da[static_cast<std::size_t>(ea)]);
-      s.adc = -dsign(a0, I.db[static_cast<std::size_t>(eb)]);
-      s.bdc = -dsign(a1, I.db[static_cast<std::size_t>(eb)]);
+      s.cba =
+          dsign(tb.data() + static_cast<std::size_t>(fb0) * 9, xa, I.nb[static_cast<std::size_t>(fb0)], da);
+      s.dba =
+          dsign(tb.data() + static_cast<std::size_t>(fb1) * 9, xa, I.nb[static_cast<std::size_t>(fb1)], da);
+      s.adc = -dsign(ta0, xb, a0, db);
+      s.bdc = -dsign(ta1, xb, a1, db);
       out.push_back(s);
     }
   }
