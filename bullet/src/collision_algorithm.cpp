@@ -83,13 +83,25 @@ RigidTransform<float> pose_of(const btTransform& t) {
 
 btVector3 bt(const Vec3<float>& v) { return btVector3(v[0], v[1], v[2]); }
 
+/// btBoxShape::getHalfExtentsWithMargin's value (the half extents without
+/// margin plus the margin, each a float sum) with one call of the virtual
+/// getMargin where Bullet's makes three.
+btVector3 half_extents_with_margin(const btBoxShape& box) {
+  const btScalar m = box.getMargin();
+  return box.getHalfExtentsWithoutMargin() + btVector3(m, m, m);
+}
+
 }  // namespace
 
 bool is_supported(int shape_type) {
-  for (int t : kSupported) {
-    if (t == shape_type) return true;
+  switch (shape_type) {
+    case BOX_SHAPE_PROXYTYPE:
+    case CONVEX_HULL_SHAPE_PROXYTYPE:
+    case CONVEX_POINT_CLOUD_SHAPE_PROXYTYPE:
+      return true;
+    default:
+      return false;
   }
-  return false;
 }
 
 ShapeKey shape_key(const btCollisionShape& shape) {
@@ -100,7 +112,7 @@ ShapeKey shape_key(const btCollisionShape& shape) {
   const btVector3& s = shape.getLocalScaling();
   for (int i = 0; i < 3; ++i) k.scaling[i] = s[i];
   if (type == BOX_SHAPE_PROXYTYPE) {
-    const btVector3 h = static_cast<const btBoxShape&>(shape).getHalfExtentsWithMargin();
+    const btVector3 h = half_extents_with_margin(static_cast<const btBoxShape&>(shape));
     for (int i = 0; i < 3; ++i) k.size[i] = h[i];
   } else if (type == CONVEX_HULL_SHAPE_PROXYTYPE) {
     const auto& hull = static_cast<const btConvexHullShape&>(shape);
@@ -128,7 +140,7 @@ bool key_matches(const btCollisionShape& shape, const ShapeKey& k) {
     if (!(static_cast<float>(s[i]) == k.scaling[i])) return false;
   }
   if (type == BOX_SHAPE_PROXYTYPE) {
-    const btVector3 h = static_cast<const btBoxShape&>(shape).getHalfExtentsWithMargin();
+    const btVector3 h = half_extents_with_margin(static_cast<const btBoxShape&>(shape));
     for (int i = 0; i < 3; ++i) {
       if (!(static_cast<float>(h[i]) == k.size[i])) return false;
     }
@@ -280,7 +292,9 @@ struct NewPoint {
 };
 
 bool same_ids(const btManifoldPoint& x, const NewPoint& y) {
-  return x.m_partId0 == y.part0 && x.m_index0 == y.index0 && x.m_partId1 == y.part1 && x.m_index1 == y.index1;
+  // the four comparisons at once (no early exit: each is a load and a xor)
+  return ((x.m_partId0 ^ y.part0) | (x.m_index0 ^ y.index0) | (x.m_partId1 ^ y.part1) |
+          (x.m_index1 ^ y.index1)) == 0;
 }
 
 /// The pair's material and flags, as btManifoldResult::addContactPoint sets
@@ -397,8 +411,11 @@ int write_points(btPersistentManifold& man, const btCollisionObjectWrapper* w0,
   bool used[MANIFOLD_CACHE_SIZE] = {false, false, false, false};
   int matches = 0;
   for (int j = 0; j < count; ++j) {
-    for (int i = 0; i < stored && from[j] < 0; ++i) {
-      if (!used[i] && same_ids(man.getContactPoint(i), pts[j])) from[j] = i;
+    for (int i = 0; i < stored; ++i) {
+      if (!used[i] && same_ids(man.getContactPoint(i), pts[j])) {
+        from[j] = i;
+        break;
+      }
     }
     if (from[j] >= 0) {
       used[from[j]] = true;
