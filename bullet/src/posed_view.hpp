@@ -116,10 +116,11 @@ class PosedView {
   /// as it leaves them: the same instructions for the same vertices, so the
   /// same values with FMA contraction on or off.  When k W > 0, lo and hi
   /// get the posed vertices' smallest and largest coordinates
-  /// (simd::LaneBounds: over the groups, then over the lanes; the same
-  /// values as any order of comparison where no coordinate is NaN) and
-  /// in_range is false when a coordinate is NaN or beyond kRange.
-  /// Returns k W.
+  /// (simd::LaneBounds over the groups, then L::hmin over the lanes; the
+  /// same values as any order of comparison where no coordinate is NaN,
+  /// up to a zero's sign) and
+  /// in_range is false when a coordinate is NaN or beyond kRange (lo
+  /// and hi are then not read).  Returns k W.
   int pose_groups(const ConvexPolyhedron<float>& b, const RigidTransform<float>& x, float (&lo)[3],
                   float (&hi)[3], bool& in_range) {
     using L = simd::Lanes<float>;
@@ -143,7 +144,15 @@ class PosedView {
         box.add(vx, vy, vz);
       }
       in_range = box.within();
-      box.reduce(lo, hi);
+      // the lowest and highest over the lanes (L::hmin; the highest as the
+      // negated lowest of the negated lanes, both exact): the same values
+      // as LaneBounds::reduce where no coordinate is NaN (where one is,
+      // in_range is false and the extent is not read), but a zero's sign,
+      // which does not change max - min squared
+      for (int c = 0; c < 3; ++c) {
+        lo[c] = L::first(L::hmin(box.lo[c]));
+        hi[c] = -L::first(L::hmin(L::neg(box.hi[c])));
+      }
       return done;
     }
   }
