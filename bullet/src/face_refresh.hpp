@@ -167,7 +167,7 @@ using sepax::detail::side_plane;
 /// Returns the number of points within the margin (candidate_points).
 template <class BP, class Poly>
 int reduce_points(const ConvexPolyhedron<float>& a, const BP& bp, const Poly& poly, const Plane<float>& rp,
-                  bool ref_is_a, float margin, ContactPoint<float> (&pts)[4], std::size_t& count) {
+                  bool ref_is_a, float margin, ContactPoint<float> (&pts)[5], std::size_t& count) {
   const float n2 = sepax::detail::norm2_of(rp.normal);
   SmallVector<ContactPoint<float>, 16> all;
   SmallVector<Vec3<float>, 16> pos;
@@ -234,17 +234,18 @@ Refresh refresh_on(const ConvexPolyhedron<float>& a, const RigidTransform<float>
   }
   // face_contact's step 3, in A's frame
   const float n2 = sepax::detail::norm2_of(nr);
-  ContactPoint<float> pts[4];
+  // face_point writes its point only where it returns true: each point is
+  // built in place, a fifth in pts[4] only to say there are more
+  ContactPoint<float> pts[5];
   std::size_t count = 0;
   bool more = false;
-  ContactPoint<float> cand;
   for (const auto& v : *pp) {
-    if (!sepax::detail::face_point(v, rp, n2, ref_is_a, m, cand)) continue;
+    if (!sepax::detail::face_point(v, rp, n2, ref_is_a, m, pts[count])) continue;
     if (count == 4) {
       more = true;
       break;
     }
-    pts[count++] = cand;
+    ++count;
   }
   if (count == 0) return Refresh::Declined;  // face_contact's support-vertex fallback: its full path
   const int candidates =
