@@ -163,21 +163,27 @@ using sepax::detail::side_plane;
 /// face_contact's step 4 where the clip `poly` has more than four points
 /// within the margin: all of them (face_point, in clip order) reduced to
 /// four by face_contact's reduction (reduce_contact_points_into) on the same
-/// positions, depth keys and tolerances; the kept points go to pts[0..count).
-/// Returns the number of points within the margin (candidate_points).
+/// positions, depth keys and tolerances; pts[0..5) holds the first five
+/// (refresh_on's), the vertices from `next` on (after the fifth's) give the
+/// rest; the kept points go to pts[0..count).  Returns the number of points
+/// within the margin (candidate_points).
 template <class BP, class Poly>
-int reduce_points(const ConvexPolyhedron<float>& a, const BP& bp, const Poly& poly, const Plane<float>& rp,
-                  bool ref_is_a, float margin, ContactPoint<float> (&pts)[5], std::size_t& count) {
+int reduce_points(const ConvexPolyhedron<float>& a, const BP& bp, const Poly& poly, std::size_t next,
+                  const Plane<float>& rp, bool ref_is_a, float margin, ContactPoint<float> (&pts)[5],
+                  std::size_t& count) {
   const float n2 = sepax::detail::norm2_of(rp.normal);
   SmallVector<ContactPoint<float>, 16> all;
   SmallVector<Vec3<float>, 16> pos;
   SmallVector<float, 16> keys;
-  ContactPoint<float> c;
-  for (const auto& v : poly) {
-    if (!sepax::detail::face_point(v, rp, n2, ref_is_a, margin, c)) continue;
+  auto add = [&](const ContactPoint<float>& c) {
     all.push_back(c);
     pos.push_back(c.position);
     keys.push_back(c.separation.num);
+  };
+  for (const ContactPoint<float>& c : pts) add(c);
+  ContactPoint<float> c;
+  for (std::size_t i = next; i < poly.size(); ++i) {
+    if (sepax::detail::face_point(poly[i], rp, n2, ref_is_a, margin, c)) add(c);
   }
   const float area_tol = refresh_detail::extent_tolerance(a, bp, Tolerances<float>::kContactArea, 3);
   const float key_tol = refresh_detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 1);
@@ -235,21 +241,22 @@ Refresh refresh_on(const ConvexPolyhedron<float>& a, const RigidTransform<float>
   // face_contact's step 3, in A's frame
   const float n2 = sepax::detail::norm2_of(nr);
   // face_point writes its point only where it returns true: each point is
-  // built in place, a fifth in pts[4] only to say there are more
+  // built in place; a fifth in pts[4] says there are more, and the
+  // reduction starts from the five
   ContactPoint<float> pts[5];
   std::size_t count = 0;
-  bool more = false;
-  for (const auto& v : *pp) {
-    if (!sepax::detail::face_point(v, rp, n2, ref_is_a, m, pts[count])) continue;
+  std::size_t next = 0;  // after the fifth point's vertex, where there is one
+  for (std::size_t i = 0; i < pp->size(); ++i) {
+    if (!sepax::detail::face_point((*pp)[i], rp, n2, ref_is_a, m, pts[count])) continue;
     if (count == 4) {
-      more = true;
+      next = i + 1;
       break;
     }
     ++count;
   }
   if (count == 0) return Refresh::Declined;  // face_contact's support-vertex fallback: its full path
   const int candidates =
-      more ? reduce_points(a, bp, *pp, rp, ref_is_a, m, pts, count) : static_cast<int>(count);
+      next > 0 ? reduce_points(a, bp, *pp, next, rp, ref_is_a, m, pts, count) : static_cast<int>(count);
   out.kind = ContactKind::Face;
   out.feature = r.feature;
   out.normal = r.axis;
