@@ -246,10 +246,11 @@ Refresh refresh_on(const ConvexPolyhedron<float>& a, const RigidTransform<float>
   ContactPoint<float> pts[5];
   std::size_t count = 0;
   std::size_t next = 0;  // after the fifth point's vertex, where there is one
-  for (std::size_t i = 0; i < pp->size(); ++i) {
-    if (!sepax::detail::face_point((*pp)[i], rp, n2, ref_is_a, m, pts[count])) continue;
+  const auto* const first = pp->begin();
+  for (const auto* v = first; v != pp->end(); ++v) {
+    if (!sepax::detail::face_point(*v, rp, n2, ref_is_a, m, pts[count])) continue;
     if (count == 4) {
-      next = i + 1;
+      next = static_cast<std::size_t>(v - first) + 1;
       break;
     }
     ++count;
