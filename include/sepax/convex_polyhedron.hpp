@@ -259,6 +259,13 @@ class ConvexPolyhedron {
     p.topology_ = other.topology_;
     p.check_coordinates();
     p.compute_derived();
+    if (!(p.extent_ > 0) && other.extent() > 0) {
+      // (check_new_range would say the vertices coincide: they do only after the conversion)
+      const std::string t(number_traits<T>::name), u(number_traits<U>::name);
+      fail(ErrorCode::BadScale, "converted to " + t + ", every vertex of the shape (extent " +
+                                    num_str(other.extent()) + " in " + u +
+                                    ") rounds to the same point: below " + t + "'s range");
+    }
     p.check_new_range();
     return p;
   }

@@ -559,6 +559,15 @@ TEMPLATE_TEST_CASE("scale: with_vertices and convert_from check the new coordina
     e = code_of([&] { return ConvexPolyhedron<float>::convert_from(huge); });
     CHECK(e.first == ErrorCode::BadScale);
     CHECK(contains(e.second, "beyond the range of float"));
+    // one below float's range says the conversion made the vertices one point
+    auto small = cube.vertices();
+    for (auto& q : small) q *= 1e-200;
+    const auto tiny = ConvexPolyhedron<double>::from_faces(small, cube_faces);
+    e = code_of([&] { return ConvexPolyhedron<float>::convert_from(tiny); });
+    CHECK(e.first == ErrorCode::BadScale);
+    CHECK(contains(e.second,
+                   "converted to float, every vertex of the shape (extent 3.46e-200 in double) "
+                   "rounds to the same point"));
   }
 }
 
