@@ -77,12 +77,9 @@ ConvexPolyhedron<T> scaled_back(const ConvexPolyhedron<T>& h, int k) {
   vertices.reserve(as_index(h.vertex_count()));
   for (const auto& v : h.vertices())
     vertices.emplace_back(std::ldexp(v[0], -k), std::ldexp(v[1], -k), std::ldexp(v[2], -k));
-  std::vector<std::vector<int>> faces(as_index(h.face_count()));
-  for (int f = 0; f < h.face_count(); ++f) {
-    int e = h.face(f).edge;
-    for (int i = 0; i < h.face(f).count; ++i, e = h.half_edge(e).next)
-      faces[as_index(f)].push_back(h.half_edge(e).origin);
-  }
+  std::vector<std::vector<int>> faces;
+  faces.reserve(as_index(h.face_count()));
+  for (int f = 0; f < h.face_count(); ++f) faces.push_back(h.face_vertices(f));
   return ConvexPolyhedron<T>::from_faces(std::move(vertices), faces);
 }
 
