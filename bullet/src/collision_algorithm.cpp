@@ -91,9 +91,9 @@ btVector3 half_extents_with_margin(const btBoxShape& box) {
   return box.getHalfExtentsWithoutMargin() + btVector3(m, m, m);
 }
 
-}  // namespace
-
-bool is_supported(int shape_type) {
+/// Whether shape_type is in kSupported, as a switch (is_supported runs per
+/// pair and step); the static_assert below keeps it the same set.
+constexpr bool supported_type(int shape_type) {
   switch (shape_type) {
     case BOX_SHAPE_PROXYTYPE:
     case CONVEX_HULL_SHAPE_PROXYTYPE:
@@ -103,6 +103,21 @@ bool is_supported(int shape_type) {
       return false;
   }
 }
+
+/// supported_type and kSupported agree on every Bullet shape type.
+constexpr bool supported_type_is_the_list() {
+  for (int t = 0; t <= MAX_BROADPHASE_COLLISION_TYPES; ++t) {
+    bool listed = false;
+    for (int s : kSupported) listed = listed || s == t;
+    if (listed != supported_type(t)) return false;
+  }
+  return true;
+}
+static_assert(supported_type_is_the_list());
+
+}  // namespace
+
+bool is_supported(int shape_type) { return supported_type(shape_type); }
 
 ShapeKey shape_key(const btCollisionShape& shape) {
   ShapeKey k;
