@@ -177,12 +177,16 @@ struct Exact {
   // the same kernel functions on the same exact images give the same values.
   std::unordered_map<std::size_t, Vec3<Q>> minkowski_axes;
 
+  /// The index of edge pair (ea, eb) in arcs and minkowski_axes: ea * EB + eb.
+  std::size_t pair_index(int ea, int eb) const {
+    return static_cast<std::size_t>(ea) * static_cast<std::size_t>(B.edge_count()) +
+           static_cast<std::size_t>(eb);
+  }
+
   void fill_minkowski_axes() {
-    const int EB = B.edge_count();
     for (int ea = 0; ea < A.edge_count(); ++ea)
-      for (int eb = 0; eb < EB; ++eb) {
-        const std::size_t i =
-            static_cast<std::size_t>(ea) * static_cast<std::size_t>(EB) + static_cast<std::size_t>(eb);
+      for (int eb = 0; eb < B.edge_count(); ++eb) {
+        const std::size_t i = pair_index(ea, eb);
         if (arcs[i].minkowski_face() && !k->edges_parallel(ea, eb))
           minkowski_axes.emplace(i, k->axis(Feature::edges(ea, eb)));
       }
@@ -190,9 +194,7 @@ struct Exact {
   /// The exact axis of edge pair (ea, eb) when it is an exact Minkowski face
   /// that is not exactly parallel; null otherwise.
   const Vec3<Q>* minkowski_axis(int ea, int eb) const {
-    const auto it =
-        minkowski_axes.find(static_cast<std::size_t>(ea) * static_cast<std::size_t>(B.edge_count()) +
-                            static_cast<std::size_t>(eb));
+    const auto it = minkowski_axes.find(pair_index(ea, eb));
     return it == minkowski_axes.end() ? nullptr : &it->second;
   }
   /// k->axis(f), read from minkowski_axes when it is there.
@@ -239,7 +241,7 @@ class ReferenceKernel : public PlainKernel<Q> {
   FaceQuery<Q> face_query_b(int f) const { return e_.fqB[static_cast<std::size_t>(f)]; }
 
   bool edges_parallel(int ea, int eb) const {
-    if (!e_.arcs[pair_index(ea, eb)].minkowski_face()) return PlainKernel<Q>::edges_parallel(ea, eb);
+    if (!e_.arcs[e_.pair_index(ea, eb)].minkowski_face()) return PlainKernel<Q>::edges_parallel(ea, eb);
     return e_.minkowski_axis(ea, eb) == nullptr;
   }
 
@@ -252,14 +254,8 @@ class ReferenceKernel : public PlainKernel<Q> {
                          squared_norm(*n)};
   }
 
-  std::size_t pair_index(int ea, int eb) const {
-    return static_cast<std::size_t>(ea) * static_cast<std::size_t>(e_.B.edge_count()) +
-           static_cast<std::size_t>(eb);
-  }
-
   int minkowski_faces(int ea, int lo, int hi, int* out) const {
-    const ArcSigns* row =
-        e_.arcs.data() + static_cast<std::size_t>(ea) * static_cast<std::size_t>(e_.B.edge_count());
+    const ArcSigns* row = e_.arcs.data() + e_.pair_index(ea, 0);
     int n = 0;
     for (int eb = lo; eb < hi; ++eb)
       if (row[eb].minkowski_face()) out[n++] = eb;
@@ -789,7 +785,7 @@ void check_float(const Exact& E, const ConvexPolyhedron<F>& A, const ConvexPolyh
     for (int ea = 0; ea < EA; ++ea) {
       for (int eb = 0; eb < EB; ++eb) {
         const ArcSigns fs = k.arc_signs(ea, eb);
-        const ArcSigns& es = E.arcs[static_cast<std::size_t>(ea * EB + eb)];
+        const ArcSigns& es = E.arcs[E.pair_index(ea, eb)];
         const int f4[4] = {fs.cba, fs.dba, fs.adc, fs.bdc};
         const int e4[4] = {es.cba, es.dba, es.adc, es.bdc};
         Classification worst = Classification::agree;
