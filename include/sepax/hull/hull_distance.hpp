@@ -2,19 +2,22 @@
 //
 // How far points are from a built hull, in double on the builder's local coordinates (float T):
 //   1. polygon_faces: the hull's faces as polygons with Newell normals (well conditioned for thin faces).
-//   2. polygon_distance: a point's Euclidean distance from the hull, through its nearest face polygon.
-//   3. DeepInside: on a large solid, whether a point is certainly below every face plane, by a climb over
+//   2. plane_heights: a point's height over every face plane, in SIMD lanes.
+//   3. polygon_distance: a point's Euclidean distance from the hull, through its nearest face polygon.
+//   4. DeepInside: on a large solid, whether a point is certainly below every face plane, by a climb over
 //      adjacent faces instead of a pass over every face.
-//   4. distance_to_segment: a point's distance from a segment.
+//   5. distance_to_segment: a point's distance from a segment.
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <span>
 #include <vector>
 
 #include "../convex_polyhedron.hpp"
+#include "../simd_ops.hpp"
 #include "../tolerances.hpp"
 #include "../vec3.hpp"
 #include "index.hpp"
@@ -35,9 +38,22 @@ struct PolygonFace {
 struct PolygonFaces {
   std::vector<Vec3<double>> points;
   std::vector<PolygonFace> faces;
+  /// The faces' planes again by coordinate, faces[k].n and faces[k].off at k, once fill_lanes() ran: what
+  /// plane_heights reads in lanes.
+  std::vector<double> nx, ny, nz, off;
   PolygonFaces() = default;
   PolygonFaces(const PolygonFaces&) = delete;
   PolygonFaces(PolygonFaces&&) = default;
+  /// Fills nx, ny, nz and off from faces (before measuring points against every face).
+  void fill_lanes() {
+    for (auto* a : {&nx, &ny, &nz, &off}) a->clear(), a->reserve(faces.size());
+    for (const PolygonFace& fc : faces) {
+      nx.push_back(fc.n[0]);
+      ny.push_back(fc.n[1]);
+      nz.push_back(fc.n[2]);
+      off.push_back(fc.off);
+    }
+  }
 };
 
 // The faces of h as polygons on coordinates relative to centre, with Newell normals.
@@ -76,6 +92,34 @@ inline PolygonFaces polygon_faces(const ConvexPolyhedron<T>& h, const Vec3<T>& c
     out.faces.push_back(fc);
   }
   return out;
+}
+
+// heights[k] = dot(faces[k].n, x) - faces[k].off for every face k, Lanes<double>::width faces at a time
+// once pf.fill_lanes() ran (each lane computes dot()'s products and sums in its order, so the values are the
+// scalar expression's bit for bit; under FMA contraction the caveat of simd_ops.hpp); returns whether any
+// height is above 0.
+inline bool plane_heights(const PolygonFaces& pf, const Vec3<double>& x, std::vector<double>& heights) {
+  using L = simd::Lanes<double>;
+  constexpr std::size_t W = L::width;
+  const std::size_t count = pf.faces.size();
+  const std::size_t in_lanes = std::min(pf.nx.size(), count);  // (0 before fill_lanes(): face by face)
+  heights.resize(count);
+  const typename L::V x0 = L::set1(x[0]), x1 = L::set1(x[1]), x2 = L::set1(x[2]), zero = L::set1(0.0);
+  typename L::M above = L::lt(zero, zero);  // (false in every lane)
+  std::size_t k = 0;
+  for (; k + W <= in_lanes; k += W) {
+    const typename L::V h = L::sub(simd::dot3<L>(L::load(pf.nx.data() + k), L::load(pf.ny.data() + k),
+                                                 L::load(pf.nz.data() + k), x0, x1, x2),
+                                   L::load(pf.off.data() + k));
+    L::store(heights.data() + k, h);
+    above = L::mor(above, L::gt(h, zero));
+  }
+  bool any_above = L::bits(above) != 0;
+  for (; k < count; ++k) {
+    heights[k] = dot(pf.faces[k].n, x) - pf.faces[k].off;
+    any_above |= heights[k] > 0;
+  }
+  return any_above;
 }
 
 // Float T, a large solid: whether a point is certainly below every face
@@ -163,6 +207,23 @@ struct DeepInside {
   bool on_ = false, local_ = false;
 };
 
+// The first k >= from with |heights[k]| not above reach (NaN included), Lanes<double>::width heights at a
+// time; heights.size() if none.
+inline std::size_t next_within(const std::vector<double>& heights, std::size_t from, double reach) {
+  using L = simd::Lanes<double>;
+  constexpr std::size_t W = L::width;
+  const std::size_t count = heights.size();
+  const typename L::V r = L::set1(reach);
+  std::size_t k = from;
+  for (; k + W <= count; k += W) {
+    const unsigned beyond = L::bits(L::gt(L::abs(L::load(heights.data() + k)), r));
+    if (beyond != (1u << W) - 1) return k + static_cast<std::size_t>(std::countr_one(beyond));
+  }
+  for (; k < count; ++k)
+    if (!(std::abs(heights[k]) > reach)) return k;
+  return count;
+}
+
 // Euclidean distance of x from the polyhedron given by faces: the distance
 // to the nearest face polygon (its height if it projects inside the
 // polygon, else the distance to the nearest edge), or 0 if x is below that
@@ -172,30 +233,28 @@ struct DeepInside {
 // (Only the faces listed in subset, if given.)  A solid's point below
 // every plane is below its nearest face too: 0 without measuring polygons
 // (heights holds the heights, computed once, so both passes see the same).
-inline double polygon_distance(const std::vector<PolygonFace>& faces, bool flat, const Vec3<double>& x,
+inline double polygon_distance(const PolygonFaces& polygons, bool flat, const Vec3<double>& x,
                                std::vector<double>& heights, const std::vector<int>* subset = nullptr) {
+  const std::vector<PolygonFace>& faces = polygons.faces;
   double best = 1e300;
   bool above = false;  // above a face at the nearest distance (within rounding)
   const std::size_t count = subset != nullptr ? subset->size() : faces.size();
-  heights.resize(count);
   bool any_above = false;
   if (subset != nullptr) {
+    heights.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
       const auto& fc = faces[as_index((*subset)[k])];
       heights[k] = dot(fc.n, x) - fc.off;
       any_above |= heights[k] > 0;
     }
   } else {
-    for (std::size_t k = 0; k < count; ++k) {
-      heights[k] = dot(faces[k].n, x) - faces[k].off;
-      any_above |= heights[k] > 0;
-    }
+    any_above = plane_heights(polygons, x, heights);
   }
   if (!flat && !any_above) return 0.0;
   double reach = best * (1 + kHullDistanceTie);  // (kept equal to it as best changes)
-  for (std::size_t k = 0; k < count; ++k) {
+  // (a face whose |height| exceeds reach is skipped: the polygon is no nearer than its plane)
+  for (std::size_t k = next_within(heights, 0, reach); k < count; k = next_within(heights, k + 1, reach)) {
     const double h = heights[k];
-    if (std::abs(h) > reach) continue;  // (the polygon is no nearer than its plane)
     const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
     // (inside: |h|; else the nearest edge, its squared distance taken first: sqrt is correctly rounded,
     // hence monotone, so the root of the smallest is the smallest root)

@@ -244,11 +244,12 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
   const double e = to_double(eps_);
   const double slack = kHullPlaneRoundingSlack * number_traits<T>::unit_roundoff * max_abs;
   double worst = 0;
-  const PolygonFaces polygons = polygon_faces(h, centre_);
+  PolygonFaces polygons = polygon_faces(h, centre_);
   const std::vector<PolygonFace>& faces = polygons.faces;
   DeepInside<T> deep(
       h, faces, kHullDeepInsideSlack * slack + kHullDeepInsidePlanarity * Tolerances<T>::kPlanarity * extent_,
       pts_.size());
+  if (!(deep.enabled() && deep.local())) polygons.fill_lanes();  // (points measured against every face)
   std::vector<int> near;        // large solids: the faces measured for a point near the surface
   std::vector<double> heights;  // (polygon_distance's scratch)
   std::vector<int> seen(faces.size(), -1);
@@ -295,7 +296,7 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
     hp -= slack;
     height = std::max(height, hp / e);
     hp = std::max(
-        hp, polygon_distance(faces, h.is_flat(), vec_to_double(local_point(p)), heights, subset) - slack);
+        hp, polygon_distance(polygons, h.is_flat(), vec_to_double(local_point(p)), heights, subset) - slack);
     worst = std::max(worst, hp / e);
     if (hp > kHullRepairTolerance * e) outside.push_back(p);
   }
