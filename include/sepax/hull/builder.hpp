@@ -50,17 +50,42 @@ struct Triangle {
   /// float T: points above this face by at most eps (on it within the tolerance).  They are not outside,
   /// but they are not inside either: when the face is replaced they are tested against the new faces again.
   std::vector<int> on;
+
+  Triangle() = default;
+  Triangle(const Triangle&) = default;
+  Triangle& operator=(const Triangle&) = default;
+  /// Moves say noexcept although T's may not (gmpxx's moved-from mpq_class allocates anew, and GMP aborts
+  /// rather than throws when it cannot): the builder's vector of triangles then grows by moving each
+  /// triangle, not by copying its plane and point lists.
+  Triangle(Triangle&&) noexcept = default;
+  Triangle& operator=(Triangle&&) noexcept = default;
 };
+
+/// Float T: a face group's area-weighted plane (HullTraits<T>::kRefits).
+template <Number T>
+struct GroupFit {
+  Vec3<T> area = Vec3<T>(T(0), T(0), T(0));      ///< sum of triangle cross products
+  Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};  ///< the refitted plane (HullTraits::group_plane)
+};
+/// Exact T: no fitted plane to keep (a group's plane is its plane triangle's), so a group holds no T value.
+struct NoGroupFit {};
 
 /// A union-find group of triangles becoming one output face.
 template <Number T>
 struct FaceGroup {
-  std::vector<int> verts;                        ///< sorted welded point indices
-  Vec3<T> area = Vec3<T>(T(0), T(0), T(0));      ///< float: sum of triangle cross products
-  Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};  ///< float: the refitted plane (HullTraits::group_plane)
-  int plane_tri = -1;                            ///< exact: the triangle whose plane is the group's
-  bool degenerate = false;                       ///< a single zero-area triangle
-  std::vector<int> splits;                       ///< sorted ids of the split faces its triangles came from
+  std::vector<int> verts;  ///< sorted welded point indices
+  /// float: the area-weighted plane; exact: nothing
+  [[no_unique_address]] std::conditional_t<HullTraits<T>::kRefits, GroupFit<T>, NoGroupFit> fit;
+  int plane_tri = -1;       ///< exact: the triangle whose plane is the group's
+  bool degenerate = false;  ///< a single zero-area triangle
+  std::vector<int> splits;  ///< sorted ids of the split faces its triangles came from
+
+  FaceGroup() = default;
+  FaceGroup(const FaceGroup&) = default;
+  FaceGroup& operator=(const FaceGroup&) = default;
+  /// noexcept as Triangle's moves (the vector of groups grows by moving).
+  FaceGroup(FaceGroup&&) noexcept = default;
+  FaceGroup& operator=(FaceGroup&&) noexcept = default;
 };
 
 /// The sweep's record of a point it kept after searching the faces around its own (first_above_nearby).

@@ -90,7 +90,7 @@ inline void Builder<T>::unite(int x, int y) {
   }
   Traits::add_area(gx, gy);
   if (gx.degenerate && !gy.degenerate) {
-    gx.pl = gy.pl;
+    Traits::adopt_plane(gx, gy);
     gx.plane_tri = gy.plane_tri;
   }
   gx.degenerate = gx.degenerate && gy.degenerate;
@@ -112,7 +112,7 @@ inline void Builder<T>::init_group(int f) {
   g.degenerate = Traits::zero_area(*this, f);
   g.splits.clear();
   if (nomerge_[as_index(f)] != 0) g.splits.push_back(nomerge_[as_index(f)]);
-  g.area = Traits::triangle_area(*this, t);
+  Traits::init_group_area(*this, g, t);
 }
 
 // Groups the live triangles into faces, then extracts their loops.
@@ -423,7 +423,7 @@ inline std::vector<int> Builder<T>::fold_choice(const std::vector<int>& live,
   auto bend = [&](int g) {
     const Group& gr = groups_[as_index(g)];
     double d = 0;
-    for (int v : gr.verts) d = std::max(d, std::abs(to_double(height(gr.pl, v))));
+    for (int v : gr.verts) d = std::max(d, std::abs(to_double(height(Traits::group_plane(*this, gr), v))));
     return d;
   };
   for (const auto& [v, gs0] : folds) {

@@ -152,11 +152,10 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::build(const std::vector<in
 // A new triangle, its plane computed from the apex opposite its longest edge.
 template <Number T>
 inline int Builder<T>::new_tri(int p0, int p1, int p2) {
-  Tri t;
+  Tri& t = tris_.emplace_back();  // (built in place: no temporary to move for exact T)
   t.v = {p0, p1, p2};
   t.nb = {-1, -1, -1};
   Traits::set_plane(*this, t, p0, p1, p2);
-  tris_.push_back(std::move(t));
   return static_cast<int>(tris_.size()) - 1;
 }
 

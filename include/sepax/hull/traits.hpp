@@ -10,10 +10,11 @@
 //   set_plane                     a new triangle's plane (exact with double points: only when needed)
 //   coplanar, certainly_apart     "are two face groups one face" (exact: filtered for double points)
 //   init_group_plane, group_plane  a face group's plane (exact: its triangle's, built only when needed)
-//   refit, triangle_area, add_area  float: a group's area-weighted plane
+//   refit, init_group_area, add_area, adopt_plane  float: a group's area-weighted plane
 //   collinear, left_turn, convex_corner  the tolerant (float) or exact turn tests
 //   rounding_case                 a case only rounding causes: for exact T a builder bug
-// and the capabilities kRepairs, kRechecksRounding, kPrechecks, kTriangleFacesConvex, kWorkingScale.
+// and the capabilities kRepairs, kRechecksRounding, kPrechecks, kTriangleFacesConvex, kWorkingScale,
+// kRefits.
 #pragma once
 
 #include <algorithm>
@@ -49,6 +50,8 @@ struct ExactHullTraits {
   static constexpr bool kTriangleFacesConvex = true;
   /// No exponent range to stay within: built at the input's scale.
   static constexpr bool kWorkingScale = false;
+  /// A face group's plane is its plane triangle's: groups keep no fitted plane (FaceGroup::fit).
+  static constexpr bool kRefits = false;
   /// Suffixes of the error messages naming the tolerance.
   static constexpr const char* kWeldNote = "";
   static constexpr const char* kFlatNote = "";
@@ -201,12 +204,13 @@ struct ExactHullTraits {
   /// A group's plane is its root triangle's: nothing to refit, no area to keep.
   template <class B, class Group>
   static void refit(const B&, Group&) {}
-  template <class B, class Tri>
-  static Vec3<T> triangle_area(const B&, const Tri&) {
-    return Vec3<T>(T(0), T(0), T(0));
-  }
+  template <class B, class Group, class Tri>
+  static void init_group_area(const B&, Group&, const Tri&) {}
   template <class Group>
   static void add_area(Group&, const Group&) {}
+  /// (the plane follows plane_tri)
+  template <class Group>
+  static void adopt_plane(Group&, const Group&) {}
 
   /// All points on one line: exactly (c < 0, decided by the caller).
   static bool collinear(const T&, const Vec3<T>&, const T&) { return false; }
@@ -243,6 +247,8 @@ struct FloatHullTraits {
   /// A point set wider than Tolerances<T>::kHullExtentHigh or narrower than kHullExtentLow is built at a
   /// power of two times its coordinates (working_scale.hpp).
   static constexpr bool kWorkingScale = true;
+  /// A face group keeps its area-weighted plane, refitted as groups unite (FaceGroup::fit).
+  static constexpr bool kRefits = true;
   static constexpr const char* kWeldNote = " (points closer than the weld tolerance)";
   static constexpr const char* kFlatNote = " (within the flat tolerance)";
   static constexpr const char* kLineNote = " (within tolerance)";
@@ -382,11 +388,11 @@ struct FloatHullTraits {
   /// A group's plane starts as its triangle's and is refitted as groups unite (refit).
   template <class B, class Group>
   static void init_group_plane(B& b, Group& g, int f) {
-    g.pl = b.plane(f);
+    g.fit.pl = b.plane(f);
   }
   template <class B, class Group>
   static const Plane<T>& group_plane(const B&, const Group& g) {
-    return g.pl;
+    return g.fit.pl;
   }
   /// Either face sees every vertex of the other (not shared with it) less than eps below its plane.
   /// (Either: a thin face's own plane is poorly determined, so the other face's plane may be the one that
@@ -396,7 +402,7 @@ struct FloatHullTraits {
     auto close = [&](const Group& g, const Group& h) {
       for (int v : h.verts) {
         if (std::binary_search(g.verts.begin(), g.verts.end(), v)) continue;
-        if (!(b.height(g.pl, v) > -b.eps_)) return false;
+        if (!(b.height(g.fit.pl, v) > -b.eps_)) return false;
       }
       return true;
     };
@@ -405,22 +411,28 @@ struct FloatHullTraits {
   /// The group's plane: its area-weighted normal through the mean of its vertices.
   template <class B, class Group>
   static void refit(const B& b, Group& g) {
-    Vec3<T> n = g.area;
+    Vec3<T> n = g.fit.area;
     const T len = length(n);
     if (len > T(0)) n = Vec3<T>(n[0] / len, n[1] / len, n[2] / len);
     T off(0);
     for (int v : g.verts) off = off + dot(n, b.local_point(v));
     off = off / static_cast<T>(g.verts.size());
-    g.pl = Plane<T>{n, off};
+    g.fit.pl = Plane<T>{n, off};
   }
-  /// A triangle's area-weighted normal, its area from the edge lengths (Builder::tri_area2).
-  template <class B, class Tri>
-  static Vec3<T> triangle_area(const B& b, const Tri& t) {
-    return T(2) * number_traits<T>::sqrt(b.tri_area2(t)) * t.pl.normal;
+  /// A triangle's group starts with the triangle's area-weighted normal, its area from the edge lengths
+  /// (Builder::tri_area2).
+  template <class B, class Group, class Tri>
+  static void init_group_area(const B& b, Group& g, const Tri& t) {
+    g.fit.area = T(2) * number_traits<T>::sqrt(b.tri_area2(t)) * t.pl.normal;
   }
   template <class Group>
   static void add_area(Group& gx, const Group& gy) {
-    gx.area = Vec3<T>(gx.area + gy.area);
+    gx.fit.area = Vec3<T>(gx.fit.area + gy.fit.area);
+  }
+  /// A degenerate group joining a group with area takes its plane.
+  template <class Group>
+  static void adopt_plane(Group& gx, const Group& gy) {
+    gx.fit.pl = gy.fit.pl;
   }
 
   /// All points within flat x extent of line ab: far2 = |ab x ac|^2 for the farthest point c, its distance
