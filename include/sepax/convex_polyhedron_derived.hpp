@@ -271,9 +271,7 @@ template <Number T>
     return detail::unit_plane(n0, n1, n2, s, x.a0, x.a1, x.a2);
   } else {
     (void)scan;
-    const Vec3<T>& v0 = vertex(t[0]);
-    const Vec3<T> e1(vertex(t[1]) - v0), e2(vertex(t[2]) - v0);
-    return plane_through_cross(v0, e1, e2, Vec3<T>(cross(e1, e2)));
+    return plane_through(vertex(t[0]), vertex(t[1]), vertex(t[2]));
   }
 }
 

@@ -4,13 +4,17 @@
 //   * plane_through(a, b, c), plane_through_cross(a, e1, e2, c): the plane of
 //     three points, normalised when T normalises, scale-safe for float/double;
 //   * detail::triangle_aspect(a, b, c): the height-over-side measure by which
-//     ConvexPolyhedron and the hull builder refuse sliver plane triangles.
+//     ConvexPolyhedron and the hull builder refuse sliver plane triangles;
+//   * HasExactPlane<T>: a number type's own route to plane_through's values.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <limits>
+#include <optional>
 #include <type_traits>
+#include <utility>
 
 #include "number_traits.hpp"
 #include "vec3.hpp"
@@ -61,8 +65,20 @@ double triangle_aspect(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
 /// finite; ConvexPolyhedron reports that as BadScale.
 template <Number T>
 inline Plane<T> plane_through_cross(const Vec3<T>& a, const Vec3<T>& e1, const Vec3<T>& e2, const Vec3<T>& c);
+/// An exact number type may supply number_traits<T>::exact_plane(a, b, c): plane_through(a, b, c)'s values
+/// (the normal (b - a) x (c - a), the offset normal . a) by a faster route where the route applies, and
+/// std::nullopt where it does not (plane_through then computes them in T).  mpq_class does, for points whose
+/// coordinates are dyadic rationals (robust/number_types.hpp).
+template <class T>
+concept HasExactPlane = number_traits<T>::is_exact && requires(const Vec3<T>& v) {
+  { number_traits<T>::exact_plane(v, v, v) } -> std::same_as<std::optional<Plane<T>>>;
+};
+
 template <Number T>
 inline Plane<T> plane_through(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  if constexpr (HasExactPlane<T>) {
+    if (std::optional<Plane<T>> p = number_traits<T>::exact_plane(a, b, c)) return std::move(*p);
+  }
   const Vec3<T> e1(b - a), e2(c - a);
   return plane_through_cross(a, e1, e2, Vec3<T>(cross(e1, e2)));
 }

@@ -11,12 +11,15 @@
 #include <CGAL/Interval_nt.h>
 #include <gmpxx.h>
 
+#include <sepax/plane.hpp>
 #include <sepax/robust/number_types.hpp>
 #include <sepax/separation.hpp>
+#include <sepax/vec3.hpp>
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 namespace {
 
@@ -127,4 +130,56 @@ TEST_CASE("exact separations convert to double without spurious overflow", "[rob
   // the tetrahedron's face against the point (0.2, 0.2, 0.2) in doubles
   const Q p(0.2);
   CHECK(to_double(Separation<Q>{3 * p - 1, Q(3)}) == nearest(3 * p - 1, Q(3)));
+}
+
+TEST_CASE("mpq planes of dyadic points are computed in integers, with mpq's values",
+          "[robust][number_types]") {
+  // number_traits<mpq_class>::exact_plane against the plane computed with mpq operations, on points whose
+  // coordinates are doubles spread over many binades (zeros, signs, 2^-1074 ... 2^1000 in one triple), and
+  // std::nullopt (so plane_through computes in mpq) for a coordinate that is not dyadic.
+  using V = sepax::Vec3<mpq_class>;
+  auto reference = [](const V& a, const V& b, const V& c) {
+    const V e1(b - a), e2(c - a);
+    const V n(sepax::cross(e1, e2));
+    return sepax::Plane<mpq_class>{n, sepax::dot(n, a)};
+  };
+  std::uint64_t x = 0x9e3779b97f4a7c15ull;
+  auto next = [&] {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    return x;
+  };
+  auto coordinate = [&]() -> double {
+    const std::uint64_t r = next();
+    if (r % 11 == 0) return 0.0;
+    if (r % 13 == 0) return std::ldexp(static_cast<double>(r % 7) - 3.0, -1074);  // subnormal or zero
+    const double m = static_cast<double>(static_cast<std::int64_t>(r >> 11) % 2000001 - 1000000) / 1e6;
+    const int e =
+        static_cast<int>(next() % 61) - 30 + (r % 5 == 0 ? static_cast<int>(next() % 2000) - 1000 : 0);
+    return std::ldexp(m, e);
+  };
+  int faces = 0;
+  for (int i = 0; i < 3000; ++i) {
+    V p[3];
+    for (auto& v : p) v = V(mpq_class(coordinate()), mpq_class(coordinate()), mpq_class(coordinate()));
+    const std::optional<sepax::Plane<mpq_class>> fast =
+        sepax::number_traits<mpq_class>::exact_plane(p[0], p[1], p[2]);
+    REQUIRE(fast.has_value());
+    const sepax::Plane<mpq_class> slow = reference(p[0], p[1], p[2]);
+    for (int j = 0; j < 3; ++j) {
+      CHECK(fast->normal[j] == slow.normal[j]);
+      // the same representation: lowest terms, positive denominator
+      CHECK(mpz_cmp(mpq_denref(fast->normal[j].get_mpq_t()), mpq_denref(slow.normal[j].get_mpq_t())) == 0);
+    }
+    CHECK(fast->offset == slow.offset);
+    CHECK(mpz_cmp(mpq_denref(fast->offset.get_mpq_t()), mpq_denref(slow.offset.get_mpq_t())) == 0);
+    faces += !sepax::is_zero(slow.normal);
+  }
+  CHECK(faces > 2500);  // (most triples span a plane)
+  const V a(mpq_class(1, 3), mpq_class(0), mpq_class(0)), b(mpq_class(1), mpq_class(0), mpq_class(0)),
+      c(mpq_class(0), mpq_class(1), mpq_class(0));
+  CHECK_FALSE(sepax::number_traits<mpq_class>::exact_plane(a, b, c).has_value());
+  const sepax::Plane<mpq_class> q = sepax::plane_through(a, b, c), r = reference(a, b, c);
+  CHECK((q.normal == r.normal && q.offset == r.offset));
 }
