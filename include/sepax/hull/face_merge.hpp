@@ -100,7 +100,7 @@ inline void Builder<T>::unite(int x, int y) {
 }
 
 // Triangle f's own group (reset in place, keeping its vectors' storage across the merges and rebuilds of one
-// build; its plane is set by init_group_plane where the traits read it, float T, and exact T never reads it).
+// build; its fitted plane and area are set by init_group_fit where the traits keep them, float T).
 template <Number T>
 inline void Builder<T>::init_group(int f) {
   const Tri& t = tris_[as_index(f)];
@@ -108,11 +108,10 @@ inline void Builder<T>::init_group(int f) {
   g.verts.assign({t.v[0], t.v[1], t.v[2]});
   std::sort(g.verts.begin(), g.verts.end());
   g.plane_tri = f;
-  Traits::init_group_plane(*this, g, f);
+  Traits::init_group_fit(*this, g, f);
   g.degenerate = Traits::zero_area(*this, f);
   g.splits.clear();
   if (nomerge_[as_index(f)] != 0) g.splits.push_back(nomerge_[as_index(f)]);
-  Traits::init_group_area(*this, g, t);
 }
 
 // Groups the live triangles into faces, then extracts their loops.

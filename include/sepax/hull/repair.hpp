@@ -249,7 +249,9 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
   DeepInside<T> deep(
       h, faces, kHullDeepInsideSlack * slack + kHullDeepInsidePlanarity * Tolerances<T>::kPlanarity * extent_,
       pts_.size());
-  if (!(deep.enabled() && deep.local())) polygons.fill_lanes();  // (points measured against every face)
+  // (large solids: a point near the surface measured against the faces near the climb's, else every face)
+  const bool near_faces = deep.enabled() && deep.local();
+  if (!near_faces) polygons.fill_lanes();
   std::vector<int> near;        // large solids: the faces measured for a point near the surface
   std::vector<double> heights;  // (polygon_distance's scratch)
   std::vector<int> seen(faces.size(), -1);
@@ -263,7 +265,7 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
     double hp = -1e300;
     const std::vector<int>* subset = nullptr;
     if (deep.enabled() && deep(vec_to_double(local_point(p)))) continue;
-    if (deep.enabled() && deep.local()) {
+    if (near_faces) {
       // the faces connected to the climb's face through faces the point is
       // less than the bound below (every face it can be above or near)
       near.assign(1, deep.face());

@@ -9,8 +9,8 @@
 //   farthest, sees, zero_area     the eye of a face; "does the eye see face f"; "has f zero area"
 //   set_plane                     a new triangle's plane (exact with double points: only when needed)
 //   coplanar, certainly_apart     "are two face groups one face" (exact: filtered for double points)
-//   init_group_plane, group_plane  a face group's plane (exact: its triangle's, built only when needed)
-//   refit, init_group_area, add_area, adopt_plane  float: a group's area-weighted plane
+//   init_group_fit, group_plane    a face group's plane (exact: its triangle's, built only when needed)
+//   refit, add_area, adopt_plane  float: a group's area-weighted plane
 //   collinear, left_turn, convex_corner  the tolerant (float) or exact turn tests
 //   rounding_case                 a case only rounding causes: for exact T a builder bug
 // and the capabilities kRepairs, kRechecksRounding, kPrechecks, kTriangleFacesConvex, kWorkingScale,
@@ -189,7 +189,7 @@ struct ExactHullTraits {
   /// A group's plane is its plane triangle's (Builder::plane), built when first needed: with double points
   /// most groups never need one (zero_area and certainly_apart decide without).
   template <class B, class Group>
-  static void init_group_plane(B&, Group&, int) {}
+  static void init_group_fit(B&, Group&, int) {}
   template <class B, class Group>
   static const Plane<T>& group_plane(B& b, const Group& g) {
     return b.plane(g.plane_tri);
@@ -204,8 +204,6 @@ struct ExactHullTraits {
   /// A group's plane is its root triangle's: nothing to refit, no area to keep.
   template <class B, class Group>
   static void refit(const B&, Group&) {}
-  template <class B, class Group, class Tri>
-  static void init_group_area(const B&, Group&, const Tri&) {}
   template <class Group>
   static void add_area(Group&, const Group&) {}
   /// (the plane follows plane_tri)
@@ -385,10 +383,12 @@ struct FloatHullTraits {
   static bool certainly_apart(const B&, int, int) {
     return false;
   }
-  /// A group's plane starts as its triangle's and is refitted as groups unite (refit).
+  /// A group's plane starts as its triangle's, and its area as the triangle's area-weighted normal (its area
+  /// from the edge lengths, Builder::tri_area2); both are refitted as groups unite (refit, add_area).
   template <class B, class Group>
-  static void init_group_plane(B& b, Group& g, int f) {
+  static void init_group_fit(B& b, Group& g, int f) {
     g.fit.pl = b.plane(f);
+    g.fit.area = T(2) * number_traits<T>::sqrt(b.tri_area2(b.tris_[as_index(f)])) * g.fit.pl.normal;
   }
   template <class B, class Group>
   static const Plane<T>& group_plane(const B&, const Group& g) {
@@ -418,12 +418,6 @@ struct FloatHullTraits {
     for (int v : g.verts) off = off + dot(n, b.local_point(v));
     off = off / static_cast<T>(g.verts.size());
     g.fit.pl = Plane<T>{n, off};
-  }
-  /// A triangle's group starts with the triangle's area-weighted normal, its area from the edge lengths
-  /// (Builder::tri_area2).
-  template <class B, class Group, class Tri>
-  static void init_group_area(const B& b, Group& g, const Tri& t) {
-    g.fit.area = T(2) * number_traits<T>::sqrt(b.tri_area2(t)) * t.pl.normal;
   }
   template <class Group>
   static void add_area(Group& gx, const Group& gy) {
