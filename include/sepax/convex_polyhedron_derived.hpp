@@ -179,14 +179,18 @@ inline void ConvexPolyhedron<T>::compute_edge_data() {
   // per-edge arrays (after the planes: the normals are copies of theirs)
   const auto ne = static_cast<std::size_t>(edge_count());
   edge_dirs_.resize(ne);
-  edge_n0_.resize(ne);
-  edge_n1_.resize(ne);
+  if constexpr (kEdgeNormalCopies) {
+    edge_n0_.resize(ne);
+    edge_n1_.resize(ne);
+  }
   for (std::size_t e = 0; e < ne; ++e) {
     const HalfEdge& h0 = topology_.half_edges()[2 * e];
     const HalfEdge& h1 = topology_.half_edges()[2 * e + 1];
-    edge_dirs_[e] = Vec3<T>(vertex(h1.origin) - vertex(h0.origin));  // edge_direction(e)
-    edge_n0_[e] = planes_[static_cast<std::size_t>(h0.face)].normal;
-    edge_n1_[e] = planes_[static_cast<std::size_t>(h1.face)].normal;
+    assign_difference(edge_dirs_[e], vertex(h1.origin), vertex(h0.origin));  // edge_direction(e)
+    if constexpr (kEdgeNormalCopies) {
+      edge_n0_[e] = planes_[static_cast<std::size_t>(h0.face)].normal;
+      edge_n1_[e] = planes_[static_cast<std::size_t>(h1.face)].normal;
+    }
   }
   compute_lanes();
 }
@@ -281,8 +285,8 @@ inline void ConvexPolyhedron<T>::compute_bounds() {
   Vec3<T> sum(T(0), T(0), T(0));
   bmin_ = bmax_ = vertices_.empty() ? sum : vertices_[0];
   for (const auto& v : vertices_) {
-    sum = Vec3<T>(sum + v);
     for (int c = 0; c < 3; ++c) {
+      sum[c] += v[c];  // in place: no new number for exact T (the same sum)
       if (v[c] < bmin_[c]) bmin_[c] = v[c];
       if (v[c] > bmax_[c]) bmax_[c] = v[c];
     }

@@ -35,8 +35,10 @@ inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& s
   planes_.resize(static_cast<std::size_t>(topology_.face_count()));
   const auto ne = static_cast<std::size_t>(edge_count());
   edge_dirs_.resize(ne);
-  edge_n0_.resize(ne);
-  edge_n1_.resize(ne);
+  if constexpr (kEdgeNormalCopies) {
+    edge_n0_.resize(ne);
+    edge_n1_.resize(ne);
+  }
   lanes_bounded_ = support_lanes_bounded_ = false;
   normal_conditioning_.store(std::numeric_limits<double>::infinity());
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
@@ -122,9 +124,11 @@ inline void ConvexPolyhedron<T>::derive_rigid_part(std::span<const int> faces, s
     const auto k = static_cast<std::size_t>(e);
     const HalfEdge& h0 = topology_.half_edges()[2 * k];
     const HalfEdge& h1 = topology_.half_edges()[2 * k + 1];
-    edge_dirs_[k] = Vec3<T>(vertex(h1.origin) - vertex(h0.origin));
-    edge_n0_[k] = planes_[static_cast<std::size_t>(h0.face)].normal;
-    edge_n1_[k] = planes_[static_cast<std::size_t>(h1.face)].normal;
+    assign_difference(edge_dirs_[k], vertex(h1.origin), vertex(h0.origin));
+    if constexpr (kEdgeNormalCopies) {
+      edge_n0_[k] = planes_[static_cast<std::size_t>(h0.face)].normal;
+      edge_n1_[k] = planes_[static_cast<std::size_t>(h1.face)].normal;
+    }
   }
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     normal_conditioning_.store(scan.result());

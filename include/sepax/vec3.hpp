@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <concepts>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
@@ -48,6 +49,25 @@ inline Vec3<T> cross(const Vec3<T>& a, const Vec3<T>& b) {
 template <class T>
 inline T triple(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   return dot(a, cross(b, c));
+}
+
+/// An exact number type may supply number_traits<T>::exact_difference(out, a, b): out = a - b, the value
+/// T's subtraction gives, by a faster route where the route applies (returning true), and false with out
+/// untouched where it does not.  mpq_class does, for dyadic rationals (robust/number_types.hpp).
+template <class T>
+concept HasExactDifference = number_traits<T>::is_exact && requires(T& out, const T& x) {
+  { number_traits<T>::exact_difference(out, x, x) } -> std::same_as<bool>;
+};
+
+/// out = a - b, coordinate by coordinate: T's subtraction, or its exact_difference (the same values).
+template <class T>
+inline void assign_difference(Vec3<T>& out, const Vec3<T>& a, const Vec3<T>& b) {
+  for (int c = 0; c < 3; ++c) {
+    if constexpr (HasExactDifference<T>) {
+      if (number_traits<T>::exact_difference(out[c], a[c], b[c])) continue;
+    }
+    out[c] = a[c] - b[c];
+  }
 }
 
 template <class T>

@@ -132,6 +132,26 @@ TEST_CASE("exact separations convert to double without spurious overflow", "[rob
   CHECK(to_double(Separation<Q>{3 * p - 1, Q(3)}) == nearest(3 * p - 1, Q(3)));
 }
 
+// Doubles spread over many binades: zeros, signs, subnormals, 2^-1074 ... 2^1000 (xorshift, fixed seed).
+struct SpreadDoubles {
+  std::uint64_t x = 0x9e3779b97f4a7c15ull;
+  std::uint64_t next() {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    return x;
+  }
+  double operator()() {
+    const std::uint64_t r = next();
+    if (r % 11 == 0) return 0.0;
+    if (r % 13 == 0) return std::ldexp(static_cast<double>(r % 7) - 3.0, -1074);  // subnormal or zero
+    const double m = static_cast<double>(static_cast<std::int64_t>(r >> 11) % 2000001 - 1000000) / 1e6;
+    const int e =
+        static_cast<int>(next() % 61) - 30 + (r % 5 == 0 ? static_cast<int>(next() % 2000) - 1000 : 0);
+    return std::ldexp(m, e);
+  }
+};
+
 TEST_CASE("mpq planes of dyadic points are computed in integers, with mpq's values",
           "[robust][number_types]") {
   // number_traits<mpq_class>::exact_plane against the plane computed with mpq operations, on points whose
@@ -143,22 +163,7 @@ TEST_CASE("mpq planes of dyadic points are computed in integers, with mpq's valu
     const V n(sepax::cross(e1, e2));
     return sepax::Plane<mpq_class>{n, sepax::dot(n, a)};
   };
-  std::uint64_t x = 0x9e3779b97f4a7c15ull;
-  auto next = [&] {
-    x ^= x << 13;
-    x ^= x >> 7;
-    x ^= x << 17;
-    return x;
-  };
-  auto coordinate = [&]() -> double {
-    const std::uint64_t r = next();
-    if (r % 11 == 0) return 0.0;
-    if (r % 13 == 0) return std::ldexp(static_cast<double>(r % 7) - 3.0, -1074);  // subnormal or zero
-    const double m = static_cast<double>(static_cast<std::int64_t>(r >> 11) % 2000001 - 1000000) / 1e6;
-    const int e =
-        static_cast<int>(next() % 61) - 30 + (r % 5 == 0 ? static_cast<int>(next() % 2000) - 1000 : 0);
-    return std::ldexp(m, e);
-  };
+  SpreadDoubles coordinate;
   int faces = 0;
   for (int i = 0; i < 3000; ++i) {
     V p[3];
@@ -182,4 +187,54 @@ TEST_CASE("mpq planes of dyadic points are computed in integers, with mpq's valu
   CHECK_FALSE(sepax::number_traits<mpq_class>::exact_plane(a, b, c).has_value());
   const sepax::Plane<mpq_class> q = sepax::plane_through(a, b, c), r = reference(a, b, c);
   CHECK((q.normal == r.normal && q.offset == r.offset));
+}
+
+TEST_CASE("mpq differences of dyadic values are computed in integers, with mpq's values",
+          "[robust][number_types]") {
+  // number_traits<mpq_class>::exact_difference (ConvexPolyhedron's edge directions) against mpq's
+  // subtraction: the same value in the same lowest terms, also when the result is one of the operands;
+  // false with the result untouched for a value that is not dyadic.
+  using Q = mpq_class;
+  SpreadDoubles coordinate;
+  for (int i = 0; i < 5000; ++i) {
+    const Q a(coordinate()), b(coordinate());
+    const Q slow = a - b;
+    Q fast(7);
+    REQUIRE(sepax::number_traits<Q>::exact_difference(fast, a, b));
+    CHECK(fast == slow);
+    CHECK(mpz_cmp(mpq_denref(fast.get_mpq_t()), mpq_denref(slow.get_mpq_t())) == 0);
+    Q in_place = a;
+    REQUIRE(sepax::number_traits<Q>::exact_difference(in_place, in_place, b));
+    CHECK(in_place == slow);
+  }
+  Q out(5);
+  CHECK_FALSE(sepax::number_traits<Q>::exact_difference(out, Q(1, 3), Q(1)));
+  CHECK(out == 5);
+  const sepax::Vec3<Q> u(Q(1, 3), Q(0.75), Q(-2)), w(Q(1), Q(0.125), Q(1, 6));
+  sepax::Vec3<Q> d;
+  sepax::assign_difference(d, u, w);  // one coordinate dyadic on both sides, two not
+  CHECK(d == sepax::Vec3<Q>(u - w));
+}
+
+TEST_CASE("mpq values that are doubles convert without rounding; the others round once, to nearest",
+          "[robust][number_types]") {
+  // to_double reads a dyadic numerator of at most 53 bits over 2^z (z <= 1022) directly; every other
+  // value goes through MPFR.  Both sides of that boundary give the nearest double.
+  using Q = mpq_class;
+  SpreadDoubles coordinate;
+  for (int i = 0; i < 5000; ++i) {
+    const double d = coordinate();
+    CHECK(sepax::number_traits<Q>::to_double(Q(d)) == d);
+    CHECK(sepax::number_traits<CGAL::Gmpq>::to_double(CGAL::Gmpq(d)) == d);
+  }
+  const Q two53(9007199254740992.0);                                           // 2^53
+  CHECK(sepax::number_traits<Q>::to_double(two53 - 1) == 9007199254740991.0);  // 53 bits: exact
+  CHECK(sepax::number_traits<Q>::to_double(two53 + 1) == 9007199254740992.0);  // 54 bits: tie to even
+  CHECK(sepax::number_traits<Q>::to_double(two53 + 3) == 9007199254740996.0);  // tie to even, upward
+  const Q one_plus = Q(1) + Q(std::ldexp(1.0, -60));
+  CHECK(sepax::number_traits<Q>::to_double(one_plus) == 1.0);          // 61 bits over 2^60: rounds to 1
+  const Q tiny = Q(std::ldexp(1.0, -1000)) * Q(std::ldexp(3.0, -74));  // 3 / 2^1074: z > 1022
+  CHECK(sepax::number_traits<Q>::to_double(tiny) == std::ldexp(3.0, -1074));
+  CHECK(sepax::number_traits<Q>::to_double(Q(std::ldexp(1.0, -1022))) == std::ldexp(1.0, -1022));
+  CHECK(sepax::number_traits<Q>::to_double(-Q(std::ldexp(5.0, -1020))) == -std::ldexp(5.0, -1020));
 }

@@ -25,6 +25,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include <sepax/number_traits.hpp>
@@ -58,14 +59,38 @@ namespace sepax {
 namespace detail {
 /// The double nearest to q, ties to even (MPFR rounds the rational once to
 /// 53 bits; only below 2^-1022, in double's subnormal range, is the result
-/// rounded a second time).  Beyond double's range: +-infinity.
+/// rounded a second time).  Beyond double's range: +-infinity.  A q that is
+/// a normal double (numerator of at most 53 bits over 2^z, z <= 1022, as
+/// every value converted from a float or a double) is read without MPFR:
+/// numerator and scaling are exact, so the value is the same.
 inline double nearest_double(mpq_srcptr q) {
+  const mpz_srcptr num = mpq_numref(q), den = mpq_denref(q);
+  const mp_bitcnt_t z = mpz_scan1(den, 0);  // (den > 0)
+  if (z <= 1022 && mpz_sizeinbase(den, 2) == z + 1 && mpz_sizeinbase(num, 2) <= 53)
+    return std::ldexp(mpz_get_d(num), -static_cast<int>(z));
   mpfr_t f;
   mpfr_init2(f, 53);
   mpfr_set_q(f, q, MPFR_RNDN);
   const double d = mpfr_get_d(f, MPFR_RNDN);
   mpfr_clear(f);
   return d;
+}
+
+/// log2 of q's denominator when it is a power of two (q a dyadic rational, as every value converted from a
+/// float or a double is), std::nullopt otherwise.
+inline std::optional<mp_bitcnt_t> dyadic_shift(const mpq_class& q) {
+  const mpz_srcptr den = mpq_denref(q.get_mpq_t());
+  const mp_bitcnt_t z = mpz_scan1(den, 0);  // (den > 0)
+  if (mpz_sizeinbase(den, 2) != z + 1) return std::nullopt;
+  return z;
+}
+
+/// q = m / 2^e in lowest terms (m = 0: 0 / 1), dividing out the common powers of two.
+inline void set_dyadic(mpq_class& q, const mpz_class& m, mp_bitcnt_t e) {
+  const mp_bitcnt_t s = mpz_sgn(m.get_mpz_t()) == 0 ? e : std::min(e, mpz_scan1(m.get_mpz_t(), 0));
+  mpz_tdiv_q_2exp(mpq_numref(q.get_mpq_t()), m.get_mpz_t(), s);
+  mpz_set_ui(mpq_denref(q.get_mpq_t()), 1);
+  mpz_mul_2exp(mpq_denref(q.get_mpq_t()), mpq_denref(q.get_mpq_t()), e - s);
 }
 
 /// The plane through a, b, c (normal (b - a) x (c - a), offset normal . a) when every coordinate is a dyadic
@@ -81,11 +106,10 @@ inline std::optional<Plane<mpq_class>> dyadic_plane(const Vec3<mpq_class>& a, co
   mp_bitcnt_t shift[9];  // log2 of each denominator
   mp_bitcnt_t k = 0;
   for (int i = 0; i < 9; ++i) {
-    const mpz_srcptr den = mpq_denref((*points[i / 3])[i % 3].get_mpq_t());
-    const mp_bitcnt_t z = mpz_scan1(den, 0);                   // (den > 0)
-    if (mpz_sizeinbase(den, 2) != z + 1) return std::nullopt;  // not a power of two
-    shift[i] = z;
-    k = std::max(k, z);
+    const std::optional<mp_bitcnt_t> z = dyadic_shift((*points[i / 3])[i % 3]);
+    if (!z) return std::nullopt;
+    shift[i] = *z;
+    k = std::max(k, *z);
   }
   thread_local mpz_class x[9], u[3], w[3], n[3], off, t;  // (kept: no allocation once grown)
   for (int i = 0; i < 9; ++i)
@@ -102,17 +126,26 @@ inline std::optional<Plane<mpq_class>> dyadic_plane(const Vec3<mpq_class>& a, co
   }
   mpz_mul(off.get_mpz_t(), n[0].get_mpz_t(), x[0].get_mpz_t());
   for (int j = 1; j < 3; ++j) mpz_addmul(off.get_mpz_t(), n[j].get_mpz_t(), x[j].get_mpz_t());
-  // q = m / 2^e in lowest terms (m = 0: 0 / 1)
-  auto dyadic = [](mpq_class& q, const mpz_class& m, mp_bitcnt_t e) {
-    const mp_bitcnt_t s = mpz_sgn(m.get_mpz_t()) == 0 ? e : std::min(e, mpz_scan1(m.get_mpz_t(), 0));
-    mpz_tdiv_q_2exp(mpq_numref(q.get_mpq_t()), m.get_mpz_t(), s);
-    mpz_set_ui(mpq_denref(q.get_mpq_t()), 1);
-    mpz_mul_2exp(mpq_denref(q.get_mpq_t()), mpq_denref(q.get_mpq_t()), e - s);
-  };
   std::optional<Plane<mpq_class>> p(std::in_place);
-  for (int j = 0; j < 3; ++j) dyadic(p->normal[j], n[j], 2 * k);
-  dyadic(p->offset, off, 3 * k);
+  for (int j = 0; j < 3; ++j) set_dyadic(p->normal[j], n[j], 2 * k);
+  set_dyadic(p->offset, off, 3 * k);
   return p;
+}
+
+/// out = a - b when both are dyadic rationals, in integers as dyadic_plane computes (both on the
+/// denominator 2^k, k the larger shift; the numerators' difference; lowest terms by powers of two): the
+/// value mpq_class's subtraction gives, without its gcd.  false (out untouched) when a denominator is not a
+/// power of two.  out may be a or b.
+inline bool dyadic_difference(mpq_class& out, const mpq_class& a, const mpq_class& b) {
+  const std::optional<mp_bitcnt_t> za = dyadic_shift(a), zb = dyadic_shift(b);
+  if (!za || !zb) return false;
+  const mp_bitcnt_t k = std::max(*za, *zb);
+  thread_local mpz_class x, y;  // (kept: no allocation once grown)
+  mpz_mul_2exp(x.get_mpz_t(), mpq_numref(a.get_mpq_t()), k - *za);
+  mpz_mul_2exp(y.get_mpz_t(), mpq_numref(b.get_mpq_t()), k - *zb);
+  mpz_sub(x.get_mpz_t(), x.get_mpz_t(), y.get_mpz_t());
+  set_dyadic(out, x, k);
+  return true;
 }
 
 struct exact_rational_traits {
@@ -133,6 +166,10 @@ struct number_traits<mpq_class> : detail::exact_rational_traits {
   static std::optional<Plane<mpq_class>> exact_plane(const Vec3<mpq_class>& a, const Vec3<mpq_class>& b,
                                                      const Vec3<mpq_class>& c) {
     return detail::dyadic_plane(a, b, c);
+  }
+  /// out = a - b in integers when both are dyadic (detail::dyadic_difference).
+  static bool exact_difference(mpq_class& out, const mpq_class& a, const mpq_class& b) {
+    return detail::dyadic_difference(out, a, b);
   }
 };
 
