@@ -178,7 +178,7 @@ class Builder {
   double shadow_out(const ConvexPolyhedron<T>& h, const Vec3<double>& nrm) const;
   std::optional<ConvexPolyhedron<T>> projected_slab(const Vec3<double>& nrm, double lo, double hi);
   // ---- welded_points.hpp ----
-  void add_point(int input_index, const Vec3<T>& loc);
+  void add_point(int input_index, Vec3<T> loc);
   // ---- quickhull.hpp ----
   const Plane<T>& plane(int f);
   static T length(const Vec3<T>& v) { return Traits::length(v); }

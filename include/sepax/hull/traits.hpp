@@ -3,7 +3,7 @@
 // The number-type-dependent decisions of the hull builder, one traits type per kind of number type (the
 // model: CGAL's Convex_hull_traits_3), selected through number_traits<T>::is_exact.  The steps call them
 // as Traits::decision(builder, ...):
-//   scale, local, weld, prepare   tolerances and frame; welding; exact: the double copy of the points
+//   scale, local, shadow, weld    tolerances and frame; exact: the double copy of the points; welding
 //   classify, NearFace            "is p outside face f" (float: by more than eps; near points kept)
 //   outside_limit                 how far above a face p must be (float: eps, 0 once pinned)
 //   farthest, sees, zero_area     the eye of a face; "does the eye see face f"; "has f zero area"
@@ -65,25 +65,28 @@ struct ExactHullTraits {
   }
   static Vec3<T> local(const Vec3<T>& p, const Vec3<T>&) { return p; }
 
-  /// Exact duplicates are one point (loc sorted lexicographically by order).
+  /// Exact duplicates are one point (loc sorted lexicographically by order; each representative is moved
+  /// out of loc, and a point equal to the last one added is its duplicate).
   template <class B>
-  static void weld(B& b, const std::vector<Vec3<T>>& loc, const std::vector<int>& order) {
+  static void weld(B& b, std::vector<Vec3<T>>& loc, const std::vector<int>& order) {
     for (std::size_t k = 0; k < order.size(); ++k) {
-      if (k > 0 && loc[as_index(order[k])] == loc[as_index(order[k - 1])]) continue;
-      b.add_point(order[k], loc[as_index(order[k])]);
+      Vec3<T>& p = loc[as_index(order[k])];
+      if (k > 0 && p == b.q_.back()) continue;
+      b.add_point(order[k], std::move(p));
     }
   }
 
-  /// The welded points as doubles, used when every coordinate is exactly a double (checked exactly): the
-  /// quickhull predicates are then decided by orientation_filter, and in T only when it cannot decide.
+  /// The points as doubles (qd_, one per point of loc; Builder::weld keeps the welded points'), used when
+  /// every coordinate is exactly a double (checked exactly): welding then sorts on them, and the quickhull
+  /// predicates are decided by orientation_filter, in T only when it cannot decide.
   template <class B>
-  static void prepare(B& b) {
+  static void shadow(B& b, const std::vector<Vec3<T>>& loc) {
     b.shadow_ = true;
-    b.qd_.resize(b.q_.size());
-    for (std::size_t i = 0; i < b.q_.size() && b.shadow_; ++i)
+    b.qd_.resize(loc.size());
+    for (std::size_t i = 0; i < loc.size() && b.shadow_; ++i)
       for (int c = 0; c < 3 && b.shadow_; ++c) {
-        b.qd_[i][c] = to_double(b.q_[i][c]);
-        b.shadow_ = std::isfinite(b.qd_[i][c]) && from_double<T>(b.qd_[i][c]) == b.q_[i][c];
+        b.qd_[i][c] = to_double(loc[i][c]);
+        b.shadow_ = std::isfinite(b.qd_[i][c]) && from_double<T>(b.qd_[i][c]) == loc[i][c];
       }
     if (!b.shadow_) b.qd_.clear();
   }
@@ -274,7 +277,7 @@ struct FloatHullTraits {
   /// Sweep in x: a point is welded to an earlier representative within weld (loc sorted lexicographically
   /// by order).
   template <class B>
-  static void weld(B& b, const std::vector<Vec3<T>>& loc, const std::vector<int>& order) {
+  static void weld(B& b, std::vector<Vec3<T>>& loc, const std::vector<int>& order) {
     const T w2 = b.weld_ * b.weld_;
     std::size_t window = 0;  // first representative with x >= current x - weld
     for (int i : order) {
@@ -289,7 +292,7 @@ struct FloatHullTraits {
     }
   }
   template <class B>
-  static void prepare(B&) {}
+  static void shadow(B&, const std::vector<Vec3<T>>&) {}
 
   static T length(const Vec3<T>& v) { return number_traits<T>::sqrt(squared_norm(v)); }
 

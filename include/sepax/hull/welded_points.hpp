@@ -4,10 +4,11 @@
 //   1. check_input: NaN/Inf (NonFinite, naming the point), fewer than 3 points (TooFewPoints), an extent
 //      that overflows plane computations (BadScale); the tolerances eps, flat and weld of the extent.
 //   2. local: float T decides on coordinates relative to the bounding-box centre (exact T: as given).
-//   3. weld: one representative of the points closer than weld * extent (exact T: of exact duplicates);
+//   3. shadow: exact T whose coordinates are all exactly doubles gets a double copy, so that welding sorts
+//      on doubles and the quickhull predicates are filtered (orientation_filter.hpp) before they are
+//      decided in T.
+//   4. weld: one representative of the points closer than weld * extent (exact T: of exact duplicates);
 //      fewer than 3 left is TooFewPoints.
-//   4. make_shadow: exact T whose coordinates are all exactly doubles gets a double copy, so that the
-//      quickhull predicates are filtered (orientation_filter.hpp) before they are decided in T.
 #pragma once
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../error.hpp"
@@ -62,19 +64,32 @@ inline void Builder<T>::weld() {
   std::vector<Vec3<T>> loc;
   loc.reserve(in_.size());
   for (const auto& p : in_) loc.push_back(Traits::local(p, centre_));
+  Traits::shadow(*this, loc);
   std::vector<int> order(in_.size());
   std::iota(order.begin(), order.end(), 0);
-  auto lex = [&](int i, int j) {
-    const auto& a = loc[as_index(i)];
-    const auto& b = loc[as_index(j)];
-    if (a[0] != b[0]) return a[0] < b[0];
-    if (a[1] != b[1]) return a[1] < b[1];
-    if (a[2] != b[2]) return a[2] < b[2];
-    return i < j;
+  auto lex = [&](const auto& pts) {
+    return [&pts](int i, int j) {
+      const auto& a = pts[as_index(i)];
+      const auto& b = pts[as_index(j)];
+      if (a[0] != b[0]) return a[0] < b[0];
+      if (a[1] != b[1]) return a[1] < b[1];
+      if (a[2] != b[2]) return a[2] < b[2];
+      return i < j;
+    };
   };
-  std::sort(order.begin(), order.end(), lex);
+  if (shadow_) {
+    std::sort(order.begin(), order.end(), lex(qd_));  // (the same order: the doubles are the values)
+  } else {
+    std::sort(order.begin(), order.end(), lex(loc));
+  }
+  pts_.reserve(in_.size());  // (Vec3<T> of an exact T is copied, not moved, when a vector grows)
+  q_.reserve(in_.size());
   Traits::weld(*this, loc, order);
-  Traits::prepare(*this);
+  if (shadow_) {  // keep the welded points' doubles, in welded order
+    std::vector<Vec3<double>> welded(pts_.size());
+    for (std::size_t k = 0; k < pts_.size(); ++k) welded[k] = qd_[as_index(pts_[k])];
+    qd_ = std::move(welded);
+  }
   if (pts_.size() < 3) {
     throw InvalidInput(ErrorCode::TooFewPoints, "convex_hull: needs at least 3 distinct points, got " +
                                                     std::to_string(pts_.size()) +
@@ -86,9 +101,9 @@ inline void Builder<T>::weld() {
 
 // Adds a welded point: its input index and its local coordinates.
 template <Number T>
-inline void Builder<T>::add_point(int input_index, const Vec3<T>& loc) {
+inline void Builder<T>::add_point(int input_index, Vec3<T> loc) {
   pts_.push_back(input_index);
-  q_.push_back(loc);
+  q_.push_back(std::move(loc));
 }
 
 }  // namespace sepax::hull::detail
