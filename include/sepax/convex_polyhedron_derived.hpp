@@ -66,9 +66,14 @@ inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_
       planes_[1] = Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)};
       continue;
     }
-    const Plane<T> pl = plane_of_triple(static_cast<int>(f), cond ? &scan : nullptr);
-    planes_[f] = pl;
-    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) planes_in_range(pl, nb, of);
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      const Plane<T> pl = plane_of_triple(static_cast<int>(f), cond ? &scan : nullptr);
+      planes_[f] = pl;
+      planes_in_range(pl, nb, of);
+    } else {  // into the plane's numbers (plane_of_triple's values)
+      const auto& t = topology_.faces()[f].plane_vertices;
+      assign_plane_through(planes_[f], vertex(t[0]), vertex(t[1]), vertex(t[2]));
+    }
   }
   normal_conditioning_.reset();  // new coordinates: computed again on first use
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {

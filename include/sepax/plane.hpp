@@ -65,22 +65,32 @@ double triangle_aspect(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
 /// finite; ConvexPolyhedron reports that as BadScale.
 template <Number T>
 inline Plane<T> plane_through_cross(const Vec3<T>& a, const Vec3<T>& e1, const Vec3<T>& e2, const Vec3<T>& c);
-/// An exact number type may supply number_traits<T>::exact_plane(a, b, c): plane_through(a, b, c)'s values
-/// (the normal (b - a) x (c - a), the offset normal . a) by a faster route where the route applies, and
-/// std::nullopt where it does not (plane_through then computes them in T).  mpq_class does, for points whose
-/// coordinates are dyadic rationals (robust/number_types.hpp).
+/// An exact number type may supply number_traits<T>::exact_plane(out, a, b, c): out = plane_through(a, b, c)'s
+/// values (the normal (b - a) x (c - a), the offset normal . a) by a faster route where the route applies,
+/// returning true, and false with out untouched where it does not (plane_through then computes them in T).
+/// The result is written into out so that an existing plane's numbers are reused.  mpq_class does, for
+/// points whose coordinates are dyadic rationals (robust/number_types.hpp).
 template <class T>
-concept HasExactPlane = number_traits<T>::is_exact && requires(const Vec3<T>& v) {
-  { number_traits<T>::exact_plane(v, v, v) } -> std::same_as<std::optional<Plane<T>>>;
+concept HasExactPlane = number_traits<T>::is_exact && requires(Plane<T>& out, const Vec3<T>& v) {
+  { number_traits<T>::exact_plane(out, v, v, v) } -> std::same_as<bool>;
 };
 
 template <Number T>
 inline Plane<T> plane_through(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   if constexpr (HasExactPlane<T>) {
-    if (std::optional<Plane<T>> p = number_traits<T>::exact_plane(a, b, c)) return std::move(*p);
+    Plane<T> p;
+    if (number_traits<T>::exact_plane(p, a, b, c)) return p;
   }
   const Vec3<T> e1(b - a), e2(c - a);
   return plane_through_cross(a, e1, e2, Vec3<T>(cross(e1, e2)));
+}
+/// out = plane_through(a, b, c), into out's numbers where T has its own route (HasExactPlane).
+template <Number T>
+inline void assign_plane_through(Plane<T>& out, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  if constexpr (HasExactPlane<T>) {
+    if (number_traits<T>::exact_plane(out, a, b, c)) return;
+  }
+  out = plane_through(a, b, c);
 }
 /// plane_through(a, a + e1, a + e2) given e1 = b - a, e2 = c - a (as T
 /// computes them) and c = cross(e1, e2), computed by the caller.

@@ -156,7 +156,7 @@ TEST_CASE("mpq planes of dyadic points are computed in integers, with mpq's valu
           "[robust][number_types]") {
   // number_traits<mpq_class>::exact_plane against the plane computed with mpq operations, on points whose
   // coordinates are doubles spread over many binades (zeros, signs, 2^-1074 ... 2^1000 in one triple), and
-  // std::nullopt (so plane_through computes in mpq) for a coordinate that is not dyadic.
+  // false, the plane untouched (plane_through then computes in mpq), for a coordinate that is not dyadic.
   using V = sepax::Vec3<mpq_class>;
   auto reference = [](const V& a, const V& b, const V& c) {
     const V e1(b - a), e2(c - a);
@@ -165,28 +165,32 @@ TEST_CASE("mpq planes of dyadic points are computed in integers, with mpq's valu
   };
   SpreadDoubles coordinate;
   int faces = 0;
+  sepax::Plane<mpq_class> fast;
   for (int i = 0; i < 3000; ++i) {
     V p[3];
     for (auto& v : p) v = V(mpq_class(coordinate()), mpq_class(coordinate()), mpq_class(coordinate()));
-    const std::optional<sepax::Plane<mpq_class>> fast =
-        sepax::number_traits<mpq_class>::exact_plane(p[0], p[1], p[2]);
-    REQUIRE(fast.has_value());
+    // into a plane holding earlier values (as the builder's and a polyhedron's planes do)
+    REQUIRE(sepax::number_traits<mpq_class>::exact_plane(fast, p[0], p[1], p[2]));
     const sepax::Plane<mpq_class> slow = reference(p[0], p[1], p[2]);
     for (int j = 0; j < 3; ++j) {
-      CHECK(fast->normal[j] == slow.normal[j]);
+      CHECK(fast.normal[j] == slow.normal[j]);
       // the same representation: lowest terms, positive denominator
-      CHECK(mpz_cmp(mpq_denref(fast->normal[j].get_mpq_t()), mpq_denref(slow.normal[j].get_mpq_t())) == 0);
+      CHECK(mpz_cmp(mpq_denref(fast.normal[j].get_mpq_t()), mpq_denref(slow.normal[j].get_mpq_t())) == 0);
     }
-    CHECK(fast->offset == slow.offset);
-    CHECK(mpz_cmp(mpq_denref(fast->offset.get_mpq_t()), mpq_denref(slow.offset.get_mpq_t())) == 0);
+    CHECK(fast.offset == slow.offset);
+    CHECK(mpz_cmp(mpq_denref(fast.offset.get_mpq_t()), mpq_denref(slow.offset.get_mpq_t())) == 0);
     faces += !sepax::is_zero(slow.normal);
   }
   CHECK(faces > 2500);  // (most triples span a plane)
   const V a(mpq_class(1, 3), mpq_class(0), mpq_class(0)), b(mpq_class(1), mpq_class(0), mpq_class(0)),
       c(mpq_class(0), mpq_class(1), mpq_class(0));
-  CHECK_FALSE(sepax::number_traits<mpq_class>::exact_plane(a, b, c).has_value());
+  sepax::Plane<mpq_class> untouched{V(mpq_class(2), mpq_class(0), mpq_class(0)), mpq_class(5)};
+  CHECK_FALSE(sepax::number_traits<mpq_class>::exact_plane(untouched, a, b, c));
+  CHECK((untouched.normal == V(mpq_class(2), mpq_class(0), mpq_class(0)) && untouched.offset == 5));
   const sepax::Plane<mpq_class> q = sepax::plane_through(a, b, c), r = reference(a, b, c);
   CHECK((q.normal == r.normal && q.offset == r.offset));
+  sepax::assign_plane_through(untouched, a, b, c);  // mpq's operations, into an existing plane
+  CHECK((untouched.normal == r.normal && untouched.offset == r.offset));
 }
 
 TEST_CASE("mpq differences of dyadic values are computed in integers, with mpq's values",

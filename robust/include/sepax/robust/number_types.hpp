@@ -98,16 +98,16 @@ inline void set_dyadic(mpq_class& q, const mpz_class& m, mp_bitcnt_t e) {
 /// computed in integers: the nine coordinates on one denominator 2^k (X = x 2^k), N = (B - A) x (C - A) and
 /// N . A in mpz (no gcd), then normal = N / 2^(2k) and offset = N . A / 2^(3k) in lowest terms, dividing out
 /// the common powers of two.  These are the values mpq_class's operations give (a rational's lowest terms
-/// are unique), at a fraction of the cost: each mpq operation reduces its result by a gcd.  std::nullopt when
-/// a denominator is not a power of two.
-inline std::optional<Plane<mpq_class>> dyadic_plane(const Vec3<mpq_class>& a, const Vec3<mpq_class>& b,
-                                                    const Vec3<mpq_class>& c) {
+/// are unique), at a fraction of the cost: each mpq operation reduces its result by a gcd.  Written into
+/// out (its numbers reused); false, out untouched, when a denominator is not a power of two.
+inline bool dyadic_plane(Plane<mpq_class>& out, const Vec3<mpq_class>& a, const Vec3<mpq_class>& b,
+                         const Vec3<mpq_class>& c) {
   const Vec3<mpq_class>* points[3] = {&a, &b, &c};
   mp_bitcnt_t shift[9];  // log2 of each denominator
   mp_bitcnt_t k = 0;
   for (int i = 0; i < 9; ++i) {
     const std::optional<mp_bitcnt_t> z = dyadic_shift((*points[i / 3])[i % 3]);
-    if (!z) return std::nullopt;
+    if (!z) return false;
     shift[i] = *z;
     k = std::max(k, *z);
   }
@@ -126,10 +126,9 @@ inline std::optional<Plane<mpq_class>> dyadic_plane(const Vec3<mpq_class>& a, co
   }
   mpz_mul(off.get_mpz_t(), n[0].get_mpz_t(), x[0].get_mpz_t());
   for (int j = 1; j < 3; ++j) mpz_addmul(off.get_mpz_t(), n[j].get_mpz_t(), x[j].get_mpz_t());
-  std::optional<Plane<mpq_class>> p(std::in_place);
-  for (int j = 0; j < 3; ++j) set_dyadic(p->normal[j], n[j], 2 * k);
-  set_dyadic(p->offset, off, 3 * k);
-  return p;
+  for (int j = 0; j < 3; ++j) set_dyadic(out.normal[j], n[j], 2 * k);
+  set_dyadic(out.offset, off, 3 * k);
+  return true;
 }
 
 /// out = a - b when both are dyadic rationals, in integers as dyadic_plane computes (both on the
@@ -163,9 +162,9 @@ struct number_traits<mpq_class> : detail::exact_rational_traits {
   static double to_double(const mpq_class& x) { return detail::nearest_double(x.get_mpq_t()); }
   static bool is_finite(const mpq_class&) { return true; }
   /// plane_through's values in integers when the coordinates are dyadic (detail::dyadic_plane).
-  static std::optional<Plane<mpq_class>> exact_plane(const Vec3<mpq_class>& a, const Vec3<mpq_class>& b,
-                                                     const Vec3<mpq_class>& c) {
-    return detail::dyadic_plane(a, b, c);
+  static bool exact_plane(Plane<mpq_class>& out, const Vec3<mpq_class>& a, const Vec3<mpq_class>& b,
+                          const Vec3<mpq_class>& c) {
+    return detail::dyadic_plane(out, a, b, c);
   }
   /// out = a - b in integers when both are dyadic (detail::dyadic_difference).
   static bool exact_difference(mpq_class& out, const mpq_class& a, const mpq_class& b) {
