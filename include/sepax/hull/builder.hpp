@@ -178,7 +178,7 @@ class Builder {
   double shadow_out(const ConvexPolyhedron<T>& h, const Vec3<double>& nrm) const;
   std::optional<ConvexPolyhedron<T>> projected_slab(const Vec3<double>& nrm, double lo, double hi);
   // ---- welded_points.hpp ----
-  void add_point(int input_index, Vec3<T> loc);
+  void add_point(int input_index, const Vec3<T>& loc);
   // ---- quickhull.hpp ----
   const Plane<T>& plane(int f);
   static T length(const Vec3<T>& v) { return Traits::length(v); }
@@ -229,8 +229,16 @@ class Builder {
                    const std::vector<int>* loop_group = nullptr, std::vector<int>* split = nullptr,
                    ScannedPlanes<T>* scanned = nullptr);
 
-  /// Welded point i in local coordinates.
-  const Vec3<T>& local_point(int i) const { return q_[as_index(i)]; }
+  /// Welded point i in local coordinates (Traits::kLocalIsInput: the input point itself).
+  const Vec3<T>& local_point(int i) const {
+    if constexpr (Traits::kLocalIsInput) {
+      return input_point(i);
+    } else {
+      return q_[as_index(i)];
+    }
+  }
+  /// The number of welded points.
+  std::size_t welded_count() const { return pts_.size(); }
   /// The input point welded point v comes from.
   const Vec3<T>& input_point(int v) const { return in_[as_index(pts_[as_index(v)])]; }
   T height(const Plane<T>& pl, int p) const { return T(dot(pl.normal, local_point(p)) - pl.offset); }
@@ -250,7 +258,7 @@ class Builder {
   Vec3<T> centre_;
   T eps_, flat_, weld_;
   std::vector<int> pts_;    // welded point -> input index
-  std::vector<Vec3<T>> q_;  // welded point, local coordinates
+  std::vector<Vec3<T>> q_;  // welded point, local coordinates (empty where Traits::kLocalIsInput)
   std::vector<Tri> tris_;
   std::vector<int> parent_;
   std::vector<int> active_;                     // the points of the current build

@@ -87,7 +87,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
   std::vector<int> loop_group;
   loops.reserve(roots.size());
   loop_group.reserve(roots.size());
-  next_vertex_.assign(q_.size(), -1);
+  next_vertex_.assign(welded_count(), -1);
   for (std::size_t k = 0; k < roots.size(); ++k) {
     const int g = roots[k];
     const std::span<const BoundaryEdge> edges(bnd.data() + edge_start[k], edge_start[k + 1] - edge_start[k]);
@@ -138,7 +138,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
   }
   // Vertices on only two faces lie in the middle of an edge: drop them.
   std::vector<int>& degree = degree_;
-  degree.assign(q_.size(), 0);
+  degree.assign(welded_count(), 0);
   for (const auto& l : loops)
     for (int v : l) ++degree[as_index(v)];
   if (any_pinned_) {
@@ -182,7 +182,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
   // corner test with the other as the middle; rejecting both would lose
   // the corner).  Such rejections wait for the next rebuild; the first
   // failing corner of a rebuild is always rejected, so rebuilds still progress.
-  std::vector<char> rejected(q_.size(), 0), witness(q_.size(), 0);
+  std::vector<char> rejected(welded_count(), 0), witness(welded_count(), 0);
   std::vector<int> group_size;  // triangles per group root (kTriangleFacesConvex)
   if constexpr (Traits::kTriangleFacesConvex) {
     group_size.assign(tris_.size(), 0);
@@ -271,7 +271,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
   }
   // Output: compact vertex numbering, original input coordinates.
   std::vector<int>& index = next_vertex_;  // welded point -> output vertex
-  index.assign(q_.size(), -1);
+  index.assign(welded_count(), -1);
   std::vector<Vec3<T>> verts;
   std::vector<Vec3<double>> verts_double;  // exact T with double points: the same vertices as doubles
   out_vertex_.assign(pts_.size(), 0);

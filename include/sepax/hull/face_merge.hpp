@@ -130,7 +130,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::merge_and_build(std::vecto
   std::iota(parent_.begin(), parent_.end(), 0);
   // (read only by strands_vertex, which needs a pinned point)
   if (any_pinned_) {
-    star_.assign(q_.size(), {});
+    star_.assign(welded_count(), {});
     for (int f : live)
       for (int v : tris_[as_index(f)].v) star_[as_index(v)].push_back(f);
   }

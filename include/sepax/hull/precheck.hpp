@@ -154,7 +154,7 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
                                     ScannedPlanes<T>* scanned) {
   std::vector<int> used;  // the loops' vertices, ascending
   {
-    std::vector<char> on_loop(q_.size(), 0);
+    std::vector<char> on_loop(welded_count(), 0);
     for (const auto& l : loops)
       for (int v : l) on_loop[as_index(v)] = 1;
     for (std::size_t v = 0; v < on_loop.size(); ++v)
@@ -179,7 +179,7 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
   const T copl_tol = static_cast<T>(kHullPrecheckCoplanarMargin * Tolerances<T>::kCoplanar / 4 * ext);
   std::vector<Plane<T>> planes;
   // directed edge (u, v) -> (its face, its position in that face's loop)
-  const FaceEdges edge_face(loops, q_.size());
+  const FaceEdges edge_face(loops, welded_count());
   // Convexity: every used vertex against each face plane, or on a large hull
   // the local certificate (as validation): across each edge, the two
   // vertices of the neighbouring face next to that edge.

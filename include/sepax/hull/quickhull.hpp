@@ -44,7 +44,7 @@ template <Number T>
 inline const Plane<T>& Builder<T>::plane(int f) {
   Tri& t = tris_[as_index(f)];
   if (!t.has_plane) {
-    t.pl = plane_through(local_point(t.v[0]), local_point(t.v[1]), local_point(t.v[2]));
+    assign_plane_through(t.pl, local_point(t.v[0]), local_point(t.v[1]), local_point(t.v[2]));
     t.has_plane = true;
   }
   return t.pl;
@@ -298,7 +298,7 @@ inline bool Builder<T>::sweep() {
     // (the search's answer for a kept point is a function of the point, its face, its threshold and the
     // faces the search reached: while every one of those is still alive, their neighbours are the same
     // faces and the answer is the last sweep's, none above; sweep_memo_ holds what it needs to know)
-    std::vector<SweepMemo<T>> memo(scan ? 0 : q_.size());
+    std::vector<SweepMemo<T>> memo(scan ? 0 : welded_count());
     std::vector<int> memo_faces;
     if (!scan) memo_faces.reserve(sweep_faces_.size());
     auto recall = [&](int p, int f) {
@@ -396,6 +396,12 @@ template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<int>& active, int a, int b,
                                                             int c, int d, std::vector<int>& reject) {
   tris_.clear();
+  if constexpr (!std::is_trivially_copyable_v<T>) {
+    // An exact T's triangle holds a plane of numbers that allocate, and so does moving one (gmpxx's
+    // moved-from value): room for about the triangles a quickhull of these points makes (2 per hull vertex
+    // on the final hull, and those it replaces on the way), so that the vector rarely grows.
+    tris_.reserve(3 * active.size() + 8);
+  }
   merge_record_.valid = false;  // (its triangle indices are reused)
   sweep_memo_.clear();          // (the triangle indices it holds are reused)
   sweep_faces_.clear();
@@ -403,7 +409,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<in
   live_faces_.clear();
   live_made_ = 0;
   live_tree_.reset();
-  eye_visits_.assign(q_.size(), 0);
+  eye_visits_.assign(welded_count(), 0);
   // Orient the tetrahedron so that its faces point outward.
   if (height(plane_through(local_point(a), local_point(b), local_point(c)), d) > T(0)) std::swap(b, c);
   const int t0 = new_tri(a, b, c);  // d below

@@ -91,7 +91,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::resume(const std::vector<i
   } else {
     if (tris_state_ != TrisState::solid_result) return std::nullopt;
     tris_state_ = TrisState::solid_build;
-    std::vector<char> mark(q_.size(), 0);  // 1: pinned now; 2: a vertex of a live triangle
+    std::vector<char> mark(welded_count(), 0);  // 1: pinned now; 2: a vertex of a live triangle
     std::size_t live = 0;
     for (const Tri& t : tris_) {
       if (!t.alive) continue;
@@ -112,7 +112,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::resume(const std::vector<i
                           Traits::outside_limit(*this, p), near))
         return std::nullopt;  // (the build from the start resets the triangles)
     }
-    eye_visits_.assign(q_.size(), 0);  // (kHullMaxEyeVisits counts within one pass)
+    eye_visits_.assign(welded_count(), 0);  // (kHullMaxEyeVisits counts within one pass)
     active_.insert(active_.end(), pinned.begin(), pinned.end());
     std::sort(active_.begin(), active_.end());
     active_.erase(std::unique(active_.begin(), active_.end()), active_.end());

@@ -3,7 +3,8 @@
 // The number-type-dependent decisions of the hull builder, one traits type per kind of number type (the
 // model: CGAL's Convex_hull_traits_3), selected through number_traits<T>::is_exact.  The steps call them
 // as Traits::decision(builder, ...):
-//   scale, local, shadow, weld    tolerances and frame; exact: the double copy of the points; welding
+//   scale, local_points           tolerances and frame; the points welding works on
+//   shadow, weld                  exact: the double copy of the points; welding
 //   classify, NearFace            "is p outside face f" (float: by more than eps; near points kept)
 //   outside_limit                 how far above a face p must be (float: eps, 0 once pinned)
 //   farthest, sees, zero_area     the eye of a face; "does the eye see face f"; "has f zero area"
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -50,6 +52,8 @@ struct ExactHullTraits {
   static constexpr bool kTriangleFacesConvex = true;
   /// No exponent range to stay within: built at the input's scale.
   static constexpr bool kWorkingScale = false;
+  /// A welded point is the input point itself (Builder::local_point reads the input; nothing is copied).
+  static constexpr bool kLocalIsInput = true;
   /// A face group's plane is its plane triangle's: groups keep no fitted plane (FaceGroup::fit).
   static constexpr bool kRefits = false;
   /// Suffixes of the error messages naming the tolerance.
@@ -63,16 +67,18 @@ struct ExactHullTraits {
     b.centre_ = Vec3<T>(T(0), T(0), T(0));
     b.eps_ = b.flat_ = b.weld_ = T(0);
   }
-  static Vec3<T> local(const Vec3<T>& p, const Vec3<T>&) { return p; }
-
-  /// Exact duplicates are one point (loc sorted lexicographically by order; each representative is moved
-  /// out of loc, and a point equal to the last one added is its duplicate).
+  /// The points welding works on: the input as given (no copy).
   template <class B>
-  static void weld(B& b, std::vector<Vec3<T>>& loc, const std::vector<int>& order) {
+  static std::span<const Vec3<T>> local_points(const B& b) {
+    return b.in_;
+  }
+
+  /// Exact duplicates are one point (loc sorted lexicographically by order).
+  template <class B>
+  static void weld(B& b, std::span<const Vec3<T>> loc, const std::vector<int>& order) {
     for (std::size_t k = 0; k < order.size(); ++k) {
-      Vec3<T>& p = loc[as_index(order[k])];
-      if (k > 0 && p == b.q_.back()) continue;
-      b.add_point(order[k], std::move(p));
+      if (k > 0 && loc[as_index(order[k])] == loc[as_index(order[k - 1])]) continue;
+      b.add_point(order[k], loc[as_index(order[k])]);
     }
   }
 
@@ -80,7 +86,7 @@ struct ExactHullTraits {
   /// every coordinate is exactly a double (checked exactly): welding then sorts on them, and the quickhull
   /// predicates are decided by orientation_filter, in T only when it cannot decide.
   template <class B>
-  static void shadow(B& b, const std::vector<Vec3<T>>& loc) {
+  static void shadow(B& b, std::span<const Vec3<T>> loc) {
     b.shadow_ = true;
     b.qd_.resize(loc.size());
     for (std::size_t i = 0; i < loc.size() && b.shadow_; ++i)
@@ -171,7 +177,7 @@ struct ExactHullTraits {
   /// A new triangle's plane, exactly; with double points only when first needed (Builder::plane).
   template <class B, class Tri>
   static void set_plane(B& b, Tri& t, int p0, int p1, int p2) {
-    if (!b.shadow_) t.pl = plane_through(b.local_point(p0), b.local_point(p1), b.local_point(p2));
+    if (!b.shadow_) assign_plane_through(t.pl, b.local_point(p0), b.local_point(p1), b.local_point(p2));
     t.has_plane = !b.shadow_;
   }
 
@@ -248,6 +254,8 @@ struct FloatHullTraits {
   /// A point set wider than Tolerances<T>::kHullExtentHigh or narrower than kHullExtentLow is built at a
   /// power of two times its coordinates (working_scale.hpp).
   static constexpr bool kWorkingScale = true;
+  /// Welded points are kept relative to the bounding-box centre (Builder::q_).
+  static constexpr bool kLocalIsInput = false;
   /// A face group keeps its area-weighted plane, refitted as groups unite (FaceGroup::fit).
   static constexpr bool kRefits = true;
   static constexpr const char* kWeldNote = " (points closer than the weld tolerance)";
@@ -272,12 +280,19 @@ struct FloatHullTraits {
     b.flat_ = static_cast<T>(Tolerances<T>::kFlat * extent);
     b.weld_ = static_cast<T>(Tolerances<T>::kWeld * extent);
   }
-  static Vec3<T> local(const Vec3<T>& p, const Vec3<T>& centre) { return Vec3<T>(p - centre); }
+  /// The points welding works on: each input point minus the centre.
+  template <class B>
+  static std::vector<Vec3<T>> local_points(const B& b) {
+    std::vector<Vec3<T>> loc;
+    loc.reserve(b.in_.size());
+    for (const auto& p : b.in_) loc.push_back(Vec3<T>(p - b.centre_));
+    return loc;
+  }
 
   /// Sweep in x: a point is welded to an earlier representative within weld (loc sorted lexicographically
   /// by order).
   template <class B>
-  static void weld(B& b, std::vector<Vec3<T>>& loc, const std::vector<int>& order) {
+  static void weld(B& b, const std::vector<Vec3<T>>& loc, const std::vector<int>& order) {
     const T w2 = b.weld_ * b.weld_;
     std::size_t window = 0;  // first representative with x >= current x - weld
     for (int i : order) {

@@ -34,8 +34,9 @@ inline bool Builder<T>::remove_vertices(const std::vector<int>& reject) {
     return false;
   } else {
     if (tris_state_ == TrisState::none) return false;
-    tris_state_ = TrisState::none;          // (until every removal has succeeded)
-    std::vector<int> where(q_.size(), -2);  // rejected point -> a live triangle around it (-1: none found)
+    tris_state_ = TrisState::none;  // (until every removal has succeeded)
+    // rejected point -> a live triangle around it (-1: none found)
+    std::vector<int> where(welded_count(), -2);
     for (int r : reject) where[as_index(r)] = -1;
     std::size_t live = 0;
     for (std::size_t f = 0; f < tris_.size(); ++f) {

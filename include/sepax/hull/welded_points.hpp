@@ -3,7 +3,8 @@
 // The builder's first steps, before any hull:
 //   1. check_input: NaN/Inf (NonFinite, naming the point), fewer than 3 points (TooFewPoints), an extent
 //      that overflows plane computations (BadScale); the tolerances eps, flat and weld of the extent.
-//   2. local: float T decides on coordinates relative to the bounding-box centre (exact T: as given).
+//   2. local_points: float T decides on coordinates relative to the bounding-box centre (exact T: on the
+//      input as given, never copied: Traits::kLocalIsInput).
 //   3. shadow: exact T whose coordinates are all exactly doubles gets a double copy, so that welding sorts
 //      on doubles and the quickhull predicates are filtered (orientation_filter.hpp) before they are
 //      decided in T.
@@ -17,7 +18,6 @@
 #include <numeric>
 #include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "../error.hpp"
@@ -58,12 +58,10 @@ inline void Builder<T>::check_input() {
   Traits::scale(*this, lo, hi);
 }
 
-// Welds the input into the welded points (q_, pts_).
+// Welds the input into the welded points (pts_, and their local coordinates q_ unless Traits::kLocalIsInput).
 template <Number T>
 inline void Builder<T>::weld() {
-  std::vector<Vec3<T>> loc;
-  loc.reserve(in_.size());
-  for (const auto& p : in_) loc.push_back(Traits::local(p, centre_));
+  const auto loc = Traits::local_points(*this);  // float: a vector of differences; exact T: in_ itself
   Traits::shadow(*this, loc);
   std::vector<int> order(in_.size());
   std::iota(order.begin(), order.end(), 0);
@@ -82,8 +80,8 @@ inline void Builder<T>::weld() {
   } else {
     std::sort(order.begin(), order.end(), lex(loc));
   }
-  pts_.reserve(in_.size());  // (Vec3<T> of an exact T is copied, not moved, when a vector grows)
-  q_.reserve(in_.size());
+  pts_.reserve(in_.size());
+  if constexpr (!Traits::kLocalIsInput) q_.reserve(in_.size());
   Traits::weld(*this, loc, order);
   if (shadow_) {  // keep the welded points' doubles, in welded order
     std::vector<Vec3<double>> welded(pts_.size());
@@ -101,9 +99,9 @@ inline void Builder<T>::weld() {
 
 // Adds a welded point: its input index and its local coordinates.
 template <Number T>
-inline void Builder<T>::add_point(int input_index, Vec3<T> loc) {
+inline void Builder<T>::add_point(int input_index, const Vec3<T>& loc) {
   pts_.push_back(input_index);
-  q_.push_back(std::move(loc));
+  if constexpr (!Traits::kLocalIsInput) q_.push_back(loc);
 }
 
 }  // namespace sepax::hull::detail
