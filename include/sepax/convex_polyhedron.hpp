@@ -385,27 +385,20 @@ class ConvexPolyhedron {
   //   edge_directions()[e]   head - tail (one subtraction per coordinate in
   //                          T), parallel to normal(edge_face(e, 0)) x
   //                          normal(edge_face(e, 1));
-  //   edge_normal(e, s)      plane(edge_face(e, s)).normal: for float and
-  //                          double a copy in one array per side
-  //                          (kEdgeNormalCopies), for exact T the plane's
-  //                          own normal (a copy would cost an allocation per
-  //                          coordinate and save no indirection worth it).
-  // Contiguous arrays, so the Gauss map's edge-pair loop streams through B's
-  // edges without the half-edge and face indirections.
+  //   edge_normal(e, s)      plane(edge_face(e, s)).normal, read from the
+  //                          plane (no copy per edge: a posed image would
+  //                          copy every normal per query to save an
+  //                          indirection per read).
+  // A contiguous array, so the Gauss map's edge-pair loop streams through
+  // B's edge directions without the half-edge indirections.
   std::span<const Vec3<T>> edge_directions() const { return edge_dirs_; }
   /// edge_directions()[e] == vertex(edge_head(e)) - vertex(edge_tail(e)),
   /// parallel to normal(edge_face(e, 0)) x normal(edge_face(e, 1)).
   const Vec3<T>& edge_direction(int e) const { return edge_dirs_[static_cast<std::size_t>(e)]; }
   /// plane(edge_face(e, side)).normal, side 0 (face of half-edge 2e) or 1 (2e + 1).
   const Vec3<T>& edge_normal(int e, int side) const {
-    if constexpr (kEdgeNormalCopies) {
-      return (side == 0 ? edge_n0_ : edge_n1_)[static_cast<std::size_t>(e)];
-    } else {
-      return planes_[static_cast<std::size_t>(edge_face(e, side))].normal;
-    }
+    return planes_[static_cast<std::size_t>(edge_face(e, side))].normal;
   }
-  /// Whether edge_normal reads per-edge copies of the normals (float, double).
-  static constexpr bool kEdgeNormalCopies = std::is_floating_point_v<T>;
 
   // ---- lane arrays: one array per coordinate (float and double only) ----
   // The values above again, split by coordinate for SIMD scans (simd_lanes.hpp):
@@ -580,8 +573,6 @@ class ConvexPolyhedron {
   detail::SharedTopology topology_;  // half-edges, face loops, fans: shared by copies and images
   std::vector<Plane<T>> planes_;
   std::vector<Vec3<T>> edge_dirs_;  // per edge: head - tail
-  std::vector<Vec3<T>> edge_n0_;    // per edge: normal of edge_face(e, 0) (kEdgeNormalCopies; else empty)
-  std::vector<Vec3<T>> edge_n1_;    // per edge: normal of edge_face(e, 1) (kEdgeNormalCopies; else empty)
   std::vector<T> lanes_;            // lane arrays (float/double): 9 edge, then 3 vertex arrays
   int lane_edge_stride_ = 0, lane_vertex_stride_ = 0;
   bool lanes_bounded_ = false;

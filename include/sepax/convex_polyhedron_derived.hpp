@@ -3,7 +3,7 @@
 // ConvexPolyhedron<T>'s derived data (convex_polyhedron.hpp declares the
 // class), recomputed from the vertices and the topology whenever they change:
 //   * compute_derived(): the planes from the plane triples, then the rest;
-//   * compute_edge_data(): per-edge directions and face normals (arrays);
+//   * compute_edge_data(): per-edge directions (an array);
 //   * compute_lanes(): the same values one array per coordinate (SIMD scans);
 //   * compute_bounds(): bounds, centroid, extent, max |coordinate|;
 //   * compute_normal_conditioning(), NormalConditioningScan: the shape's term
@@ -181,21 +181,13 @@ inline std::size_t ConvexPolyhedron<T>::plane_groups(NormalConditioningScan* sca
 // arrays' capacity.
 template <Number T>
 inline void ConvexPolyhedron<T>::compute_edge_data() {
-  // per-edge arrays (after the planes: the normals are copies of theirs)
+  // per-edge directions
   const auto ne = static_cast<std::size_t>(edge_count());
   edge_dirs_.resize(ne);
-  if constexpr (kEdgeNormalCopies) {
-    edge_n0_.resize(ne);
-    edge_n1_.resize(ne);
-  }
   for (std::size_t e = 0; e < ne; ++e) {
     const HalfEdge& h0 = topology_.half_edges()[2 * e];
     const HalfEdge& h1 = topology_.half_edges()[2 * e + 1];
     assign_difference(edge_dirs_[e], vertex(h1.origin), vertex(h0.origin));  // edge_direction(e)
-    if constexpr (kEdgeNormalCopies) {
-      edge_n0_[e] = planes_[static_cast<std::size_t>(h0.face)].normal;
-      edge_n1_[e] = planes_[static_cast<std::size_t>(h1.face)].normal;
-    }
   }
   compute_lanes();
 }
@@ -479,8 +471,8 @@ inline bool ConvexPolyhedron<T>::write_edge_lanes() {
   const T big = T(0x1p60);
   bool ok = true;
   for (std::size_t e = 0; e < ne; ++e) {
-    const Vec3<T>& n0 = edge_n0_[e];
-    const Vec3<T>& n1 = edge_n1_[e];
+    const Vec3<T>& n0 = edge_normal(static_cast<int>(e), 0);
+    const Vec3<T>& n1 = edge_normal(static_cast<int>(e), 1);
     const Vec3<T>& d = edge_dirs_[e];
     for (std::size_t c = 0; c < 3; ++c) {
       l[c * es + e] = n0[static_cast<int>(c)];

@@ -35,10 +35,6 @@ inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& s
   planes_.resize(static_cast<std::size_t>(topology_.face_count()));
   const auto ne = static_cast<std::size_t>(edge_count());
   edge_dirs_.resize(ne);
-  if constexpr (kEdgeNormalCopies) {
-    edge_n0_.resize(ne);
-    edge_n1_.resize(ne);
-  }
   lanes_bounded_ = support_lanes_bounded_ = false;
   normal_conditioning_.store(std::numeric_limits<double>::infinity());
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
@@ -125,10 +121,6 @@ inline void ConvexPolyhedron<T>::derive_rigid_part(std::span<const int> faces, s
     const HalfEdge& h0 = topology_.half_edges()[2 * k];
     const HalfEdge& h1 = topology_.half_edges()[2 * k + 1];
     assign_difference(edge_dirs_[k], vertex(h1.origin), vertex(h0.origin));
-    if constexpr (kEdgeNormalCopies) {
-      edge_n0_[k] = planes_[static_cast<std::size_t>(h0.face)].normal;
-      edge_n1_[k] = planes_[static_cast<std::size_t>(h1.face)].normal;
-    }
   }
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     normal_conditioning_.store(scan.result());
@@ -165,17 +157,13 @@ inline bool ConvexPolyhedron<T>::derive_rigid_edges() {
     const HalfEdge& h0 = topology_.half_edges()[2 * e];
     const HalfEdge& h1 = topology_.half_edges()[2 * e + 1];
     const Vec3<T> d(vertex(h1.origin) - vertex(h0.origin));  // edge_direction(e)
-    const Vec3<T>& n0 = planes_[static_cast<std::size_t>(h0.face)].normal;
-    const Vec3<T>& n1 = planes_[static_cast<std::size_t>(h1.face)].normal;
     edge_dirs_[e] = d;
-    edge_n0_[e] = n0;
-    edge_n1_[e] = n1;
     for (int c = 0; c < 3; ++c) {
       if constexpr (kCheck) ok &= std::abs(d[c]) <= big;
       if constexpr (kLanes) {
         const auto k = static_cast<std::size_t>(c);
-        l[k * es + e] = n0[c];
-        l[(3 + k) * es + e] = T(-n1[c]);
+        l[k * es + e] = planes_[static_cast<std::size_t>(h0.face)].normal[c];
+        l[(3 + k) * es + e] = T(-planes_[static_cast<std::size_t>(h1.face)].normal[c]);
         l[(6 + k) * es + e] = d[c];
       }
     }
