@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace sepax {
 
@@ -52,9 +53,18 @@ inline std::string format_number(double x) {
 /// "point"); `value` is the input coordinate.
 inline InvalidInput coordinate_beyond_range(int axis, const char* what, std::size_t index, double value,
                                             std::string_view type_name) {
-  return InvalidInput(ErrorCode::BadScale, std::string("coordinate ") + "xyz"[axis] + " of " + what + " " +
-                                               std::to_string(index) + " (" + format_number(value) +
-                                               ") is beyond the range of " + std::string(type_name));
+  // (appended to one string: GCC 12 warns falsely, -Warray-bounds, on a chain of temporaries here)
+  std::string m = "coordinate ";
+  m += "xyz"[axis];
+  m += " of ";
+  m += what;
+  m += ' ';
+  m += std::to_string(index);
+  m += " (";
+  m += format_number(value);
+  m += ") is beyond the range of ";
+  m += type_name;
+  return InvalidInput(ErrorCode::BadScale, std::move(m));
 }
 
 inline const char* to_string(ErrorCode c) {
