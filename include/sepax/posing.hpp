@@ -78,33 +78,59 @@ namespace detail {
 
 /// An upper bound on |R^T R - I|_F for R = m (exact doubles), evaluated in
 /// double.  Rounding of the evaluation (u_d = 2^-53): each entry of
-/// R^T R - I rounds at most 4 times relative to |R|_F^2 + 1; a Frobenius
-/// norm over 9 entries then moves by at most 3x the entry error; the sum of
-/// squares and the square root add a relative 1e-15, inside the (1 + 1e-10).
+/// G - I, G = R^T R (g_ij = m_0i m_0j + m_1i m_1j + m_2i m_2j, summed left
+/// to right, then minus 1 on the diagonal), rounds at most 4 times relative
+/// to |R|_F^2 + 1; a Frobenius norm over 9 entries then moves by at most 3x
+/// the entry error; the sum of squares and the square root add a relative
+/// 1e-15, inside the (1 + 1e-10).  G is symmetric bit for bit (g_ij and g_ji
+/// are the same products summed in the same order), so the off-diagonal
+/// squares are summed once and doubled (exact), and |R|_F^2 is the trace of
+/// G (the same nine squares, summed in another order: a relative 1e-15).
+/// Written out: the loops over i, j and k were not unrolled (about 330
+/// instructions a call, against about 90).
 inline double rotation_defect(const double (&m)[3][3]) {
-  double f2 = 0, o2 = 0;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      f2 += m[i][j] * m[i][j];
-      double g = 0;
-      for (int k = 0; k < 3; ++k) g += m[k][i] * m[k][j];
-      g -= i == j ? 1.0 : 0.0;
-      o2 += g * g;
-    }
-  }
+  auto g = [&m](int i, int j) {
+    double s = m[0][i] * m[0][j];
+    s += m[1][i] * m[1][j];
+    s += m[2][i] * m[2][j];
+    return s;
+  };
+  const double g00 = g(0, 0), g11 = g(1, 1), g22 = g(2, 2);
+  const double g01 = g(0, 1), g02 = g(0, 2), g12 = g(1, 2);
+  const double d0 = g00 - 1.0, d1 = g11 - 1.0, d2 = g22 - 1.0;
+  const double o2 = (d0 * d0 + d1 * d1 + d2 * d2) + 2.0 * (g01 * g01 + g02 * g02 + g12 * g12);
+  const double f2 = g00 + g11 + g22;
   const double ud = 0x1p-53;
   const double fro = std::sqrt(f2) * (1 + 1e-10);
   return std::sqrt(o2) * (1 + 1e-10) + 13 * ud * (fro * fro + 1);
 }
 
+/// m = x's rotation in double (float/double entries, taken exactly), written
+/// out (Eigen's storage is column-major: data()[i + 3 j] = R(i, j)).
+template <Number T>
+void rotation_in_double(const RigidTransform<T>& x, double (&m)[3][3]) {
+  static_assert(std::is_floating_point_v<T>);
+  const T* r = x.rotation.data();
+  auto at = [r](int k) { return static_cast<double>(r[k]); };
+  m[0][0] = at(0), m[0][1] = at(3), m[0][2] = at(6);
+  m[1][0] = at(1), m[1][1] = at(4), m[1][2] = at(7);
+  m[2][0] = at(2), m[2][1] = at(5), m[2][2] = at(8);
+}
+
 /// The same for x's rotation (float/double, its entries taken exactly).
 template <Number T>
 double rotation_defect(const RigidTransform<T>& x) {
-  static_assert(std::is_floating_point_v<T>);
   double m[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m[i][j] = static_cast<double>(x.rotation(i, j));
+  rotation_in_double(x, m);
   return rotation_defect(m);
+}
+
+/// check_rigid's refusal of a float/double rotation (out of line: the
+/// message's formatting stays off the query path).
+[[noreturn]] [[gnu::cold]] [[gnu::noinline]] inline void refuse_rotation(double omega, double det) {
+  throw InvalidInput(ErrorCode::BadScale, "pose: the rotation is not a rotation (|R^T R - I| about " +
+                                              std::to_string(omega) + ", det = " + std::to_string(det) +
+                                              "; sepax needs an orthonormal matrix with det +1 within 1e-3)");
 }
 
 /// x.apply on simd::Lanes<T> vectors of coordinates (float/double), in
@@ -119,16 +145,20 @@ struct PoseLanes {
   using V = typename L::V;
   V r[3][3], t[3];
   explicit PoseLanes(const RigidTransform<T>& x) {
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) r[i][j] = L::set1(x.rotation(i, j));
-      t[i] = L::set1(x.translation[i]);
-    }
+    const T* m = x.rotation.data();  // column-major: m[i + 3 j] = R(i, j)
+    r[0][0] = L::set1(m[0]), r[1][0] = L::set1(m[1]), r[2][0] = L::set1(m[2]);
+    r[0][1] = L::set1(m[3]), r[1][1] = L::set1(m[4]), r[2][1] = L::set1(m[5]);
+    r[0][2] = L::set1(m[6]), r[1][2] = L::set1(m[7]), r[2][2] = L::set1(m[8]);
+    t[0] = L::set1(x.translation[0]), t[1] = L::set1(x.translation[1]), t[2] = L::set1(x.translation[2]);
+  }
+  // written out: the loop over the rows was not unrolled (about 12
+  // instructions a group of lanes)
+  SEPAX_SIMD_INLINE V row(int i, V a, V b, V c) const {
+    return L::add(L::add(L::add(L::mul(r[i][0], a), L::mul(r[i][1], b)), L::mul(r[i][2], c)), t[i]);
   }
   SEPAX_SIMD_INLINE void operator()(V& a, V& b, V& c) const {
-    V o[3];
-    for (int i = 0; i < 3; ++i)
-      o[i] = L::add(L::add(L::add(L::mul(r[i][0], a), L::mul(r[i][1], b)), L::mul(r[i][2], c)), t[i]);
-    a = o[0], b = o[1], c = o[2];
+    const V o0 = row(0, a, b, c), o1 = row(1, a, b, c), o2 = row(2, a, b, c);
+    a = o0, b = o1, c = o2;
   }
 };
 
@@ -139,8 +169,8 @@ struct PoseLanes {
 /// T requires det R > 0, decided exactly, and is exact for any such R.
 template <Number T>
 void check_rigid(const RigidTransform<T>& x) {
-  const auto& r = x.rotation;
   if constexpr (number_traits<T>::is_exact) {
+    const auto& r = x.rotation;
     const T det = r(0, 0) * (r(1, 1) * r(2, 2) - r(1, 2) * r(2, 1)) -
                   r(0, 1) * (r(1, 0) * r(2, 2) - r(1, 2) * r(2, 0)) +
                   r(0, 2) * (r(1, 0) * r(2, 1) - r(1, 1) * r(2, 0));
@@ -151,20 +181,15 @@ void check_rigid(const RigidTransform<T>& x) {
     }
   } else {
     double m[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) m[i][j] = static_cast<double>(r(i, j));
+    rotation_in_double(x, m);
     // Within omega <= 1e-3, |det M| >= (1 - 1e-3)^(3/2), far beyond the
     // rounding of its double evaluation, so det's computed sign is exact.
     const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
                        m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                        m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     const double omega = rotation_defect(m);
-    if (!(omega <= 1e-3) || !(det > 0)) {
-      throw InvalidInput(ErrorCode::BadScale,
-                         "pose: the rotation is not a rotation (|R^T R - I| about " + std::to_string(omega) +
-                             ", det = " + std::to_string(det) +
-                             "; sepax needs an orthonormal matrix with det +1 within 1e-3)");
-    }
+    if (!(omega <= 1e-3) || !(det > 0)) [[unlikely]]
+      refuse_rotation(omega, det);
   }
 }
 
