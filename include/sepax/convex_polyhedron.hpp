@@ -552,6 +552,11 @@ class ConvexPolyhedron {
   double compute_normal_conditioning() const;
   struct NormalConditioningScan;
   Plane<T> plane_of_triple(int f, NormalConditioningScan* scan) const;
+  // planes_[f] = plane_of_triple(f, scan)'s values, written into the
+  // plane's existing numbers for exact T (assign_plane_through).
+  void derive_plane(int f, NormalConditioningScan* scan);
+  // edge_dirs_[e] = head - tail (assign_difference: exact T's own route).
+  void derive_edge_direction(std::size_t e);
   std::size_t plane_groups(NormalConditioningScan* scan, bool& nb, bool& of);
   static void planes_in_range(const Plane<T>& pl, bool& nb, bool& of);
   void compute_lanes();

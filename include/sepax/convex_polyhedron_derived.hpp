@@ -66,14 +66,8 @@ inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_
       planes_[1] = Plane<T>{Vec3<T>(-planes_[0].normal), T(-planes_[0].offset)};
       continue;
     }
-    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-      const Plane<T> pl = plane_of_triple(static_cast<int>(f), cond ? &scan : nullptr);
-      planes_[f] = pl;
-      planes_in_range(pl, nb, of);
-    } else {  // into the plane's numbers (plane_of_triple's values)
-      const auto& t = topology_.faces()[f].plane_vertices;
-      assign_plane_through(planes_[f], vertex(t[0]), vertex(t[1]), vertex(t[2]));
-    }
+    derive_plane(static_cast<int>(f), cond ? &scan : nullptr);
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) planes_in_range(planes_[f], nb, of);
   }
   normal_conditioning_.reset();  // new coordinates: computed again on first use
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
@@ -184,12 +178,20 @@ inline void ConvexPolyhedron<T>::compute_edge_data() {
   // per-edge directions
   const auto ne = static_cast<std::size_t>(edge_count());
   edge_dirs_.resize(ne);
-  for (std::size_t e = 0; e < ne; ++e) {
-    const HalfEdge& h0 = topology_.half_edges()[2 * e];
-    const HalfEdge& h1 = topology_.half_edges()[2 * e + 1];
-    assign_difference(edge_dirs_[e], vertex(h1.origin), vertex(h0.origin));  // edge_direction(e)
-  }
+  for (std::size_t e = 0; e < ne; ++e) derive_edge_direction(e);
   compute_lanes();
+}
+
+// (inlined: the posed queries derive every edge of B' per query)
+template <Number T>
+[[gnu::always_inline]] inline void ConvexPolyhedron<T>::derive_edge_direction(std::size_t e) {
+  const HalfEdge& h0 = topology_.half_edges()[2 * e];
+  const HalfEdge& h1 = topology_.half_edges()[2 * e + 1];
+  if constexpr (HasExactDifference<T>) {
+    assign_difference(edge_dirs_[e], vertex(h1.origin), vertex(h0.origin));
+  } else {
+    edge_dirs_[e] = Vec3<T>(vertex(h1.origin) - vertex(h0.origin));
+  }
 }
 
 namespace detail {
@@ -276,6 +278,18 @@ template <Number T>
   }
 }
 
+template <Number T>
+inline void ConvexPolyhedron<T>::derive_plane(int f, NormalConditioningScan* scan) {
+  const auto k = static_cast<std::size_t>(f);
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    planes_[k] = plane_of_triple(f, scan);
+  } else {  // into the plane's numbers (plane_of_triple's values)
+    (void)scan;
+    const auto& t = topology_.faces()[k].plane_vertices;
+    assign_plane_through(planes_[k], vertex(t[0]), vertex(t[1]), vertex(t[2]));
+  }
+}
+
 // From the vertices alone: bounds, centroid, extent, max |coordinate|.
 template <Number T>
 inline void ConvexPolyhedron<T>::compute_bounds() {
@@ -297,14 +311,18 @@ template <Number T>
 inline void ConvexPolyhedron<T>::finish_bounds(const Vec3<T>& sum) {
   const T n = from_double<T>(static_cast<double>(vertices_.size()));  // exact for any count < 2^53
   if (!vertices_.empty()) centroid_ = Vec3<T>(sum[0] / n, sum[1] / n, sum[2] / n);
-  double d2 = 0;
+  // per coordinate in order, written out (a loop over the coordinates was not
+  // unrolled): the widths, d2 = w0^2 + w1^2 + w2^2 left to right, the
+  // largest |bound|
   max_abs_ = 0;
-  std::array<double, 3> w{};
-  for (int c = 0; c < 3; ++c) {
-    w[static_cast<std::size_t>(c)] = to_double(T(bmax_[c] - bmin_[c]));
-    d2 += w[static_cast<std::size_t>(c)] * w[static_cast<std::size_t>(c)];
+  auto width = [&](int c) {
     max_abs_ = std::max({max_abs_, std::abs(to_double(bmin_[c])), std::abs(to_double(bmax_[c]))});
-  }
+    return to_double(T(bmax_[c] - bmin_[c]));
+  };
+  const std::array<double, 3> w{width(0), width(1), width(2)};
+  double d2 = w[0] * w[0];
+  d2 += w[1] * w[1];
+  d2 += w[2] * w[2];
   extent_ = std::sqrt(d2);
   if (!detail::safe_squared_norm(d2)) {
     // Widths beyond about 1e+-154 (double T): the same diagonal through

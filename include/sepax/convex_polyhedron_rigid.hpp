@@ -104,9 +104,9 @@ inline void ConvexPolyhedron<T>::derive_rigid_part(std::span<const int> faces, s
   [[maybe_unused]] NormalConditioningScan scan;
   bool normals_bounded = true;  // (false for NaN)
   auto derive = [&](int f) {
-    const Plane<T> pl = plane_of_triple(f, &scan);
-    planes_[static_cast<std::size_t>(f)] = pl;
+    derive_plane(f, &scan);
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      const Plane<T>& pl = planes_[static_cast<std::size_t>(f)];
       for (int c = 0; c < 3; ++c) normals_bounded &= std::abs(pl.normal[c]) <= T(0x1p60);
     }
   };
@@ -116,12 +116,7 @@ inline void ConvexPolyhedron<T>::derive_rigid_part(std::span<const int> faces, s
   } else {
     for (const int f : faces) derive(f);
   }
-  for (const int e : edges) {
-    const auto k = static_cast<std::size_t>(e);
-    const HalfEdge& h0 = topology_.half_edges()[2 * k];
-    const HalfEdge& h1 = topology_.half_edges()[2 * k + 1];
-    assign_difference(edge_dirs_[k], vertex(h1.origin), vertex(h0.origin));
-  }
+  for (const int e : edges) derive_edge_direction(static_cast<std::size_t>(e));
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     normal_conditioning_.store(scan.result());
     support_lanes_bounded_ = support_lanes_bounded_ && normals_bounded;
@@ -154,10 +149,10 @@ inline bool ConvexPolyhedron<T>::derive_rigid_edges() {
   [[maybe_unused]] const T big = T(0x1p60);
   bool ok = true;
   for (std::size_t e = 0; e < ne; ++e) {
+    derive_edge_direction(e);
+    const Vec3<T> d = edge_dirs_[e];  // (a copy: the lane stores below may alias it)
     const HalfEdge& h0 = topology_.half_edges()[2 * e];
     const HalfEdge& h1 = topology_.half_edges()[2 * e + 1];
-    const Vec3<T> d(vertex(h1.origin) - vertex(h0.origin));  // edge_direction(e)
-    edge_dirs_[e] = d;
     for (int c = 0; c < 3; ++c) {
       if constexpr (kCheck) ok &= std::abs(d[c]) <= big;
       if constexpr (kLanes) {
@@ -207,18 +202,20 @@ inline std::size_t ConvexPolyhedron<T>::rigid_vertex_groups(const ConvexPolyhedr
     finite &= box.within();
     T lo[3], hi[3];
     box.reduce(lo, hi);  // (done > 0)
-    for (int c = 0; c < 6; ++c) {
-      T& r = c < 3 ? lo[c] : hi[c - 3];
-      if (r == T(0)) {
-        // A zero bound: its sign is that of the first zero in index order
-        // (the sequential comparisons keep the first of equal values), so
-        // it is found again in that order.
-        const T* const lane = lv + static_cast<std::size_t>(c % 3) * vs;
-        r = c < 3 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
-        for (std::size_t k = 0; k < done; ++k)
-          r = c < 3 ? (lane[k] < r ? lane[k] : r) : (lane[k] > r ? lane[k] : r);
-      }
-    }
+    // A zero bound: its sign is that of the first zero in index order (the
+    // sequential comparisons keep the first of equal values), so it is
+    // found again in that order.  Each bound tested in turn, written out (a
+    // loop over the six was not unrolled).
+    auto signed_zero = [&](T& r, int c, bool is_lo) {
+      if (r != T(0)) [[likely]]
+        return;
+      const T* const lane = lv + static_cast<std::size_t>(c) * vs;
+      r = is_lo ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
+      for (std::size_t k = 0; k < done; ++k)
+        r = is_lo ? (lane[k] < r ? lane[k] : r) : (lane[k] > r ? lane[k] : r);
+    };
+    signed_zero(lo[0], 0, true), signed_zero(lo[1], 1, true), signed_zero(lo[2], 2, true);
+    signed_zero(hi[0], 0, false), signed_zero(hi[1], 1, false), signed_zero(hi[2], 2, false);
     lo0 = lo[0], lo1 = lo[1], lo2 = lo[2], hi0 = hi[0], hi1 = hi[1], hi2 = hi[2];
     return done;
   }

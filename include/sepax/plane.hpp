@@ -75,14 +75,22 @@ concept HasExactPlane = number_traits<T>::is_exact && requires(Plane<T>& out, co
   { number_traits<T>::exact_plane(out, v, v, v) } -> std::same_as<bool>;
 };
 
+namespace detail {
+/// plane_through's general formula, in T (the route every type has).
+template <Number T>
+inline Plane<T> plane_through_in_t(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  const Vec3<T> e1(b - a), e2(c - a);
+  return plane_through_cross(a, e1, e2, Vec3<T>(cross(e1, e2)));
+}
+}  // namespace detail
+
 template <Number T>
 inline Plane<T> plane_through(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   if constexpr (HasExactPlane<T>) {
     Plane<T> p;
     if (number_traits<T>::exact_plane(p, a, b, c)) return p;
   }
-  const Vec3<T> e1(b - a), e2(c - a);
-  return plane_through_cross(a, e1, e2, Vec3<T>(cross(e1, e2)));
+  return detail::plane_through_in_t(a, b, c);
 }
 /// out = plane_through(a, b, c), into out's numbers where T has its own route (HasExactPlane).
 template <Number T>
@@ -90,7 +98,7 @@ inline void assign_plane_through(Plane<T>& out, const Vec3<T>& a, const Vec3<T>&
   if constexpr (HasExactPlane<T>) {
     if (number_traits<T>::exact_plane(out, a, b, c)) return;
   }
-  out = plane_through(a, b, c);
+  out = detail::plane_through_in_t(a, b, c);
 }
 /// plane_through(a, a + e1, a + e2) given e1 = b - a, e2 = c - a (as T
 /// computes them) and c = cross(e1, e2), computed by the caller.
