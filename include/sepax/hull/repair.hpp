@@ -81,7 +81,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::build_pass(bool may_fail,
 /// as in a build from the start), and quickhull goes on from there (eyes, sweep), then the face stage.
 /// The result is measured like any pass's.  None with reject empty when the triangles cannot take the
 /// points (the last result flat; a pinned point a vertex of the triangles, or above none of them; more
-/// points x faces than kHullPointScanPairs to search): the pass then builds from the start.  None with
+/// points x faces than kHullResumeScanPairs to search): the pass then builds from the start.  None with
 /// reject filled when the clean-up rejects points: the pass builds from the start without them.
 template <Number T>
 inline std::optional<ConvexPolyhedron<T>> Builder<T>::resume(const std::vector<int>& pinned,
@@ -98,7 +98,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::resume(const std::vector<i
       ++live;
       for (int v : t.v) mark[as_index(v)] = 2;
     }
-    if (static_cast<double>(pinned.size()) * static_cast<double>(live) > kHullPointScanPairs)
+    if (static_cast<double>(pinned.size()) * static_cast<double>(live) > kHullResumeScanPairs)
       return std::nullopt;
     for (int p : pinned) {
       if (mark[as_index(p)] == 2) return std::nullopt;
