@@ -15,6 +15,7 @@
 #include "io/obj_reader.hpp"
 #include "io/off_reader.hpp"
 #include "io/open_file.hpp"
+#include "io/ply_reader.hpp"
 #include "io/points_reader.hpp"
 #include "io/soup_reader.hpp"
 #include "io/text_input.hpp"

@@ -39,7 +39,6 @@ ShapeData soup(const std::string& name, const char* format, Read&& read) {
     fail(name, std::string("not a readable ") + format + " file (the reader stopped on malformed content)");
   if (points.empty()) fail(name, "no vertices in the file");
   ShapeData out;
-  // No faces (a PLY point cloud, as scanners write): a point set, to be hulled.
   out.kind = polygons.empty() ? ShapeData::Kind::Points : ShapeData::Kind::Faces;
   out.name = name;
   out.from_file = true;
@@ -75,21 +74,10 @@ ShapeData soup(const std::string& name, const char* format, Read&& read) {
 
 }  // namespace
 
-ShapeData read_ply(std::istream& in, const std::string& name) {
-  return soup(name, "PLY", [&](auto& points, auto& polygons) {
-    return CGAL::IO::read_PLY(in, points, polygons, CGAL::parameters::verbose(false));
-  });
-}
-
 ShapeData read_stl(std::istream& in, const std::string& name) {
   return soup(name, "STL", [&](auto& points, auto& polygons) {
     return CGAL::IO::read_STL(in, points, polygons, CGAL::parameters::verbose(false));
   });
-}
-
-ShapeData read_ply_file(const std::string& path) {
-  auto in = open_input(path);
-  return read_ply(in, path);
 }
 
 ShapeData read_stl_file(const std::string& path) {

@@ -67,7 +67,7 @@ std::optional<long long> quick_integer(std::string_view t) {
   return v;
 }
 
-double parse_double(const LineReader& reader, std::string_view token, const std::string& what) {
+double parse_double(const TextPlace& reader, std::string_view token, const std::string& what) {
   std::string_view t = token;
   if (!t.empty() && t[0] == '+') t.remove_prefix(1);
   double v = 0;
@@ -83,7 +83,7 @@ double parse_double(const LineReader& reader, std::string_view token, const std:
   return v;
 }
 
-long long parse_integer(const LineReader& reader, std::string_view token, const std::string& what) {
+long long parse_integer(const TextPlace& reader, std::string_view token, const std::string& what) {
   std::string_view t = token;
   if (!t.empty() && t[0] == '+') t.remove_prefix(1);
   long long v = 0;
@@ -96,7 +96,7 @@ long long parse_integer(const LineReader& reader, std::string_view token, const 
   return v;
 }
 
-long long parse_count(const LineReader& reader, std::string_view token, const std::string& what,
+long long parse_count(const TextPlace& reader, std::string_view token, const std::string& what,
                       long long max) {
   const long long v = parse_integer(reader, token, what);
   if (v < 0) reader.fail(what + " is negative (" + std::to_string(v) + ")");

@@ -19,22 +19,31 @@ namespace sepax::cli::io {
 /// Throws InvalidInput(ErrorCode::Parse, "file:line: what").
 [[noreturn]] void fail_at(const std::string& file, std::size_t line, const std::string& what);
 
-/// Reads lines, keeping the 1-based number of the last line read.  Strips a
-/// trailing '\r' (CRLF files) and rejects NUL bytes (binary data).
-class LineReader {
+/// A place in a text input (file name and 1-based line), for the parse
+/// errors of every reader.
+class TextPlace {
  public:
-  LineReader(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
-  /// The next line, false at end of input.
-  bool next(std::string& line);
+  explicit TextPlace(std::string file) : file_(std::move(file)) {}
   std::size_t line_number() const { return line_; }
   const std::string& file() const { return file_; }
   /// Throws the parse error for the current line.
   [[noreturn]] void fail(const std::string& what) const { fail_at(file_, line_ == 0 ? 1 : line_, what); }
 
- private:
-  std::istream& in_;
+ protected:
   std::string file_;
   std::size_t line_ = 0;
+};
+
+/// Reads lines, keeping the 1-based number of the last line read.  Strips a
+/// trailing '\r' (CRLF files) and rejects NUL bytes (binary data).
+class LineReader : public TextPlace {
+ public:
+  LineReader(std::istream& in, std::string file) : TextPlace(std::move(file)), in_(in) {}
+  /// The next line, false at end of input.
+  bool next(std::string& line);
+
+ private:
+  std::istream& in_;
 };
 
 /// The whitespace-separated tokens of line, up to a '#' comment.  With
@@ -44,14 +53,14 @@ std::vector<std::string_view> tokens(std::string_view line, bool commas_separate
 /// The finite double spelled by token (a leading '+' is allowed); on failure
 /// throws via reader.fail with "bad number 'tok' for <what>", or "<what> is
 /// not finite" for NaN/Inf, or "... out of the range of a double".
-double parse_double(const LineReader& reader, std::string_view token, const std::string& what);
+double parse_double(const TextPlace& reader, std::string_view token, const std::string& what);
 
 /// A non-negative decimal integer (at most max); errors like parse_double.
-long long parse_count(const LineReader& reader, std::string_view token, const std::string& what,
+long long parse_count(const TextPlace& reader, std::string_view token, const std::string& what,
                       long long max);
 
 /// A (possibly negative) decimal integer; errors like parse_double.
-long long parse_integer(const LineReader& reader, std::string_view token, const std::string& what);
+long long parse_integer(const TextPlace& reader, std::string_view token, const std::string& what);
 
 /// The finite double or the integer spelled by token in the common way (no
 /// leading '+'), without building any message; nullopt for anything else.
@@ -62,12 +71,12 @@ std::optional<long long> quick_integer(std::string_view token);
 /// error (what() returns it): a reader calls them once per number of a file
 /// of millions.
 template <std::invocable What>
-double parse_double(const LineReader& reader, std::string_view token, const What& what) {
+double parse_double(const TextPlace& reader, std::string_view token, const What& what) {
   if (const auto v = quick_double(token)) return *v;
   return parse_double(reader, token, std::string(what()));
 }
 template <std::invocable What>
-long long parse_integer(const LineReader& reader, std::string_view token, const What& what) {
+long long parse_integer(const TextPlace& reader, std::string_view token, const What& what) {
   if (const auto v = quick_integer(token)) return *v;
   return parse_integer(reader, token, std::string(what()));
 }

@@ -69,7 +69,8 @@ TEST_CASE("bad input: empty files", "[bad_input]") {
   check_unreadable(test::temp_file("empty.off", ""), "empty.off:1: empty file: expected the OFF header");
   check_unreadable(test::temp_file("empty.pts", ""), "empty.pts:1: empty file: no points");
   check_unreadable(test::temp_file("empty.stl", ""), "empty.stl: no vertices in the file");
-  check_unreadable(test::temp_file("empty.ply", ""), "empty.ply: not a readable PLY file");
+  check_unreadable(test::temp_file("empty.ply", ""),
+                   "empty.ply:1: not a readable PLY file: the file is empty");
   check_run({"query", "-", "cube"}, 3, "standard input: nothing to read");
 }
 
@@ -81,7 +82,8 @@ TEST_CASE("bad input: binary garbage", "[bad_input]") {
     check_unreadable(test::temp_file("garbage" + tag + ".off", bytes), "garbage" + tag + ".off:1: ");
     check_unreadable(test::temp_file("garbage" + tag + ".pts", bytes), "garbage" + tag + ".pts:");
     check_unreadable(test::temp_file("garbage" + tag + ".stl", bytes), "garbage" + tag + ".stl: ");
-    check_unreadable(test::temp_file("garbage" + tag + ".ply", bytes), "garbage" + tag + ".ply: ");
+    check_unreadable(test::temp_file("garbage" + tag + ".ply", bytes),
+                     "garbage" + tag + ".ply:1: not a readable PLY file: ");
   }
   // garbage on standard input
   check_run({"query", "-", "cube"}, 3, "standard input: ", test::temp_file("garbage.bin", garbage(4096, 4)));
