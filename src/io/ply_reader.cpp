@@ -365,116 +365,123 @@ double ascii_number(const TextPlace& place, std::string_view token, Scalar type,
   return parse_double(place, token, what);
 }
 
-void read_ascii(std::string_view text, const Header& h, const std::string& name, ShapeData& out,
-                std::size_t vertex_element) {
-  AsciiBody body(text, h, name);
-  auto fail = [&](const std::string& what) { body.fail(what); };
+/// Step 3: every instance of every element in header order.  read(e, roles, i, p, loop) reads instance i
+/// of e (a vertex's coordinates into p, a face's indices into loop) and returns its line (0 in binary);
+/// the vertex element's instances become the vertices, the face element's the faces.
+template <class ReadInstance>
+void read_body(const Header& h, const std::string& name, std::size_t vertex_element, ShapeData& out,
+               ReadInstance&& read) {
   for (std::size_t ei = 0; ei < h.elements.size(); ++ei) {
     const Element& e = h.elements[ei];
     const bool vertex = ei == vertex_element;
     const bool face = e.name == "face" && vertex_element < ei;
     const std::vector<Role> roles = roles_of(e, name, vertex, face);
     for (std::size_t i = 0; i < e.count; ++i) {
-      const std::string what = instance_name(e, i);
-      const auto& t = body.next_instance(what);
-      std::size_t k = 0;
       Vec3<double> p(0, 0, 0);
       std::vector<int> loop;
-      for (std::size_t pi = 0; pi < e.properties.size(); ++pi) {
-        const Property& prop = e.properties[pi];
-        if (k >= t.size()) fail(what + " has too few values (" + std::to_string(t.size()) + ")");
-        if (!prop.list) {
-          const Role r = roles[pi];
-          if (r == Role::X || r == Role::Y || r == Role::Z) {
-            const int c = static_cast<int>(r) - static_cast<int>(Role::X);
-            p[c] = ascii_number(body, t[k], prop.type,
-                                [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
-          } else {
-            (void)parse_double(body, t[k], [&] { return "property " + prop.name + " of " + what; });
-          }
-          ++k;
-          continue;
-        }
-        const long long n =
-            parse_integer(body, t[k], [&] { return "the count of list " + prop.name + " of " + what; });
-        const auto after = static_cast<long long>(t.size() - k - 1);
-        if (n < 0)
-          fail("the count of list " + prop.name + " of " + what + " is negative (" + std::to_string(n) + ")");
-        if (n > after)
-          fail(what + "'s list " + prop.name + " counts " + std::to_string(n) + " values; its line has " +
-               std::to_string(after) + " after the count");
-        ++k;
-        for (long long j = 0; j < n; ++j, ++k) {
-          if (roles[pi] == Role::Indices) {
-            const long long v = parse_integer(body, t[k], [&] { return "a vertex index of " + what; });
-            loop.push_back(vertex_index(v, out.vertices.size(), i, fail));
-          } else {
-            (void)parse_double(body, t[k], [&] { return "list " + prop.name + " of " + what; });
-          }
-        }
-      }
-      if (k != t.size())
-        fail(what + " has " + std::to_string(t.size() - k) + " value(s) more than its properties (one " +
-             e.name + " a line)");
+      const std::size_t line = read(e, roles, i, p, loop);
       if (vertex) out.vertices.push_back(p);
       if (face) {
         out.faces.push_back(std::move(loop));
-        out.face_lines.push_back(body.line_number());
+        out.face_lines.push_back(line);
       }
     }
   }
 }
 
+void read_ascii(std::string_view text, const Header& h, const std::string& name, ShapeData& out,
+                std::size_t vertex_element) {
+  AsciiBody body(text, h, name);
+  auto fail = [&](const std::string& what) { body.fail(what); };
+  read_body(
+      h, name, vertex_element, out,
+      [&](const Element& e, const std::vector<Role>& roles, std::size_t i, Vec3<double>& p,
+          std::vector<int>& loop) {
+        const std::string what = instance_name(e, i);
+        const auto& t = body.next_instance(what);
+        std::size_t k = 0;
+        for (std::size_t pi = 0; pi < e.properties.size(); ++pi) {
+          const Property& prop = e.properties[pi];
+          if (k >= t.size()) fail(what + " has too few values (" + std::to_string(t.size()) + ")");
+          if (!prop.list) {
+            const Role r = roles[pi];
+            if (r == Role::X || r == Role::Y || r == Role::Z) {
+              const int c = static_cast<int>(r) - static_cast<int>(Role::X);
+              p[c] = ascii_number(body, t[k], prop.type,
+                                  [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
+            } else {
+              (void)parse_double(body, t[k], [&] { return "property " + prop.name + " of " + what; });
+            }
+            ++k;
+            continue;
+          }
+          const long long n =
+              parse_integer(body, t[k], [&] { return "the count of list " + prop.name + " of " + what; });
+          const auto after = static_cast<long long>(t.size() - k - 1);
+          if (n < 0)
+            fail("the count of list " + prop.name + " of " + what + " is negative (" + std::to_string(n) +
+                 ")");
+          if (n > after)
+            fail(what + "'s list " + prop.name + " counts " + std::to_string(n) + " values; its line has " +
+                 std::to_string(after) + " after the count");
+          ++k;
+          for (long long j = 0; j < n; ++j, ++k) {
+            if (roles[pi] == Role::Indices) {
+              const long long v = parse_integer(body, t[k], [&] { return "a vertex index of " + what; });
+              loop.push_back(vertex_index(v, out.vertices.size(), i, fail));
+            } else {
+              (void)parse_double(body, t[k], [&] { return "list " + prop.name + " of " + what; });
+            }
+          }
+        }
+        if (k != t.size())
+          fail(what + " has " + std::to_string(t.size() - k) + " value(s) more than its properties (one " +
+               e.name + " a line)");
+        return body.line_number();
+      });
+}
+
 void read_binary(std::string_view text, const Header& h, const std::string& name, ShapeData& out,
                  std::size_t vertex_element) {
   BinaryBody body(text, h, name);
-  for (std::size_t ei = 0; ei < h.elements.size(); ++ei) {
-    const Element& e = h.elements[ei];
-    const bool vertex = ei == vertex_element;
-    const bool face = e.name == "face" && vertex_element < ei;
-    const std::vector<Role> roles = roles_of(e, name, vertex, face);
-    for (std::size_t i = 0; i < e.count; ++i) {
-      const std::string what = instance_name(e, i);
-      const std::size_t start = body.offset();
-      auto fail = [&](const std::string& message) {
-        throw InvalidInput(ErrorCode::Parse, name + ": " + message + " (byte " + std::to_string(start) + ")");
-      };
-      Vec3<double> p(0, 0, 0);
-      std::vector<int> loop;
-      for (std::size_t pi = 0; pi < e.properties.size(); ++pi) {
-        const Property& prop = e.properties[pi];
-        const Role r = roles[pi];
-        if (!prop.list) {
-          if (r == Role::X || r == Role::Y || r == Role::Z) {
-            const int c = static_cast<int>(r) - static_cast<int>(Role::X);
-            p[c] = coordinate(body.number(prop.type, what), c, i, fail);
-          } else {
-            body.skip(prop.type, 1, what);
-          }
-          continue;
-        }
-        const double n = body.number(prop.count_type, what);
-        if (n < 0) fail("the count of list " + prop.name + " of " + what + " is negative");
-        const auto count = static_cast<std::size_t>(n);
-        if (count > body.left() / size_of(prop.type))
-          fail("the count of list " + prop.name + " of " + what + " (" + std::to_string(count) +
-               ") is more than the data left holds");
-        if (r != Role::Indices) {
-          body.skip(prop.type, count, what);
-          continue;
-        }
-        loop.reserve(count);
-        for (std::size_t j = 0; j < count; ++j)
-          loop.push_back(vertex_index(static_cast<long long>(body.number(prop.type, what)),
-                                      out.vertices.size(), i, fail));
-      }
-      if (vertex) out.vertices.push_back(p);
-      if (face) {
-        out.faces.push_back(std::move(loop));
-        out.face_lines.push_back(0);
-      }
-    }
-  }
+  read_body(h, name, vertex_element, out,
+            [&](const Element& e, const std::vector<Role>& roles, std::size_t i, Vec3<double>& p,
+                std::vector<int>& loop) -> std::size_t {
+              const std::string what = instance_name(e, i);
+              const std::size_t start = body.offset();
+              auto fail = [&](const std::string& message) {
+                throw InvalidInput(ErrorCode::Parse,
+                                   name + ": " + message + " (byte " + std::to_string(start) + ")");
+              };
+              for (std::size_t pi = 0; pi < e.properties.size(); ++pi) {
+                const Property& prop = e.properties[pi];
+                const Role r = roles[pi];
+                if (!prop.list) {
+                  if (r == Role::X || r == Role::Y || r == Role::Z) {
+                    const int c = static_cast<int>(r) - static_cast<int>(Role::X);
+                    p[c] = coordinate(body.number(prop.type, what), c, i, fail);
+                  } else {
+                    body.skip(prop.type, 1, what);
+                  }
+                  continue;
+                }
+                const double n = body.number(prop.count_type, what);
+                if (n < 0) fail("the count of list " + prop.name + " of " + what + " is negative");
+                const auto count = static_cast<std::size_t>(n);
+                if (count > body.left() / size_of(prop.type))
+                  fail("the count of list " + prop.name + " of " + what + " (" + std::to_string(count) +
+                       ") is more than the data left holds");
+                if (r != Role::Indices) {
+                  body.skip(prop.type, count, what);
+                  continue;
+                }
+                loop.reserve(count);
+                for (std::size_t j = 0; j < count; ++j)
+                  loop.push_back(vertex_index(static_cast<long long>(body.number(prop.type, what)),
+                                              out.vertices.size(), i, fail));
+              }
+              return 0;
+            });
 }
 
 }  // namespace
