@@ -277,9 +277,7 @@ class BinaryBody {
   /// The next scalar of type t as a double (exact for every PLY type), or fails naming what.
   double number(Scalar t, const std::string& what) {
     const std::size_t n = size_of(t);
-    if (text_.size() - at_ < n)
-      throw InvalidInput(ErrorCode::Parse, name_ + ": the binary data ends inside " + what + " (byte " +
-                                               std::to_string(at_) + ")");
+    if (text_.size() - at_ < n) fail("the binary data ends inside " + what, at_);
     std::array<unsigned char, 8> b{};
     std::memcpy(b.data(), text_.data() + at_, n);
     at_ += n;
@@ -308,10 +306,12 @@ class BinaryBody {
   /// Skips count scalars of type t, or fails naming what.
   void skip(Scalar t, std::size_t count, const std::string& what) {
     const std::size_t n = size_of(t);
-    if (count > (text_.size() - at_) / n)
-      throw InvalidInput(ErrorCode::Parse, name_ + ": the binary data ends inside " + what + " (byte " +
-                                               std::to_string(at_) + ")");
+    if (count > (text_.size() - at_) / n) fail("the binary data ends inside " + what, at_);
     at_ += count * n;
+  }
+  /// Throws the parse error "FILE: what (byte at)".
+  [[noreturn]] void fail(const std::string& what, std::size_t at) const {
+    throw InvalidInput(ErrorCode::Parse, name_ + ": " + what + " (byte " + std::to_string(at) + ")");
   }
   /// Bytes left in the body.
   std::size_t left() const { return text_.size() - at_; }
@@ -449,10 +449,7 @@ void read_binary(std::string_view text, const Header& h, const std::string& name
                 std::vector<int>& loop) -> std::size_t {
               const std::string what = instance_name(e, i);
               const std::size_t start = body.offset();
-              auto fail = [&](const std::string& message) {
-                throw InvalidInput(ErrorCode::Parse,
-                                   name + ": " + message + " (byte " + std::to_string(start) + ")");
-              };
+              auto fail = [&](const std::string& message) { body.fail(message, start); };
               for (std::size_t pi = 0; pi < e.properties.size(); ++pi) {
                 const Property& prop = e.properties[pi];
                 const Role r = roles[pi];
