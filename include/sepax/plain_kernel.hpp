@@ -12,10 +12,12 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
 
+#include "edge_pair_rule_out.hpp"
 #include "sat_kernel.hpp"
 #include "simd_lanes.hpp"
 
@@ -178,6 +180,17 @@ class PlainKernel {
     const Separation<T> sm{T(min_a - max_b), n2};
     if (plus && minus) return sepax::compare(sp, sm) >= 0 ? sp : sm;
     return plus ? sp : sm;
+  }
+
+  /// Optional member (sat_kernel.hpp, HasEdgePairRuledOut), float and
+  /// double: true only when edge_separation_full(ea, eb) would return
+  /// nothing (edge_pair_rule_out.hpp: the wings' heights in double, with
+  /// PlainRuleOut's bound on the rounded axis and the support tolerance).
+  bool edge_pair_ruled_out(int ea, int eb) const requires std::is_floating_point_v<T> {
+    return rule_out_.ruled_out(a_, ea, b_, eb, [&] {
+      return std::array<double, 2>{static_cast<double>(support_tolerance(a_)),
+                                   static_cast<double>(support_tolerance(b_))};
+    });
   }
 
   int compare(const Separation<T>& x, const Feature&, const Separation<T>& y, const Feature&) const {
@@ -390,6 +403,7 @@ class PlainKernel {
   const ConvexPolyhedron<T>& b_;
   bool lanes_;          // both shapes lanes_bounded(): the SIMD scans apply
   bool support_lanes_;  // both shapes support_lanes_bounded(): the support scans apply
+  mutable detail::EdgePairRuleOut<T, false> rule_out_;  // edge_pair_ruled_out's state
 };
 
 template <Number T>

@@ -10,7 +10,10 @@
 // eA x eB the normal of a face of the Minkowski difference A - B.  Without this
 // check a separated pair would report directions that are not face normals of
 // A - B, and no faster SAT could be checked against it.  The check is done by
-// projection, independently of the Gauss-map arc test it verifies.
+// projection, independently of the Gauss-map arc test it verifies.  Kernels
+// with edge_pair_ruled_out (float and double) first rule out most pairs by
+// the heights of two neighbouring vertices of each edge, in double with a
+// derived bound (edge_pair_rule_out.hpp): the same pairs are kept.
 #pragma once
 
 #include "best_axis.hpp"
@@ -29,6 +32,9 @@ SatResult<typename K::FT> brute_force_with(K& k, const SatOptions& opt = {}, con
   for (int ea = 0; ea < k.a().edge_count(); ++ea) {
     for (int eb = 0; eb < k.b().edge_count(); ++eb) {
       ++stats.edge_pairs;
+      if constexpr (HasEdgePairRuledOut<K>) {
+        if (k.edge_pair_ruled_out(ea, eb)) continue;  // a pair the two calls below would skip
+      }
       if (k.edges_parallel(ea, eb)) continue;
       const auto s = k.edge_separation_full(ea, eb);
       if (!s) continue;

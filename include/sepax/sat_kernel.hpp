@@ -228,6 +228,19 @@ concept HasEdgePairBelow = requires(const K k, int i, typename K::FT x, double e
 };
 
 /// Optional kernel member (not part of SatKernel; PlainKernel and
+/// RobustKernel have it for float and double):
+///   bool edge_pair_ruled_out(int ea, int eb)
+/// true only when edge_separation_full(ea, eb) would return nothing (or the
+/// edges are parallel): eA x eB is certainly no Minkowski face normal as the
+/// kernel decides it.  false says nothing.  sat::brute_force asks it first,
+/// so most pairs skip edges_parallel and edge_separation_full
+/// (edge_pair_rule_out.hpp).
+template <class K>
+concept HasEdgePairRuledOut = requires(const K k, int i) {
+  { k.edge_pair_ruled_out(i, i) } -> std::same_as<bool>;
+};
+
+/// Optional kernel member (not part of SatKernel; PlainKernel and
 /// RobustKernel have it):
 ///   int compare_margin(const Separation<FT>& s, const Feature& f, double m)
 /// the sign of (f's separation - m), m >= 0 finite: exact for exact T and

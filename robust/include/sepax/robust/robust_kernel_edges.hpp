@@ -11,6 +11,7 @@
 // Built on robust_kernel_faces.hpp; robust_kernel.hpp builds on it.
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -19,6 +20,7 @@
 
 #include <sepax/robust/parallel.hpp>
 #include <sepax/robust/robust_kernel_faces.hpp>
+#include <sepax/edge_pair_rule_out.hpp>
 #include <sepax/simd_lanes.hpp>
 
 namespace sepax::robust::detail {
@@ -233,6 +235,14 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
     return snap(dot(n, diff(pb, pa)), edge_value_error(ax.delta), Feature::edges(ea, eb));
   }
 
+  /// Optional member (sat_kernel.hpp, HasEdgePairRuledOut): true only when
+  /// edge_separation_full(ea, eb) would return nothing, its decisions being
+  /// exact along n* = E_A x E_B: a wing of either edge certainly on each
+  /// side (edge_pair_rule_out.hpp, ExactRuleOut).
+  bool edge_pair_ruled_out(int ea, int eb) const {
+    return rule_out_.ruled_out(a_, ea, b_, eb, [] { return std::array<double, 2>{}; });
+  }
+
   std::optional<Separation<T>> edge_separation_full(int ea, int eb) const {
     projection_rule_ = true;
     const EdgeAxis ax = edge_axis(ea, eb);
@@ -413,6 +423,9 @@ class RobustEdgePairs : public RobustFaceQueries<T> {
     }
     return true;
   }
+
+ private:
+  mutable sepax::detail::EdgePairRuleOut<T, true> rule_out_;  // edge_pair_ruled_out's state
 };
 
 }  // namespace sepax::robust::detail

@@ -1,0 +1,102 @@
+// The robust kernel's edge-pair rule-out (edge_pair_rule_out.hpp,
+// ExactRuleOut): a pair it rules out is one the kernel's exact test rejects,
+// on generic and near-degenerate shapes at every scale; and a wing height it
+// trusts has the sign of the exact triple product, checked against GMP at
+// the threshold (nearly coplanar wings, nearly parallel edges).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <random>
+
+#include <sepax/robust/number_types.hpp>
+#include <sepax/robust/robust_kernel.hpp>
+
+#include "edge_pair_rule_out_shapes.hpp"
+
+using namespace sepax;
+
+TEMPLATE_TEST_CASE("robust rule-out: every pair ruled out is rejected by the kernel's exact test",
+                   "[robust][brute_force][rule_out]", float, double) {
+  using T = TestType;
+  const testing::RuleOutCount n = testing::check_rule_out<T>(
+      [](const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b) { return RobustKernel<T>(a, b); });
+  INFO("pairs " << n.pairs << ", ruled out " << n.ruled_out << ", generic " << n.generic_pairs << " / "
+                << n.generic_ruled_out);
+  CHECK(n.unsound == 0);
+  CHECK(n.pairs > 100000);
+  CHECK(10 * n.generic_ruled_out > 8 * n.generic_pairs);
+}
+
+namespace {
+
+template <class T>
+mpq_class q(T x) {
+  return mpq_class(static_cast<double>(x));
+}
+
+// The exact (E_A x E_B).(w - tail), E = head - tail.
+template <class T>
+int exact_sign(const Vec3<T>& ta, const Vec3<T>& ha, const Vec3<T>& tb, const Vec3<T>& hb, const Vec3<T>& w) {
+  mpq_class ea[3], eb[3], d[3];
+  for (int i = 0; i < 3; ++i) {
+    ea[i] = q(ha[i]) - q(ta[i]);
+    eb[i] = q(hb[i]) - q(tb[i]);
+    d[i] = q(w[i]) - q(ta[i]);
+  }
+  const mpq_class s = (ea[1] * eb[2] - ea[2] * eb[1]) * d[0] + (ea[2] * eb[0] - ea[0] * eb[2]) * d[1] +
+                      (ea[0] * eb[1] - ea[1] * eb[0]) * d[2];
+  return sgn(s);
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("robust rule-out: a trusted wing height has the exact sign",
+                   "[robust][brute_force][rule_out]", float, double) {
+  using T = TestType;
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> r01(0, 1);
+  long decided = 0, trials = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const double scale = std::ldexp(1.0, static_cast<int>(r01(rng) * 60) - 30);
+    auto vec = [&](double s) {
+      return Vec3<T>(testing::rounded<T>(s * g(rng)), testing::rounded<T>(s * g(rng)),
+                     testing::rounded<T>(s * g(rng)));
+    };
+    const Vec3<T> ta = vec(scale * 100), tb = vec(scale * 100);
+    Vec3<T> ha = vec(scale), hb = vec(scale);
+    const double f = 1 + 1e-6 * g(rng);
+    for (int j = 0; j < 3; ++j) {
+      ha[j] = testing::rounded<T>(double(ha[j]) + double(ta[j]));
+      hb[j] =
+          i % 3 == 0
+              ? testing::rounded<T>(double(tb[j]) + (double(ha[j]) - double(ta[j])) * f)  // nearly parallel
+              : testing::rounded<T>(double(hb[j]) + double(tb[j]));
+    }
+    // w nearly in the plane through tail spanned by E_A and E_B
+    const Vec3<double> ea = detail::difference_d(ha, ta), eb = detail::difference_d(hb, tb);
+    const double k = std::ldexp(g(rng), -static_cast<int>(r01(rng) * 60));
+    const Vec3<double> wd = ta.template cast<double>() + g(rng) * ea + g(rng) * eb +
+                            k * scale * detail::cross_d(ea, eb) / (ea.norm() * eb.norm() + 1e-300);
+    const Vec3<T> w(testing::rounded<T>(wd[0]), testing::rounded<T>(wd[1]), testing::rounded<T>(wd[2]));
+    const Vec3<double> c = detail::cross_d(ea, eb);
+    const double l1 = (std::abs(ea[0]) + std::abs(ea[1]) + std::abs(ea[2])) *
+                      (std::abs(eb[0]) + std::abs(eb[1]) + std::abs(eb[2]));
+    double max_abs = 0;
+    for (const Vec3<T>* p : std::initializer_list<const Vec3<T>*>{&ta, &ha, &w})
+      for (int j = 0; j < 3; ++j) max_abs = std::max(max_abs, std::abs(static_cast<double>((*p)[j])));
+    double k_p = 0, z_p = 0;
+    detail::ExactRuleOut<T>::constants(max_abs, k_p, z_p);
+    const double bound = l1 * k_p + z_p;
+    const double s = detail::wing_height(c, detail::difference_d(w, ta));
+    ++trials;
+    if (s > bound || s < -bound) {
+      ++decided;
+      CHECK(exact_sign(ta, ha, tb, hb, w) == (s > 0 ? 1 : -1));
+    }
+  }
+  INFO("decided " << decided << " of " << trials);
+  CHECK(decided > trials / 4);
+}
