@@ -26,6 +26,7 @@
 
 #include "convex_polyhedron.hpp"
 #include "number_traits.hpp"
+#include "vec3.hpp"
 
 namespace sepax::detail {
 
@@ -46,12 +47,6 @@ EdgeWings edge_wings(const ConvexPolyhedron<T>& p, int e) {
   return EdgeWings{h0.origin, h1.origin, p.half_edge(h0.prev).origin, p.half_edge(h1.prev).origin};
 }
 
-/// v as doubles (exact for float and double).
-template <class F>
-Vec3<double> to_double3(const Vec3<F>& v) {
-  return Vec3<double>(static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2]));
-}
-
 /// fl_d(p - q), one subtraction per coordinate in double.
 template <class F>
 Vec3<double> difference_d(const Vec3<F>& p, const Vec3<F>& q) {
@@ -59,14 +54,6 @@ Vec3<double> difference_d(const Vec3<F>& p, const Vec3<F>& q) {
                       static_cast<double>(p[1]) - static_cast<double>(q[1]),
                       static_cast<double>(p[2]) - static_cast<double>(q[2]));
 }
-
-/// fl_d(a x b), each component one difference of two products.
-inline Vec3<double> cross_d(const Vec3<double>& a, const Vec3<double>& b) {
-  return Vec3<double>(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
-}
-
-/// γ_k = k u / (1 - k u) (Higham), for the bounds below.
-constexpr double rule_out_gamma(int k, double u) { return k * u / (1 - k * u); }
 
 /// The plain kernel's test (PlainKernel<T>::edge_separation_full, T = float or
 /// double) sees the pair through n = fl(normalise(fl(dA x dB))) (dA, dB the
@@ -110,17 +97,17 @@ struct PlainRuleOut {
   /// Largest |coordinate| of a shape the filter takes (double: 2^240, so that
   /// products of three coordinate differences stay finite).
   static constexpr double kMaxCoordinate = std::is_same_v<T, float> ? 0x1p128 : 0x1p240;
-  static constexpr double kK1 = 2 * rule_out_gamma(4, kU) * (1 + rule_out_gamma(3, kU)) +
-                                2 * rule_out_gamma(3, kU) +
-                                kU * (1 + rule_out_gamma(3, kU)) * (1 + rule_out_gamma(4, kU));
-  static constexpr double kK2 = 4 * (1 + rule_out_gamma(3, kU)) + 2 * kU * (1 + rule_out_gamma(3, kU));
+  static constexpr double kK1 = 2 * rounding_gamma(4, kU) * (1 + rounding_gamma(3, kU)) +
+                                2 * rounding_gamma(3, kU) +
+                                kU * (1 + rounding_gamma(3, kU)) * (1 + rounding_gamma(4, kU));
+  static constexpr double kK2 = 4 * (1 + rounding_gamma(3, kU)) + 2 * kU * (1 + rounding_gamma(3, kU));
   static constexpr double kSqrt2 = 1.4142135623730951;  // (rounded up: 1.41421356237309504...)
   static constexpr double kOnePlusU = 1 + kU;
   static constexpr double kMarginFactor = 1 + 1e-6;
-  static constexpr double kTwoG4d = 2 * rule_out_gamma(4, kUd);
-  static constexpr double kSqrt2G2d = kSqrt2 * rule_out_gamma(2, kUd);
-  static constexpr double kSqrt2G2K2 = kSqrt2 * rule_out_gamma(2, kU) * kK2;
-  static constexpr double kTwoSqrt2G2d = 2 * kSqrt2 * rule_out_gamma(2, kUd);
+  static constexpr double kTwoG4d = 2 * rounding_gamma(4, kUd);
+  static constexpr double kSqrt2G2d = kSqrt2 * rounding_gamma(2, kUd);
+  static constexpr double kSqrt2G2K2 = kSqrt2 * rounding_gamma(2, kU) * kK2;
+  static constexpr double kTwoSqrt2G2d = 2 * kSqrt2 * rounding_gamma(2, kUd);
 
   /// The bound on c_d.(w - tail) for a shape with largest |coordinate|
   /// max_abs and support tolerance t is cn x + l2 y, cn = |c_d|, l2 =
@@ -194,7 +181,7 @@ void rule_out_direction(const ConvexPolyhedron<T>& p, int e, RuleOutEdge& r) {
     r.dir = difference_d(p.vertex(p.edge_head(e)), p.vertex(p.edge_tail(e)));
     r.norm = std::abs(r.dir[0]) + std::abs(r.dir[1]) + std::abs(r.dir[2]);
   } else {
-    r.dir = to_double3(p.edge_direction(e));
+    r.dir = vec_to_double(p.edge_direction(e));
     r.norm = std::sqrt(r.dir.dot(r.dir));
   }
 }
@@ -247,7 +234,7 @@ class EdgePairRuleOut {
     }
     RuleOutEdge eb_data;
     rule_out_direction<kExact>(b, eb, eb_data);
-    const Vec3<double> c = cross_d(edge_a_.dir, eb_data.dir);
+    const Vec3<double> c = cross(edge_a_.dir, eb_data.dir);
     double bound_a, bound_b;
     if constexpr (kExact) {
       const double l1 = edge_a_.norm * eb_data.norm;

@@ -108,6 +108,11 @@ concept SqrtNumber = Number<T> && number_traits<T>::has_sqrt && requires(const T
   { number_traits<T>::sqrt(a) } -> std::convertible_to<T>;
 };
 
+/// γ_k = k u / (1 - k u), u a unit roundoff (number_traits<F>::unit_roundoff):
+/// the relative error bound of k successive roundings (Higham, Lemma 3.1).
+/// The one definition the error bounds of the core and of robust/ use.
+constexpr double rounding_gamma(int k, double u) { return k * u / (1.0 - k * u); }
+
 /// Sign of x as -1, 0 or +1, computed by comparison only (exact for exact T).
 template <Number T>
 inline int sign_of(const T& x) {

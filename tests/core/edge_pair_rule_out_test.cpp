@@ -87,7 +87,7 @@ TEMPLATE_TEST_CASE("plain rule-out: the bound holds at the threshold of the roun
     const Vec3<T> da = vec(scale * std::ldexp(1.0, static_cast<int>(r01(rng) * 8) - 4));
     const Vec3<T> db = vec(scale);
     const Vec3<T> tail = vec(scale * (r01(rng) < 0.5 ? 1.0 : 100.0));
-    const Vec3<double> c = detail::cross_d(detail::to_double3(da), detail::to_double3(db));
+    const Vec3<double> c = cross(vec_to_double(da), vec_to_double(db));
     const double cn = std::sqrt(c.dot(c));
     if (!(cn > 0)) continue;
     const double mt =
@@ -105,8 +105,7 @@ TEMPLATE_TEST_CASE("plain rule-out: the bound holds at the threshold of the roun
     double x_p = 0, y_p = 0;
     detail::PlainRuleOut<T>::constants(max_abs, t, x_p, y_p);
     const double bound =
-        cn * x_p +
-        std::sqrt(detail::to_double3(da).squaredNorm() * detail::to_double3(db).squaredNorm()) * y_p;
+        cn * x_p + std::sqrt(vec_to_double(da).squaredNorm() * vec_to_double(db).squaredNorm()) * y_p;
     const double s = detail::wing_height(c, detail::difference_d(w, tail));
     // the kernel's rounded test (PlainKernel::unoriented_axis, rule_out)
     const Vec3<T> n0 = scaled_cross(da, db);

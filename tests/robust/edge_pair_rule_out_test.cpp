@@ -79,9 +79,9 @@ TEMPLATE_TEST_CASE("robust rule-out: a trusted wing height has the exact sign",
     const Vec3<double> ea = detail::difference_d(ha, ta), eb = detail::difference_d(hb, tb);
     const double k = std::ldexp(g(rng), -static_cast<int>(r01(rng) * 60));
     const Vec3<double> wd = ta.template cast<double>() + g(rng) * ea + g(rng) * eb +
-                            k * scale * detail::cross_d(ea, eb) / (ea.norm() * eb.norm() + 1e-300);
+                            k * scale * cross(ea, eb) / (ea.norm() * eb.norm() + 1e-300);
     const Vec3<T> w(testing::rounded<T>(wd[0]), testing::rounded<T>(wd[1]), testing::rounded<T>(wd[2]));
-    const Vec3<double> c = detail::cross_d(ea, eb);
+    const Vec3<double> c = cross(ea, eb);
     const double l1 = (std::abs(ea[0]) + std::abs(ea[1]) + std::abs(ea[2])) *
                       (std::abs(eb[0]) + std::abs(eb[1]) + std::abs(eb[2]));
     double max_abs = 0;

@@ -24,9 +24,8 @@ namespace sepax::hull::detail {
 /// (>= 8 eta(T), eta half the smallest subnormal) absolute (VertexTree::may_exceed derives them).
 template <class T>
 struct DotBound {
-  static constexpr double gamma4(double u) { return 4 * u / (1 - 4 * u); }
-  static constexpr double kSlack =
-      2 * (gamma4(number_traits<T>::unit_roundoff) + gamma4(number_traits<double>::unit_roundoff));
+  static constexpr double kSlack = 2 * (rounding_gamma(4, number_traits<T>::unit_roundoff) +
+                                        rounding_gamma(4, number_traits<double>::unit_roundoff));
   static constexpr double kTiny = 64 * static_cast<double>(std::numeric_limits<T>::min());
 };
 

@@ -43,8 +43,7 @@ namespace robust {
 /// of k successive roundings (Higham, Lemma 3.1).
 template <RobustFloat T>
 constexpr double gamma(int k) {
-  constexpr double u = number_traits<T>::unit_roundoff;
-  return k * u / (1.0 - k * u);
+  return rounding_gamma(k, number_traits<T>::unit_roundoff);
 }
 
 namespace detail {
