@@ -67,10 +67,10 @@ class PlainKernel {
     const Vec3<T>& da = a_.edge_direction(ea);
     const Vec3<T>& db = b_.edge_direction(eb);
     ArcSigns s;
-    s.cba = sign_of(dot(b_.edge_normal(eb, 0), da));
-    s.dba = sign_of(dot(b_.edge_normal(eb, 1), da));
-    s.adc = -sign_of(dot(a_.edge_normal(ea, 0), db));
-    s.bdc = -sign_of(dot(a_.edge_normal(ea, 1), db));
+    s.cba = sign_of_dot(b_.edge_normal(eb, 0), da);
+    s.dba = sign_of_dot(b_.edge_normal(eb, 1), da);
+    s.adc = -sign_of_dot(a_.edge_normal(ea, 0), db);
+    s.bdc = -sign_of_dot(a_.edge_normal(ea, 1), db);
     return s;
   }
 
@@ -79,22 +79,25 @@ class PlainKernel {
   /// strictly opposite (most pairs).
   bool minkowski_face(int ea, int eb) const {
     const Vec3<T>& da = a_.edge_direction(ea);
-    const T c = dot(b_.edge_normal(eb, 0), da);
-    const T d = dot(b_.edge_normal(eb, 1), da);
+    int cba;
     if constexpr (number_traits<T>::is_exact) {
-      if (!(sign_of(c) * sign_of(d) < 0)) return false;
+      // signs only: T's dot_sign where it has one (vec3.hpp, sign_of_dot)
+      cba = sign_of_dot(b_.edge_normal(eb, 0), da);
+      if (!(cba * sign_of_dot(b_.edge_normal(eb, 1), da) < 0)) return false;
     } else {
+      const T c = dot(b_.edge_normal(eb, 0), da);
+      const T d = dot(b_.edge_normal(eb, 1), da);
       // sign_of(c) * sign_of(d) < 0 as min < 0 < max: the same answer for
       // every input (signed zeros give false, and so does a NaN in either
       // place: it is never selected as both the min and the max), fewer ops.
       const T lo = d < c ? d : c;
       const T hi = c < d ? d : c;
       if (!(lo < T(0) && T(0) < hi)) return false;
+      cba = sign_of(c);
     }
-    const int cba = sign_of(c);
     const Vec3<T>& db = b_.edge_direction(eb);
-    const int adc = -sign_of(dot(a_.edge_normal(ea, 0), db));
-    const int bdc = -sign_of(dot(a_.edge_normal(ea, 1), db));
+    const int adc = -sign_of_dot(a_.edge_normal(ea, 0), db);
+    const int bdc = -sign_of_dot(a_.edge_normal(ea, 1), db);
     return adc * bdc < 0 && cba * bdc > 0;
   }
 
@@ -125,14 +128,20 @@ class PlainKernel {
   /// neither overflows nor underflows where w itself does not.
   bool in_edge_wedge_a(int e, int x) const {
     Vec3<T> d = a_.edge_direction(e);
-    if constexpr (!number_traits<T>::is_exact) {
+    if constexpr (number_traits<T>::is_exact) {
+      // n.((w - tail) x E) = (E x n).(w - tail): T's height signs (vec3.hpp)
+      const Vec3<T>& w = b_.vertex(x);
+      const Vec3<T>& tail = a_.vertex(a_.edge_tail(e));
+      return sign_of_height(d, a_.edge_normal(e, 0), w, tail) > 0 &&
+             sign_of_height(d, a_.edge_normal(e, 1), w, tail) < 0;
+    } else {
       const T m = detail::max_abs2(d, d);
       if (!(m > T(0) && m <= std::numeric_limits<T>::max())) return false;  // no direction: no wedge
       d = detail::scale_pow2(d, detail::pow2_exponent(m));
     }
     // (E x n).w = n.(w x E): one cross product for both faces
     const Vec3<T> c = cross(diff(b_.vertex(x), a_.vertex(a_.edge_tail(e))), d);
-    return sign_of(dot(a_.edge_normal(e, 0), c)) > 0 && sign_of(dot(a_.edge_normal(e, 1), c)) < 0;
+    return sign_of_dot(a_.edge_normal(e, 0), c) > 0 && sign_of_dot(a_.edge_normal(e, 1), c) < 0;
   }
 
   bool edges_parallel(int ea, int eb) const {
@@ -191,6 +200,35 @@ class PlainKernel {
       return std::array<double, 2>{static_cast<double>(support_tolerance(a_)),
                                    static_cast<double>(support_tolerance(b_))};
     });
+  }
+
+  /// Optional member (sat_kernel.hpp, HasEdgePairRuledOut), exact T: the
+  /// same wings (edge_pair_rule_out.hpp, edge_wings), their heights' exact
+  /// signs along c = eA x eB (sign_of_height: integers for the GMP rationals,
+  /// an interval filter for Lazy_exact_nt).  A wing above its edge's tail
+  /// rules out the edge at its shape's maximum along c, below it the minimum,
+  /// as rule_out_by_neighbours does (the wings are neighbours of the edge's
+  /// endpoints), so edge_separation_full returns nothing for a pair ruled out
+  /// in both orientations.  (Parallel edges: c = 0 rules out nothing.)
+  bool edge_pair_ruled_out(int ea, int eb) const requires number_traits<T>::is_exact {
+    const Vec3<T>& da = a_.edge_direction(ea);
+    const Vec3<T>& db = b_.edge_direction(eb);
+    bool may_plus = true, may_minus = true;  // +c: A's edge at A's max, B's at B's min
+    const detail::EdgeWings wa = detail::edge_wings(a_, ea);
+    for (const int w : {wa.wing0, wa.wing1}) {
+      const int h = sign_of_height(da, db, a_.vertex(w), a_.vertex(wa.tail));
+      may_plus = may_plus && h <= 0;
+      may_minus = may_minus && h >= 0;
+    }
+    if (!may_plus && !may_minus) return true;
+    const detail::EdgeWings wb = detail::edge_wings(b_, eb);
+    for (const int w : {wb.wing0, wb.wing1}) {
+      const int h = sign_of_height(da, db, b_.vertex(w), b_.vertex(wb.tail));
+      may_plus = may_plus && h >= 0;
+      may_minus = may_minus && h <= 0;
+      if (!may_plus && !may_minus) return true;
+    }
+    return false;
   }
 
   int compare(const Separation<T>& x, const Feature&, const Separation<T>& y, const Feature&) const {

@@ -11,9 +11,10 @@
 // check a separated pair would report directions that are not face normals of
 // A - B, and no faster SAT could be checked against it.  The check is done by
 // projection, independently of the Gauss-map arc test it verifies.  Kernels
-// with edge_pair_ruled_out (float and double) first rule out most pairs by
-// the heights of two neighbouring vertices of each edge, in double with a
-// derived bound (edge_pair_rule_out.hpp): the same pairs are kept.
+// with edge_pair_ruled_out first rule out most pairs by the heights of two
+// neighbouring vertices of each edge (float and double: in double with a
+// derived bound, edge_pair_rule_out.hpp; exact types: the exact signs): the
+// same pairs are kept.
 #pragma once
 
 #include "best_axis.hpp"

@@ -28,9 +28,22 @@ using Vec3 = Eigen::Matrix<T, 3, 1>;
 template <class T>
 using Vec2 = Eigen::Matrix<T, 2, 1>;
 
-/// a.x*b.x + a.y*b.y + a.z*b.z, evaluated left to right.
+/// An exact number type may supply number_traits<T>::exact_dot(out, a, b): out = a . b, the value T's
+/// operations give, by a faster route where the route applies (returning true), and false with out
+/// untouched where it does not.  The GMP rationals do, for dyadic rationals (robust/number_types.hpp).
+/// (number_traits<T> must be complete wherever dot<T> is first used: the concept is decided there.)
+template <class T>
+concept HasExactDot = number_traits<T>::is_exact && requires(T& out, const Vec3<T>& a) {
+  { number_traits<T>::exact_dot(out, a, a) } -> std::same_as<bool>;
+};
+
+/// a.x*b.x + a.y*b.y + a.z*b.z, evaluated left to right (or T's exact_dot: the same value).
 template <class T>
 inline T dot(const Vec3<T>& a, const Vec3<T>& b) {
+  if constexpr (HasExactDot<T>) {
+    T out;
+    if (number_traits<T>::exact_dot(out, a, b)) return out;
+  }
   T s = a[0] * b[0];
   s = s + a[1] * b[1];
   s = s + a[2] * b[2];
@@ -51,6 +64,43 @@ template <class T>
 template <class T>
 inline T triple(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   return dot(a, cross(b, c));
+}
+
+/// An exact number type may supply number_traits<T>::dot_sign(a, b): the sign of a . b (-1, 0 or +1), the
+/// sign of dot(a, b), by a cheaper route (a filter, or integer arithmetic without T's normalisation).
+/// The GMP rationals and CGAL's Lazy_exact_nt do (robust/number_types.hpp).
+template <class T>
+concept HasDotSign = number_traits<T>::is_exact && requires(const Vec3<T>& a) {
+  { number_traits<T>::dot_sign(a, a) } -> std::same_as<int>;
+};
+
+/// sign_of(dot(a, b)): through T's dot_sign where T has one (the same sign).
+template <class T>
+inline int sign_of_dot(const Vec3<T>& a, const Vec3<T>& b) {
+  if constexpr (HasDotSign<T>) {
+    return number_traits<T>::dot_sign(a, b);
+  } else {
+    return sign_of(dot(a, b));
+  }
+}
+
+/// An exact number type may supply number_traits<T>::height_sign(a, b, p, q): the sign of (a x b).(p - q),
+/// the side of p against q along a x b (-1, 0 or +1), the sign of dot(cross(a, b), p - q), by a cheaper
+/// route.  The GMP rationals and CGAL's Lazy_exact_nt do (robust/number_types.hpp).
+template <class T>
+concept HasHeightSign = number_traits<T>::is_exact && requires(const Vec3<T>& a) {
+  { number_traits<T>::height_sign(a, a, a, a) } -> std::same_as<int>;
+};
+
+/// sign_of(dot(cross(a, b), p - q)): through T's height_sign where T has one (the same sign).
+template <class T>
+inline int sign_of_height(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& p, const Vec3<T>& q) {
+  if constexpr (HasHeightSign<T>) {
+    return number_traits<T>::height_sign(a, b, p, q);
+  } else {
+    const Vec3<T> d(T(p[0] - q[0]), T(p[1] - q[1]), T(p[2] - q[2]));
+    return sign_of(dot(cross(a, b), d));
+  }
 }
 
 /// An exact number type may supply number_traits<T>::exact_difference(out, a, b): out = a - b, the value

@@ -8,6 +8,7 @@
 // runtime and compile-time-constant operands.
 #include <catch2/catch.hpp>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Interval_nt.h>
 #include <gmpxx.h>
 
@@ -218,6 +219,99 @@ TEST_CASE("mpq differences of dyadic values are computed in integers, with mpq's
   sepax::Vec3<Q> d;
   sepax::assign_difference(d, u, w);  // one coordinate dyadic on both sides, two not
   CHECK(d == sepax::Vec3<Q>(u - w));
+}
+
+TEST_CASE("mpq and Gmpq dot products of dyadic values are computed in integers, with mpq's values",
+          "[robust][number_types]") {
+  // number_traits<T>::exact_dot (behind sepax::dot for the GMP rationals) against mpq's operations
+  // written out: the same value in the same lowest terms; false with the result untouched when a
+  // coordinate is not dyadic, and sepax::dot then takes mpq's operations.
+  using Q = mpq_class;
+  using G = CGAL::Gmpq;
+  SpreadDoubles coordinate;
+  auto reference = [](const sepax::Vec3<Q>& a, const sepax::Vec3<Q>& b) {
+    Q s = a[0] * b[0];
+    s += a[1] * b[1];
+    s += a[2] * b[2];
+    return s;
+  };
+  auto gmpq = [](const sepax::Vec3<Q>& v) {
+    return sepax::Vec3<G>(G(v[0].get_mpq_t()), G(v[1].get_mpq_t()), G(v[2].get_mpq_t()));
+  };
+  int zeros = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const sepax::Vec3<Q> a{Q{coordinate()}, Q{coordinate()}, Q{coordinate()}};
+    const sepax::Vec3<Q> b{Q{coordinate()}, Q{coordinate()}, Q{coordinate()}};
+    for (const sepax::Vec3<Q>& c : {b, sepax::Vec3<Q>(a[1], -a[0], Q(0))}) {  // and a tie (a . c = 0)
+      const Q slow = reference(a, c);
+      zeros += slow == 0;
+      Q fast(7);
+      REQUIRE(sepax::number_traits<Q>::exact_dot(fast, a, c));
+      CHECK(fast == slow);
+      CHECK(mpz_cmp(mpq_denref(fast.get_mpq_t()), mpq_denref(slow.get_mpq_t())) == 0);
+      CHECK(sepax::dot(a, c) == slow);
+      G g(5);
+      const G shared = g;  // a copy sharing g's number is left as it was
+      REQUIRE(sepax::number_traits<G>::exact_dot(g, gmpq(a), gmpq(c)));
+      CHECK(mpq_equal(g.mpq(), slow.get_mpq_t()));
+      CHECK(shared == G(5));
+      CHECK(mpq_equal(sepax::dot(gmpq(a), gmpq(c)).mpq(), slow.get_mpq_t()));
+    }
+  }
+  CHECK(zeros >= 5000);
+  const sepax::Vec3<Q> u(Q(1, 3), Q(0.75), Q(-2)), w(Q(1), Q(0.125), Q(1, 6));
+  Q out(5);
+  CHECK_FALSE(sepax::number_traits<Q>::exact_dot(out, u, w));
+  CHECK(out == 5);
+  CHECK(sepax::dot(u, w) == reference(u, w));
+  G gout(5);
+  CHECK_FALSE(sepax::number_traits<G>::exact_dot(gout, gmpq(u), gmpq(w)));
+  CHECK(gout == G(5));
+}
+
+TEST_CASE("exact dot signs (integers, interval filter) are the signs of the exact dot products",
+          "[robust][number_types]") {
+  // number_traits<T>::dot_sign for mpq_class, CGAL::Gmpq and Epeck::FT against the sign of mpq's dot, on
+  // dyadic coordinates over many binades, non-dyadic rationals, and constructed ties: exact zeros with
+  // terms of both signs and sums one unit of the last term's place away from zero.  Epeck values made by
+  // arithmetic (x / 3 * 3) have intervals that are not points, so the ties reach the exact fallback.
+  using Q = mpq_class;
+  using X = CGAL::Epeck::FT;
+  SpreadDoubles coordinate;
+  int zeros = 0, mixed = 0;
+  auto check = [&](const sepax::Vec3<Q>& a, const sepax::Vec3<Q>& b) {
+    const int expected = sgn(sepax::dot(a, b));
+    zeros += expected == 0;
+    mixed += (sgn(a[0] * b[0]) * sgn(a[1] * b[1]) < 0) || (sgn(a[1] * b[1]) * sgn(a[2] * b[2]) < 0);
+    CHECK(sepax::number_traits<Q>::dot_sign(a, b) == expected);
+    using G = CGAL::Gmpq;
+    const sepax::Vec3<G> ga(G(a[0].get_mpq_t()), G(a[1].get_mpq_t()), G(a[2].get_mpq_t()));
+    const sepax::Vec3<G> gb(G(b[0].get_mpq_t()), G(b[1].get_mpq_t()), G(b[2].get_mpq_t()));
+    CHECK(sepax::number_traits<G>::dot_sign(ga, gb) == expected);
+    const sepax::Vec3<X> xa{X{a[0]}, X{a[1]}, X{a[2]}}, xb{X{b[0]}, X{b[1]}, X{b[2]}};
+    CHECK(sepax::number_traits<X>::dot_sign(xa, xb) == expected);
+    const sepax::Vec3<X> ya(xa[0] / 3 * 3, xa[1] / 3 * 3, xa[2] / 3 * 3);  // the same values, wider intervals
+    CHECK(sepax::number_traits<X>::dot_sign(ya, xb) == expected);
+    CHECK(sepax::sign_of_dot(a, b) == expected);
+  };
+  for (int i = 0; i < 3000; ++i) {
+    const sepax::Vec3<Q> a{Q{coordinate()}, Q{coordinate()}, Q{coordinate()}};
+    const sepax::Vec3<Q> b{Q{coordinate()}, Q{coordinate()}, Q{coordinate()}};
+    check(a, b);
+    // a tie: a . (a_1 s, -a_0 s, 0) = 0, two terms of opposite signs
+    const Q s(coordinate());
+    const sepax::Vec3<Q> t(a[1] * s, -a[0] * s, Q(0));
+    check(a, t);
+    // next to a tie: a . (a_1, -a_0, 2^-1074) = a_2 2^-1074, far below the other terms
+    const sepax::Vec3<Q> u(a[1], -a[0], Q(std::ldexp(1.0, -1074)));
+    check(a, u);
+    // non-dyadic rationals
+    const sepax::Vec3<Q> r(a[0] / 3, a[1] / 7, Q(1, 5)), w(b[0] * 3, -a[1] / 3, Q(i % 9 - 4, 11));
+    check(r, w);
+    check(r, sepax::Vec3<Q>(r[1], -r[0], Q(0)));
+  }
+  CHECK(zeros > 3000);
+  CHECK(mixed > 6000);
 }
 
 TEST_CASE("mpq values that are doubles convert without rounding; the others round once, to nearest",
