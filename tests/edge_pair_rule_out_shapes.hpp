@@ -47,6 +47,19 @@ T rounded(double x) {
   return f;
 }
 
+/// v rounded to T coordinate by coordinate (rounded).
+template <class T>
+Vec3<T> rounded_vec(const Vec3<double>& v) {
+  return Vec3<T>(rounded<T>(v[0]), rounded<T>(v[1]), rounded<T>(v[2]));
+}
+
+/// Three normal deviates of g, drawn in order, times s, rounded to T.
+template <class T>
+Vec3<T> random_vec(std::normal_distribution<double>& g, std::mt19937_64& rng, double s) {
+  const double x = g(rng), y = g(rng), z = g(rng);
+  return rounded_vec<T>(Vec3<double>(s * x, s * y, s * z));
+}
+
 template <class T>
 RigidTransform<T> random_pose(std::mt19937_64& rng, double move) {
   std::normal_distribution<double> g;
@@ -65,7 +78,7 @@ ConvexPolyhedron<T> random_hull(std::mt19937_64& rng, int n, bool ball) {
     Vec3<double> d(g(rng), g(rng), g(rng));
     d /= d.norm();
     if (ball) d *= std::cbrt(r01(rng));
-    pts.emplace_back(rounded<T>(d[0]), rounded<T>(d[1]), rounded<T>(d[2]));
+    pts.push_back(rounded_vec<T>(d));
   }
   return convex_hull(pts);
 }

@@ -74,10 +74,7 @@ TEMPLATE_TEST_CASE("plain rule-out: the bound holds at the threshold of the roun
   long claims = 0, trials = 0;
   for (int i = 0; i < 200000; ++i) {
     const double scale = std::ldexp(1.0, static_cast<int>(r01(rng) * 40) - 20);
-    auto vec = [&](double s) {
-      return Vec3<T>(testing::rounded<T>(s * g(rng)), testing::rounded<T>(s * g(rng)),
-                     testing::rounded<T>(s * g(rng)));
-    };
+    auto vec = [&](double s) { return testing::random_vec<T>(g, rng, s); };
     const Vec3<T> da = vec(scale * std::ldexp(1.0, static_cast<int>(r01(rng) * 8) - 4));
     const Vec3<T> db = vec(scale);
     const Vec3<T> tail = vec(scale * (r01(rng) < 0.5 ? 1.0 : 100.0));
@@ -93,7 +90,7 @@ TEMPLATE_TEST_CASE("plain rule-out: the bound holds at the threshold of the roun
     Vec3<double> off(g(rng), g(rng), g(rng));
     off -= (off.dot(c) / (cn * cn)) * c;
     const Vec3<double> wd = tail.template cast<double>() + ((t + x) / cn) * c + 0.3 * scale * off;
-    const Vec3<T> w(testing::rounded<T>(wd[0]), testing::rounded<T>(wd[1]), testing::rounded<T>(wd[2]));
+    const Vec3<T> w = testing::rounded_vec<T>(wd);
     const double max_abs =
         std::max({mt, std::abs(double(w[0])), std::abs(double(w[1])), std::abs(double(w[2]))});
     double x_p = 0, y_p = 0;

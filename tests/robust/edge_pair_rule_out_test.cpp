@@ -119,10 +119,7 @@ TEMPLATE_TEST_CASE("robust rule-out: a trusted wing height has the exact sign",
   long decided = 0, trials = 0;
   for (int i = 0; i < 100000; ++i) {
     const double scale = std::ldexp(1.0, static_cast<int>(r01(rng) * 60) - 30);
-    auto vec = [&](double s) {
-      return Vec3<T>(testing::rounded<T>(s * g(rng)), testing::rounded<T>(s * g(rng)),
-                     testing::rounded<T>(s * g(rng)));
-    };
+    auto vec = [&](double s) { return testing::random_vec<T>(g, rng, s); };
     const Vec3<T> ta = vec(scale * 100), tb = vec(scale * 100);
     Vec3<T> ha = vec(scale), hb = vec(scale);
     const double f = 1 + 1e-6 * g(rng);
@@ -138,7 +135,7 @@ TEMPLATE_TEST_CASE("robust rule-out: a trusted wing height has the exact sign",
     const double k = std::ldexp(g(rng), -static_cast<int>(r01(rng) * 60));
     const Vec3<double> wd = ta.template cast<double>() + g(rng) * ea + g(rng) * eb +
                             k * scale * cross(ea, eb) / (ea.norm() * eb.norm() + 1e-300);
-    const Vec3<T> w(testing::rounded<T>(wd[0]), testing::rounded<T>(wd[1]), testing::rounded<T>(wd[2]));
+    const Vec3<T> w = testing::rounded_vec<T>(wd);
     const Vec3<double> c = cross(ea, eb);
     const double l1 = (std::abs(ea[0]) + std::abs(ea[1]) + std::abs(ea[2])) *
                       (std::abs(eb[0]) + std::abs(eb[1]) + std::abs(eb[2]));
