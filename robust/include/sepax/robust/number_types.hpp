@@ -94,6 +94,19 @@ inline std::optional<mp_bitcnt_t> dyadic_shift(const mpq_class& q) {
 /// Three rationals (a vector's coordinates), read in place.
 using Mpq3 = std::array<mpq_srcptr, 3>;
 
+/// e_i = log2(den(a_i) den(b_i)), i = 0, 1, 2, when all six denominators are powers of two (the terms
+/// a_i b_i = num(a_i) num(b_i) / 2^e_i); false otherwise.
+inline bool dyadic_term_exponents(const Mpq3& a, const Mpq3& b, mp_bitcnt_t (&e)[3]) {
+  for (int i = 0; i < 3; ++i) {
+    const std::optional<mp_bitcnt_t> ea = power_of_two_exponent(mpq_denref(a[i]));
+    if (!ea) return false;
+    const std::optional<mp_bitcnt_t> eb = power_of_two_exponent(mpq_denref(b[i]));
+    if (!eb) return false;
+    e[i] = *ea + *eb;
+  }
+  return true;
+}
+
 /// The sign of a . b = a_0 b_0 + a_1 b_1 + a_2 b_2 for rationals (a[i], b[i]), exact, in integers: the
 /// sign mpq_class's dot gives, without the gcd each of its operations reduces by.  Denominators are > 0,
 /// so the term a_i b_i has the sign of num(a_i) num(b_i):
@@ -113,13 +126,7 @@ inline int rational_dot_sign(const Mpq3& a, const Mpq3& b) {
   if (positive == 0) return -1;
   thread_local mpz_class n[3], d[3], t, sum;  // (kept: no allocation once grown)
   mp_bitcnt_t e[3];
-  bool dyadic = true;
-  for (int i = 0; i < 3 && dyadic; ++i) {
-    const std::optional<mp_bitcnt_t> ea = power_of_two_exponent(mpq_denref(a[i]));
-    const std::optional<mp_bitcnt_t> eb = power_of_two_exponent(mpq_denref(b[i]));
-    dyadic = ea && eb;
-    if (dyadic) e[i] = *ea + *eb;
-  }
+  const bool dyadic = dyadic_term_exponents(a, b, e);
   for (int i = 0; i < 3; ++i) mpz_mul(n[i].get_mpz_t(), mpq_numref(a[i]), mpq_numref(b[i]));
   if (dyadic) {
     const mp_bitcnt_t k = std::max({e[0], e[1], e[2]});
@@ -211,13 +218,7 @@ inline bool dyadic_difference(mpq_class& out, const mpq_class& a, const mpq_clas
 /// terms are unique), without its gcds.  false, out untouched, when a denominator is not a power of two.
 inline bool dyadic_dot(mpq_ptr out, const Mpq3& a, const Mpq3& b) {
   mp_bitcnt_t e[3];
-  for (int i = 0; i < 3; ++i) {
-    const std::optional<mp_bitcnt_t> ea = power_of_two_exponent(mpq_denref(a[i]));
-    if (!ea) return false;
-    const std::optional<mp_bitcnt_t> eb = power_of_two_exponent(mpq_denref(b[i]));
-    if (!eb) return false;
-    e[i] = *ea + *eb;
-  }
+  if (!dyadic_term_exponents(a, b, e)) return false;
   const mp_bitcnt_t k = std::max({e[0], e[1], e[2]});
   thread_local mpz_class t, sum;  // (kept: no allocation once grown)
   mpz_mul(sum.get_mpz_t(), mpq_numref(a[0]), mpq_numref(b[0]));
