@@ -127,21 +127,22 @@ class PlainKernel {
   /// to max |E_i| in [1, 2), so E x n (n unit) is O(1) and the product with w
   /// neither overflows nor underflows where w itself does not.
   bool in_edge_wedge_a(int e, int x) const {
-    Vec3<T> d = a_.edge_direction(e);
+    const Vec3<T>& w = b_.vertex(x);
+    const Vec3<T>& tail = a_.vertex(a_.edge_tail(e));
     if constexpr (number_traits<T>::is_exact) {
       // n.((w - tail) x E) = (E x n).(w - tail): T's height signs (vec3.hpp)
-      const Vec3<T>& w = b_.vertex(x);
-      const Vec3<T>& tail = a_.vertex(a_.edge_tail(e));
+      const Vec3<T>& d = a_.edge_direction(e);
       return sign_of_height(d, a_.edge_normal(e, 0), w, tail) > 0 &&
              sign_of_height(d, a_.edge_normal(e, 1), w, tail) < 0;
     } else {
+      Vec3<T> d = a_.edge_direction(e);
       const T m = detail::max_abs2(d, d);
       if (!(m > T(0) && m <= std::numeric_limits<T>::max())) return false;  // no direction: no wedge
       d = detail::scale_pow2(d, detail::pow2_exponent(m));
+      // (E x n).w = n.(w x E): one cross product for both faces
+      const Vec3<T> c = cross(diff(w, tail), d);
+      return sign_of(dot(a_.edge_normal(e, 0), c)) > 0 && sign_of(dot(a_.edge_normal(e, 1), c)) < 0;
     }
-    // (E x n).w = n.(w x E): one cross product for both faces
-    const Vec3<T> c = cross(diff(b_.vertex(x), a_.vertex(a_.edge_tail(e))), d);
-    return sign_of_dot(a_.edge_normal(e, 0), c) > 0 && sign_of_dot(a_.edge_normal(e, 1), c) < 0;
   }
 
   bool edges_parallel(int ea, int eb) const {

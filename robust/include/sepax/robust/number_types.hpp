@@ -91,6 +91,26 @@ inline std::optional<mp_bitcnt_t> dyadic_shift(const mpq_class& q) {
   return power_of_two_exponent(mpq_denref(q.get_mpq_t()));
 }
 
+/// a . b evaluated in N, left to right, from at(v, j): coordinate j of vector v (0: a, 1: b).
+template <class N, class At>
+N dot_value(At at) {
+  N s = at(0, 0) * at(1, 0);
+  s = s + at(0, 1) * at(1, 1);
+  s = s + at(0, 2) * at(1, 2);
+  return s;
+}
+
+/// (a x b).(p - q) evaluated in N from at(v, j): coordinate j of vector v (0: a, 1: b, 2: p, 3: q).
+template <class N, class At>
+N height_value(At at) {
+  N s(0);
+  for (int j = 0; j < 3; ++j) {
+    const int u = (j + 1) % 3, w = (j + 2) % 3;
+    s = s + (at(0, u) * at(1, w) - at(0, w) * at(1, u)) * (at(2, j) - at(3, j));
+  }
+  return s;
+}
+
 /// Three rationals (a vector's coordinates), read in place.
 using Mpq3 = std::array<mpq_srcptr, 3>;
 
@@ -245,13 +265,9 @@ inline int rational_height_sign(const Mpq3& a, const Mpq3& b, const Mpq3& p, con
     dyadic = z.has_value();
     if (dyadic) shift[i] = *z;
   }
-  if (!dyadic) {  // (written out: sepax::dot<mpq_class> is not to be instantiated before number_traits)
-    auto at = [](const Mpq3& x, int j) { return mpq_class(x[static_cast<std::size_t>(j)]); };
-    mpq_class h(0);
-    for (int j = 0; j < 3; ++j) {
-      const int u = (j + 1) % 3, w = (j + 2) % 3;
-      h += (at(a, u) * at(b, w) - at(a, w) * at(b, u)) * (at(p, j) - at(q, j));
-    }
+  if (!dyadic) {  // (not sepax::dot: dot<mpq_class> is not to be instantiated before number_traits)
+    const mpq_class h = height_value<mpq_class>(
+        [&](int v, int j) { return mpq_class((*vectors[v])[static_cast<std::size_t>(j)]); });
     return sgn(h);
   }
   thread_local mpz_class x[9], c[3], t, h;  // A, B, D; A x B (kept: no allocation once grown)
@@ -364,19 +380,16 @@ struct number_traits<CGAL::Lazy_exact_nt<ET>> : detail::exact_rational_traits {
   /// sign): in integers for a GMP rational ET (detail::rational_dot_sign), else ET's dot.  No lazy node is
   /// built, where dot(a, b) builds five.
   static int dot_sign(const Vec3<L>& a, const Vec3<L>& b) {
+    const Vec3<L>* v[2] = {&a, &b};
     {
       CGAL::Protect_FPU_rounding<true> upward;
-      const I s =
-          a[0].approx() * b[0].approx() + a[1].approx() * b[1].approx() + a[2].approx() * b[2].approx();
+      const I s = detail::dot_value<I>([&](int i, int j) { return (*v[i])[j].approx(); });
       if (const std::optional<int> d = decided(s)) return *d;
     }
     if constexpr (kRational) {
       return detail::rational_dot_sign(exact_in_place(a), exact_in_place(b));
     } else {
-      ET s = a[0].exact() * b[0].exact();
-      s = s + a[1].exact() * b[1].exact();
-      s = s + a[2].exact() * b[2].exact();
-      return (s > ET(0)) - (s < ET(0));
+      return sign_value(detail::dot_value<ET>([&](int i, int j) { return (*v[i])[j].exact(); }));
     }
   }
 
@@ -384,31 +397,25 @@ struct number_traits<CGAL::Lazy_exact_nt<ET>> : detail::exact_rational_traits {
   /// evaluated in interval arithmetic, rounding upward), then the exact values (in integers for a GMP
   /// rational ET, detail::rational_height_sign; else ET's operations).
   static int height_sign(const Vec3<L>& a, const Vec3<L>& b, const Vec3<L>& p, const Vec3<L>& q) {
+    const Vec3<L>* v[4] = {&a, &b, &p, &q};
     {
       CGAL::Protect_FPU_rounding<true> upward;
-      I s(0);
-      for (int j = 0; j < 3; ++j) {
-        const int u = (j + 1) % 3, w = (j + 2) % 3;
-        const I c = a[u].approx() * b[w].approx() - a[w].approx() * b[u].approx();
-        s = s + c * (p[j].approx() - q[j].approx());
-      }
+      const I s = detail::height_value<I>([&](int i, int j) { return (*v[i])[j].approx(); });
       if (const std::optional<int> d = decided(s)) return *d;
     }
     if constexpr (kRational) {
       return detail::rational_height_sign(exact_in_place(a), exact_in_place(b), exact_in_place(p),
                                           exact_in_place(q));
     } else {
-      ET s(0);
-      for (int j = 0; j < 3; ++j) {
-        const int u = (j + 1) % 3, w = (j + 2) % 3;
-        s = s + (a[u].exact() * b[w].exact() - a[w].exact() * b[u].exact()) * (p[j].exact() - q[j].exact());
-      }
-      return (s > ET(0)) - (s < ET(0));
+      return sign_value(detail::height_value<ET>([&](int i, int j) { return (*v[i])[j].exact(); }));
     }
   }
 
  private:
   static constexpr bool kRational = std::is_same_v<ET, mpq_class> || std::is_same_v<ET, CGAL::Gmpq>;
+
+  /// The sign of an exact value.
+  static int sign_value(const ET& s) { return (s > ET(0)) - (s < ET(0)); }
 
   /// The sign of every value in the enclosure s when they all have one.
   static std::optional<int> decided(const I& s) {
