@@ -7,7 +7,9 @@
 // edges' endpoints) costs several hundred instructions to say so.
 //   1. the wings (edge_wings, rule_out_wings): the vertex before each endpoint
 //      in the edge's two faces, both neighbours of the edge;
-//   2. their heights c.(w - tail) in double (side_verdict);
+//   2. their heights c.(w - tail) in double: A's first as dB.m, m = (w -
+//      tail) x dA kept per edge of A (across_verdict: no cross product per
+//      pair), then as c.(w - tail) (side_verdict);
 //   3. the bound beyond which a height's sign is the one the kernel's test
 //      sees: PlainRuleOut (the plain kernel's rounded unit axis and support
 //      tolerance) or ExactRuleOut (the robust kernel's exact axis);
@@ -127,6 +129,36 @@ struct PlainRuleOut {
     x = kMarginFactor * (tt + r * kTwoG4d);
     y = kMarginFactor * (kSqrt2G2d * tt + r * kSqrt2G2K2 + r * kTwoSqrt2G2d);
   }
+
+  /// The bound without |c| (across_verdict: A's wings' heights as dB.m, m =
+  /// fl_d((w - tail) x dA), no cross product per pair).  With L = |dA|_1
+  /// |dB|_1 >= |dA||dB| >= |c|, the condition above is implied by c.(w -
+  /// tail) > L (t (1 + u) + R K1 + √2 γ_2 R K2).  The height fl_d(dB.m) is
+  /// the triple product det(dA, dB, w - tail) through its six monomials dB_i
+  /// (w - tail)_j dA_k, each with at most five roundings (two in m, the
+  /// product by dB_i, two additions; FMA contraction removes some) and, for
+  /// double, one more in w - tail: it is within (γ_5,d (1 + u_d) + u_d) G L
+  /// <= 7 u_d G L of c.(w - tail), G = 2 max|coordinate| >= |w - tail|_∞.
+  /// So the bound is L z + kAcrossUnderflow, z = (1 + 1e-6)(t (1 + u) + R K1
+  /// + √2 γ_2 R K2 + 7 u_d G) (the factor covers the rounding of L and of
+  /// the bound); kAcrossUnderflow covers subnormal intermediates (double:
+  /// each at most 2^-1075 off, at most three per component of m, each
+  /// multiplied by |dB_i| <= 2 kMaxCoordinate = 2^241, and five in the dot
+  /// product: below 2^-829; float: no intermediate is subnormal).  The
+  /// kernel's own arithmetic needs |c_d| >= kMinScale: a height above the
+  /// bound gives |c| > L K1 / 2 (|w - tail| < 2R), so |c_d| > L K1 / 4 and
+  /// the bound is asked only while L >= kMinAcross = 4 kMinScale / K1.
+  /// Outside the covered range z = +infinity (no decision).
+  static double across_constant(double max_abs, double t) {
+    const double r = 1.7320508075688774 * max_abs;  // √3 (rounded up)
+    if (!(r >= kMinScale && max_abs <= kMaxCoordinate)) return std::numeric_limits<double>::infinity();
+    return kMarginFactor * (t * kOnePlusU + r * kK1 + r * kSqrt2G2K2 + 2 * max_abs * kAcrossHeightError);
+  }
+  static constexpr double kAcrossHeightError = 7 * kUd;
+  static_assert(kAcrossHeightError > rounding_gamma(5, kUd) * (1 + kUd) + kUd);
+  static constexpr double kAcrossUnderflow = 0x1p-800;
+  static constexpr double kMinAcross = 4 * kMinScale / kK1;
+  static_assert(kK1 / 4 >= kSqrt2G2d);  // |c_d| >= |c| - √2 γ_2,d L > L K1 / 4
 };
 
 /// The robust kernel's test (RobustKernel::edge_separation_full) decides
@@ -138,12 +170,18 @@ struct PlainRuleOut {
 /// of w - tail and two additions (at most five roundings per term, with or
 /// without FMA): the computed value is within γ_8,d Σ_i |D_i| (|E_A,j E_B,k| +
 /// |E_A,k E_B,j|) <= γ_8,d |D|_∞ |E_A|_1 |E_B|_1 of n*.D, |D|_∞ <= 2
-/// max|coordinate| = G.  The bound is l1 k + z, l1 = fl_d(|Ẽ_A|_1 |Ẽ_B|_1):
-/// k = 16 u_d G (> γ_8,d G with the rounding of the bound's own product);
+/// max|coordinate| = G.  The same holds for A's heights evaluated as
+/// Ẽ_B.fl_d(D x Ẽ_A) (across_verdict): the same six monomials, each with at
+/// most eight roundings (three in the inputs, two in the cross product, the
+/// product by Ẽ_B,i, two additions).  The bound is l1 k + z, l1 =
+/// fl_d(|Ẽ_A|_1 |Ẽ_B|_1) (or fl_d(fl_d(|Ẽ_A|_1 k) |Ẽ_B|_1)):
+/// k = 16 u_d G (> γ_8,d G with the rounding of the bound's own products);
 /// z covers underflow, for double only (products of float coordinates in
 /// double never underflow): each subnormal product is at most 2^-1075 off,
-/// then multiplied by a coordinate difference of at most G, so z = 2^-1000
-/// (G + 1), a normal number (subnormal operands cost a hundred cycles each).
+/// then multiplied by a coordinate difference of at most G (in the across
+/// order: at most three per component of the cross product, multiplied by
+/// |Ẽ_B,i| <= G, and five more), so z = 2^-1000 (G + 1), a normal number
+/// (subnormal operands cost a hundred cycles each).
 /// Shapes beyond kMaxCoordinate are not ruled out here (k = +infinity).
 template <class T>
 struct ExactRuleOut {
@@ -168,22 +206,32 @@ struct ExactRuleOut {
 /// One edge as the rule-out reads it, in double: its direction, its wings
 /// relative to its tail, and the norms the bounds take.
 struct RuleOutEdge {
-  Vec3<double> dir;           ///< PlainRuleOut: the stored direction; ExactRuleOut: fl_d(head - tail)
-  Vec3<double> wing0, wing1;  ///< fl_d(wing - tail)
-  double norm = 0;            ///< PlainRuleOut: fl_d(|dir|); ExactRuleOut: fl_d(|dir|_1)
+  Vec3<double> dir;               ///< PlainRuleOut: the stored direction; ExactRuleOut: fl_d(head - tail)
+  Vec3<double> wing0, wing1;      ///< fl_d(wing - tail)
+  Vec3<double> across0, across1;  ///< fl_d(wing_i x dir): d.across_i = (dir x d).wing_i (across_verdict)
+  double norm = 0;                ///< PlainRuleOut: fl_d(|dir|); ExactRuleOut: fl_d(|dir|_1)
+  double norm1 = 0;               ///< fl_d(|dir|_1)
 };
 
-/// The direction and norm of edge e of p (RuleOutEdge::dir, norm); kExact:
-/// ExactRuleOut's.
+/// fl_d(|d|_1).
+inline double l1_norm(const Vec3<double>& d) { return std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]); }
+
+/// The direction of edge e of p and its 1-norm (RuleOutEdge::dir, norm1);
+/// kExact: ExactRuleOut's.
 template <bool kExact, class T>
 void rule_out_direction(const ConvexPolyhedron<T>& p, int e, RuleOutEdge& r) {
   if constexpr (kExact) {
     r.dir = difference_d(p.vertex(p.edge_head(e)), p.vertex(p.edge_tail(e)));
-    r.norm = std::abs(r.dir[0]) + std::abs(r.dir[1]) + std::abs(r.dir[2]);
   } else {
     r.dir = vec_to_double(p.edge_direction(e));
-    r.norm = std::sqrt(r.dir.dot(r.dir));
   }
+  r.norm1 = l1_norm(r.dir);
+}
+
+/// The norm PlainRuleOut's bound takes, fl_d(|dir|) (ExactRuleOut: |dir|_1).
+template <bool kExact>
+void rule_out_norm(RuleOutEdge& r) {
+  r.norm = kExact ? r.norm1 : std::sqrt(r.dir.dot(r.dir));
 }
 
 /// The wings of edge e of p relative to its tail (RuleOutEdge::wing0, wing1).
@@ -212,6 +260,13 @@ inline SideVerdict side_verdict(const RuleOutEdge& e, const Vec3<double>& c, dou
   return SideVerdict{h0 > b || h1 > b, h0 < -b || h1 < -b};
 }
 
+/// The same verdict for edge e along c = e.dir x d from its wings' heights
+/// d.across_i (the bound: PlainRuleOut::across_constant, ExactRuleOut).
+inline SideVerdict across_verdict(const RuleOutEdge& e, const Vec3<double>& d, double b) {
+  const double h0 = wing_height(d, e.across0), h1 = wing_height(d, e.across1);
+  return SideVerdict{h0 > b || h1 > b, h0 < -b || h1 < -b};
+}
+
 /// Steps 2-4 for a kernel of the pair (A, B), kExact: ExactRuleOut (robust
 /// kernel) or PlainRuleOut (plain kernel).  Keeps the data of the last edge of
 /// A asked (the brute force asks every edge of B for one edge of A in turn)
@@ -224,53 +279,83 @@ class EdgePairRuleOut {
   /// the shapes' support tolerances {t_A, t_B} (PlainRuleOut), asked on the
   /// first call only.
   template <class Tolerances>
-  bool ruled_out(const ConvexPolyhedron<T>& a, int ea, const ConvexPolyhedron<T>& b, int eb,
-                 Tolerances&& tolerances) const {
-    if (ea != ea_) {
+  [[gnu::always_inline]] bool ruled_out(const ConvexPolyhedron<T>& a, int ea, const ConvexPolyhedron<T>& b,
+                                        int eb, Tolerances&& tolerances) const {
+    if (ea != ea_) [[unlikely]] {
       if (ea_ < 0) init(a, b, tolerances);
-      rule_out_direction<kExact>(a, ea, edge_a_);
-      rule_out_wings(a, ea, edge_a_);
+      load_edge_a(a, ea);
       ea_ = ea;
     }
     RuleOutEdge eb_data;
     rule_out_direction<kExact>(b, eb, eb_data);
+    // A's wings across eB: no cross product (most pairs end here)
+    SideVerdict va;
+    if (kExact || edge_a_.norm1 * eb_data.norm1 >= PlainRuleOut<T>::kMinAcross) {
+      va = across_verdict(edge_a_, eb_data.dir, across_a_ * eb_data.norm1 + across_slack_);
+      if (va.not_max && va.not_min) return true;
+    }
+    return ruled_out_along_c(b, eb, eb_data, va);
+  }
+
+ private:
+  // the rest of ruled_out: c = dA x dB, (plain) A's wings along c with the
+  // bound that takes |c| (finer for nearly parallel edges), B's wings
+  [[gnu::noinline]] bool ruled_out_along_c(const ConvexPolyhedron<T>& b, int eb, RuleOutEdge& eb_data,
+                                           SideVerdict va) const {
     const Vec3<double> c = cross(edge_a_.dir, eb_data.dir);
-    double bound_a, bound_b;
+    rule_out_norm<kExact>(eb_data);
+    double bound_b;
     if constexpr (kExact) {
-      const double l1 = edge_a_.norm * eb_data.norm;
-      bound_a = l1 * xa_ + ya_;
-      bound_b = l1 * xb_ + yb_;
+      bound_b = edge_a_.norm * eb_data.norm * xb_ + yb_;
     } else {
       const double cn = std::sqrt(c.dot(c)), l2 = edge_a_.norm * eb_data.norm;
       if (!(cn >= PlainRuleOut<T>::kMinScale)) return false;
-      bound_a = cn * xa_ + l2 * ya_;
+      const SideVerdict v = side_verdict(edge_a_, c, cn * xa_ + l2 * ya_);
+      va.not_max = va.not_max || v.not_max;
+      va.not_min = va.not_min || v.not_min;
+      if (va.not_max && va.not_min) return true;
       bound_b = cn * xb_ + l2 * yb_;
     }
-    const SideVerdict va = side_verdict(edge_a_, c, bound_a);
-    if (va.not_max && va.not_min) return true;
     rule_out_wings(b, eb, eb_data);
     const SideVerdict vb = side_verdict(eb_data, c, bound_b);
     // +c needs A's edge at A's maximum and B's at B's minimum; -c the opposite
     return (va.not_max || vb.not_min) && (va.not_min || vb.not_max);
   }
 
- private:
   template <class Tolerances>
   void init(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, Tolerances& tolerances) const {
     if constexpr (!kExact) {
       const std::array<double, 2> t = tolerances();
       PlainRuleOut<T>::constants(a.max_abs_coordinate(), t[0], xa_, ya_);
       PlainRuleOut<T>::constants(b.max_abs_coordinate(), t[1], xb_, yb_);
+      za_ = PlainRuleOut<T>::across_constant(a.max_abs_coordinate(), t[0]);
+      across_slack_ = PlainRuleOut<T>::kAcrossUnderflow;
     } else {
       (void)tolerances;
       ExactRuleOut<T>::constants(a.max_abs_coordinate(), xa_, ya_);
       ExactRuleOut<T>::constants(b.max_abs_coordinate(), xb_, yb_);
+      za_ = xa_;
+      across_slack_ = ya_;
     }
+  }
+
+  // edge ea of a into edge_a_: direction, norms, wings, their cross products
+  // with the direction, and the across bound's factor
+  [[gnu::noinline]] void load_edge_a(const ConvexPolyhedron<T>& a, int ea) const {
+    rule_out_direction<kExact>(a, ea, edge_a_);
+    rule_out_norm<kExact>(edge_a_);
+    rule_out_wings(a, ea, edge_a_);
+    edge_a_.across0 = cross(edge_a_.wing0, edge_a_.dir);
+    edge_a_.across1 = cross(edge_a_.wing1, edge_a_.dir);
+    across_a_ = edge_a_.norm1 * za_;
   }
 
   mutable int ea_ = -1;                               // the edge of A edge_a_ holds (-1: none yet)
   mutable RuleOutEdge edge_a_;                        // (uninitialised until the first call)
   mutable double xa_ = 0, ya_ = 0, xb_ = 0, yb_ = 0;  // the bounds' constants of A and B
+  mutable double za_ = 0;                             // the across bound's constant of A (ExactRuleOut: xa_)
+  mutable double across_slack_ = 0;  // its absolute term (PlainRuleOut: kAcrossUnderflow; exact: ya_)
+  mutable double across_a_ = 0;      // fl_d(|dA|_1 za_) for the edge in edge_a_
 };
 
 }  // namespace sepax::detail

@@ -71,7 +71,7 @@ TEMPLATE_TEST_CASE("plain rule-out: the bound holds at the threshold of the roun
   std::mt19937_64 rng(11);
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> r01(0, 1);
-  long claims = 0, trials = 0;
+  long claims = 0, across_claims = 0, trials = 0;
   for (int i = 0; i < 200000; ++i) {
     const double scale = std::ldexp(1.0, static_cast<int>(r01(rng) * 40) - 20);
     auto vec = [&](double s) { return testing::random_vec<T>(g, rng, s); };
@@ -104,15 +104,29 @@ TEMPLATE_TEST_CASE("plain rule-out: the bound holds at the threshold of the roun
     const Vec3<T> n(n0[0] / len, n0[1] / len, n0[2] / len);
     const T e0 = dot(n, tail), h = dot(n, w), tt = static_cast<T>(t);
     ++trials;
-    if (s > bound) {
-      ++claims;
-      CHECK(e0 < T(h - tt));
-    }
-    if (s < -bound) {
-      ++claims;
-      CHECK(e0 > T(h + tt));
-    }
+    // a height beyond its bound claims the kernel's verdict on that side
+    auto claim = [&](double height, double b, long& count) {
+      if (height > b) {
+        ++count;
+        CHECK(e0 < T(h - tt));
+      }
+      if (height < -b) {
+        ++count;
+        CHECK(e0 > T(h + tt));
+      }
+    };
+    claim(s, bound, claims);
+    // the across form (EdgePairRuleOut's first test): the height as
+    // dB.((w - tail) x dA), the bound on L = |dA|_1 |dB|_1 instead of |c|
+    const Vec3<double> dad = vec_to_double(da), dbd = vec_to_double(db);
+    const double l = detail::l1_norm(dad) * detail::l1_norm(dbd);
+    if (!(l >= detail::PlainRuleOut<T>::kMinAcross)) continue;
+    claim(
+        detail::wing_height(dbd, cross(detail::difference_d(w, tail), dad)),
+        l * detail::PlainRuleOut<T>::across_constant(max_abs, t) + detail::PlainRuleOut<T>::kAcrossUnderflow,
+        across_claims);
   }
-  INFO("claims " << claims << " of " << trials);
+  INFO("claims " << claims << " and " << across_claims << " (across) of " << trials);
   CHECK(claims > trials / 10);
+  CHECK(across_claims > trials / 50);
 }

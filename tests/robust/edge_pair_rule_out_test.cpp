@@ -116,7 +116,7 @@ TEMPLATE_TEST_CASE("robust rule-out: a trusted wing height has the exact sign",
   std::mt19937_64 rng(5);
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> r01(0, 1);
-  long decided = 0, trials = 0;
+  long decided = 0, across_decided = 0, trials = 0;
   for (int i = 0; i < 100000; ++i) {
     const double scale = std::ldexp(1.0, static_cast<int>(r01(rng) * 60) - 30);
     auto vec = [&](double s) { return testing::random_vec<T>(g, rng, s); };
@@ -146,12 +146,19 @@ TEMPLATE_TEST_CASE("robust rule-out: a trusted wing height has the exact sign",
     detail::ExactRuleOut<T>::constants(max_abs, k_p, z_p);
     const double bound = l1 * k_p + z_p;
     const double s = detail::wing_height(c, detail::difference_d(w, ta));
+    // the same height as EdgePairRuleOut's first test evaluates it, E_B.((w - tail) x E_A)
+    const double across = detail::wing_height(eb, cross(detail::difference_d(w, ta), ea));
     ++trials;
     if (s > bound || s < -bound) {
       ++decided;
       CHECK(exact_sign(ta, ha, tb, hb, w) == (s > 0 ? 1 : -1));
     }
+    if (across > bound || across < -bound) {
+      ++across_decided;
+      CHECK(exact_sign(ta, ha, tb, hb, w) == (across > 0 ? 1 : -1));
+    }
   }
-  INFO("decided " << decided << " of " << trials);
+  INFO("decided " << decided << " and " << across_decided << " (across) of " << trials);
   CHECK(decided > trials / 4);
+  CHECK(across_decided > trials / 4);
 }
