@@ -523,9 +523,11 @@ bool exactly_supported(const Exact& E, const EdgeGaps& g, const Feature& f, bool
 //   (10) on an input whose exact image is not exactly convex, the
 //       traversal skips an arc of A by its arc bound (docs/traversal.md,
 //       step 3: every pair on the arc is at most max(height(f0, x),
-//       height(f1, x)) for a vertex x of B), which holds only for exactly
-//       convex shapes: a pair beyond its choice is explained when its arc
-//       was prunable by the best it reported (arc_prunable).
+//       height(f1, x)) for a vertex x of B), or the rest of an arc after a
+//       crossing by the same bound with x the vertex it entered, which
+//       hold only for exactly convex shapes: a pair beyond its choice is
+//       explained when its arc was prunable by the best it reported
+//       (arc_prunable, rest_prunable).
 // The SAT's result is explained by them when
 //   (i)   its value sf is within its bound bf of the exact value of its
 //         feature as its kernel decided it (own: the flipped axis's value for
@@ -561,6 +563,33 @@ bool arc_prunable(const FloatSide<F>& S, int ea, double sf) {
     if (below0 &&
         !beats(E.k->face_separation_a(f1, x), best, S.bound(Sat::traversal, Feature::face_a(f1, x))))
       return true;
+  }
+  return false;
+}
+
+// (10), the rest of a walk: after a crossing (ea, eb') below its best, the
+// walk ends when the vertex it entered (an end x of eb') is below its best
+// over the face the walk ends at (docs/traversal.md, step 3, "rest of the
+// walk"): could that have ended the walk of arc ea at the computed value sf?
+// It could when some pair (ea, eb') the kernel takes is, at its exact value
+// as the kernel decided it, not beyond sf, and an end x of eb' has an exact
+// height over f0 or f1 not beyond sf (each within its bound).  Decided
+// exactly.
+template <class F, class K>
+bool rest_prunable(const FloatSide<F>& S, const K& k, int ea, double sf) {
+  const Exact& E = S.E;
+  const int f0 = E.A.edge_face(ea, 0), f1 = E.A.edge_face(ea, 1);
+  const Separation<Q> best{Q(sf), Q(1)};
+  for (int eb = 0; eb < E.B.edge_count(); ++eb) {
+    if (k.edges_parallel(ea, eb) || !k.minkowski_face(ea, eb)) continue;
+    const Feature f = Feature::edges(ea, eb);
+    const Separation<Q> x = E.k->edge_separation(ea, eb);
+    const Separation<Q> v = orientation_flipped(k, E, f) ? Separation<Q>{Q(-x.num), x.norm2} : x;
+    if (beats(v, best, S.bound(Sat::traversal, f))) continue;
+    for (const int y : {E.B.edge_tail(eb), E.B.edge_head(eb)})
+      for (const int g : {f0, f1})
+        if (!beats(E.k->face_separation_a(g, y), best, S.bound(Sat::traversal, Feature::face_a(g, y))))
+          return true;
   }
   return false;
 }
@@ -642,7 +671,8 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
         const EdgeGaps g = exact_edge_gaps(E, ea, eb);  // the lower of the two orientations it may have taken
         measured(sepax::compare(g.plus(), g.minus()) <= 0 ? g.plus() : g.minus(), f);
       } else if (taken) {
-        if (sat == Sat::traversal && !E.convex && arc_prunable(S, ea, sf)) continue;  // (10)
+        if (sat == Sat::traversal && !E.convex && (arc_prunable(S, ea, sf) || rest_prunable(S, k, ea, sf)))
+          continue;  // (10)
         const Separation<Q> x = E.k->edge_separation(ea, eb);
         measured(orientation_flipped(k, E, f) ? Separation<Q>{Q(-x.num), x.norm2} : x, f);
       } else if (exact_candidate) {
