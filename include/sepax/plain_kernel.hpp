@@ -311,6 +311,16 @@ class PlainKernel {
         return FaceQuery<T>{Separation<T>{T(s.min - offset), norm2_of(n)}, s.index};
       }
     }
+    if constexpr (HasDifferenceDotSign<T>) {
+      // an exact type with a cheaper sign: the same argmin (the lowest index
+      // among the exactly lowest) from signs of n.(v - best), one value
+      int low = 0;
+      for (int i = 1; i < static_cast<int>(vs.size()); ++i)
+        if (sign_of_difference_dot(n, vs[static_cast<std::size_t>(i)], vs[static_cast<std::size_t>(low)]) < 0)
+          low = i;
+      return FaceQuery<T>{Separation<T>{T(dot(n, vs[static_cast<std::size_t>(low)]) - offset), norm2_of(n)},
+                          low};
+    }
     int best = 0;
     T best_h = dot(n, vs[0]);
     for (int i = 1; i < static_cast<int>(vs.size()); ++i) {

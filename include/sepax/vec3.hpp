@@ -84,6 +84,24 @@ inline int sign_of_dot(const Vec3<T>& a, const Vec3<T>& b) {
   }
 }
 
+/// An exact number type may supply number_traits<T>::difference_dot_sign(a, p, q): the sign of a.(p - q),
+/// the side of p against q along a (-1, 0 or +1), the sign of dot(a, p - q), by a cheaper route (without
+/// building p - q).  CGAL's Lazy_exact_nt does (robust/number_types.hpp).
+template <class T>
+concept HasDifferenceDotSign = number_traits<T>::is_exact && requires(const Vec3<T>& a) {
+  { number_traits<T>::difference_dot_sign(a, a, a) } -> std::same_as<int>;
+};
+
+/// sign_of(dot(a, p - q)): through T's difference_dot_sign where T has one (the same sign).
+template <class T>
+inline int sign_of_difference_dot(const Vec3<T>& a, const Vec3<T>& p, const Vec3<T>& q) {
+  if constexpr (HasDifferenceDotSign<T>) {
+    return number_traits<T>::difference_dot_sign(a, p, q);
+  } else {
+    return sign_of_dot(a, Vec3<T>(T(p[0] - q[0]), T(p[1] - q[1]), T(p[2] - q[2])));
+  }
+}
+
 /// An exact number type may supply number_traits<T>::height_sign(a, b, p, q): the sign of (a x b).(p - q),
 /// the side of p against q along a x b (-1, 0 or +1), the sign of dot(cross(a, b), p - q), by a cheaper
 /// route.  The GMP rationals and CGAL's Lazy_exact_nt do (robust/number_types.hpp).

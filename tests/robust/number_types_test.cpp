@@ -17,6 +17,7 @@
 #include <sepax/separation.hpp>
 #include <sepax/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -149,7 +150,7 @@ struct SpreadDoubles {
     const double m = static_cast<double>(static_cast<std::int64_t>(r >> 11) % 2000001 - 1000000) / 1e6;
     const int e =
         static_cast<int>(next() % 61) - 30 + (r % 5 == 0 ? static_cast<int>(next() % 2000) - 1000 : 0);
-    return std::ldexp(m, e);
+    return std::ldexp(m, std::min(e, 1000));  // finite: |m| <= 1
   }
 };
 
@@ -293,6 +294,13 @@ TEST_CASE("exact dot signs (integers, interval filter) are the signs of the exac
     const sepax::Vec3<X> ya(xa[0] / 3 * 3, xa[1] / 3 * 3, xa[2] / 3 * 3);  // the same values, wider intervals
     CHECK(sepax::number_traits<X>::dot_sign(ya, xb) == expected);
     CHECK(sepax::sign_of_dot(a, b) == expected);
+    // the same sign as a.(p - q), p = b + c and q = c for a random c (difference_dot_sign)
+    const sepax::Vec3<Q> c{Q{coordinate()}, Q{coordinate()}, Q{coordinate()}};
+    const sepax::Vec3<Q> p(b[0] + c[0], b[1] + c[1], b[2] + c[2]);
+    const sepax::Vec3<X> xp{X{p[0]}, X{p[1]}, X{p[2]}}, xc{X{c[0]}, X{c[1]}, X{c[2]}};
+    CHECK(sepax::number_traits<X>::difference_dot_sign(xa, xp, xc) == expected);
+    CHECK(sepax::number_traits<X>::difference_dot_sign(ya, xp, xc) == expected);
+    CHECK(sepax::sign_of_difference_dot(a, p, c) == expected);
   };
   for (int i = 0; i < 3000; ++i) {
     const sepax::Vec3<Q> a{Q{coordinate()}, Q{coordinate()}, Q{coordinate()}};

@@ -100,6 +100,15 @@ N dot_value(At at) {
   return s;
 }
 
+/// a.(p - q) evaluated in N from at(v, j): coordinate j of vector v (0: a, 1: p, 2: q).
+template <class N, class At>
+N difference_dot_value(At at) {
+  N s = at(0, 0) * (at(1, 0) - at(2, 0));
+  s = s + at(0, 1) * (at(1, 1) - at(2, 1));
+  s = s + at(0, 2) * (at(1, 2) - at(2, 2));
+  return s;
+}
+
 /// (a x b).(p - q) evaluated in N from at(v, j): coordinate j of vector v (0: a, 1: b, 2: p, 3: q).
 template <class N, class At>
 N height_value(At at) {
@@ -391,6 +400,19 @@ struct number_traits<CGAL::Lazy_exact_nt<ET>> : detail::exact_rational_traits {
     } else {
       return sign_value(detail::dot_value<ET>([&](int i, int j) { return (*v[i])[j].exact(); }));
     }
+  }
+
+  /// The sign of a.(p - q): as dot_sign, the intervals first (the differences evaluated in interval
+  /// arithmetic, rounding upward), then the exact values (ET's operations: a rare path).  No lazy node is
+  /// built, where dot(a, p) < dot(a, q) builds ten.
+  static int difference_dot_sign(const Vec3<L>& a, const Vec3<L>& p, const Vec3<L>& q) {
+    const Vec3<L>* v[3] = {&a, &p, &q};
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      const I s = detail::difference_dot_value<I>([&](int i, int j) { return (*v[i])[j].approx(); });
+      if (const std::optional<int> d = decided(s)) return *d;
+    }
+    return sign_value(detail::difference_dot_value<ET>([&](int i, int j) { return (*v[i])[j].exact(); }));
   }
 
   /// The sign of (a x b).(p - q): as dot_sign, the intervals first (the cross product and the difference
