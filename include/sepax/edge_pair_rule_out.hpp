@@ -136,8 +136,9 @@ struct PlainRuleOut {
   /// tail) > L (t (1 + u) + R K1 + √2 γ_2 R K2).  The height fl_d(dB.m) is
   /// the triple product det(dA, dB, w - tail) through its six monomials dB_i
   /// (w - tail)_j dA_k, each with at most five roundings (two in m, the
-  /// product by dB_i, two additions; FMA contraction removes some) and, for
-  /// double, one more in w - tail: it is within (γ_5,d (1 + u_d) + u_d) G L
+  /// product by dB_i, two additions; FMA contraction removes some) and one
+  /// more in w - tail (exact for float coordinates of nearby binades): it
+  /// is within (γ_5,d (1 + u_d) + u_d) G L
   /// <= 7 u_d G L of c.(w - tail), G = 2 max|coordinate| >= |w - tail|_∞.
   /// So the bound is L z + kAcrossUnderflow, z = (1 + 1e-6)(t (1 + u) + R K1
   /// + √2 γ_2 R K2 + 7 u_d G) (the factor covers the rounding of L and of
