@@ -165,6 +165,9 @@ class PlainKernel {
   }
 
   std::optional<Separation<T>> edge_separation_full(int ea, int eb) const {
+    if constexpr (number_traits<T>::is_exact) {
+      return exact_edge_separation_full(ea, eb);
+    }
     const Vec3<T> n = unoriented_axis(ea, eb);
     const T ta = support_tolerance(a_), tb = support_tolerance(b_);
     const T pa0 = dot(n, a_.vertex(a_.edge_tail(ea))), pa1 = dot(n, a_.vertex(a_.edge_head(ea)));
@@ -429,6 +432,56 @@ class PlainKernel {
       at_max = at_max && !(e0 < below || e1 < below);
       at_min = at_min && !(e0 > above || e1 > above);
     }
+  }
+
+  // edge_separation_full for exact T, by signs (t = 0).  Along n = dA x dB
+  // (unoriented_axis) an edge's endpoints are at one height, so a vertex w
+  // rules out its shape's maximum when n.(w - tail) > 0 and its minimum when
+  // n.(w - tail) < 0: sign_of_height, which builds no value for a type with
+  // the hook.  The vertices are asked in the order of the float path (the
+  // endpoints' neighbours, then every vertex, A before B), stopping when
+  // both orientations are out; the complete scans decide the orientations
+  // the float path's extremes decide (t = 0), and the value is its min_b -
+  // max_a = n.(tail_B - tail_A) (+n) or min_a - max_b (-n).
+  std::optional<Separation<T>> exact_edge_separation_full(int ea, int eb) const {
+    const Vec3<T>& da = a_.edge_direction(ea);
+    const Vec3<T>& db = b_.edge_direction(eb);
+    const Vec3<T>& tail_a = a_.vertex(a_.edge_tail(ea));
+    const Vec3<T>& tail_b = b_.vertex(b_.edge_tail(eb));
+    bool a_max = true, a_min = true, b_max = true, b_min = true;
+    // +n: A's edge at A's maximum and B's at B's minimum; -n the opposite
+    auto open = [&] { return (a_max && b_min) || (a_min && b_max); };
+    auto side = [&](const Vec3<T>& w, const Vec3<T>& tail, bool& at_max, bool& at_min) {
+      const int s = sign_of_height(da, db, w, tail);
+      at_max = at_max && s <= 0;
+      at_min = at_min && s >= 0;
+    };
+    auto neighbours = [&](const ConvexPolyhedron<T>& p, int e, const Vec3<T>& tail, bool& at_max,
+                          bool& at_min) {
+      for (const int v : {p.edge_tail(e), p.edge_head(e)})
+        for (const int h : p.vertex_half_edges(v)) {
+          side(p.vertex(p.half_edge(ConvexPolyhedron<T>::twin(h)).origin), tail, at_max, at_min);
+          if (!open()) return false;
+        }
+      return true;
+    };
+    auto scan = [&](const ConvexPolyhedron<T>& p, const Vec3<T>& tail, bool& at_max, bool& at_min) {
+      for (const Vec3<T>& w : p.vertices()) {
+        side(w, tail, at_max, at_min);
+        if (!open()) return false;
+      }
+      return true;
+    };
+    if (!neighbours(a_, ea, tail_a, a_max, a_min) || !neighbours(b_, eb, tail_b, b_max, b_min) ||
+        !scan(a_, tail_a, a_max, a_min) || !scan(b_, tail_b, b_max, b_min))
+      return std::nullopt;
+    const bool plus = a_max && b_min, minus = a_min && b_max;
+    const Vec3<T> n = unoriented_axis(ea, eb);
+    const T gap = T(dot(n, tail_b) - dot(n, tail_a));  // +n: min_b - max_a
+    const Separation<T> sp{gap, norm2_of(n)};
+    const Separation<T> sm{T(-gap), sp.norm2};
+    if (plus && minus) return sepax::compare(sp, sm) >= 0 ? sp : sm;
+    return plus ? sp : sm;
   }
 
   // project_supporting's test on the vertices adjacent to the endpoints of

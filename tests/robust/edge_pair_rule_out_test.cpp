@@ -4,12 +4,15 @@
 // trusts has the sign of the exact triple product, checked against GMP at
 // the threshold (nearly coplanar wings, nearly parallel edges).  The plain
 // kernel over exact types rules out by exact height signs (integers for the
-// GMP rationals, an interval filter for Epeck): the same checks.
+// GMP rationals, an interval filter for Epeck): the same checks; and its
+// edge_separation_full, decided by the same signs, gives the decision and
+// the value of the projections' extremes.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <optional>
 #include <random>
 #include <type_traits>
 
@@ -40,6 +43,73 @@ TEMPLATE_TEST_CASE("exact rule-out: every pair ruled out is rejected by the exac
   const testing::RuleOutCount n = testing::check_rule_out<double, E>(
       [](const ConvexPolyhedron<E>& a, const ConvexPolyhedron<E>& b) { return PlainKernel<E>(a, b); });
   testing::check_counts(n);
+}
+
+namespace {
+mpq_class as_mpq(const mpq_class& x) { return x; }
+mpq_class as_mpq(const CGAL::Gmpq& x) { return mpq_class(x.mpq()); }
+mpq_class as_mpq(const CGAL::Epeck::FT& x) { return as_mpq(CGAL::exact(x)); }
+}  // namespace
+
+TEMPLATE_TEST_CASE(
+    "exact edge_separation_full: by signs, the decision and value of the projections' extremes",
+    "[robust][brute_force]", mpq_class, CGAL::Gmpq, CGAL::Epeck::FT) {
+  // The reference projects every vertex on n = dA x dB in mpq: +n is a face of A - B when both endpoints
+  // of A's edge are at A's maximum and both of B's at B's minimum (value min_B - max_A), -n the opposite;
+  // both (flat shapes): the larger.  Every 7th non-parallel pair of the rule-out tests' shapes.
+  using E = TestType;
+  using Q = mpq_class;
+  std::mt19937_64 rng(5);
+  long pairs = 0, faces = 0, both = 0;
+  auto run = [&](const ConvexPolyhedron<double>& da, const ConvexPolyhedron<double>& db) {
+    const auto qa = ConvexPolyhedron<Q>::convert_from(da), qb = ConvexPolyhedron<Q>::convert_from(db);
+    const auto xa = ConvexPolyhedron<E>::convert_from(da), xb = ConvexPolyhedron<E>::convert_from(db);
+    const PlainKernel<E> k(xa, xb);
+    for (int ea = 0; ea < qa.edge_count(); ++ea) {
+      for (int eb = 0; eb < qb.edge_count(); ++eb) {
+        if ((ea * 31 + eb) % 7 != 0 || k.edges_parallel(ea, eb)) continue;
+        ++pairs;
+        const Vec3<Q> n = cross(qa.edge_direction(ea), qb.edge_direction(eb));
+        auto extremes = [&](const ConvexPolyhedron<Q>& p) {
+          Q lo = dot(n, p.vertex(0)), hi = lo;
+          for (const auto& v : p.vertices()) {
+            const Q h = dot(n, v);
+            lo = std::min(lo, h);
+            hi = std::max(hi, h);
+          }
+          return std::pair<Q, Q>(lo, hi);
+        };
+        const auto [lo_a, hi_a] = extremes(qa);
+        const auto [lo_b, hi_b] = extremes(qb);
+        const Q a0 = dot(n, qa.vertex(qa.edge_tail(ea))), a1 = dot(n, qa.vertex(qa.edge_head(ea)));
+        const Q b0 = dot(n, qb.vertex(qb.edge_tail(eb))), b1 = dot(n, qb.vertex(qb.edge_head(eb)));
+        const bool plus = a0 == hi_a && a1 == hi_a && b0 == lo_b && b1 == lo_b;
+        const bool minus = a0 == lo_a && a1 == lo_a && b0 == hi_b && b1 == hi_b;
+        const std::optional<Separation<E>> r = k.edge_separation_full(ea, eb);
+        REQUIRE(r.has_value() == (plus || minus));
+        if (!r) continue;
+        ++faces;
+        both += plus && minus;
+        const Q expected = plus && minus ? std::max(lo_b - hi_a, lo_a - hi_b)
+                           : plus        ? lo_b - hi_a
+                                         : lo_a - hi_b;
+        CHECK(as_mpq(r->num) == expected);
+        CHECK(as_mpq(r->norm2) == dot(n, n));
+      }
+    }
+  };
+  for (int i = 0; i < 40; ++i) {
+    const auto [a, b] = testing::random_pair<double>(rng, i);
+    run(a, b);
+  }
+  for (const auto& [a, b] : testing::degenerate_pairs<double>(rng)) {
+    run(a, b);
+    run(b, a);
+  }
+  INFO(pairs << " pairs, " << faces << " faces of A - B, " << both << " in both orientations");
+  CHECK(pairs > 50000);
+  CHECK(faces > 1000);
+  CHECK(both > 0);
 }
 
 TEMPLATE_TEST_CASE("exact height signs (integers, interval filter) are the signs of the exact products",
