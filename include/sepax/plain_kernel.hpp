@@ -167,32 +167,33 @@ class PlainKernel {
   std::optional<Separation<T>> edge_separation_full(int ea, int eb) const {
     if constexpr (number_traits<T>::is_exact) {
       return exact_edge_separation_full(ea, eb);
+    } else {
+      const Vec3<T> n = unoriented_axis(ea, eb);
+      const T ta = support_tolerance(a_), tb = support_tolerance(b_);
+      const T pa0 = dot(n, a_.vertex(a_.edge_tail(ea))), pa1 = dot(n, a_.vertex(a_.edge_head(ea)));
+      const T pb0 = dot(n, b_.vertex(b_.edge_tail(eb))), pb1 = dot(n, b_.vertex(b_.edge_head(eb)));
+      // Most pairs support neither orientation: the neighbours of the edges'
+      // endpoints, then the scans, stop at the first vertex that rules out both
+      // (rule_out_by_neighbours, project_supporting); the decision below is then
+      // the one the complete extremes give.
+      T min_a, max_a, min_b, max_b;
+      bool may_plus = true, may_minus = true;
+      rule_out_by_neighbours(a_, n, ea, pa0, pa1, ta, may_plus, may_minus);
+      if (may_plus || may_minus) rule_out_by_neighbours(b_, n, eb, pb0, pb1, tb, may_minus, may_plus);
+      if (!may_plus && !may_minus) return std::nullopt;
+      if (!project_supporting(a_, n, pa0, pa1, ta, min_a, max_a, may_plus, may_minus)) return std::nullopt;
+      if (!project_supporting(b_, n, pb0, pb1, tb, min_b, max_b, may_minus, may_plus)) return std::nullopt;
+      // +n from A to B: A's edge at A's max, B's edge at B's min.
+      const bool plus = pa0 >= max_a - ta && pa1 >= max_a - ta && pb0 <= min_b + tb && pb1 <= min_b + tb;
+      // -n from A to B: A's edge at A's min, B's edge at B's max.
+      const bool minus = pa0 <= min_a + ta && pa1 <= min_a + ta && pb0 >= max_b - tb && pb1 >= max_b - tb;
+      if (!plus && !minus) return std::nullopt;
+      const T n2 = norm2_of(n);
+      const Separation<T> sp{T(min_b - max_a), n2};
+      const Separation<T> sm{T(min_a - max_b), n2};
+      if (plus && minus) return sepax::compare(sp, sm) >= 0 ? sp : sm;
+      return plus ? sp : sm;
     }
-    const Vec3<T> n = unoriented_axis(ea, eb);
-    const T ta = support_tolerance(a_), tb = support_tolerance(b_);
-    const T pa0 = dot(n, a_.vertex(a_.edge_tail(ea))), pa1 = dot(n, a_.vertex(a_.edge_head(ea)));
-    const T pb0 = dot(n, b_.vertex(b_.edge_tail(eb))), pb1 = dot(n, b_.vertex(b_.edge_head(eb)));
-    // Most pairs support neither orientation: the neighbours of the edges'
-    // endpoints, then the scans, stop at the first vertex that rules out both
-    // (rule_out_by_neighbours, project_supporting); the decision below is then
-    // the one the complete extremes give.
-    T min_a, max_a, min_b, max_b;
-    bool may_plus = true, may_minus = true;
-    rule_out_by_neighbours(a_, n, ea, pa0, pa1, ta, may_plus, may_minus);
-    if (may_plus || may_minus) rule_out_by_neighbours(b_, n, eb, pb0, pb1, tb, may_minus, may_plus);
-    if (!may_plus && !may_minus) return std::nullopt;
-    if (!project_supporting(a_, n, pa0, pa1, ta, min_a, max_a, may_plus, may_minus)) return std::nullopt;
-    if (!project_supporting(b_, n, pb0, pb1, tb, min_b, max_b, may_minus, may_plus)) return std::nullopt;
-    // +n from A to B: A's edge at A's max, B's edge at B's min.
-    const bool plus = pa0 >= max_a - ta && pa1 >= max_a - ta && pb0 <= min_b + tb && pb1 <= min_b + tb;
-    // -n from A to B: A's edge at A's min, B's edge at B's max.
-    const bool minus = pa0 <= min_a + ta && pa1 <= min_a + ta && pb0 >= max_b - tb && pb1 >= max_b - tb;
-    if (!plus && !minus) return std::nullopt;
-    const T n2 = norm2_of(n);
-    const Separation<T> sp{T(min_b - max_a), n2};
-    const Separation<T> sm{T(min_a - max_b), n2};
-    if (plus && minus) return sepax::compare(sp, sm) >= 0 ? sp : sm;
-    return plus ? sp : sm;
   }
 
   /// Optional member (sat_kernel.hpp, HasEdgePairRuledOut), float and
@@ -422,16 +423,12 @@ class PlainKernel {
 
   // One projection h of p's vertices against p's edge's endpoint projections
   // e0, e1 (project_supporting): rules out the maximum when e0 or e1 <
-  // fl(h - t), the minimum when e0 or e1 > fl(h + t).
+  // fl(h - t), the minimum when e0 or e1 > fl(h + t).  (Exact T decides by
+  // signs: exact_edge_separation_full.)
   static void rule_out(const T& h, const T& e0, const T& e1, const T& t, bool& at_max, bool& at_min) {
-    if constexpr (number_traits<T>::is_exact) {  // t = 0
-      at_max = at_max && !(e0 < h || e1 < h);
-      at_min = at_min && !(e0 > h || e1 > h);
-    } else {
-      const T below = T(h - t), above = T(h + t);
-      at_max = at_max && !(e0 < below || e1 < below);
-      at_min = at_min && !(e0 > above || e1 > above);
-    }
+    const T below = T(h - t), above = T(h + t);
+    at_max = at_max && !(e0 < below || e1 < below);
+    at_min = at_min && !(e0 > above || e1 > above);
   }
 
   // edge_separation_full for exact T, by signs (t = 0).  Along n = dA x dB
@@ -458,12 +455,10 @@ class PlainKernel {
     };
     auto neighbours = [&](const ConvexPolyhedron<T>& p, int e, const Vec3<T>& tail, bool& at_max,
                           bool& at_min) {
-      for (const int v : {p.edge_tail(e), p.edge_head(e)})
-        for (const int h : p.vertex_half_edges(v)) {
-          side(p.vertex(p.half_edge(ConvexPolyhedron<T>::twin(h)).origin), tail, at_max, at_min);
-          if (!open()) return false;
-        }
-      return true;
+      return each_neighbour(p, e, [&](const Vec3<T>& w) {
+        side(w, tail, at_max, at_min);
+        return open();
+      });
     };
     auto scan = [&](const ConvexPolyhedron<T>& p, const Vec3<T>& tail, bool& at_max, bool& at_min) {
       for (const Vec3<T>& w : p.vertices()) {
@@ -492,13 +487,21 @@ class PlainKernel {
   // rules out is one the scan would rule out.
   static void rule_out_by_neighbours(const ConvexPolyhedron<T>& p, const Vec3<T>& n, int e, const T& e0,
                                      const T& e1, const T& t, bool& at_max, bool& at_min) {
-    for (const int v : {p.edge_tail(e), p.edge_head(e)}) {
-      for (const int h : p.vertex_half_edges(v)) {
-        rule_out(dot(n, p.vertex(p.half_edge(ConvexPolyhedron<T>::twin(h)).origin)), e0, e1, t, at_max,
-                 at_min);
-        if (!at_max && !at_min) return;
-      }
-    }
+    each_neighbour(p, e, [&](const Vec3<T>& w) {
+      rule_out(dot(n, w), e0, e1, t, at_max, at_min);
+      return at_max || at_min;
+    });
+  }
+
+  // visit(w) for the vertices adjacent to the endpoints of p's edge e (the
+  // endpoints themselves among them), in a fixed order, while it returns
+  // true; false when it stopped the walk.
+  template <class Visit>
+  static bool each_neighbour(const ConvexPolyhedron<T>& p, int e, Visit&& visit) {
+    for (const int v : {p.edge_tail(e), p.edge_head(e)})
+      for (const int h : p.vertex_half_edges(v))
+        if (!visit(p.vertex(p.half_edge(ConvexPolyhedron<T>::twin(h)).origin))) return false;
+    return true;
   }
 
   const ConvexPolyhedron<T>& a_;
