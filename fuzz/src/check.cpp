@@ -546,6 +546,13 @@ struct DecisionCheck {
   std::string why;
 };
 
+// Is the exact height of B's vertex x over A's face f not beyond best, by
+// more than the traversal's bound on that height?
+template <class F>
+bool height_not_beyond(const FloatSide<F>& S, int f, int x, const Separation<Q>& best) {
+  return !beats(S.E.k->face_separation_a(f, x), best, S.bound(Sat::traversal, Feature::face_a(f, x)));
+}
+
 // (10): could a traversal whose best ended at the computed value sf have
 // skipped the arc of A's edge ea by the arc bound?  It skips it when some
 // vertex x of B has both computed heights over the arc's faces f0, f1 below
@@ -557,14 +564,17 @@ bool arc_prunable(const FloatSide<F>& S, int ea, double sf) {
   const Exact& E = S.E;
   const int f0 = E.A.edge_face(ea, 0), f1 = E.A.edge_face(ea, 1);
   const Separation<Q> best{Q(sf), Q(1)};
-  for (int x = 0; x < E.B.vertex_count(); ++x) {
-    const bool below0 =
-        !beats(E.k->face_separation_a(f0, x), best, S.bound(Sat::traversal, Feature::face_a(f0, x)));
-    if (below0 &&
-        !beats(E.k->face_separation_a(f1, x), best, S.bound(Sat::traversal, Feature::face_a(f1, x))))
-      return true;
-  }
+  for (int x = 0; x < E.B.vertex_count(); ++x)
+    if (height_not_beyond(S, f0, x, best) && height_not_beyond(S, f1, x, best)) return true;
   return false;
+}
+
+// The exact value of edge pair f as kernel k decided it: along the exact
+// axis, or against it when k's axis is oriented the other way (8).
+template <class K>
+Separation<Q> value_as_decided(const K& k, const Exact& E, const Feature& f) {
+  const Separation<Q> x = E.k->edge_separation(f.a, f.b);
+  return orientation_flipped(k, E, f) ? Separation<Q>{Q(-x.num), x.norm2} : x;
 }
 
 // (10), the rest of a walk: after a crossing (ea, eb') below its best, the
@@ -583,13 +593,9 @@ bool rest_prunable(const FloatSide<F>& S, const K& k, int ea, double sf) {
   for (int eb = 0; eb < E.B.edge_count(); ++eb) {
     if (k.edges_parallel(ea, eb) || !k.minkowski_face(ea, eb)) continue;
     const Feature f = Feature::edges(ea, eb);
-    const Separation<Q> x = E.k->edge_separation(ea, eb);
-    const Separation<Q> v = orientation_flipped(k, E, f) ? Separation<Q>{Q(-x.num), x.norm2} : x;
-    if (beats(v, best, S.bound(Sat::traversal, f))) continue;
+    if (beats(value_as_decided(k, E, f), best, S.bound(Sat::traversal, f))) continue;
     for (const int y : {E.B.edge_tail(eb), E.B.edge_head(eb)})
-      for (const int g : {f0, f1})
-        if (!beats(E.k->face_separation_a(g, y), best, S.bound(Sat::traversal, Feature::face_a(g, y))))
-          return true;
+      if (height_not_beyond(S, f0, y, best) || height_not_beyond(S, f1, y, best)) return true;
   }
   return false;
 }
@@ -673,8 +679,7 @@ DecisionCheck decision_check(const FloatSide<F>& S, Sat sat, const SatResult<F>&
       } else if (taken) {
         if (sat == Sat::traversal && !E.convex && (arc_prunable(S, ea, sf) || rest_prunable(S, k, ea, sf)))
           continue;  // (10)
-        const Separation<Q> x = E.k->edge_separation(ea, eb);
-        measured(orientation_flipped(k, E, f) ? Separation<Q>{Q(-x.num), x.norm2} : x, f);
+        measured(value_as_decided(k, E, f), f);
       } else if (exact_candidate) {
         const Separation<Q> x = exact_value(E, sat, f);
         if (!beats(x, *own, bf + S.bound(sat, f))) continue;  // does not beat it
