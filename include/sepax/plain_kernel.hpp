@@ -455,10 +455,14 @@ class PlainKernel {
     };
     auto neighbours = [&](const ConvexPolyhedron<T>& p, int e, const Vec3<T>& tail, bool& at_max,
                           bool& at_min) {
-      return each_neighbour(p, e, [&](const Vec3<T>& w) {
-        side(w, tail, at_max, at_min);
-        return open();
-      });
+      // (rule_out_by_neighbours' walk; written out there, where a shared
+      // visitor cost the float brute force 6 % more instructions)
+      for (const int v : {p.edge_tail(e), p.edge_head(e)})
+        for (const int h : p.vertex_half_edges(v)) {
+          side(p.vertex(p.half_edge(ConvexPolyhedron<T>::twin(h)).origin), tail, at_max, at_min);
+          if (!open()) return false;
+        }
+      return true;
     };
     auto scan = [&](const ConvexPolyhedron<T>& p, const Vec3<T>& tail, bool& at_max, bool& at_min) {
       for (const Vec3<T>& w : p.vertices()) {
@@ -487,21 +491,13 @@ class PlainKernel {
   // rules out is one the scan would rule out.
   static void rule_out_by_neighbours(const ConvexPolyhedron<T>& p, const Vec3<T>& n, int e, const T& e0,
                                      const T& e1, const T& t, bool& at_max, bool& at_min) {
-    each_neighbour(p, e, [&](const Vec3<T>& w) {
-      rule_out(dot(n, w), e0, e1, t, at_max, at_min);
-      return at_max || at_min;
-    });
-  }
-
-  // visit(w) for the vertices adjacent to the endpoints of p's edge e (the
-  // endpoints themselves among them), in a fixed order, while it returns
-  // true; false when it stopped the walk.
-  template <class Visit>
-  static bool each_neighbour(const ConvexPolyhedron<T>& p, int e, Visit&& visit) {
-    for (const int v : {p.edge_tail(e), p.edge_head(e)})
-      for (const int h : p.vertex_half_edges(v))
-        if (!visit(p.vertex(p.half_edge(ConvexPolyhedron<T>::twin(h)).origin))) return false;
-    return true;
+    for (const int v : {p.edge_tail(e), p.edge_head(e)}) {
+      for (const int h : p.vertex_half_edges(v)) {
+        rule_out(dot(n, p.vertex(p.half_edge(ConvexPolyhedron<T>::twin(h)).origin)), e0, e1, t, at_max,
+                 at_min);
+        if (!at_max && !at_min) return;
+      }
+    }
   }
 
   const ConvexPolyhedron<T>& a_;
