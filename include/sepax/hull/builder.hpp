@@ -295,6 +295,9 @@ class Builder {
   std::optional<std::conditional_t<Traits::kRechecksRounding, PlaneTree<T>, char>> live_tree_;
   std::vector<int> live_tree_faces_;
   std::size_t live_tree_end_ = 0;
+  /// Float T: face tests the forced steps' re-assignments made (or are about to make) past live_tree_
+  /// since it was built, points x faces (index_live_faces).
+  double live_scan_debt_ = 0;
   /// Per welded point: what the last sweep's search found for it when it kept it (SweepMemo::face -1
   /// otherwise); the next sweep keeps it without a search while every face reached is still alive.
   std::vector<SweepMemo<T>> sweep_memo_;

@@ -34,9 +34,11 @@ inline constexpr int kPlaneTreeFaces = 512;
 /// Points from which the sweep's searches go through a PlaneTree (fewer: the tree costs more to build than
 /// the passes it saves).
 inline constexpr double kPlaneTreePoints = 64;
-/// Points a forced quickhull step re-assigns from which it builds its tree of the live faces anew when the
-/// last one is missing or stale (below, a pass over the live faces is cheaper; either gives the same faces).
-inline constexpr std::size_t kPlaneTreeForcedPoints = 16;
+/// Passes over the live faces that the forced quickhull steps' re-assignments may add up to before they
+/// build their tree of the live faces anew (quickhull.hpp, index_live_faces): about what a build costs
+/// (median splits of about 10^5 planes take some 700 instructions a plane, a face test some 25, so one
+/// build is about 30 passes), in passes; either way the same faces are found.
+inline constexpr double kPlaneTreeBuildPasses = 16;
 
 /// Float T: planes in a tree of bounding boxes of their coefficients, for the largest height of a point.
 template <Number T>

@@ -212,14 +212,23 @@ inline bool Builder<T>::conflict_among(int p, const Faces& faces, const Limit& l
   return false;
 }
 
-/// Float T, a forced eye on many live faces that re-assigns at least kPlaneTreeForcedPoints points: keeps
-/// live_tree_ over live_faces_ (built again once the faces made since number a quarter of its faces; a face
-/// that dies after is passed over by assign_live).
+/// Float T, a forced eye on many live faces that re-assigns `points` points: keeps live_tree_ over
+/// live_faces_ (a face that dies after is passed over by assign_live), built again when the passes that
+/// assign_live would otherwise make add up to the cost of a build.  Without a tree each point passes over
+/// every live face, with one over the faces made since the tree; those face tests (points x faces) are
+/// counted in live_scan_debt_ across eyes, and the tree is built anew once they reach
+/// kPlaneTreeBuildPasses passes over the live faces.  Forced steps that re-assign a point or two each (a
+/// cylinder's lateral surface) thus share one tree instead of each passing over every face, and the
+/// passes made between two builds cost about what a build does.  Either way assign_live finds the same
+/// face.
 template <Number T>
 inline void Builder<T>::index_live_faces(std::size_t points) {
   if constexpr (Traits::kRechecksRounding) {
-    if (live_faces_.size() < as_index(kPlaneTreeFaces) || points < kPlaneTreeForcedPoints) return;
-    if (live_tree_ && 4 * (tris_.size() - live_tree_end_) <= live_tree_faces_.size()) return;
+    if (live_faces_.size() < as_index(kPlaneTreeFaces)) return;
+    const std::size_t passed = live_tree_ ? tris_.size() - live_tree_end_ : live_faces_.size();
+    live_scan_debt_ += static_cast<double>(points) * static_cast<double>(passed);
+    if (live_scan_debt_ < kPlaneTreeBuildPasses * static_cast<double>(live_faces_.size())) return;
+    live_scan_debt_ = 0;
     live_tree_faces_ = live_faces_;
     live_tree_end_ = tris_.size();
     live_tree_.emplace(static_cast<int>(live_tree_faces_.size()), [&](int k) -> const Plane<T>& {
@@ -409,6 +418,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<in
   live_faces_.clear();
   live_made_ = 0;
   live_tree_.reset();
+  live_scan_debt_ = 0;
   eye_visits_.assign(welded_count(), 0);
   // Orient the tetrahedron so that its faces point outward.
   if (height(plane_through(local_point(a), local_point(b), local_point(c)), d) > T(0)) std::swap(b, c);
