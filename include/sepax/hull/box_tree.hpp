@@ -2,7 +2,8 @@
 //
 // Float T: the tree of boxes under VertexTree (vertices, D = 3) and PlaneTree (planes as (n, off), D = 4):
 //   1. BoxTree<D>: items of D coordinates (exactly as doubles) in a binary tree of bounding boxes, median
-//      splits on the widest coordinate down to leaves of kLeaf items;
+//      splits on the widest coordinate of the node's cell down to leaves of kLeaf items, then each box
+//      made tight from its leaves up;
 //   2. walk (depth first) and best_first (the child with the larger bound first): the trees' searches;
 //   3. DotBound<T>: the slack of the trees' box tests, for computed 4-term dot products in T bounded in
 //      double (derived in VertexTree::may_exceed).
@@ -48,6 +49,7 @@ class BoxTree {
     if (items_.empty()) return;
     nodes_.push_back(fill(0, static_cast<int>(items_.size())));
     expand(0);
+    tighten(0);
   }
 
   const std::vector<Item>& items() const { return items_; }
@@ -120,11 +122,12 @@ class BoxTree {
     return nd;
   }
 
-  /// Median split of node id on its box's widest coordinate, recursively down to leaves of kLeaf items: a
+  /// Median split of node id on its cell's widest coordinate, recursively down to leaves of kLeaf items: a
   /// depth of at most log2(n / kLeaf) + 1, so a traversal's stack (depth + 1 entries) fits 64 for any int
-  /// count.
+  /// count.  A child's cell is its parent's cut at the median item's coordinate (its items lie in it); the
+  /// boxes are made tight afterwards (tighten), so the splits read no item but through nth_element.
   void expand(int id) {
-    Node nd = nodes_[as_index(id)];
+    const Node nd = nodes_[as_index(id)];
     if (nd.end - nd.begin <= kLeaf) return;
     int axis = 0;
     for (int c = 1; c < D; ++c)
@@ -132,12 +135,39 @@ class BoxTree {
     const int mid = nd.begin + (nd.end - nd.begin) / 2;
     std::nth_element(items_.begin() + nd.begin, items_.begin() + mid, items_.begin() + nd.end,
                      [&](const Item& p, const Item& q) { return p.c[as_index(axis)] < q.c[as_index(axis)]; });
+    const double cut = items_[as_index(mid)].c[as_index(axis)];
+    Node l = nd, r = nd;
+    l.end = r.begin = mid;
+    l.left = r.left = -1;
+    l.hi[axis] = cut;
+    r.lo[axis] = cut;
     const int left = static_cast<int>(nodes_.size());
-    nodes_.push_back(fill(nd.begin, mid));
-    nodes_.push_back(fill(mid, nd.end));
+    nodes_.push_back(l);
+    nodes_.push_back(r);
     nodes_[as_index(id)].left = left;
     expand(left);
     expand(left + 1);
+  }
+
+  /// The tight box of node id and of its subtree: a leaf's from its items (fill), an inner node's the union
+  /// of its children's (the box a fill over its items gives: minima and maxima are exact).  The nodes
+  /// are not moved while it runs (nodes_ does not grow), so the references stay valid.
+  void tighten(int id) {
+    Node& nd = nodes_[as_index(id)];
+    if (nd.left < 0) {
+      const Node f = fill(nd.begin, nd.end);
+      for (int c = 0; c < D; ++c) nd.lo[c] = f.lo[c], nd.hi[c] = f.hi[c], nd.mag[c] = f.mag[c];
+      return;
+    }
+    tighten(nd.left);
+    tighten(nd.left + 1);
+    const Node& a = nodes_[as_index(nd.left)];
+    const Node& b = nodes_[as_index(nd.left + 1)];
+    for (int c = 0; c < D; ++c) {
+      nd.lo[c] = std::min(a.lo[c], b.lo[c]);
+      nd.hi[c] = std::max(a.hi[c], b.hi[c]);
+      nd.mag[c] = std::max(std::abs(nd.lo[c]), std::abs(nd.hi[c]));
+    }
   }
 
   std::vector<Item> items_;
