@@ -16,6 +16,7 @@
 #pragma once
 
 #include <optional>
+#include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
@@ -50,7 +51,8 @@ ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent)
   builder.check_input();
   builder.weld();
   RepairLog<T> log;
-  std::vector<int> pinned;  // (float T: the points the last repair pass pinned)
+  std::vector<int> pinned;        // (float T: the points the last repair pass pinned)
+  std::uint64_t last_digest = 0;  // (float T: the digest of the last pass's result)
   for (int pass = 0;; ++pass) {
     // 2-7. Initial simplex (or the flat hull), quickhull, face merge, loops and clean-up, pre-check,
     // validation; rebuilt without the points the clean-up rejects.  A repair pass may lose too many; it
@@ -60,10 +62,15 @@ ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent)
       return std::move(*hull);  // exact T: the exact hull holds every point
     } else {
       // 8. Float T: points farther than kHullRepairTolerance x eps from the result are pinned and the
-      // hull rebuilt, at most kHullMaxRepairs times; then the best result or a fallback.
+      // hull rebuilt, at most kHullMaxRepairs times, and no more once a repair pass repeated the one
+      // before: the same result (digest) with only points already pinned left out.  Then the best
+      // result or a fallback.
       std::vector<int> outside;
+      const std::uint64_t d = hull ? builder.digest(*hull) : 0;
       if (hull) builder.measure(std::move(*hull), outside, log);
       if (!hull || outside.empty() || pass == kHullMaxRepairs) return builder.choose_result(log);
+      if (pass > 0 && d == last_digest && !builder.pins_new(outside)) return builder.choose_result(log);
+      last_digest = d;
       builder.pin(outside);
       pinned = std::move(outside);
     }

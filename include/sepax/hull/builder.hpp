@@ -158,6 +158,8 @@ class Builder {
   std::optional<ConvexPolyhedron<T>> build_pass(bool may_fail, const std::vector<int>& pinned = {});
   void measure(ConvexPolyhedron<T> result, std::vector<int>& outside, RepairLog<T>& log);
   void pin(const std::vector<int>& outside);
+  bool pins_new(const std::vector<int>& outside) const;
+  static std::uint64_t digest(const ConvexPolyhedron<T>& h);
   ConvexPolyhedron<T> choose_result(RepairLog<T>& log);
 
  private:

@@ -7,13 +7,15 @@
 //   3. float T: every point that is not a vertex is measured against the result (outside_points); points
 //      more than kHullRepairTolerance x eps out are pinned and put back, and the hull rebuilt (from the last
 //      pass's quickhull triangles when they can take the pinned points, resume), for at most
-//      kHullMaxRepairs repair passes, keeping the best result;
+//      kHullMaxRepairs repair passes, keeping the best result, and no more once a pass repeats the one
+//      before (the same result, digest, leaving out only points already pinned);
 //   4. float T: the fallback policy (fallbacks.hpp) when no pass keeps every point within that tolerance.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -149,6 +151,30 @@ inline void Builder<T>::pin(const std::vector<int>& outside) {
     removed_[as_index(p)] = 0;
     pinned_[as_index(p)] = 1;
   }
+}
+
+/// Float T: whether pin(outside) would pin a point no earlier repair pass pinned.
+template <Number T>
+inline bool Builder<T>::pins_new(const std::vector<int>& outside) const {
+  return std::any_of(outside.begin(), outside.end(), [&](int p) { return !pinned_[as_index(p)]; });
+}
+
+/// Float T: a 64-bit FNV-1a hash of h's vertex coordinates and face loops, in their order: equal for
+/// equal results (a repair pass that repeated the last one).
+template <Number T>
+inline std::uint64_t Builder<T>::digest(const ConvexPolyhedron<T>& h) {
+  std::uint64_t x = 0xcbf29ce484222325ull;
+  auto mix = [&](const void* data, std::size_t n) {
+    const auto* c = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) x = (x ^ c[i]) * 0x100000001b3ull;
+  };
+  for (const Vec3<T>& v : h.vertices()) mix(v.data(), 3 * sizeof(T));
+  for (int f = 0; f < h.face_count(); ++f) {
+    int e = h.face(f).edge;
+    for (int i = 0; i < h.face(f).count; ++i, e = h.half_edge(e).next)
+      mix(&h.half_edge(e).origin, sizeof(int));
+  }
+  return x;
 }
 
 /// Float T, the fallback policy once the repair passes are done: the nearest result, unless the initial
