@@ -174,6 +174,7 @@ class Builder {
   std::optional<ConvexPolyhedron<T>> try_projected_slab(const RepairLog<T>& log);
   std::optional<ConvexPolyhedron<T>> try_tent(const ConvexPolyhedron<T>& chosen);
   double outside_points(const ConvexPolyhedron<T>& h, std::vector<int>& outside, double& height) const;
+  std::vector<int> measure_order(bool coherent) const;
   // ---- fallbacks.hpp ----
   std::optional<ConvexPolyhedron<T>> tent_hull(const ConvexPolyhedron<T>& h, Vec3<double>& nrm);
   std::optional<ConvexPolyhedron<T>> simplex_hull();

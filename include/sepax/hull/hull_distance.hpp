@@ -136,7 +136,8 @@ inline bool plane_heights(const PolygonFaces& pf, const Vec3<double>& x, std::ve
 // could change nothing, and it is skipped at every size.  Every other point is
 // measured against every face, or on a large solid (local()) against the
 // faces near the climb's face.  Climbs
-// start where the last one ended (the points are in lexicographic order).
+// start where the last one ended (the points come in Builder::measure_order,
+// near ones after each other).
 template <Number T>
 struct DeepInside {
   DeepInside(const ConvexPolyhedron<T>& h, const std::vector<PolygonFace>& faces, double margin,

@@ -282,9 +282,8 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
   std::vector<double> heights;  // (polygon_distance's scratch)
   std::vector<int> seen(faces.size(), -1);
   std::optional<PlaneTree<T>> planes;  // (h's face planes, built when a point is measured against all)
-  for (std::size_t i = 0; i < pts_.size(); ++i) {
-    if (out_vertex_[i]) continue;  // (the pre-check held it within conv_tol = 2 eps)
-    const int p = static_cast<int>(i);
+  const std::size_t first_outside = outside.size();
+  for (const int p : measure_order(deep.enabled())) {
     auto plane_height = [&](int f) {
       return to_double(T(dot(h.plane(f).normal, input_point(p)) - h.plane(f).offset));
     };
@@ -328,7 +327,51 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
     worst = std::max(worst, hp / e);
     if (hp > kHullRepairTolerance * e) outside.push_back(p);
   }
+  std::sort(outside.begin() + static_cast<std::ptrdiff_t>(first_outside), outside.end());
   return worst;
+}
+
+/// Float T: the welded points that are not vertices of the result (out_vertex_: the pre-check held those
+/// within conv_tol = 2 eps), in index order, or with
+/// `coherent` in the order of a Morton code of their local coordinates (21 bits a coordinate over the
+/// points' bounding box), so that consecutive points are near each other: the climb DeepInside starts from
+/// the last one's face is then short (index order is lexicographic, in which consecutive points can lie on
+/// opposite sides of the hull).
+template <Number T>
+inline std::vector<int> Builder<T>::measure_order(bool coherent) const {
+  std::vector<int> order;
+  for (std::size_t i = 0; i < pts_.size(); ++i)
+    if (!out_vertex_[i]) order.push_back(static_cast<int>(i));
+  if (!coherent || order.size() < 2) return order;
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (const int p : order)
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], to_double(local_point(p)[c]));
+      hi[c] = std::max(hi[c], to_double(local_point(p)[c]));
+    }
+  auto spread = [](std::uint64_t v) {  // the low 21 bits of v at every third bit
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffull;
+    v = (v | v << 16) & 0x1f0000ff0000ffull;
+    v = (v | v << 8) & 0x100f00f00f00f00full;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ull;
+    v = (v | v << 2) & 0x1249249249249249ull;
+    return v;
+  };
+  std::vector<std::pair<std::uint64_t, int>> keyed;
+  keyed.reserve(order.size());
+  for (const int p : order) {
+    std::uint64_t key = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double w = hi[c] - lo[c];
+      const double q = w > 0 ? (to_double(local_point(p)[c]) - lo[c]) / w * 2097151.0 : 0.0;
+      key |= spread(static_cast<std::uint64_t>(std::clamp(q, 0.0, 2097151.0))) << c;
+    }
+    keyed.emplace_back(key, p);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (std::size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].second;
+  return order;
 }
 
 }  // namespace sepax::hull::detail
