@@ -193,6 +193,7 @@ class Builder {
   void assign_among(int p, const Faces& faces);
   template <class Faces, class Limit>
   bool conflict_among(int p, const Faces& faces, const Limit& limit, typename Traits::NearFace& near);
+  void drop_dead_live_faces();
   void index_live_faces(std::size_t points);
   void assign_live(int p);
   T threshold(int p) const;
@@ -280,11 +281,12 @@ class Builder {
   std::vector<std::vector<int>> loop_pool_;  // face loops' storage between extractions (face_loops.hpp)
   std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)
   std::vector<int> gone_;                    // scratch, per eye
-  std::vector<int> live_faces_;              // live triangles in index order, among tris_[0, live_made_)
-  std::size_t live_made_ = 0;                // (updated at each eye whose visible region was forced)
-  std::vector<Vec3<double>> qd_;             // exact T: q_ as doubles, when shadow_
-  bool shadow_ = false;                      // exact T: every welded coordinate is exactly a double
-  std::vector<std::array<int, 3>> horizon_;  // scratch, per eye
+  std::vector<int> live_faces_;   // live triangles in index order, among tris_[0, live_made_) (and some dead)
+  std::size_t live_made_ = 0;     // (updated at each eye whose visible region was forced)
+  std::size_t live_dead_ = 0;     // >= the faces of live_faces_ dead since drop_dead_live_faces
+  std::vector<Vec3<double>> qd_;  // exact T: q_ as doubles, when shadow_
+  bool shadow_ = false;           // exact T: every welded coordinate is exactly a double
+  std::vector<std::array<int, 3>> horizon_;           // scratch, per eye
   static constexpr std::size_t kHorizonPool = 16384;  ///< bytes: a horizon of ~200 edges without allocation
   std::vector<std::byte> horizon_pool_ = std::vector<std::byte>(kHorizonPool);  // the horizon map's storage
   std::vector<int> moved_;       // scratch, per eye: the points of a removed face

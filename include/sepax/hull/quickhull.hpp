@@ -212,6 +212,13 @@ inline bool Builder<T>::conflict_among(int p, const Faces& faces, const Limit& l
   return false;
 }
 
+// Drops the faces no longer alive from live_faces_ (which keeps its index order).
+template <Number T>
+inline void Builder<T>::drop_dead_live_faces() {
+  std::erase_if(live_faces_, [&](int f) { return !tris_[as_index(f)].alive; });
+  live_dead_ = 0;
+}
+
 /// Float T, a forced eye on many live faces that re-assigns `points` points: keeps live_tree_ over
 /// live_faces_ (a face that dies after is passed over by assign_live), built again when the passes that
 /// assign_live would otherwise make add up to the cost of a build.  Without a tree each point passes over
@@ -229,6 +236,7 @@ inline void Builder<T>::index_live_faces(std::size_t points) {
     live_scan_debt_ += static_cast<double>(points) * static_cast<double>(passed);
     if (live_scan_debt_ < kPlaneTreeBuildPasses * static_cast<double>(live_faces_.size())) return;
     live_scan_debt_ = 0;
+    drop_dead_live_faces();
     live_tree_faces_ = live_faces_;
     live_tree_end_ = tris_.size();
     live_tree_.emplace(static_cast<int>(live_tree_faces_.size()), [&](int k) -> const Plane<T>& {
@@ -417,6 +425,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::solid(const std::vector<in
   tris_state_ = TrisState::solid_build;
   live_faces_.clear();
   live_made_ = 0;
+  live_dead_ = 0;
   live_tree_.reset();
   live_scan_debt_ = 0;
   eye_visits_.assign(welded_count(), 0);
@@ -575,13 +584,14 @@ inline void Builder<T>::expand() {
     // that are no longer on the surface (inside in exact arithmetic; float:
     // tested like any other point); to the new faces, or when the region was
     // forced, to every live face (listed once, in index order: the faces
-    // assign(p, 0) would test, without passing over the dead ones; the list
-    // is kept between steps: the faces dead since are dropped and the faces
-    // made since appended, so it stays in index order; on many faces searched
-    // through a tree of their planes, assign_live)
+    // assign(p, 0) would test; the list is kept between steps: the faces made
+    // since are appended, so it stays in index order, and the faces dead since
+    // are dropped once they may be half of it, or before a tree is built of it
+    // (a dead face in the list is passed over); on many faces searched through
+    // a tree of their planes, assign_live)
     std::vector<int>& live = live_faces_;
     if (forced) {
-      std::erase_if(live, [&](int f) { return !tris_[as_index(f)].alive; });
+      if (2 * live_dead_ > live.size()) drop_dead_live_faces();
       for (; live_made_ < tris_.size(); ++live_made_)
         if (tris_[live_made_].alive) live.push_back(static_cast<int>(live_made_));
       std::size_t points = 0;  // (at least the points re-assigned below)
@@ -609,6 +619,7 @@ inline void Builder<T>::expand() {
       }
     }
     std::vector<int>& pts = moved_;
+    live_dead_ += visible.size();  // (an overcount: not every visible face is listed)
     for (int f : visible) {
       Tri& t = tris_[as_index(f)];
       t.alive = false;
