@@ -36,8 +36,8 @@ inline constexpr int kPlaneTreeFaces = 512;
 inline constexpr double kPlaneTreePoints = 64;
 /// Passes over the live faces that the forced quickhull steps' re-assignments may add up to before they
 /// build their tree of the live faces anew (quickhull.hpp, index_live_faces): about what a build costs
-/// (median splits of about 10^5 planes take some 700 instructions a plane, a face test some 25, so one
-/// build is about 30 passes), in passes; either way the same faces are found.
+/// (median splits of about 10^5 planes take some 450 instructions a plane, a face test some 25, so one
+/// build is about 18 passes), in passes; either way the same faces are found.
 inline constexpr double kPlaneTreeBuildPasses = 16;
 
 /// Float T: planes in a tree of bounding boxes of their coefficients, for the largest height of a point.
