@@ -15,8 +15,8 @@
 // documented fallbacks).  Exact T makes every decision exactly.
 #pragma once
 
-#include <optional>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -66,8 +66,7 @@ ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent)
       // before: the same result (digest) with only points already pinned left out.  Then the best
       // result or a fallback.
       std::vector<int> outside;
-      const std::uint64_t d = hull ? builder.digest(*hull) : 0;
-      if (hull) builder.measure(std::move(*hull), outside, log);
+      const std::uint64_t d = hull ? builder.measure(std::move(*hull), outside, log) : 0;
       if (!hull || outside.empty() || pass == kHullMaxRepairs) return builder.choose_result(log);
       if (pass > 0 && d == last_digest && !builder.pins_new(outside)) return builder.choose_result(log);
       last_digest = d;

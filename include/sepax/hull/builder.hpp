@@ -17,6 +17,7 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <span>
@@ -156,7 +157,7 @@ class Builder {
   void check_input();
   void weld();
   std::optional<ConvexPolyhedron<T>> build_pass(bool may_fail, const std::vector<int>& pinned = {});
-  void measure(ConvexPolyhedron<T> result, std::vector<int>& outside, RepairLog<T>& log);
+  std::uint64_t measure(ConvexPolyhedron<T> result, std::vector<int>& outside, RepairLog<T>& log);
   void pin(const std::vector<int>& outside);
   bool pins_new(const std::vector<int>& outside) const;
   static std::uint64_t digest(const ConvexPolyhedron<T>& h);

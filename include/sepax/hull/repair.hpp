@@ -126,11 +126,14 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::resume(const std::vector<i
 
 /// Float T: measures every point against a pass's result (outside_points) and keeps the result in log if it
 /// is nearer every point, or lower, than the results before; outside receives the points farther than
-/// kHullRepairTolerance x eps.
+/// kHullRepairTolerance x eps.  Returns the result's digest when outside is not empty (a repair pass may
+/// follow, and build_hull compares the digests of consecutive passes), else 0 (no hash taken).
 template <Number T>
-inline void Builder<T>::measure(ConvexPolyhedron<T> result, std::vector<int>& outside, RepairLog<T>& log) {
+inline std::uint64_t Builder<T>::measure(ConvexPolyhedron<T> result, std::vector<int>& outside,
+                                         RepairLog<T>& log) {
   double height = 0;
   const double out = outside_points(result, outside, height);
+  const std::uint64_t d = outside.empty() ? 0 : digest(result);
   if (!log.lowest || height < log.lowest_height) {
     log.lowest = result;
     log.lowest_height = height;
@@ -140,6 +143,7 @@ inline void Builder<T>::measure(ConvexPolyhedron<T> result, std::vector<int>& ou
     log.nearest_out = out;
     log.nearest_height = height;
   }
+  return d;
 }
 
 /// Float T: the points a repair pass puts back, pinned: each becomes a vertex whenever it is above the hull
