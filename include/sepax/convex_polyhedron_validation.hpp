@@ -146,6 +146,7 @@ inline void ConvexPolyhedron<T>::local_convexity_witnesses(int f, std::vector<in
 // scan of every vertex against every face plane.
 template <Number T>
 inline bool ConvexPolyhedron<T>::vertex_windings_once() const {
+  std::vector<std::array<T, 2>> ring;  // (one vertex's projected neighbours; one buffer for every vertex)
   for (int v = 0; v < vertex_count(); ++v) {
     const auto fan = vertex_half_edges(v);
     Vec3<T> m(T(0), T(0), T(0));
@@ -158,7 +159,7 @@ inline bool ConvexPolyhedron<T>::vertex_windings_once() const {
     const Vec3<T> a = cross(m, axis), b = cross(m, a);
     // neighbours in order around v: the head of each outgoing half-edge h,
     // the next one twin(prev(h))
-    std::vector<std::array<T, 2>> ring;
+    ring.clear();
     int h = fan[0];
     do {
       const Vec3<T> d(vertex(half_edge(twin(h)).origin) - vertex(v));

@@ -280,6 +280,7 @@ class Builder {
   std::vector<char> out_vertex_;             // vertices of the last output
   std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
   std::vector<std::vector<int>> loop_pool_;  // face loops' storage between extractions (face_loops.hpp)
+  std::vector<std::vector<int>> list_pool_;  // dead triangles' point lists, storage for new ones (quickhull)
   std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)
   std::vector<int> gone_;                    // scratch, per eye
   std::vector<int> live_faces_;   // live triangles in index order, among tris_[0, live_made_) (and some dead)

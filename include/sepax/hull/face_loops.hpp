@@ -70,20 +70,23 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     return polygon(active_, base_normal_, reject);
   }
   std::vector<std::vector<int>> loops;
-  // (float T: each loop's storage comes from loop_pool_ and goes back to it when this extraction ends, so
-  // the extractions of a build's clean-up rounds allocate about once per face; other types, which extract
-  // about once per build, free it)
+  // (each loop's storage comes from loop_pool_ and goes back to it when this extraction ends, so the
+  // extractions of a build's clean-up rounds and repair passes allocate about once per face)
   struct ReturnLoops {
     std::vector<std::vector<int>>& loops;
-    std::vector<std::vector<int>>* pool;
+    std::vector<std::vector<int>>& pool;
     ~ReturnLoops() {
-      if (pool == nullptr) return;
       try {
-        for (auto& l : loops) pool->push_back(std::move(l));
+        for (auto& l : loops) pool.push_back(std::move(l));
       } catch (...) {  // (out of memory: the loops not returned are freed)
       }
     }
-  } return_loops{loops, std::is_same_v<T, float> ? &loop_pool_ : nullptr};
+  } return_loops{loops, loop_pool_};
+  // (and before an extraction starts again from here, so that it draws on them)
+  auto recycle_loops = [&] {
+    for (auto& l : loops) loop_pool_.push_back(std::move(l));
+    loops.clear();
+  };
   std::vector<int> loop_group;
   loops.reserve(roots.size());
   loop_group.reserve(roots.size());
@@ -168,6 +171,7 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     }
     if (split_groups(live, fold_choice(live, folds))) {
       reject.clear();
+      recycle_loops();
       return merge_and_build(reject);
     }
   }
@@ -260,11 +264,13 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::extract(const std::vector<
     for (int f : split) split_ids.push_back(loop_group[as_index(f)]);
     if (split_groups(live, split_ids)) {
       reject.clear();
+      recycle_loops();
       return merge_and_build(reject);
     }
     if (!merges.empty()) {
       reject.clear();
       for (const auto& [f, g] : merges) unite(loop_group[as_index(f)], loop_group[as_index(g)]);
+      recycle_loops();
       return extract(live, reject);
     }
     if (!reject.empty()) return std::nullopt;

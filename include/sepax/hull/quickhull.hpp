@@ -153,6 +153,10 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::build(const std::vector<in
 template <Number T>
 inline int Builder<T>::new_tri(int p0, int p1, int p2) {
   Tri& t = tris_.emplace_back();  // (built in place: no temporary to move for exact T)
+  if (!list_pool_.empty()) {      // (a dead triangle's storage: the conflict list grows without allocating)
+    t.conflict = std::move(list_pool_.back());
+    list_pool_.pop_back();
+  }
   t.v = {p0, p1, p2};
   t.nb = {-1, -1, -1};
   Traits::set_plane(*this, t, p0, p1, p2);
@@ -625,8 +629,13 @@ inline void Builder<T>::expand() {
       t.alive = false;
       pts.assign(t.conflict.begin(), t.conflict.end());
       pts.insert(pts.end(), t.on.begin(), t.on.end());
-      std::vector<int>().swap(t.conflict);  // (a dead face keeps no storage)
-      std::vector<int>().swap(t.on);
+      // (a dead face keeps no storage: its lists' arrays go to the faces made next, new_tri)
+      for (std::vector<int>* list : {&t.conflict, &t.on}) {
+        if (list->capacity() == 0) continue;
+        list->clear();
+        list_pool_.push_back(std::move(*list));
+        *list = std::vector<int>();
+      }
       for (int p : pts) reassign(p);
     }
   }
