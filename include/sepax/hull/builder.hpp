@@ -126,6 +126,9 @@ struct MergeRecord {
 inline std::atomic<bool> local_face_merges{true};
 /// The float face stages that merged only around what changed (merge_locally), for the tests to see.
 inline std::atomic<std::size_t> local_face_stages{0};
+/// The results of passes that went on from their own triangles that validation refused (Builder::finish),
+/// each followed by a build from the start, for the tests to see.
+inline std::atomic<std::size_t> local_surface_refusals{0};
 
 /// Float T: the best results of the repair passes (repair.hpp).
 template <Number T>
@@ -249,14 +252,35 @@ class Builder {
   const Vec3<T>& input_point(int v) const { return in_[as_index(pts_[as_index(v)])]; }
   T height(const Plane<T>& pl, int p) const { return T(dot(pl.normal, local_point(p)) - pl.offset); }
 
-  /// The output polyhedron, validated; a validation failure there is a builder bug (std::logic_error).
+  /// The output polyhedron, validated.  A validation failure is a builder bug (std::logic_error), except
+  /// on triangles a pass went on from (local_surface_: the clean-up's vertices taken out of them, or a
+  /// repair pass's pinned points added to the last pass's): there it gives none with local_surface_failed_
+  /// set, and the pass builds from the start (build_pass, resume).
   template <class F>
-  static std::optional<ConvexPolyhedron<T>> finish(F&& make) {
+  std::optional<ConvexPolyhedron<T>> finish(F&& make) {
     try {
       return make();
     } catch (const InvalidInput& e) {
+      if (local_surface_) {
+        local_surface_failed_ = true;
+        local_surface_refusals.fetch_add(1, std::memory_order_relaxed);
+        return std::nullopt;
+      }
       throw std::logic_error(std::string("convex_hull: the hull failed validation (a bug): ") + e.what());
     }
+  }
+  /// quickhull_and_faces on triangles a pass went on from (finish); none with reject empty and
+  /// local_surface_failed_ set when validation refuses the result.
+  std::optional<ConvexPolyhedron<T>> faces_of_local_surface(std::vector<int>& reject) {
+    local_surface_ = true;
+    local_surface_failed_ = false;
+    struct Reset {
+      bool& flag;
+      ~Reset() { flag = false; }
+    } reset{local_surface_};
+    auto result = quickhull_and_faces(reject);
+    if (local_surface_failed_) reject.clear();
+    return result;
   }
 
   std::span<const Vec3<T>> in_;
@@ -276,9 +300,12 @@ class Builder {
   std::vector<char> removed_;       // points the clean-up rejected (put back when pinned)
   std::vector<char> pinned_;        // float: points a repair pass put back
   bool any_pinned_ = false;
-  TrisState tris_state_ = TrisState::none;   ///< what tris_ holds: remove_vertices and resume go on from it
-  std::vector<char> out_vertex_;             // vertices of the last output
-  std::vector<std::vector<int>> star_;       // float: vertex -> live triangles around it
+  TrisState tris_state_ = TrisState::none;  ///< what tris_ holds: remove_vertices and resume go on from it
+  bool local_surface_ = false;          // finishing triangles a pass went on from (faces_of_local_surface)
+  bool local_surface_failed_ = false;   // and validation refused their result
+  bool local_removal_refused_ = false;  // a local removal's result was refused: every later one starts over
+  std::vector<char> out_vertex_;        // vertices of the last output
+  std::vector<std::vector<int>> star_;  // float: vertex -> live triangles around it
   std::vector<std::vector<int>> loop_pool_;  // face loops' storage between extractions (face_loops.hpp)
   std::vector<std::vector<int>> list_pool_;  // dead triangles' point lists, storage for new ones (quickhull)
   std::vector<int> next_vertex_;             // scratch, per welded point (-1: none)

@@ -58,15 +58,23 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::build_pass(bool may_fail,
       built = false;
       // the clean-up's rejects out of the triangles where they can be (remove_vertices), else the next
       // build starts over without them
+      // (a surface validation refuses after a removal: the build starts over without the removed points,
+      // and so does every later clean-up of this hull)
       while (!result && !reject.empty()) {
         for (int r : reject) removed_[as_index(r)] = 1;
         if (!remove_vertices(reject)) break;
         reject.clear();
-        result = quickhull_and_faces(reject);
+        result = faces_of_local_surface(reject);
       }
       if (result) {
         if (!result->is_flat()) tris_state_ = TrisState::solid_result;  // (a flat one is polygon's: none)
         return result;
+      }
+      if (local_surface_failed_) {
+        local_surface_failed_ = false;
+        local_removal_refused_ = true;
+        tris_state_ = TrisState::none;
+        continue;
       }
       if (reject.empty()) throw std::logic_error("convex_hull: clean-up made no progress (a bug)");
       reject.clear();
@@ -118,7 +126,12 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::resume(const std::vector<i
     active_.insert(active_.end(), pinned.begin(), pinned.end());
     std::sort(active_.begin(), active_.end());
     active_.erase(std::unique(active_.begin(), active_.end()), active_.end());
-    std::optional<ConvexPolyhedron<T>> result = quickhull_and_faces(reject);
+    std::optional<ConvexPolyhedron<T>> result = faces_of_local_surface(reject);
+    if (local_surface_failed_) {  // (none with reject empty: the pass builds from the start)
+      local_surface_failed_ = false;
+      tris_state_ = TrisState::none;
+      return std::nullopt;
+    }
     if (result && !result->is_flat()) tris_state_ = TrisState::solid_result;
     return result;
   }

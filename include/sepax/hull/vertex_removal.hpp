@@ -27,13 +27,14 @@ namespace sepax::hull::detail {
 /// build goes on from there (quickhull_and_faces) instead of starting over without them.  Exact T, double
 /// (whose results stay those of the builds from the start) and small hulls (cheap to build again) always
 /// start over.  False when the triangles cannot take the removal (not a solid build's; a vertex's hole
-/// that remove_vertex does not fill): the caller then builds from the start, which resets the triangles.
+/// that remove_vertex does not fill; a removal's surface already refused by validation in this hull,
+/// local_removal_refused_): the caller then builds from the start, which resets the triangles.
 template <Number T>
 inline bool Builder<T>::remove_vertices(const std::vector<int>& reject) {
   if constexpr (!Traits::kRepairs || !std::is_same_v<T, float>) {
     return false;
   } else {
-    if (tris_state_ == TrisState::none) return false;
+    if (tris_state_ == TrisState::none || local_removal_refused_) return false;
     tris_state_ = TrisState::none;  // (until every removal has succeeded)
     // rejected point -> a live triangle around it (-1: none found)
     std::vector<int> where(welded_count(), -2);
