@@ -544,11 +544,12 @@ class ConvexPolyhedron {
   // simd::Lanes<T>::width, k W the largest multiple of W up to the vertex
   // count; 0 without SIMD) mapped by point_lanes from src's vertex lanes,
   // written to the vertex lanes and vertices_, with the bounds (lo, hi:
-  // the per-lane minima and maxima of the image folded in) and the
-  // finiteness test (every |coordinate| <= max).  Returns k W.
+  // the per-lane minima and maxima of the image folded in), their
+  // sequential sum s (from zero, in index order) and the finiteness test
+  // (every |coordinate| <= max).  Returns k W.
   template <class PointLanes>
   std::size_t rigid_vertex_groups(const ConvexPolyhedron& src, PointLanes& point_lanes, T& lo0, T& lo1,
-                                  T& lo2, T& hi0, T& hi1, T& hi2, bool& finite);
+                                  T& lo2, T& hi0, T& hi1, T& hi2, T& s0, T& s1, T& s2, bool& finite);
   double compute_normal_conditioning() const;
   struct NormalConditioningScan;
   Plane<T> plane_of_triple(int f, NormalConditioningScan* scan) const;
@@ -568,6 +569,8 @@ class ConvexPolyhedron {
   void check_coordinates();
   static std::string num_str(double x);
   void check_range(bool planes = true);
+  // check_range(false)'s two tests, inline: true iff it passes (float/double)
+  bool coordinates_in_range() const;
   double triple_aspect(int f) const;
   void check_new_range();
   void local_convexity_witnesses(int f, std::vector<int>& out) const;

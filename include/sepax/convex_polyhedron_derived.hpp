@@ -46,7 +46,7 @@ template <Number T>
 inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_planes(
     bool eager_conditioning) {
   const auto nf = static_cast<std::size_t>(topology_.face_count());
-  planes_.resize(nf);
+  if (planes_.size() != nf) planes_.resize(nf);  // (a call even when it has nothing to do)
   [[maybe_unused]] NormalConditioningScan scan;
   [[maybe_unused]] const bool cond =
       eager_conditioning && (std::is_same_v<T, float> || std::is_same_v<T, double>);
@@ -99,9 +99,12 @@ template <Number T>
 // the caveat of simd_ops.hpp).  A group with a lane whose c.c leaves the
 // safe range (plane_of_triple then rescales the cross product) is computed
 // face by face by plane_of_triple.  The scan gets the faces in index order;
-// nb and of get compute_planes' range tests.  Returns k W.
+// nb and of get compute_planes' range tests (the normals of the lanes pass
+// nb's by construction, below).  Returns k W.
+// (inlined into compute_planes, its one caller)
 template <Number T>
-inline std::size_t ConvexPolyhedron<T>::plane_groups(NormalConditioningScan* scan, bool& nb, bool& of) {
+[[gnu::always_inline]] inline std::size_t ConvexPolyhedron<T>::plane_groups(NormalConditioningScan* scan,
+                                                                            bool& nb, bool& of) {
   using L = simd::Lanes<T>;
   constexpr int W = L::width;
   if constexpr (W == 1) {
@@ -112,25 +115,24 @@ inline std::size_t ConvexPolyhedron<T>::plane_groups(NormalConditioningScan* sca
     const std::size_t done = static_cast<std::size_t>(topology_.face_count()) / W * W;
     const V vmax = L::set1(std::numeric_limits<T>::max());
     const V vtiny = L::set1(std::numeric_limits<T>::min() * T(0x1p40));  // safe_squared_norm's
-    const V big = L::set1(T(0x1p60));
-    auto ok_n = L::le(big, big), ok_o = ok_n;  // every lane true
+    auto ok_o = L::le(vmax, vmax);                                       // every lane true
     constexpr unsigned all = (1u << W) - 1;
+    static_assert(sizeof(Vec3<T>) == 3 * sizeof(T) && sizeof(Plane<T>) == 4 * sizeof(T),
+                  "load_xyz reads a Vec3<T> as three contiguous T, store_abcd writes a Plane<T> as four");
     for (std::size_t base = 0; base < done; base += W) {
-      alignas(16) T in[9][W];  // v0, v1, v2 of each lane's plane triple, by coordinate
-      for (int i = 0; i < W; ++i) {
+      const T* q[3][W];  // v0, v1, v2 of each lane's plane triple
+      simd::unrolled<W>([&](int i) SEPAX_SIMD_INLINE {
         const auto& t = topology_.faces()[base + static_cast<std::size_t>(i)].plane_vertices;
-        const T* p0 = vertices_[static_cast<std::size_t>(t[0])].data();
-        const T* p1 = vertices_[static_cast<std::size_t>(t[1])].data();
-        const T* p2 = vertices_[static_cast<std::size_t>(t[2])].data();
-        in[0][i] = p0[0], in[1][i] = p0[1], in[2][i] = p0[2];
-        in[3][i] = p1[0], in[4][i] = p1[1], in[5][i] = p1[2];
-        in[6][i] = p2[0], in[7][i] = p2[1], in[8][i] = p2[2];
-      }
-      const V a0 = L::load(in[0]), a1 = L::load(in[1]), a2 = L::load(in[2]);
-      const V u0 = L::sub(L::load(in[3]), a0), u1 = L::sub(L::load(in[4]), a1),
-              u2 = L::sub(L::load(in[5]), a2);
-      const V w0 = L::sub(L::load(in[6]), a0), w1 = L::sub(L::load(in[7]), a1),
-              w2 = L::sub(L::load(in[8]), a2);
+        q[0][i] = vertices_[static_cast<std::size_t>(t[0])].data();
+        q[1][i] = vertices_[static_cast<std::size_t>(t[1])].data();
+        q[2][i] = vertices_[static_cast<std::size_t>(t[2])].data();
+      });
+      V a0, a1, a2, b0, b1, b2, d0, d1, d2;
+      L::load_xyz(q[0], a0, a1, a2);
+      L::load_xyz(q[1], b0, b1, b2);
+      L::load_xyz(q[2], d0, d1, d2);
+      const V u0 = L::sub(b0, a0), u1 = L::sub(b1, a1), u2 = L::sub(b2, a2);
+      const V w0 = L::sub(d0, a0), w1 = L::sub(d1, a1), w2 = L::sub(d2, a2);
       const V c0 = L::sub(L::mul(u1, w2), L::mul(u2, w1));
       const V c1 = L::sub(L::mul(u2, w0), L::mul(u0, w2));
       const V c2 = L::sub(L::mul(u0, w1), L::mul(u1, w0));
@@ -146,26 +148,50 @@ inline std::size_t ConvexPolyhedron<T>::plane_groups(NormalConditioningScan* sca
       const V len = L::sqrt(s);  // > 0: s is in the safe range
       const V n0 = L::div(c0, len), n1 = L::div(c1, len), n2 = L::div(c2, len);
       const V off = L::add(L::add(L::mul(n0, a0), L::mul(n1, a1)), L::mul(n2, a2));
-      ok_n = L::mand(
-          ok_n, L::mand(L::le(L::abs(n0), big), L::mand(L::le(L::abs(n1), big), L::le(L::abs(n2), big))));
+      // nb needs no test here: every term of s is >= 0 and rounding is
+      // monotone, so s >= fl(c_i c_i) (1 - u)^2 >= c_i^2 (1 - u)^3 (or c_i^2
+      // is below the normal range, far below s > 2^40 min), len = fl(sqrt
+      // s) >= |c_i| (1 - u)^(5/2) and |n_i| <= (1 + u) (1 - u)^(-5/2) < 2,
+      // fused or not: no lane here has a normal component beyond 2^60
       ok_o = L::mand(ok_o, L::le(L::abs(off), vmax));
-      alignas(16) T out[4][W];
-      L::store(out[0], n0);
-      L::store(out[1], n1);
-      L::store(out[2], n2);
-      L::store(out[3], off);
-      for (int i = 0; i < W; ++i)
-        planes_[base + static_cast<std::size_t>(i)] =
-            Plane<T>{Vec3<T>(out[0][i], out[1][i], out[2][i]), out[3][i]};
+      L::store_abcd(planes_[base].normal.data(), n0, n1, n2, off);  // W planes: normal, offset
       if (scan != nullptr) {
         alignas(16) double sq[3][W];  // |u|^2, |w|^2, |c|^2 in double, x*x + y*y + z*z
         simd::squared_norms_in_double<T>(u0, u1, u2, sq[0]);
         simd::squared_norms_in_double<T>(w0, w1, w2, sq[1]);
         simd::squared_norms_in_double<T>(c0, c1, c2, sq[2]);
-        for (int i = 0; i < W; ++i) scan->add_squares(sq[0][i], sq[1][i], sq[2][i]);
+        if constexpr (std::is_same_v<T, float>) {
+          // add_squares on finite u, w and c (s is in the safe range: an
+          // infinite or NaN component of u or w makes one of c, and so s,
+          // infinite or NaN): every square of a float is below 2^256 in
+          // double, so |c|^2 and |u|^2 |w|^2 are finite and only the tiny
+          // test of `bad` can fail.  The products and that test per lane;
+          // then add_ratio's comparison of every lane with the running
+          // maximum the group starts from (the same products, rounded the
+          // same), and only if some lane is larger, the running maximum
+          // face by face in index order (when none is, add_ratio would
+          // keep that maximum through the whole group).
+          using LD = simd::Lanes<double>;
+          alignas(16) double num[W];
+          const auto tiny = LD::set1(kNormalTinySquared);
+          const auto wnum = LD::set1(scan->wnum), wden = LD::set1(scan->wden);
+          auto above = LD::le(tiny, tiny);
+          unsigned larger = 0;
+          for (int h = 0; h < W; h += LD::width) {
+            const auto n = LD::mul(LD::load(sq[0] + h), LD::load(sq[1] + h));
+            const auto nc2 = LD::load(sq[2] + h);
+            LD::store(num + h, n);
+            above = LD::mand(above, LD::gt(nc2, tiny));
+            larger |= LD::bits(LD::gt(LD::mul(n, wden), LD::mul(wnum, nc2)));
+          }
+          scan->bad |= LD::bits(above) != (1u << LD::width) - 1;
+          if (larger != 0)
+            for (int i = 0; i < W; ++i) scan->add_ratio(num[i], sq[2][i]);
+        } else {
+          for (int i = 0; i < W; ++i) scan->add_squares(sq[0][i], sq[1][i], sq[2][i]);
+        }
       }
     }
-    nb &= L::bits(ok_n) == all;
     of &= L::bits(ok_o) == all;
     return done;
   }
@@ -308,7 +334,7 @@ inline void ConvexPolyhedron<T>::compute_bounds() {
 // compute_bounds() after its pass over the vertices: bmin_, bmax_ are set
 // and sum is the sequential sum of the vertices (from zero, in index order).
 template <Number T>
-inline void ConvexPolyhedron<T>::finish_bounds(const Vec3<T>& sum) {
+[[gnu::always_inline]] inline void ConvexPolyhedron<T>::finish_bounds(const Vec3<T>& sum) {
   const T n = from_double<T>(static_cast<double>(vertices_.size()));  // exact for any count < 2^53
   if (!vertices_.empty()) centroid_ = Vec3<T>(sum[0] / n, sum[1] / n, sum[2] / n);
   // per coordinate in order, written out (a loop over the coordinates was not
@@ -411,9 +437,7 @@ struct ConvexPolyhedron<T>::NormalConditioningScan {
       const double num = e1sq * e2sq;
       bad |= !(nc2 > kNormalTinySquared && nc2 <= std::numeric_limits<double>::max() &&
                num <= std::numeric_limits<double>::max());
-      const bool larger = num * wden > wnum * nc2;
-      wnum = larger ? num : wnum;
-      wden = larger ? nc2 : wden;
+      add_ratio(num, nc2);
     } else {
       double r2 = std::numeric_limits<double>::infinity();
       if (nc2 > kNormalTinySquared && std::isfinite(nc2)) {
@@ -422,6 +446,13 @@ struct ConvexPolyhedron<T>::NormalConditioningScan {
       }
       if (r2 > worst) worst = r2;
     }
+  }
+  // float: the running maximum's step for num = |ẽ1|^2 |ẽ2|^2 over nc2
+  // (add_squares after its test of `bad`).
+  void add_ratio(double num, double nc2) {
+    const bool larger = num * wden > wnum * nc2;
+    wnum = larger ? num : wnum;
+    wden = larger ? nc2 : wden;
   }
   double result() const {
     if constexpr (std::is_same_v<T, float>) {

@@ -30,11 +30,16 @@ template <class Point, class PointLanes>
 inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& src, Point&& point,
                                                        PointLanes&& point_lanes) {
   if (!topology_.same_as(src.topology_)) topology_ = src.topology_;  // shared, not copied
+  // (sized only when the size changes: resize is a call even when it has
+  // nothing to do)
+  auto size_to = [](auto& v, std::size_t n) {
+    if (v.size() != n) v.resize(n);
+  };
   const std::size_t nv = src.vertices_.size();
-  vertices_.resize(nv);
-  planes_.resize(static_cast<std::size_t>(topology_.face_count()));
+  size_to(vertices_, nv);
+  size_to(planes_, static_cast<std::size_t>(topology_.face_count()));
   const auto ne = static_cast<std::size_t>(edge_count());
-  edge_dirs_.resize(ne);
+  size_to(edge_dirs_, ne);
   lanes_bounded_ = support_lanes_bounded_ = false;
   normal_conditioning_.store(std::numeric_limits<double>::infinity());
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
@@ -51,14 +56,8 @@ inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& s
     T s0 = T(0), s1 = T(0), s2 = T(0);
     bool finite = true;
     std::size_t i = 0;
-    if constexpr (!std::is_same_v<std::remove_cvref_t<PointLanes>, std::nullptr_t>) {
-      i = rigid_vertex_groups(src, point_lanes, lo0, lo1, lo2, hi0, hi1, hi2, finite);
-      for (std::size_t k = 0; k < i; ++k) {  // the sequential sum, in index order
-        s0 = s0 + lv[k];
-        s1 = s1 + lv[vs + k];
-        s2 = s2 + lv[2 * vs + k];
-      }
-    }
+    if constexpr (!std::is_same_v<std::remove_cvref_t<PointLanes>, std::nullptr_t>)
+      i = rigid_vertex_groups(src, point_lanes, lo0, lo1, lo2, hi0, hi1, hi2, s0, s1, s2, finite);
     for (; i < nv; ++i) {
       const Vec3<T> v = point(src.vertices_[i]);
       vertices_[i] = v;
@@ -79,7 +78,8 @@ inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& s
       hi1 = y > hi1 ? y : hi1;
       hi2 = z > hi2 ? z : hi2;
     }
-    for (std::size_t c = 0; c < 3; ++c) std::fill(lv + c * vs + nv, lv + (c + 1) * vs, T(0));
+    if (nv != vs)  // the lanes' padding
+      for (std::size_t c = 0; c < 3; ++c) std::fill(lv + c * vs + nv, lv + (c + 1) * vs, T(0));
     if (!finite || nv < 3) check_coordinates();  // throws, naming the vertex
     bmin_ = Vec3<T>(lo0, lo1, lo2);
     bmax_ = Vec3<T>(hi0, hi1, hi2);
@@ -91,7 +91,7 @@ inline void ConvexPolyhedron<T>::assign_rigid_vertices(const ConvexPolyhedron& s
   }
   if constexpr (!number_traits<T>::is_exact) {
     if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
-    check_range(false);
+    if (!coordinates_in_range()) check_range(false);  // throws, naming the quantity
   }
   // the vertex lanes are written and every coordinate is finite (checked
   // above); no plane is derived yet
@@ -169,16 +169,18 @@ inline bool ConvexPolyhedron<T>::derive_rigid_edges() {
   return ok;
 }
 
+// (inlined into assign_rigid_vertices, its one caller: its ten results stay
+// in registers)
 template <Number T>
 template <class PointLanes>
-inline std::size_t ConvexPolyhedron<T>::rigid_vertex_groups(const ConvexPolyhedron& src,
-                                                            PointLanes& point_lanes, T& lo0, T& lo1, T& lo2,
-                                                            T& hi0, T& hi1, T& hi2, bool& finite) {
+[[gnu::always_inline]] inline std::size_t ConvexPolyhedron<T>::rigid_vertex_groups(
+    const ConvexPolyhedron& src, PointLanes& point_lanes, T& lo0, T& lo1, T& lo2, T& hi0, T& hi1, T& hi2,
+    T& s0, T& s1, T& s2, bool& finite) {
   using L = simd::Lanes<T>;
   constexpr int W = L::width;
   if constexpr (W == 1) {
     (void)src, (void)point_lanes, (void)lo0, (void)lo1, (void)lo2, (void)hi0, (void)hi1, (void)hi2;
-    (void)finite;
+    (void)s0, (void)s1, (void)s2, (void)finite;
     return 0;
   } else {
     using V = typename L::V;
@@ -190,6 +192,9 @@ inline std::size_t ConvexPolyhedron<T>::rigid_vertex_groups(const ConvexPolyhedr
     const T* const sx = src.lanes_.data() + 9 * static_cast<std::size_t>(src.lane_edge_stride_);
     T* const lv = lanes_.data() + 9 * static_cast<std::size_t>(lane_edge_stride_);
     simd::LaneBounds<T> box(std::numeric_limits<T>::max());
+    // the vertex sum in index order: float, the three coordinates in the
+    // lanes of one register (Lanes::add_points); double, after the groups
+    [[maybe_unused]] V sum = L::set1(T(0));
     for (std::size_t b = 0; b < done; b += W) {
       V x = L::load(sx + b), y = L::load(sx + ss + b), z = L::load(sx + 2 * ss + b);
       point_lanes(x, y, z);
@@ -198,24 +203,36 @@ inline std::size_t ConvexPolyhedron<T>::rigid_vertex_groups(const ConvexPolyhedr
       L::store(lv + 2 * vs + b, z);
       L::store_xyz(vertices_[b].data(), x, y, z);  // (Vec3<T> is three contiguous T)
       box.add(x, y, z);
+      if constexpr (std::is_same_v<T, float>) L::add_points(sum, x, y, z);
+    }
+    if constexpr (std::is_same_v<T, float>) {
+      alignas(16) T st[W];
+      L::store(st, sum);
+      s0 = st[0], s1 = st[1], s2 = st[2];
+    } else {
+      for (std::size_t k = 0; k < done; ++k) {  // the sequential sum, in index order
+        s0 = s0 + lv[k];
+        s1 = s1 + lv[vs + k];
+        s2 = s2 + lv[2 * vs + k];
+      }
     }
     finite &= box.within();
     T lo[3], hi[3];
-    box.reduce(lo, hi);  // (done > 0)
-    // A zero bound: its sign is that of the first zero in index order (the
-    // sequential comparisons keep the first of equal values), so it is
-    // found again in that order.  Each bound tested in turn, written out (a
-    // loop over the six was not unrolled).
-    auto signed_zero = [&](T& r, int c, bool is_lo) {
-      if (r != T(0)) [[likely]]
-        return;
-      const T* const lane = lv + static_cast<std::size_t>(c) * vs;
-      r = is_lo ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
-      for (std::size_t k = 0; k < done; ++k)
-        r = is_lo ? (lane[k] < r ? lane[k] : r) : (lane[k] > r ? lane[k] : r);
-    };
-    signed_zero(lo[0], 0, true), signed_zero(lo[1], 1, true), signed_zero(lo[2], 2, true);
-    signed_zero(hi[0], 0, false), signed_zero(hi[1], 1, false), signed_zero(hi[2], 2, false);
+    if (!box.reduce(lo, hi)) [[unlikely]] {  // (done > 0) some bound is zero
+      // A zero bound: its sign is that of the first zero in index order (the
+      // sequential comparisons keep the first of equal values), so it is
+      // found again in that order.  Each bound tested in turn, written out (a
+      // loop over the six was not unrolled).
+      auto signed_zero = [&](T& r, int c, bool is_lo) {
+        if (r != T(0)) return;
+        const T* const lane = lv + static_cast<std::size_t>(c) * vs;
+        r = is_lo ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
+        for (std::size_t k = 0; k < done; ++k)
+          r = is_lo ? (lane[k] < r ? lane[k] : r) : (lane[k] > r ? lane[k] : r);
+      };
+      signed_zero(lo[0], 0, true), signed_zero(lo[1], 1, true), signed_zero(lo[2], 2, true);
+      signed_zero(hi[0], 0, false), signed_zero(hi[1], 1, false), signed_zero(hi[2], 2, false);
+    }
     lo0 = lo[0], lo1 = lo[1], lo2 = lo[2], hi0 = hi[0], hi1 = hi[1], hi2 = hi[2];
     return done;
   }

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "convex_polyhedron.hpp"
@@ -59,17 +60,24 @@ inline std::string ConvexPolyhedron<T>::num_str(double x) {
 // Out of range is refused here with BadScale, naming the quantity that does
 // not fit, before any geometric check can misreport it.
 template <Number T>
+[[gnu::always_inline]] inline bool ConvexPolyhedron<T>::coordinates_in_range() const {
+  const double limit = static_cast<double>(std::numeric_limits<T>::max()) / 16;
+  const double smallest_tol = Tolerances<T>::kCoplanar * kAdjacentCoplanarFraction * extent_;
+  return max_abs_ <= limit && smallest_tol >= static_cast<double>(std::numeric_limits<T>::min());
+}
+
+template <Number T>
 inline void ConvexPolyhedron<T>::check_range(bool planes) {
-  const std::string tname(number_traits<T>::name);
+  const std::string_view tname = number_traits<T>::name;  // (a std::string only in a message)
   const double limit = static_cast<double>(std::numeric_limits<T>::max()) / 16;
   if (!(max_abs_ <= limit)) {
-    fail(ErrorCode::BadScale, "coordinates up to " + num_str(max_abs_) + " are out of range for " + tname +
-                                  ": sepax needs |coordinate| <= " + num_str(limit) +
+    fail(ErrorCode::BadScale, "coordinates up to " + num_str(max_abs_) + " are out of range for " +
+                                  std::string(tname) + ": sepax needs |coordinate| <= " + num_str(limit) +
                                   " (max/16) so that edges, plane offsets and projections stay finite");
   }
   const double smallest_tol = Tolerances<T>::kCoplanar * kAdjacentCoplanarFraction * extent_;
   if (!(smallest_tol >= static_cast<double>(std::numeric_limits<T>::min()))) {
-    fail(ErrorCode::BadScale, "extent " + num_str(extent_) + " is too small for " + tname +
+    fail(ErrorCode::BadScale, "extent " + num_str(extent_) + " is too small for " + std::string(tname) +
                                   ": the validation tolerances (relative to the extent) fall "
                                   "into its subnormal range");
   }
@@ -89,7 +97,7 @@ inline void ConvexPolyhedron<T>::check_range(bool planes) {
     bool finite = number_traits<T>::is_finite(pl.offset);
     for (int c = 0; c < 3; ++c) finite = finite && number_traits<T>::is_finite(pl.normal[c]);
     if (!finite) {
-      fail(ErrorCode::BadScale, "face " + std::to_string(f) + ": its plane overflows " + tname +
+      fail(ErrorCode::BadScale, "face " + std::to_string(f) + ": its plane overflows " + std::string(tname) +
                                     "; coordinates reach " + num_str(max_abs_));
     }
   }

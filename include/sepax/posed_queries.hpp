@@ -194,7 +194,7 @@ SatResult<T> posed_query(const PreparedShape<T>& a, const RigidTransform<T>& pos
       }
     }
   }
-  const ConvexPolyhedron<T>& bp = b.posed_scratch(x, kEdgeLanes);
+  const ConvexPolyhedron<T>& bp = b.posed_scratch_from(x, pose_a, pose_b, kEdgeLanes);
   kernel_t<Policy, T> k(a.polyhedron(), bp);
   SatResult<T> r = cache ? cached_run(k, *cache, opt, run) : run(k, opt, nullptr);
   r.axis = pose_a.rotate(r.axis);
@@ -304,10 +304,11 @@ ContactManifold<T> posed_manifold_on(const ConvexPolyhedron<T>& a, const RigidTr
   ManifoldOptions mo;
   mo.margin = opt.margin;
   ContactManifold<T> m = contact_manifold(a, bp, r, mo);
+  const sepax::detail::PointMap<T> to_world(pose_a);  // pose_a.apply, bit for bit
   for (auto& p : m.points) {
-    p.position = pose_a.apply(p.position);
-    p.point_a = pose_a.apply(p.point_a);
-    p.point_b = pose_a.apply(p.point_b);
+    p.position = to_world(p.position);
+    p.point_a = to_world(p.point_a);
+    p.point_b = to_world(p.point_b);
   }
   m.normal = r.axis;
   return m;
@@ -330,8 +331,8 @@ ContactManifold<T> contact_manifold(const PreparedShape<T>& a, const RigidTransf
   check_options(opt);
   if (a.polyhedron().empty())
     throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape A is empty (moved from)");
-  return detail::posed_manifold_on(a.polyhedron(), pose_a,
-                                   b.posed_scratch(relative_pose(pose_a, pose_b), false), r, opt);
+  return detail::posed_manifold_on(a.polyhedron(), pose_a, b.posed_scratch_between(pose_a, pose_b, false), r,
+                                   opt);
 }
 
 }  // namespace sepax

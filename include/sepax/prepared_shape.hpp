@@ -44,6 +44,10 @@ struct PoseScratch {
   std::uint64_t serial = 0;  // PreparedShape::serial() of the shape poly holds (0: none)
   Stage stage = kNone;       // poly is that shape at pose x: its vertices (a partial image), or all of it
   RigidTransform<T> x;
+  // float/double, with from_poses: x = relative_pose(pose_a, pose_b)
+  // (PreparedShape::posed_scratch_from / posed_scratch_between)
+  bool from_poses = false;
+  RigidTransform<T> pose_a, pose_b;
 };
 
 template <Number T>
@@ -57,10 +61,10 @@ bool same_pose(const RigidTransform<T>& p, const RigidTransform<T>& q) {
   if constexpr (std::is_floating_point_v<T>) {
     // bit-identical (the posed vertices are then bit-identical too): the
     // rotation's nine and the translation's three values, compared as bytes
+    // (the object is those twelve values and nothing else: no padding)
     static_assert(sizeof(typename RigidTransform<T>::Matrix3) == 9 * sizeof(T) &&
-                  sizeof(Vec3<T>) == 3 * sizeof(T));
-    return std::memcmp(p.rotation.data(), q.rotation.data(), 9 * sizeof(T)) == 0 &&
-           std::memcmp(p.translation.data(), q.translation.data(), 3 * sizeof(T)) == 0;
+                  sizeof(Vec3<T>) == 3 * sizeof(T) && sizeof(RigidTransform<T>) == 12 * sizeof(T));
+    return simd::equal_bytes<sizeof(RigidTransform<T>)>(&p, &q);
   } else {
     return p.rotation == q.rotation && p.translation == q.translation;
   }
@@ -195,16 +199,40 @@ class PreparedShape {
   const ConvexPolyhedron<T>& posed_scratch(const RigidTransform<T>& x, bool edge_lanes = true) const {
     auto& s = detail::pose_scratch<T>();
     if (!(s.serial == serial_ && s.stage != S::kNone && detail::same_pose(s.x, x))) pose_vertices(s, x);
-    // the vertices are there (a check of a posed query's, or this call): finish them
-    if (s.stage == S::kVertices) {
-      s.stage = S::kNone;
-      s.poly.finish_rigid_image(edge_lanes);
-      s.stage = edge_lanes ? S::kFull : S::kNoEdgeLanes;
-    } else if (s.stage == S::kNoEdgeLanes && edge_lanes) {
-      s.poly.finish_rigid_edge_lanes();
-      s.stage = S::kFull;
+    return finished(s, edge_lanes);
+  }
+
+  /// posed_scratch(x, edge_lanes) for x = relative_pose(pose_a, pose_b)
+  /// (the posed queries), noting the poses with x (float/double) so that
+  /// posed_scratch_between(pose_a, pose_b) at the same poses finds this
+  /// image without computing x again.
+  const ConvexPolyhedron<T>& posed_scratch_from(const RigidTransform<T>& x, const RigidTransform<T>& pose_a,
+                                                const RigidTransform<T>& pose_b, bool edge_lanes) const {
+    const ConvexPolyhedron<T>& bp = posed_scratch(x, edge_lanes);
+    if constexpr (std::is_floating_point_v<T>) {
+      auto& s = detail::pose_scratch<T>();
+      s.pose_a = pose_a;
+      s.pose_b = pose_b;
+      s.from_poses = true;
     }
-    return s.poly;
+    return bp;
+  }
+
+  /// posed_scratch(relative_pose(pose_a, pose_b), edge_lanes): the same
+  /// image, bit for bit.  When this thread's scratch holds this shape posed
+  /// at x = relative_pose of bit-identical poses (posed_scratch_from: a
+  /// posed contact_manifold right after its query), x is that one
+  /// (relative_pose is a function of the poses' bits) and is not computed
+  /// again.
+  const ConvexPolyhedron<T>& posed_scratch_between(const RigidTransform<T>& pose_a,
+                                                   const RigidTransform<T>& pose_b, bool edge_lanes) const {
+    if constexpr (std::is_floating_point_v<T>) {
+      auto& s = detail::pose_scratch<T>();
+      if (s.from_poses && s.serial == serial_ && s.stage != S::kNone && detail::same_pose(s.pose_a, pose_a) &&
+          detail::same_pose(s.pose_b, pose_b))
+        return finished(s, edge_lanes);
+    }
+    return posed_scratch(relative_pose(pose_a, pose_b), edge_lanes);
   }
 
   /// For the posed queries' early-out checks (posed_queries.hpp): this
@@ -232,12 +260,28 @@ class PreparedShape {
  private:
   using S = detail::PoseScratch<T>;
 
+  // s holds this shape at its x (some stage): the rest derived as edge_lanes
+  // asks (posed_scratch).
+  const ConvexPolyhedron<T>& finished(S& s, bool edge_lanes) const {
+    // the vertices are there (a check of a posed query's, or this call): finish them
+    if (s.stage == S::kVertices) {
+      s.stage = S::kNone;
+      s.poly.finish_rigid_image(edge_lanes);
+      s.stage = edge_lanes ? S::kFull : S::kNoEdgeLanes;
+    } else if (s.stage == S::kNoEdgeLanes && edge_lanes) {
+      s.poly.finish_rigid_edge_lanes();
+      s.stage = S::kFull;
+    }
+    return s.poly;
+  }
+
   // s.poly = the partial image of this shape at x (stage kVertices).
   void pose_vertices(S& s, const RigidTransform<T>& x) const {
     if (poly_.empty())
       throw InvalidInput(ErrorCode::TooFewPoints, "PreparedShape: the shape is empty (moved from)");
     s.stage = S::kNone;
     s.serial = 0;  // until the posing below has finished (it may throw)
+    s.from_poses = false;
     detail::pose_vertices_into(s.poly, poly_, x);
     s.serial = serial_;
     s.x = x;

@@ -10,8 +10,11 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #if defined(__SSE2__) && !defined(SEPAX_NO_SIMD)
 #include <emmintrin.h>
@@ -27,6 +30,14 @@
 #endif
 
 namespace sepax::simd {
+
+/// f(0), f(1), ..., f(N - 1), written out (GCC leaves short loops whose
+/// bodies store to arrays rolled).
+template <int N, class F>
+SEPAX_SIMD_INLINE inline void unrolled(F&& f) {
+  [&]<int... I>(std::integer_sequence<int, I...>) SEPAX_SIMD_INLINE { (f(I), ...); }
+  (std::make_integer_sequence<int, N>{});
+}
 
 /// Lane operations: V holds `width` values of T, M a per-lane mask.
 ///
@@ -52,6 +63,12 @@ struct Lanes {  // portable fallback: one lane
   /// p[3i], p[3i + 1], p[3i + 2] = lane i of x, y, z: `width` points
   /// interleaved (an array of Vec3<T>), copies of the lanes' values.
   static void store_xyz(T* p, V x, V y, V z) { p[0] = x, p[1] = y, p[2] = z; }
+  /// Lane i of x, y, z = p[i][0], p[i][1], p[i][2]: `width` points of three
+  /// contiguous T each (a Vec3<T>), nothing read beyond them.
+  static void load_xyz(const T* const* p, V& x, V& y, V& z) { x = p[0][0], y = p[0][1], z = p[0][2]; }
+  /// p[4i], ..., p[4i + 3] = lane i of a, b, c, d: `width` records of four T
+  /// (a Plane<T>: normal, offset), copies of the lanes' values.
+  static void store_abcd(T* p, V a, V b, V c, V d) { p[0] = a, p[1] = b, p[2] = c, p[3] = d; }
   static V add(V a, V b) { return a + b; }
   static V sub(V a, V b) { return a - b; }
   static V mul(V a, V b) { return a * b; }
@@ -70,6 +87,7 @@ struct Lanes {  // portable fallback: one lane
   static V max_gt(V h, V m) { return h > m ? h : m; }  // h if h > m, else m
   static M eq(V a, V b) { return a == b; }
   static V hmin(V v) { return v; }  // the minimum over the lanes, in every lane
+  static V hmax(V v) { return v; }  // the maximum over the lanes, in every lane
   static unsigned bits(M m) { return m ? 1u : 0u; }
   static T first(V v) { return v; }
 };
@@ -96,6 +114,32 @@ struct Lanes<float> {
     _mm_storeu_ps(p + 4, _mm_shuffle_ps(yz, hi, _MM_SHUFFLE(1, 0, 2, 0)));    // y1 z1 x2 y2
     _mm_storeu_ps(p + 8, _mm_shuffle_ps(zx3, yz3, _MM_SHUFFLE(2, 0, 2, 0)));  // z2 x3 y3 z3
   }
+  // x and y from one 8-byte load per point, z from one 4-byte load each
+  static void load_xyz(const float* const* p, V& x, V& y, V& z) {
+    auto xy = [](const float* q) {  // q[0] q[1] 0 0 (through memcpy: no float read as double)
+      double d;
+      std::memcpy(&d, q, sizeof d);
+      return _mm_castpd_ps(_mm_set_sd(d));
+    };
+    const V a = _mm_unpacklo_ps(xy(p[0]), xy(p[1]));                             // x0 x1 y0 y1
+    const V b = _mm_unpacklo_ps(xy(p[2]), xy(p[3]));                             // x2 x3 y2 y3
+    x = _mm_movelh_ps(a, b);                                                     // x0 x1 x2 x3
+    y = _mm_movehl_ps(b, a);                                                     // y0 y1 y2 y3
+    const V za = _mm_unpacklo_ps(_mm_load_ss(p[0] + 2), _mm_load_ss(p[1] + 2));  // z0 z1 0 0
+    const V zb = _mm_unpacklo_ps(_mm_load_ss(p[2] + 2), _mm_load_ss(p[3] + 2));  // z2 z3 0 0
+    z = _mm_movelh_ps(za, zb);
+  }
+  // the 4x4 transpose: record i is lane i of a, b, c, d
+  static void store_abcd(float* p, V a, V b, V c, V d) {
+    const V ab0 = _mm_unpacklo_ps(a, b);  // a0 b0 a1 b1
+    const V ab1 = _mm_unpackhi_ps(a, b);  // a2 b2 a3 b3
+    const V cd0 = _mm_unpacklo_ps(c, d);  // c0 d0 c1 d1
+    const V cd1 = _mm_unpackhi_ps(c, d);  // c2 d2 c3 d3
+    _mm_storeu_ps(p, _mm_movelh_ps(ab0, cd0));
+    _mm_storeu_ps(p + 4, _mm_movehl_ps(cd0, ab0));
+    _mm_storeu_ps(p + 8, _mm_movelh_ps(ab1, cd1));
+    _mm_storeu_ps(p + 12, _mm_movehl_ps(cd1, ab1));
+  }
   static V add(V a, V b) { return _mm_add_ps(a, b); }
   static V sub(V a, V b) { return _mm_sub_ps(a, b); }
   static V mul(V a, V b) { return _mm_mul_ps(a, b); }
@@ -117,6 +161,24 @@ struct Lanes<float> {
   static V hmin(V v) {  // no NaN: min over the lanes, in every lane
     v = _mm_min_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1)));
     return _mm_min_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)));
+  }
+  static V hmax(V v) {  // no NaN: max over the lanes, in every lane
+    v = _mm_max_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm_max_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)));
+  }
+  /// Lane c of s (c < 3) += coordinate c of the points (x_i, y_i, z_i),
+  /// i = 0 ... 3 in turn: per lane the scalar additions s_c + p_i[c] in index
+  /// order (lane 3 adds zeros).
+  static void add_points(V& s, V x, V y, V z) {
+    const V z0 = _mm_setzero_ps();
+    const V xy0 = _mm_unpacklo_ps(x, y);   // x0 y0 x1 y1
+    const V xy1 = _mm_unpackhi_ps(x, y);   // x2 y2 x3 y3
+    const V zz0 = _mm_unpacklo_ps(z, z0);  // z0 0 z1 0
+    const V zz1 = _mm_unpackhi_ps(z, z0);  // z2 0 z3 0
+    s = _mm_add_ps(s, _mm_movelh_ps(xy0, zz0));
+    s = _mm_add_ps(s, _mm_movehl_ps(zz0, xy0));
+    s = _mm_add_ps(s, _mm_movelh_ps(xy1, zz1));
+    s = _mm_add_ps(s, _mm_movehl_ps(zz1, xy1));
   }
   static unsigned bits(M m) { return static_cast<unsigned>(_mm_movemask_ps(m)); }
   static float first(V v) { return _mm_cvtss_f32(v); }
@@ -145,6 +207,12 @@ struct Lanes<float> {
     const V c2r = _mm_shuffle_ps(c2, c2, _MM_SHUFFLE(2, 1, 0, 0));
     _mm_storeu_ps(m + 5, _mm_move_ss(c2r, _mm_shuffle_ps(c1, c1, _MM_SHUFFLE(2, 2, 2, 2))));
   }
+  /// p[0], p[1], p[2] in lanes 0-2, lane 3 zero (3 floats read).
+  static V load3(const float* p) {
+    double d;  // p[0] p[1] through memcpy: no float read as double
+    std::memcpy(&d, p, sizeof d);
+    return _mm_movelh_ps(_mm_castpd_ps(_mm_set_sd(d)), _mm_load_ss(p + 2));
+  }
   /// Stores lanes 0-2 of v at p (3 floats).
   static void store3(float* p, V v) {
     _mm_storel_pi(reinterpret_cast<__m64*>(p), v);
@@ -167,6 +235,18 @@ struct Lanes<double> {
     _mm_storeu_pd(p + 2, _mm_shuffle_pd(z, x, 2));
     _mm_storeu_pd(p + 4, _mm_unpackhi_pd(y, z));
   }
+  static void load_xyz(const double* const* p, V& x, V& y, V& z) {
+    const V a = _mm_loadu_pd(p[0]), b = _mm_loadu_pd(p[1]);  // x y of each point
+    x = _mm_unpacklo_pd(a, b);
+    y = _mm_unpackhi_pd(a, b);
+    z = _mm_unpacklo_pd(_mm_load_sd(p[0] + 2), _mm_load_sd(p[1] + 2));
+  }
+  static void store_abcd(double* p, V a, V b, V c, V d) {
+    _mm_storeu_pd(p, _mm_unpacklo_pd(a, b));
+    _mm_storeu_pd(p + 2, _mm_unpacklo_pd(c, d));
+    _mm_storeu_pd(p + 4, _mm_unpackhi_pd(a, b));
+    _mm_storeu_pd(p + 6, _mm_unpackhi_pd(c, d));
+  }
   static V add(V a, V b) { return _mm_add_pd(a, b); }
   static V sub(V a, V b) { return _mm_sub_pd(a, b); }
   static V mul(V a, V b) { return _mm_mul_pd(a, b); }
@@ -185,10 +265,32 @@ struct Lanes<double> {
   static V max_gt(V h, V m) { return _mm_max_pd(h, m); }
   static M eq(V a, V b) { return _mm_cmpeq_pd(a, b); }
   static V hmin(V v) { return _mm_min_pd(v, _mm_shuffle_pd(v, v, 1)); }
+  static V hmax(V v) { return _mm_max_pd(v, _mm_shuffle_pd(v, v, 1)); }
   static unsigned bits(M m) { return static_cast<unsigned>(_mm_movemask_pd(m)); }
   static double first(V v) { return _mm_cvtsd_f64(v); }
 };
 #endif
+
+/// Whether the N bytes at a and at b are equal (memcmp(a, b, N) == 0; N a
+/// multiple of 16): with SSE2 16 bytes at a time, written out.
+template <std::size_t N>
+inline bool equal_bytes(const void* a, const void* b) {
+  static_assert(N % 16 == 0);
+#if defined(SEPAX_SIMD_SSE2)
+  const auto* p = static_cast<const unsigned char*>(a);
+  const auto* q = static_cast<const unsigned char*>(b);
+  auto eq = [&](std::size_t k) {
+    return _mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p + k)),
+                          _mm_loadu_si128(reinterpret_cast<const __m128i*>(q + k)));
+  };
+  __m128i all = eq(0);
+  [&]<std::size_t... K>(std::index_sequence<K...>) { ((all = _mm_and_si128(all, eq(16 * (K + 1)))), ...); }
+  (std::make_index_sequence<N / 16 - 1>{});
+  return _mm_movemask_epi8(all) == 0xFFFF;
+#else
+  return std::memcmp(a, b, N) == 0;
+#endif
+}
 
 /// out[i] = x_i*x_i + y_i*y_i + z_i*z_i in double, left to right, for the
 /// Lanes<T>::width lanes of x, y, z (each value converted to double first,
@@ -251,20 +353,20 @@ struct LaneBounds {
   bool within() const { return L::bits(within_) == (1u << L::width) - 1; }
 
   /// The lowest and highest coordinates over every lane into out_lo,
-  /// out_hi, the lanes compared in order (of equal values the earlier
-  /// stays: a zero's sign is the first lane's with a zero, not necessarily
-  /// the first point's in the order added).  At least one group added.
-  void reduce(T (&out_lo)[3], T (&out_hi)[3]) const {
-    for (int c = 0; c < 3; ++c) {
-      alignas(16) T l[L::width], h[L::width];
-      L::store(l, lo[c]);
-      L::store(h, hi[c]);
-      out_lo[c] = l[0], out_hi[c] = h[0];
-      for (int k = 1; k < L::width; ++k) {
-        out_lo[c] = l[k] < out_lo[c] ? l[k] : out_lo[c];
-        out_hi[c] = h[k] > out_hi[c] ? h[k] : out_hi[c];
-      }
-    }
+  /// out_hi (hmin / hmax: exact for values that are not NaN; a zero's sign
+  /// is that of one of the lanes' zeros, not necessarily the first point's
+  /// in the order added); returns whether none of the six is zero.  At
+  /// least one group added.
+  bool reduce(T (&out_lo)[3], T (&out_hi)[3]) const {
+    const V zero = L::set1(T(0));
+    M zeros = L::lt(zero, zero);  // no lane
+    unrolled<3>([&](int c) SEPAX_SIMD_INLINE {
+      const V l = L::hmin(lo[c]), h = L::hmax(hi[c]);
+      zeros = L::mor(zeros, L::mor(L::eq(l, zero), L::eq(h, zero)));
+      out_lo[c] = L::first(l);
+      out_hi[c] = L::first(h);
+    });
+    return L::bits(zeros) == 0;
   }
 
   V lo[3];  ///< per lane, the lowest x, y, z added (+infinity before any)

@@ -3,6 +3,7 @@
 // in float and double (after a warm-up pass has sized the per-thread posing
 // scratch), and a manifold is bit for bit the pre-posed manifold mapped to
 // world by pose_a.
+#include <cmath>
 #include <random>
 
 #include <catch2/catch.hpp>
@@ -58,6 +59,57 @@ TEMPLATE_TEST_CASE("a posed manifold is the pre-posed manifold mapped to world",
     }
   }
   CHECK(with_points > 50);
+}
+
+// A posed manifold reuses its query's B' only at bit-identical poses: after
+// a query of the same shapes at other poses (the scratch holds B at another
+// pose), and at poses one ulp apart, it is still the pre-posed manifold of
+// its own poses, mapped to world.
+TEMPLATE_TEST_CASE("a posed manifold after a query at other poses", "[posed][contact]", float, double) {
+  using T = TestType;
+  std::mt19937_64 rng(1813);
+  const auto shapes = local_shapes<T>(rng);
+  std::vector<PreparedShape<T>> prepared;
+  for (const auto& s : shapes) prepared.emplace_back(s);
+  auto require_mapped = [&](std::size_t i, std::size_t j, const RigidTransform<T>& pa,
+                            const RigidTransform<T>& pb, const SatResult<T>& r, const ContactManifold<T>& m) {
+    const auto bp = posed(shapes[j], relative_pose(pa, pb));
+    SatResult<T> rl = sat::traversal(shapes[i], bp);
+    ManifoldOptions mo;
+    const auto ml = contact_manifold(shapes[i], bp, rl, mo);
+    REQUIRE(r.feature == rl.feature);
+    REQUIRE(m.kind == ml.kind);
+    REQUIRE(m.size() == ml.size());
+    for (int k = 0; k < m.size(); ++k) {
+      const auto& x = m.points[static_cast<std::size_t>(k)];
+      const auto& y = ml.points[static_cast<std::size_t>(k)];
+      REQUIRE(x.id == y.id);
+      REQUIRE(x.separation.num == y.separation.num);
+      const auto wp = pa.apply(y.position);
+      for (int c = 0; c < 3; ++c) REQUIRE(x.position[c] == wp[c]);
+    }
+  };
+  int with_points = 0;
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    for (std::size_t j = 0; j < shapes.size(); ++j) {
+      for (int p = 0; p < 4; ++p) {
+        const auto pa = random_pose<T>(rng, 1.2), pb = random_pose<T>(rng, 1.2);
+        auto pb2 = pb;  // one ulp away in the translation
+        pb2.translation[0] = std::nextafter(pb.translation[0], T(2));
+        const auto r = sat::traversal(prepared[i], pa, prepared[j], pb);
+        const auto r2 = sat::traversal(prepared[i], pa, prepared[j], pb2);
+        // the scratch holds B at (pa, pb2): the manifold at (pa, pb) poses B again
+        const auto m = contact_manifold(prepared[i], pa, prepared[j], pb, r);
+        INFO("shapes " << i << ", " << j << " pose " << p);
+        require_mapped(i, j, pa, pb, r, m);
+        // and now holds B at (pa, pb): the manifold at (pa, pb2) poses it again too
+        const auto m2 = contact_manifold(prepared[i], pa, prepared[j], pb2, r2);
+        require_mapped(i, j, pa, pb2, r2, m2);
+        with_points += m.size() > 0;
+      }
+    }
+  }
+  CHECK(with_points > 20);
 }
 
 TEMPLATE_TEST_CASE("posed queries and manifolds allocate nothing", "[posed][alloc]", float, double) {
