@@ -12,10 +12,14 @@
 // (CGAL_HAS_MPZF undefined) ExactFloat is mpq_class, which is exact too.
 //
 // Both conversions from float and double are exact (a float is a double, a
-// double is a dyadic rational).  Nothing here ever converts back to double.
+// double is a dyadic rational).  Nothing here converts back to double except
+// approx_double and approx_scaled, for reporting values, never for a decision.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstddef>
 
 #include <gmpxx.h>
 
@@ -45,6 +49,34 @@ inline double approx_double(const ExactFloat& x) { return x.get_d(); }
 
 /// The exact value of a float or double.
 inline ExactFloat exact(double d) { return ExactFloat(d); }
+
+/// For reporting only: doubles proportional to the exact values xs, xs 2^-scale for one power of two, the
+/// largest magnitude in [2^-960, 2^960] unless every value is exactly 0.  approx_double alone overflows to
+/// infinity or underflows to 0 where the exact value leaves double's range (an edge pair's cross product of
+/// double edges beyond about 1e154, its squared norm beyond about 1e77); the scaling is exact.
+template <std::size_t N>
+inline std::array<double, N> approx_scaled(std::array<ExactFloat, N> xs, int& scale) {
+  constexpr int kStep = 960;  // a power of two that keeps every double in range once applied
+  std::array<double, N> d{};
+  scale = 0;
+  for (int step = 0; step < 8; ++step) {  // (double inputs: products of at most 2^2100 or 2^-2200)
+    double m = 0;
+    bool nonzero = false;
+    for (std::size_t i = 0; i < N; ++i) {
+      d[i] = approx_double(xs[i]);
+      m = std::max(m, std::fabs(d[i]));
+      nonzero = nonzero || exact_sign(xs[i]) != 0;
+    }
+    int dir = 0;
+    if (!(m <= 0x1p960)) dir = 1;  // (infinity included)
+    if (m < 0x1p-960 && nonzero) dir = -1;
+    if (dir == 0) break;
+    const ExactFloat f = exact(dir > 0 ? 0x1p-960 : 0x1p960);
+    for (auto& x : xs) x = x * f;
+    scale += dir * kStep;
+  }
+  return d;
+}
 
 /// Exact b - a for float/double points.
 /// b - a with coordinates converted to N (exactly: float and double values are

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include <sepax/robust/robust_kernel_state.hpp>
 
@@ -80,13 +81,34 @@ class RobustEdgeAxes : public RobustKernelState<T> {
   }
 
   // The axis from the T cross product c = fl(dA x dB) and its finite ratio
-  // r2 = cross_ratio_squared(dA, dB, c).
+  // r2 = cross_ratio_squared(dA, dB, c).  Where c.c leaves T's safe range
+  // (c finite, as r2 is, but c.c overflowing T: float edges beyond about 4e9)
+  // c is first scaled by a power of two (scaled_unit).
   static EdgeAxis float_edge_axis(const Vec3<T>& c, double r2) {
     EdgeAxis ax;
-    const T len = std::sqrt(squared_norm(c));
-    ax.n = Vec3<T>(c[0] / len, c[1] / len, c[2] / len);
+    const T s = squared_norm(c);
+    if (sepax::detail::safe_squared_norm(s)) [[likely]] {
+      const T len = std::sqrt(s);
+      ax.n = Vec3<T>(c[0] / len, c[1] / len, c[2] / len);
+    } else {
+      ax.n = scaled_unit(c);
+    }
     ax.delta = unit_error_from_ratio(robust::detail::sqrt_d(r2));
     return ax;
+  }
+
+  // c / |c| for a finite c != 0 whose c.c leaves T's safe range: c 2^-e with
+  // its largest |component| in [1, 2), then normalised.  The bound of
+  // unit_error_from_ratio still holds: the scaling is exact except for
+  // components it makes subnormal (an absolute error below 2^-148 against a
+  // largest component >= 1), and the normalisation's roundings are relative,
+  // as in range; that 2^-148 is far inside the bound's (1 + 1e-6) pad.
+  SEPAX_ROBUST_COLD static Vec3<T> scaled_unit(const Vec3<T>& c) {
+    const T m = sepax::detail::max_abs2(c, c);
+    if (!(m > T(0) && m <= std::numeric_limits<T>::max())) return Vec3<T>(T(0), T(0), T(0));
+    const Vec3<T> cs = sepax::detail::scale_pow2(c, sepax::detail::pow2_exponent(m));
+    const T len = std::sqrt(squared_norm(cs));
+    return Vec3<T>(cs[0] / len, cs[1] / len, cs[2] / len);
   }
 
   // The T cross product is zero or not finite: the axis from the exact cross
@@ -97,7 +119,9 @@ class RobustEdgeAxes : public RobustKernelState<T> {
     const auto ce =
         robust::exact_cross(robust::exact_diff(a_.vertex(a_.edge_head(ea)), a_.vertex(a_.edge_tail(ea))),
                             robust::exact_diff(b_.vertex(b_.edge_head(eb)), b_.vertex(b_.edge_tail(eb))));
-    Vec3<double> cd(robust::approx_double(ce[0]), robust::approx_double(ce[1]), robust::approx_double(ce[2]));
+    int scale = 0;  // (the exact cross product may leave double's range: scaled into it)
+    const std::array<double, 3> cs = robust::approx_scaled(ce, scale);
+    Vec3<double> cd(cs[0], cs[1], cs[2]);
     const double m = std::max({std::fabs(cd[0]), std::fabs(cd[1]), std::fabs(cd[2])});
     if (m > 0) cd /= m;
     const double len = cd.norm();

@@ -11,6 +11,7 @@
 // Built on robust_kernel_edge_axes.hpp; robust_kernel_faces.hpp builds on it.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -216,9 +217,15 @@ class RobustValues : public RobustEdgeAxes<T> {
     if (s == sign_of(v)) return Separation<T>{v, T(1)};
     if (s == 0) return Separation<T>{T(0), T(1)};
     const robust::ExactSeparation ex = exact_separation(f);
-    const double num = robust::approx_double(ex.num), n2 = robust::approx_double(ex.norm2);
+    // num / sqrt(norm2) with both scaled into double's range by powers of two
+    // (at large or small scales either leaves it; norm2's scale is a multiple of
+    // 2 x 960, so its square root is a power of two too)
+    int scale_num = 0, scale_n2 = 0;
+    const double num = robust::approx_scaled(std::array<robust::ExactFloat, 1>{ex.num}, scale_num)[0];
+    const double n2 = robust::approx_scaled(std::array<robust::ExactFloat, 1>{ex.norm2}, scale_n2)[0];
     T r = T(0);
-    if (std::isfinite(num) && std::isfinite(n2) && n2 > 0) r = static_cast<T>(num / std::sqrt(n2));
+    if (std::isfinite(num) && std::isfinite(n2) && n2 > 0)
+      r = static_cast<T>(std::ldexp(num / std::sqrt(n2), scale_num - scale_n2 / 2));
     if (sign_of(r) != s)
       r = s > 0 ? std::numeric_limits<T>::denorm_min() : -std::numeric_limits<T>::denorm_min();
     return Separation<T>{r, T(1)};
