@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "clip_polygon.hpp"
@@ -95,13 +96,25 @@ void incident_polygon(const P& I, int inc, int ref_face, Poly& poly) {
 
 /// The side plane of the reference face's half-edge h (tail -> head), nr the
 /// face's normal: normal (v_head - v_tail) x nr, unnormalised, through the
-/// tail; the points with dot(normal, x) - offset <= 0 are kept.
+/// tail; the points with dot(normal, x) - offset <= 0 are kept.  Float and
+/// double: the normal is scaled by the power of two that puts its largest
+/// |component| in [1, 2), so that the offset and the heights stay in range
+/// at every scale the shapes accept (unscaled, |edge| |tail| overflows double
+/// beyond coordinates of about 1e154 and float beyond 1e19, and underflows
+/// on small shapes).  The scaling is exact wherever nothing under- or
+/// overflows, and clipping reads only the heights' signs and ratios, so the
+/// clipped points are those of the unscaled plane there, bit for bit.
 template <class P, class T = typename P::Scalar>
 ClipPlane<T> side_plane(const P& R, int h, const Vec3<T>& nr) {
   const int tail = R.half_edge(h).origin;
   const int head = R.half_edge(R.half_edge(h).next).origin;
   ClipPlane<T> cp;
   cp.normal = cross(Vec3<T>(R.vertex(head) - R.vertex(tail)), nr);
+  if constexpr (std::is_floating_point_v<T>) {
+    const T m = detail::max_abs2(cp.normal, cp.normal);
+    if (m > T(0) && m <= std::numeric_limits<T>::max() && !(m >= T(1) && m < T(2)))
+      cp.normal = detail::scale_pow2(cp.normal, detail::pow2_exponent(m));
+  }
   cp.offset = dot(cp.normal, R.vertex(tail));
   cp.edge = h / 2;
   cp.tail = tail;

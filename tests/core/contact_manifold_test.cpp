@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <type_traits>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -660,4 +662,30 @@ TEMPLATE_TEST_CASE("closest_segment_points: scale-free, and a zero-length segmen
                          vec_from_double<T>({3, 1, 0}), Vec3<T>(T(0), T(0), T(0)), s, t);
   CHECK(s == T(1));
   CHECK(t == T(0));
+}
+
+TEMPLATE_TEST_CASE("box on a box at large scales: the side planes still clip (4 corners)", "[contact][scale]",
+                   float, double) {
+  // The side planes' normals are (edge x face normal): unscaled, their offsets |edge| |tail| overflowed
+  // double beyond coordinates of about 1e154 (and float beyond 1e19), and nothing was clipped.
+  using T = TestType;
+  const std::vector<double> scales = std::is_same_v<T, float> ? std::vector<double>{1.0, 1e12, 1e17, 1e19}
+                                                              : std::vector<double>{1.0, 1e130, 1e160};
+  for (double s : scales) {
+    INFO("scale " << s);
+    const auto a = shapes::box<T>(static_cast<T>(s), static_cast<T>(s), static_cast<T>(s));
+    const auto b = moved(a, Eigen::Matrix3d::Identity(), Vec3<double>(0.5 * s, 0.5 * s, 1.5 * s));
+    const auto m = contact_manifold(a, b);
+    REQUIRE(m.kind == ContactKind::Face);
+    CHECK(m.candidate_points == 4);
+    REQUIRE(m.size() == 4);
+    for (const auto& c : m.points) {
+      // the overlap of the two faces: x and y in {-0.5 s, s}
+      for (int k = 0; k < 2; ++k) {
+        const double x = to_double(c.position[k]) / s;
+        CHECK((std::abs(x + 0.5) < 1e-5 || std::abs(x - 1.0) < 1e-5));
+      }
+      CHECK(to_double(c.separation.num) / s == Approx(-0.5).epsilon(1e-5));
+    }
+  }
 }
