@@ -281,6 +281,33 @@ inline Vec3<double> vec_to_double(const Vec3<T>& v) {
   return Vec3<double>(to_double(v[0]), to_double(v[1]), to_double(v[2]));
 }
 
+/// For reporting only: the direction of v as a unit vector of doubles, the zero vector for v = 0.  Types
+/// that do not normalise (exact rationals) are first scaled by powers of two, exactly, until their nearest
+/// doubles are in range, so that axes of very large or very small shapes (an edge pair's cross product
+/// beyond about 1e154) come out unit too.  Float and double axes are unit already: returned as computed.
+template <Number T>
+inline Vec3<double> unit_as_double(Vec3<T> v) {
+  Vec3<double> d = vec_to_double(v);
+  if constexpr (!number_traits<T>::normalizes) {
+    const bool nonzero = !(v[0] == T(0) && v[1] == T(0) && v[2] == T(0));
+    for (int step = 0; step < 8 && nonzero; ++step) {  // (exact products of doubles: at most 8 steps)
+      const double m = std::max({std::fabs(d[0]), std::fabs(d[1]), std::fabs(d[2])});
+      int dir = 0;
+      if (!(m <= 0x1p960)) dir = 1;  // (infinity included)
+      if (m < 0x1p-960) dir = -1;
+      if (dir == 0) break;
+      const T f = from_double<T>(dir > 0 ? 0x1p-960 : 0x1p960);
+      v = Vec3<T>(T(v[0] * f), T(v[1] * f), T(v[2] * f));
+      d = vec_to_double(v);
+    }
+    const double m = std::max({std::fabs(d[0]), std::fabs(d[1]), std::fabs(d[2])});
+    if (m > 0 && std::isfinite(m)) d /= m;
+    const double len = d.norm();
+    if (len > 0 && std::isfinite(len)) d /= len;
+  }
+  return d;
+}
+
 /// Convert from a floating type U (float or double) to any T.  float -> double
 /// and double -> rational are exact; double -> float rounds to nearest.
 /// Conversions out of an exact type are not offered: they would round.

@@ -82,14 +82,8 @@ std::array<double, 3> to_array(const Vec3<T>& v) {
 /// axes are unit already and are returned as computed).
 template <Number T>
 std::array<double, 3> unit_array(const Vec3<T>& v) {
-  std::array<double, 3> a = to_array(v);
-  if constexpr (!number_traits<T>::normalizes) {
-    const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    if (n > 0) {
-      for (double& c : a) c /= n;
-    }
-  }
-  return a;
+  const Vec3<double> u = unit_as_double(v);
+  return {u[0], u[1], u[2]};
 }
 
 /// How exact numbers are written into QueryOut (exact.cpp: mpq's "p/q").

@@ -153,12 +153,7 @@ RunOutcome run_typed(const io::ShapeData& sa, const io::ShapeData& sb, const Pos
   out.feature = r.feature;
   out.stats = r.stats;
   out.early_out = r.early_out;
-  Vec3<double> n = vec_to_double(r.axis);
-  if constexpr (!number_traits<T>::normalizes) {
-    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (len > 0 && std::isfinite(len)) n = n / len;
-  }
-  out.normal = n;
+  out.normal = unit_as_double(r.axis);
   out.a = counts_of(a);
   out.b = counts_of(b);
   out.manifold = manifold_out(contact_manifold(a, b, r), pair.origin);

@@ -11,6 +11,8 @@
 #include <random>
 #include <sstream>
 #include <tuple>
+#include <type_traits>
+#include <vector>
 
 #include <sepax/robust/number_types.hpp>
 #include <sepax/robust/robust_kernel.hpp>
@@ -905,4 +907,48 @@ TEST_CASE("robust edge-pair prefilter: certainly below, checked exactly", "[robu
   INFO("clearly below " << clearly_below << ", said below " << clearly_said);
   CHECK(clearly_below > 1000);
   CHECK(clearly_said * 10 >= clearly_below * 9);
+}
+
+TEMPLATE_TEST_CASE("robust edge-pair axes and separations at large scales: unit and as plain's",
+                   "[robust][kernel]", float, double) {
+  // An edge pair's T cross product can be finite while its squared norm overflows T (float edges beyond
+  // about 4e9); beyond that the cross product itself overflows (double beyond about 1e154) and the
+  // axis comes from the exact cross product.  The axis must stay a unit vector and the separation the
+  // plain kernel's (whose axis is scale-safe) within rounding, at every scale.
+  using T = TestType;
+  const std::vector<double> scales =
+      std::is_same_v<T, float> ? std::vector<double>{1.0, 3e9, 1e12, 1e19, 1e20, 1e-20}
+                               : std::vector<double>{1.0, 1e100, 1e160, 1e200, 1e300, 1e-100, 1e-200};
+  const Eigen::Matrix3d rot = Eigen::Quaterniond(0.9, 0.1, 0.2, 0.3).normalized().toRotationMatrix();
+  for (double s : scales) {
+    INFO("scale " << s);
+    const auto a = shapes::box<T>(static_cast<T>(s), static_cast<T>(s), static_cast<T>(s));
+    std::vector<Vec3<T>> vb;
+    for (const auto& v : a.vertices()) {
+      const Vec3<double> w = rot * vec_to_double(v) + Vec3<double>(s, s, 0);
+      vb.push_back(Vec3<T>(static_cast<T>(w[0]), static_cast<T>(w[1]), static_cast<T>(w[2])));
+    }
+    const auto b = a.with_vertices(std::move(vb));
+    const auto p = sat::gauss_map(a, b);
+    for (const auto& r : {sat::gauss_map<policy::Robust>(a, b), sat::brute_force<policy::Robust>(a, b)}) {
+      CHECK(r.feature == p.feature);
+      const Vec3<double> n = vec_to_double(r.axis);
+      CHECK(n.norm() == Approx(1.0).epsilon(1e-5));
+      CHECK(n.dot(vec_to_double(p.axis)) == Approx(1.0).epsilon(1e-5));
+      CHECK(r.separation_as_double() / s == Approx(p.separation_as_double() / s).epsilon(1e-5));
+    }
+  }
+}
+
+TEST_CASE("unit_as_double: exact axes of very large and very small shapes come out unit",
+          "[robust][report]") {
+  for (double s : {1.0, 1e200, 1e300, 1e-200, 1e-300}) {
+    INFO("scale " << s);
+    const Vec3<mpq_class> v(mpq_class(3 * s) * mpq_class(s), mpq_class(4 * s) * mpq_class(s), mpq_class(0));
+    const Vec3<double> u = unit_as_double(v);
+    CHECK(u[0] == Approx(0.6));
+    CHECK(u[1] == Approx(0.8));
+    CHECK(u[2] == 0.0);
+  }
+  CHECK(unit_as_double(Vec3<mpq_class>(mpq_class(0), mpq_class(0), mpq_class(0))) == Vec3<double>(0, 0, 0));
 }
