@@ -175,18 +175,19 @@ int reduce_points(const ConvexPolyhedron<float>& a, const BP& bp, const Poly& po
   SmallVector<ContactPoint<float>, 16> all;
   SmallVector<Vec3<float>, 16> pos;
   SmallVector<float, 16> keys;
+  const int unit = sepax::detail::manifold_scale_exponent(a, bp);  // (face_contact's units)
   auto add = [&](const ContactPoint<float>& c) {
     all.push_back(c);
-    pos.push_back(c.position);
-    keys.push_back(c.separation.num);
+    pos.push_back(sepax::detail::in_manifold_units(c.position, unit));
+    keys.push_back(sepax::detail::in_manifold_units(c.separation.num, unit));
   };
   for (const ContactPoint<float>& c : pts) add(c);
   ContactPoint<float> c;
   for (std::size_t i = next; i < poly.size(); ++i) {
     if (sepax::detail::face_point(poly[i], rp, n2, ref_is_a, margin, c)) add(c);
   }
-  const float area_tol = refresh_detail::extent_tolerance(a, bp, Tolerances<float>::kContactArea, 3);
-  const float key_tol = refresh_detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 1);
+  const float area_tol = refresh_detail::extent_tolerance(a, bp, Tolerances<float>::kContactArea, 3, unit);
+  const float key_tol = refresh_detail::extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 1, unit);
   SmallVector<int, 4> keep;
   reduce_contact_points_into(pos, keys, rp.normal, key_tol, area_tol, keep);
   count = 0;
@@ -221,7 +222,8 @@ Refresh refresh_on(const ConvexPolyhedron<float>& a, const RigidTransform<float>
   Poly* pp = &buf0;
   Poly* tp = &buf1;
   incident_polygon(I, inc, ref_face, *pp);
-  const float weld2 = extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 2);
+  const int unit = sepax::detail::manifold_scale_exponent(a, bp);  // (face_contact's units)
+  const float weld2 = extent_tolerance(a, bp, Tolerances<float>::kContactWeld, 2, unit);
   const bool cached = ref_is_a && kept.face == ref_face;
   bool welded = false;
   int h = R.face(ref_face).edge;
@@ -231,7 +233,7 @@ Refresh refresh_on(const ConvexPolyhedron<float>& a, const RigidTransform<float>
         (pp->size() > 32 ? !clip_polygon_if_cut(*pp, cp, inc, *tp) : !clip_if_cut(*pp, cp, inc, *tp)))
       continue;
     if (!welded) clip_polygon(*pp, cp, inc, *tp);
-    weld_polygon(*tp, weld2);
+    weld_polygon(*tp, weld2, unit);
     welded = true;
     std::swap(pp, tp);
   }

@@ -17,6 +17,7 @@
 #include "small_vector.hpp"
 
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include "contact_feature.hpp"
@@ -162,17 +163,13 @@ bool clip_polygon_if_cut(const Poly& in, const ClipPlane<T>& plane, int incident
   return true;
 }
 
-/// Remove consecutive vertices (cyclically) closer than sqrt(tol2) to the
-/// vertex kept before them.  The first vertex of a run is kept, with the label
-/// of the last one (the segment leaving the run).  tol2 = 0 removes exact
-/// duplicates only (the exact-type case).
-template <Number T, class Poly>
-void weld_polygon(Poly& poly, const T& tol2) {
+namespace clip_detail {
+
+/// weld_polygon's body with close(x, y) its test of two vertices.
+template <class Poly, class Close>
+void weld_with(Poly& poly, Close&& close) {
   if (poly.size() < 2) return;
-  auto close = [&](const ClipVertex<T>& x, const ClipVertex<T>& y) {
-    return !(squared_norm(Vec3<T>(x.point - y.point)) > tol2);
-  };
-  auto take_label = [](ClipVertex<T>& to, const ClipVertex<T>& from) {
+  auto take_label = [](auto& to, const auto& from) {
     to.next_edge = from.next_edge;
     to.next_on_side = from.next_on_side;
     to.side_tail = from.side_tail;
@@ -190,6 +187,30 @@ void weld_polygon(Poly& poly, const T& tol2) {
   }
   while (w > 1 && close(poly[0], poly[w - 1])) --w;
   poly.resize(w);
+}
+
+}  // namespace clip_detail
+
+/// Remove consecutive vertices (cyclically) closer than sqrt(tol2) to the
+/// vertex kept before them.  The first vertex of a run is kept, with the label
+/// of the last one (the segment leaving the run).  tol2 = 0 removes exact
+/// duplicates only (the exact-type case).  Float and double with
+/// scale_exponent k != 0: differences are measured in units of 2^k, tol2
+/// given in those units (manifold_scale_exponent: squares in range at every
+/// scale).
+template <Number T, class Poly>
+void weld_polygon(Poly& poly, const T& tol2, int scale_exponent = 0) {
+  if constexpr (std::is_floating_point_v<T>) {
+    if (scale_exponent != 0) {
+      clip_detail::weld_with(poly, [&](const ClipVertex<T>& x, const ClipVertex<T>& y) {
+        return !(squared_norm(detail::scale_pow2(Vec3<T>(x.point - y.point), scale_exponent)) > tol2);
+      });
+      return;
+    }
+  }
+  clip_detail::weld_with(poly, [&](const ClipVertex<T>& x, const ClipVertex<T>& y) {
+    return !(squared_norm(Vec3<T>(x.point - y.point)) > tol2);
+  });
 }
 
 }  // namespace sepax

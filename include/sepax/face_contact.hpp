@@ -98,21 +98,22 @@ void incident_polygon(const P& I, int inc, int ref_face, Poly& poly) {
 /// face's normal: normal (v_head - v_tail) x nr, unnormalised, through the
 /// tail; the points with dot(normal, x) - offset <= 0 are kept.  Float and
 /// double: the normal is scaled by the power of two that puts its largest
-/// |component| in [1, 2), so that the offset and the heights stay in range
-/// at every scale the shapes accept (unscaled, |edge| |tail| overflows double
-/// beyond coordinates of about 1e154 and float beyond 1e19, and underflows
-/// on small shapes).  The scaling is exact wherever nothing under- or
-/// overflows, and clipping reads only the heights' signs and ratios, so the
-/// clipped points are those of the unscaled plane there, bit for bit.
+/// |component| in [1, 2), so that the offset and every height, at most
+/// 2 sqrt(3) |x| for coordinates |x| <= max/16, stay in range at every scale
+/// the shapes accept (unscaled, |edge| |tail| overflows double beyond
+/// coordinates of about 1e154 and float beyond 1e19).  The scaling is exact
+/// wherever nothing under- or overflows, and clipping reads only the heights'
+/// signs and ratios, so the clipped points are those of the unscaled plane
+/// there, bit for bit.
 template <class P, class T = typename P::Scalar>
-ClipPlane<T> side_plane(const P& R, int h, const Vec3<T>& nr) {
+[[gnu::always_inline]] inline ClipPlane<T> side_plane(const P& R, int h, const Vec3<T>& nr) {
   const int tail = R.half_edge(h).origin;
   const int head = R.half_edge(R.half_edge(h).next).origin;
   ClipPlane<T> cp;
   cp.normal = cross(Vec3<T>(R.vertex(head) - R.vertex(tail)), nr);
   if constexpr (std::is_floating_point_v<T>) {
-    const T m = detail::max_abs2(cp.normal, cp.normal);
-    if (m > T(0) && m <= std::numeric_limits<T>::max() && !(m >= T(1) && m < T(2)))
+    const T m = std::max(std::max(std::abs(cp.normal[0]), std::abs(cp.normal[1])), std::abs(cp.normal[2]));
+    if (!(m >= T(1) && m < T(2)) && m > T(0) && m <= std::numeric_limits<T>::max())
       cp.normal = detail::scale_pow2(cp.normal, detail::pow2_exponent(m));
   }
   cp.offset = dot(cp.normal, R.vertex(tail));
@@ -184,7 +185,8 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   // farther apart than the weld tolerance), so once the polygon has been
   // welded such a step is skipped: the same points and ids (a large
   // reference face, such as a ramp under a box, has many such planes).
-  const T weld2 = extent_tolerance(a, b, Tolerances<T>::kContactWeld, 2);
+  const int unit = manifold_scale_exponent(a, b);  // (lengths compared in units of 2^unit)
+  const T weld2 = extent_tolerance(a, b, Tolerances<T>::kContactWeld, 2, unit);
   {
     bool welded = number_traits<T>::is_exact;  // exact T: no welding at all
     int h = R.face(ref_face).edge;
@@ -201,7 +203,7 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
       }
       if (!welded) clip_polygon(poly, cp, inc, tmp);
       if constexpr (!number_traits<T>::is_exact) {
-        weld_polygon(tmp, weld2);
+        weld_polygon(tmp, weld2, unit);
         welded = true;
       }
       if (opt.record_steps) {
@@ -245,11 +247,11 @@ void face_contact(const ConvexPolyhedron<T>& a, const ConvexPolyhedron<T>& b, bo
   pos.reserve(pts.size());
   keys.reserve(pts.size());
   for (const auto& c : pts) {
-    pos.push_back(c.position);
-    keys.push_back(c.separation.num);
+    pos.push_back(in_manifold_units(c.position, unit));
+    keys.push_back(in_manifold_units(c.separation.num, unit));
   }
-  const T area_tol = extent_tolerance(a, b, Tolerances<T>::kContactArea, 3);
-  const T key_tol = extent_tolerance(a, b, Tolerances<T>::kContactWeld, 1);
+  const T area_tol = extent_tolerance(a, b, Tolerances<T>::kContactArea, 3, unit);
+  const T key_tol = extent_tolerance(a, b, Tolerances<T>::kContactWeld, 1, unit);
   SmallVector<int, 4> keep;
   reduce_contact_points_into(pos, keys, nr, key_tol, area_tol, keep);
   for (int i : keep) m.points.push_back(pts[static_cast<std::size_t>(i)]);

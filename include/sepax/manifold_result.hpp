@@ -12,9 +12,12 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "contact_feature.hpp"
@@ -175,15 +178,59 @@ inline void check_index(int i, int count, const char* what) {
   }
 }
 
-/// A tolerance relative to the smaller of the two shapes' extents (0 for exact
-/// T): power 1 a length rel x ext, 2 its square, 3 an area rel x ext^2.
+/// Float and double: while the smaller extent is within 2^+-kManifoldUnscaledBand<T> of 1 (float
+/// 2^+-32, double 2^+-256) the manifold's weld and reduction tests use lengths as they are: squared
+/// lengths, areas and their tolerances stay far inside T's range.  Beyond it they are compared in units
+/// of a power of two near the extent (manifold_scale_exponent).
+template <class T>
+inline constexpr int kManifoldUnscaledBand = std::numeric_limits<T>::max_exponent / 4;
+
+/// The power of two the manifold's length tests are made in (float and double): 0 while the smaller
+/// extent is within 2^+-kManifoldUnscaledBand<T> of 1, else k with 2^k <= that extent < 2^(k+1):
+/// lengths, squared lengths and areas are then compared as multiples of 2^k, 4^k (in_manifold_units), so
+/// that they stay in range at every scale the shapes accept.  Scaling by a power of two is exact in
+/// range: where 0 would do, k gives the same decisions.  0 for exact T.
 template <Number T, class P = ConvexPolyhedron<T>>
-T extent_tolerance(const ConvexPolyhedron<T>& a, const P& b, double rel, int power) {
+int manifold_scale_exponent(const ConvexPolyhedron<T>& a, const P& b) {
   if constexpr (number_traits<T>::is_exact) {
-    (void)a, (void)b, (void)rel, (void)power;
-    return T(0);
+    (void)a, (void)b;
+    return 0;
   } else {
     const double ext = std::min(a.extent(), b.extent());
+    if (!(ext > 0) || !std::isfinite(ext)) return 0;
+    constexpr int kBand = kManifoldUnscaledBand<T>;
+    const int e = pow2_exponent(ext);
+    return e >= -kBand && e <= kBand ? 0 : e;
+  }
+}
+
+/// v 2^-k (manifold_scale_exponent's k): v itself for k = 0 and exact T.
+template <Number T>
+Vec3<T> in_manifold_units(const Vec3<T>& v, int k) {
+  if constexpr (std::is_floating_point_v<T>) {
+    if (k != 0) return scale_pow2(v, k);
+  }
+  return v;
+}
+/// x 2^-k (manifold_scale_exponent's k): x itself for k = 0 and exact T.
+template <Number T>
+T in_manifold_units(const T& x, int k) {
+  if constexpr (std::is_floating_point_v<T>) {
+    if (k != 0) return scale_value_pow2(x, k);
+  }
+  return x;
+}
+
+/// A tolerance relative to the smaller of the two shapes' extents (0 for exact
+/// T): power 1 a length rel x ext, 2 its square, 3 an area rel x ext^2; in
+/// units of 2^scale_exponent (manifold_scale_exponent).
+template <Number T, class P = ConvexPolyhedron<T>>
+T extent_tolerance(const ConvexPolyhedron<T>& a, const P& b, double rel, int power, int scale_exponent = 0) {
+  if constexpr (number_traits<T>::is_exact) {
+    (void)a, (void)b, (void)rel, (void)power, (void)scale_exponent;
+    return T(0);
+  } else {
+    const double ext = std::ldexp(std::min(a.extent(), b.extent()), -scale_exponent);
     return static_cast<T>(power == 1 ? rel * ext : (power == 2 ? rel * ext * rel * ext : rel * ext * ext));
   }
 }

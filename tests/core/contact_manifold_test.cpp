@@ -664,13 +664,15 @@ TEMPLATE_TEST_CASE("closest_segment_points: scale-free, and a zero-length segmen
   CHECK(t == T(0));
 }
 
-TEMPLATE_TEST_CASE("box on a box at large scales: the side planes still clip (4 corners)", "[contact][scale]",
-                   float, double) {
-  // The side planes' normals are (edge x face normal): unscaled, their offsets |edge| |tail| overflowed
-  // double beyond coordinates of about 1e154 (and float beyond 1e19), and nothing was clipped.
+TEMPLATE_TEST_CASE("box on a box at every scale: clipped to the 4 corners, octagons reduced to 4",
+                   "[contact][scale]", float, double) {
+  // Unscaled, a side plane's offset |edge| |tail| overflowed double beyond coordinates of about 1e154
+  // (float beyond 1e19), and the weld and reduction tolerances (squared lengths, areas) overflowed or
+  // underflowed beyond about 1e+-150 (float 1e+-19): nothing was clipped, or every point welded into one.
   using T = TestType;
-  const std::vector<double> scales = std::is_same_v<T, float> ? std::vector<double>{1.0, 1e12, 1e17, 1e19}
-                                                              : std::vector<double>{1.0, 1e130, 1e160};
+  const std::vector<double> scales =
+      std::is_same_v<T, float> ? std::vector<double>{1.0, 1e12, 1e19, 1e25, 1e30, 1e-20, 1e-25, 1e-30}
+                               : std::vector<double>{1.0, 1e130, 1e160, 1e200, 1e300, 1e-160, 1e-200};
   for (double s : scales) {
     INFO("scale " << s);
     const auto a = shapes::box<T>(static_cast<T>(s), static_cast<T>(s), static_cast<T>(s));
@@ -687,5 +689,28 @@ TEMPLATE_TEST_CASE("box on a box at large scales: the side planes still clip (4 
       }
       CHECK(to_double(c.separation.num) / s == Approx(-0.5).epsilon(1e-5));
     }
+    // a box turned by 45 degrees on A: an octagon, reduced to 4 of its corners as at scale 1
+    const auto c =
+        moved(shapes::box<T>(static_cast<T>(0.9 * s), static_cast<T>(0.9 * s), static_cast<T>(0.5 * s)),
+              rot({0, 0, 1}, std::numbers::pi / 4), {0, 0, 1.4 * s});
+    ManifoldOptions all;
+    all.reduce = false;
+    const auto full = contact_manifold(a, c, sat::gauss_map(a, c), all);
+    CHECK(full.size() == 8);
+    const auto red = contact_manifold(a, c);
+    CHECK(red.candidate_points == 8);
+    REQUIRE(red.size() == 4);
+    std::vector<int> kept;
+    for (const auto& p : red.points) {
+      for (int k = 0; k < static_cast<int>(full.size()); ++k)
+        if (full.points[static_cast<std::size_t>(k)].id == p.id) kept.push_back(k);
+    }
+    CHECK(kept.size() == 4);
+    const auto one_a = shapes::box<T>(T(1), T(1), T(1));
+    const auto one_c =
+        moved(shapes::box<T>(T(0.9), T(0.9), T(0.5)), rot({0, 0, 1}, std::numbers::pi / 4), {0, 0, 1.4});
+    const auto red1 = contact_manifold(one_a, one_c);
+    REQUIRE(red1.size() == 4);
+    for (std::size_t k = 0; k < 4; ++k) CHECK(red.points[k].id == red1.points[k].id);
   }
 }
