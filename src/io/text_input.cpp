@@ -20,6 +20,8 @@ bool LineReader::next(std::string& line) {
     return false;
   }
   ++line_;
+  // a UTF-8 byte order mark before the first line (editors on Windows write one) is not content
+  if (line_ == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
   if (!line.empty() && line.back() == '\r') line.pop_back();
   if (line.find('\0') != std::string::npos) fail("NUL byte in text (is this a binary file?)");
   return true;

@@ -35,7 +35,8 @@ class TextPlace {
 };
 
 /// Reads lines, keeping the 1-based number of the last line read.  Strips a
-/// trailing '\r' (CRLF files) and rejects NUL bytes (binary data).
+/// UTF-8 byte order mark before the first line and a trailing '\r' (CRLF
+/// files), and rejects NUL bytes (binary data).
 class LineReader : public TextPlace {
  public:
   LineReader(std::istream& in, std::string file) : TextPlace(std::move(file)), in_(in) {}

@@ -44,6 +44,9 @@ TEST_CASE("obj: index forms, negative indices and ignored statements all give th
       // w = 1 and vertex colours; CRLF
       "v -1 -1 -1 1\r\nv 1 -1 -1 1.0\r\nv 1 1 -1 0.5 0.5 0.5\r\nv -1 1 -1\r\nv -1 -1 1\r\nv 1 -1 1\r\n"
       "v 1 1 1\r\nv -1 1 1\r\nf 1 4 3 2\r\nf 5 6 7 8\r\nf 1 2 6 5\r\nf 3 4 8 7\r\nf 1 5 8 4\r\nf 2 3 7 6\r\n",
+      // a UTF-8 byte order mark before the first vertex (it is not part of the 'v')
+      "\xEF\xBB\xBF" + std::string(kVerts) +
+          "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 3 4 8 7\nf 1 5 8 4\nf 2 3 7 6\n",
   };
   for (const auto& text : variants) {
     INFO(text);
