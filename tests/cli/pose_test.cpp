@@ -59,5 +59,14 @@ TEST_CASE("pose: bad values are InvalidInput", "[pose]") {
   CHECK_THROWS_WITH(Pose::make(Vec3<double>(nan, 0, 0)), Catch::Contains("translation is not finite"));
   CHECK_THROWS_WITH(Pose::make(Vec3<double>(0, 0, 0), {1, inf, 0, 0}),
                     Catch::Contains("quaternion is not finite"));
-  CHECK_THROWS_AS(Pose::make(Vec3<double>(0, 0, 0), {1e300, 1e300, 0, 0}), InvalidInput);
+}
+
+TEST_CASE("pose: quaternions of any finite size are normalised (squares out of double's range)", "[pose]") {
+  const Pose unit = Pose::make(Vec3<double>(1, 2, 3), {1, 1, 0, 0});
+  for (double s : {1e300, 1e-170, 1e-300, 5e-324}) {
+    INFO("scale " << s);
+    const Pose p = Pose::make(Vec3<double>(1, 2, 3), {s, s, 0, 0});
+    for (int i = 0; i < 4; ++i) CHECK(p.rotation[i] == Approx(unit.rotation[i]).margin(1e-15));
+    CHECK((p.apply(Vec3<double>(0.5, -1, 2)) - unit.apply(Vec3<double>(0.5, -1, 2))).norm() < 1e-12);
+  }
 }
