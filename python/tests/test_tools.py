@@ -67,6 +67,9 @@ def test_svg_of_a_double_sided_triangle_and_separated_shapes():
     box, tri = sepax.box(1, 1, 0.5), sepax.polygon([[0, 0, 0], [0.7, 0.1, 0], [0.2, 0.6, 0]])
     root = parse_svg(sepax.render_svg(box, tri, None, [0.1, -0.2, 0.5], title="triangle <on> box & face"))
     assert [t.text for t in root.iter(SVG + "text")][0] == "triangle <on> box & face"  # escaped, parsed back
+    # control characters are not allowed in XML: each becomes U+FFFD, and the SVG still parses
+    root = parse_svg(sepax.render_svg(box, tri, None, [0.1, -0.2, 0.5], title="a\x01b\x1fc"))
+    assert [t.text for t in root.iter(SVG + "text")][0] == "a\ufffdb\ufffdc"
     faces = elements(root, "polygon", fill=COLOR_B)
     assert len(faces) == 2 and all(len(f.get("points").split()) == 3 for f in faces)  # both sides drawn
     assert len(elements(root, "circle", fill=COLOR_CONTACT)) == len(sepax.query(box, tri, None, [0.1, -0.2, 0.5]).manifold)

@@ -70,7 +70,13 @@ std::string escape(const std::string& s) {
         out += "&quot;";
         break;
       default:
-        out += c;
+        // control characters other than tab, newline and carriage return are not allowed in XML 1.0,
+        // not even as references: each becomes U+FFFD, the replacement character
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+          out += "\xEF\xBF\xBD";
+        } else {
+          out += c;
+        }
     }
   }
   return out;

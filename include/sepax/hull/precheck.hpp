@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <string>
 #include <utility>
+#include <type_traits>
 #include <vector>
 
 #include "../convex_polyhedron.hpp"
@@ -304,8 +305,8 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
         ErrorCode::BadScale,
         "convex_hull: the points are up to " + std::to_string(max_abs) + " from the origin, too far for " +
             std::string(number_traits<T>::name) + " to resolve a shape of extent " + std::to_string(ext) +
-            " within the validation tolerance; use convex_hull_local (the hull in its own frame), "
-            "or double");
+            " within the validation tolerance; use convex_hull_local (the hull in its own frame)" +
+            (std::is_same_v<T, float> ? ", or double" : ""));
   }
   std::sort(reject.begin(), reject.end());
   reject.erase(std::unique(reject.begin(), reject.end()), reject.end());
