@@ -917,7 +917,7 @@ TEMPLATE_TEST_CASE("robust edge-pair axes and separations at large scales: unit 
   // plain kernel's (whose axis is scale-safe) within rounding, at every scale.
   using T = TestType;
   const std::vector<double> scales =
-      std::is_same_v<T, float> ? std::vector<double>{1.0, 3e9, 1e12, 1e19, 1e20, 1e-20}
+      std::is_same_v<T, float> ? std::vector<double>{1.0, 3e9, 1e12, 1e19, 1e20, 1e30, 1e-20, 1e-30}
                                : std::vector<double>{1.0, 1e100, 1e160, 1e200, 1e300, 1e-100, 1e-200};
   const Eigen::Matrix3d rot = Eigen::Quaterniond(0.9, 0.1, 0.2, 0.3).normalized().toRotationMatrix();
   for (double s : scales) {
