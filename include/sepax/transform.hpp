@@ -4,8 +4,9 @@
 // Every product is written out with a fixed evaluation order (sepax::dot on
 // rows), so exact number types never meet an Eigen reduction, and float runs
 // are reproducible.  Where rotations come from:
-//   * from_quaternion(w, x, y, z): any non-zero quaternion, normalised in
-//     double; the matrix is computed in double and then converted to T.  For
+//   * from_quaternion(w, x, y, z): any non-zero finite quaternion, normalised
+//     in double (scaled by a power of two first where its squares leave
+//     double's range); the matrix is computed in double and then converted to T.  For
 //     float/double it is orthogonal up to rounding.  For exact T the entries
 //     are the exact values of those rounded doubles, so R is NOT exactly
 //     orthogonal (R^T R differs from I by ~1e-16): the moved shape is a very
@@ -18,6 +19,7 @@
 //     every integer involved is exact in a double).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -94,10 +96,17 @@ struct RigidTransform {
     if (!std::isfinite(w) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
       throw InvalidInput(ErrorCode::NonFinite, "quaternion has a non-finite component");
     }
-    const double n = std::sqrt(w * w + x * x + y * y + z * z);
-    if (!(n > 0) || !std::isfinite(n)) {
-      throw InvalidInput(ErrorCode::BadScale, "quaternion has zero (or overflowing) length");
+    double n2 = w * w + x * x + y * y + z * z;
+    if (!(n2 >= 0x1p-900 && n2 <= 0x1p900)) {
+      // the squares leave double's range (components beyond about 1e135 or below 1e-135): scaled by a
+      // power of two first, exactly; the same direction
+      const double m = std::max(std::max(std::fabs(w), std::fabs(x)), std::max(std::fabs(y), std::fabs(z)));
+      if (!(m > 0)) throw InvalidInput(ErrorCode::BadScale, "quaternion has zero length");
+      const int e = std::ilogb(m);
+      w = std::ldexp(w, -e), x = std::ldexp(x, -e), y = std::ldexp(y, -e), z = std::ldexp(z, -e);
+      n2 = w * w + x * x + y * y + z * z;
     }
+    const double n = std::sqrt(n2);
     w /= n;
     x /= n;
     y /= n;

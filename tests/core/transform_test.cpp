@@ -117,6 +117,19 @@ TEMPLATE_TEST_CASE("transformed polyhedra: planes follow, hull commutes with mot
   CHECK(hm.face_count() == h.face_count());
 }
 
+TEMPLATE_TEST_CASE("quaternions of any finite non-zero size give the same rotation", "[transform]", float,
+                   double) {
+  using T = TestType;
+  const auto unit = RigidTransform<T>::from_quaternion(0.9, 0.1, -0.3, 0.2);
+  for (double s : {1e300, 1e150, 1e-150, 1e-300}) {
+    INFO("scale " << s);
+    const auto r = RigidTransform<T>::from_quaternion(0.9 * s, 0.1 * s, -0.3 * s, 0.2 * s);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        CHECK(to_double(r.rotation(i, j)) == Approx(to_double(unit.rotation(i, j))).margin(1e-6));
+  }
+}
+
 TEMPLATE_TEST_CASE("bad quaternions are InvalidInput", "[transform][errors]", float, double) {
   using T = TestType;
   auto code = [](auto&& make) {
