@@ -262,6 +262,15 @@ def test_batch_pose_count_mismatch():
         sepax.query_batch(sepax.cube(), sepax.cube(), None, np.zeros((3, 4, 3)))
 
 
+def test_batch_of_no_poses_gives_empty_columns():
+    for number in ("float", "double", "exact"):
+        r = sepax.query_batch(sepax.cube(), sepax.cube(), np.zeros((0, 4, 4)), None, number=number, manifold=True)
+        assert r.overlap.shape == (0,) and r.separation.shape == (0,) and r.axis.shape == (0, 3)
+        assert r.contact_points.shape == (0, 4, 3)
+    with pytest.raises(ValueError, match="each must hold K or 1"):
+        sepax.query_batch(sepax.cube(), sepax.cube(), np.zeros((0, 4, 4)), random_poses(np.random.default_rng(2), 2, 1))
+
+
 # ---- the cache ---------------------------------------------------------------------------
 
 
