@@ -666,9 +666,10 @@ TEMPLATE_TEST_CASE("closest_segment_points: scale-free, and a zero-length segmen
 
 TEMPLATE_TEST_CASE("box on a box at every scale: clipped to the 4 corners, octagons reduced to 4",
                    "[contact][scale]", float, double) {
-  // Unscaled, a side plane's offset |edge| |tail| overflowed double beyond coordinates of about 1e154
-  // (float beyond 1e19), and the weld and reduction tolerances (squared lengths, areas) overflowed or
-  // underflowed beyond about 1e+-150 (float 1e+-19): nothing was clipped, or every point welded into one.
+  // Unscaled, a side plane's offset |edge| |tail| overflows double beyond coordinates of about 1e154
+  // (float beyond 1e19), and the weld and reduction tolerances (squared lengths, areas) over- or
+  // underflow beyond about 1e+-150 (float 1e+-19): nothing would be clipped, or every point welded into
+  // one.  The manifold must be the one of scale 1, scaled.
   using T = TestType;
   const std::vector<double> scales =
       std::is_same_v<T, float> ? std::vector<double>{1.0, 1e12, 1e19, 1e25, 1e30, 1e-20, 1e-25, 1e-30}
