@@ -420,8 +420,8 @@ BatchResult query_batch(Shape& a, Shape& b, const py::object& poses_a, const py:
   const std::vector<PoseD> pa = poses_from(poses_a, "poses_a", true);
   const std::vector<PoseD> pb = poses_from(poses_b, "poses_b", true);
   // K: the larger count, or 0 when either side holds no pose (an empty batch: empty columns)
-  const std::size_t count = pa.empty() || pb.empty() ? 0 : std::max(pa.size(), pb.size());
-  BatchPoses poses{pa.data(), pa.size(), pb.data(), pb.size(), count};
+  const std::size_t rows = pa.empty() || pb.empty() ? 0 : std::max(pa.size(), pb.size());
+  BatchPoses poses{pa.data(), pa.size(), pb.data(), pb.size(), rows};
   if ((pa.size() != 1 && pa.size() != poses.k) || (pb.size() != 1 && pb.size() != poses.k)) {
     usage_error("poses_a and poses_b hold " + std::to_string(pa.size()) + " and " +
                 std::to_string(pb.size()) + " poses: each must hold K or 1");
