@@ -20,6 +20,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -33,6 +34,29 @@
 #include "vec3.hpp"
 
 namespace sepax {
+
+/// q / |q| in double for a finite quaternion (w, x, y, z); false (q unchanged) when it is zero.  Where
+/// its squares leave double's range (components beyond about 1e135 or below 1e-135) it is scaled by a
+/// power of two first, exactly: the same direction.  |q|^2 is summed left to right.
+inline bool normalize_quaternion(std::array<double, 4>& q) {
+  double n2 = 0, largest = 0;
+  for (const double c : q) {
+    n2 += c * c;
+    largest = std::max(largest, std::fabs(c));
+  }
+  if (!(largest > 0)) return false;
+  if (!(n2 >= 0x1p-900 && n2 <= 0x1p900)) {
+    const int e = std::ilogb(largest);
+    n2 = 0;
+    for (double& c : q) {
+      c = std::ldexp(c, -e);
+      n2 += c * c;
+    }
+  }
+  const double n = std::sqrt(n2);
+  for (double& c : q) c /= n;
+  return true;
+}
 
 template <Number T>
 struct RigidTransform {
@@ -96,21 +120,9 @@ struct RigidTransform {
     if (!std::isfinite(w) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
       throw InvalidInput(ErrorCode::NonFinite, "quaternion has a non-finite component");
     }
-    double n2 = w * w + x * x + y * y + z * z;
-    if (!(n2 >= 0x1p-900 && n2 <= 0x1p900)) {
-      // the squares leave double's range (components beyond about 1e135 or below 1e-135): scaled by a
-      // power of two first, exactly; the same direction
-      const double m = std::max(std::max(std::fabs(w), std::fabs(x)), std::max(std::fabs(y), std::fabs(z)));
-      if (!(m > 0)) throw InvalidInput(ErrorCode::BadScale, "quaternion has zero length");
-      const int e = std::ilogb(m);
-      w = std::ldexp(w, -e), x = std::ldexp(x, -e), y = std::ldexp(y, -e), z = std::ldexp(z, -e);
-      n2 = w * w + x * x + y * y + z * z;
-    }
-    const double n = std::sqrt(n2);
-    w /= n;
-    x /= n;
-    y /= n;
-    z /= n;
+    std::array<double, 4> q{w, x, y, z};
+    if (!normalize_quaternion(q)) throw InvalidInput(ErrorCode::BadScale, "quaternion has zero length");
+    w = q[0], x = q[1], y = q[2], z = q[3];
     const double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
                             {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
                             {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
