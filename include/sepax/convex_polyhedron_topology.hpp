@@ -48,6 +48,7 @@ inline void ConvexPolyhedron<T>::build_topology(const std::vector<std::vector<in
   topo.half_edges.reserve(out.size() + 1);  // (a valid surface has exactly out.size())
   topo.faces.reserve(faces.size());
   std::vector<int> loop_edges;  // (face f's half-edges; one buffer for every face)
+  std::vector<int> face_mark(static_cast<std::size_t>(nv), 0);  // (a repeated vertex in one loop)
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const auto& loop = faces[f];
     auto fname = [f] { return "face " + std::to_string(f); };  // (for messages)
@@ -57,11 +58,11 @@ inline void ConvexPolyhedron<T>::build_topology(const std::vector<std::vector<in
         fail(ErrorCode::BadIndex, fname() + " refers to vertex " + std::to_string(loop[i]) +
                                       ", but there are only " + std::to_string(nv) + " vertices");
       }
-      for (std::size_t j = 0; j < i; ++j) {
-        if (loop[i] == loop[j]) {
-          fail(ErrorCode::DegenerateFace, fname() + " uses vertex " + std::to_string(loop[i]) + " twice");
-        }
-      }
+      // (linear in the loop: a vertex's mark is the last face that used it, plus one)
+      int& mark = face_mark[static_cast<std::size_t>(loop[i])];
+      if (mark == static_cast<int>(f) + 1)
+        fail(ErrorCode::DegenerateFace, fname() + " uses vertex " + std::to_string(loop[i]) + " twice");
+      mark = static_cast<int>(f) + 1;
     }
     FaceLoop fl;
     fl.count = static_cast<int>(loop.size());

@@ -45,7 +45,9 @@ ConvexPolyhedron<T> tetrahedron(double s = 1.0) {
 }
 
 /// Regular n-sided prism (a cylinder approximation) around the z axis:
-/// circumradius r, half height h.  n >= 3.
+/// circumradius r, half height h.  n >= 3.  For n so large that neighbouring
+/// sides round to one plane in T (about 6.7e5 sides in double) validation
+/// refuses it with ErrorCode::NotConvex ("adjacent and coplanar").
 template <Number T>
 ConvexPolyhedron<T> prism(int n, double r = 1.0, double h = 1.0) {
   if (n < 3)

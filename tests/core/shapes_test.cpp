@@ -73,6 +73,15 @@ TEMPLATE_TEST_CASE("prism(n)", "[shapes]", float, double) {
   CHECK_THROWS_AS(shapes::prism<T>(2), InvalidInput);
 }
 
+TEST_CASE("prism(n) with many sides: each cap is one face of n vertices", "[shapes]") {
+  // (validation checks each face loop for a repeated vertex in time linear in the loop)
+  const int n = 100000;
+  const auto p = shapes::prism<double>(n);
+  check_counts(p, 2 * n, 3 * n, n + 2);
+  CHECK(p.face(n).count == n);
+  CHECK(p.face(n + 1).count == n);
+}
+
 TEMPLATE_TEST_CASE("regular_polygon and triangle are double-sided with exactly opposite normals", "[shapes]",
                    float, double) {
   using T = TestType;
