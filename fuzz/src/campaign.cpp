@@ -239,19 +239,28 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
 
   if (replay) {
+    // A directory contributes its .case files, or with --bytes every regular
+    // file (libFuzzer names its corpus files by hash, without extension); a
+    // directory that contributes nothing is an error, not "0 cases checked".
     std::vector<std::string> paths;
+    int status = 0;
     for (const auto& f : files) {
       if (std::filesystem::is_directory(f)) {
         std::vector<std::string> in_dir;
         for (const auto& e : std::filesystem::directory_iterator(f))
-          if (e.path().extension() == ".case") in_dir.push_back(e.path().string());
+          if (e.is_regular_file() && (bytes || e.path().extension() == ".case"))
+            in_dir.push_back(e.path().string());
+        if (in_dir.empty()) {
+          std::cerr << "sepax fuzz: the directory '" << f << "' holds no "
+                    << (bytes ? "files" : ".case files") << " to replay\n";
+          status = 3;
+        }
         std::sort(in_dir.begin(), in_dir.end());
         paths.insert(paths.end(), in_dir.begin(), in_dir.end());
       } else {
         paths.push_back(f);
       }
     }
-    int status = 0;
     for (const auto& p : paths) {
       FuzzCase c;
       try {

@@ -124,6 +124,11 @@ TEST_CASE("exit status: fuzz gives 0, 1, 2 and 3", "[exit][fuzz]") {
            {{"fuzz", "--seed", "1.5"}, 2, "", "sepax fuzz: --seed: '1.5' is not a non-negative integer"},
            {{"fuzz", "--frobnicate"}, 2, "", "unknown option '--frobnicate'"},
            {{"fuzz", "--replay", "/nonexistent/x.case", "--quiet"}, 3, "", "/nonexistent/x.case"},
+           // a directory without a case file is an error, not "0 cases checked"
+           {{"fuzz", "--replay", std::string(SEPAX_SOURCE_DIR) + "/docs", "--quiet"},
+            3,
+            "",
+            "/docs' holds no .case files to replay"},
        })
     check_program(e);
 }

@@ -2,6 +2,7 @@
 // (and of `sepax audit`, whose parser shares command_line.hpp).
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -88,4 +89,19 @@ TEST_CASE("fuzz: exit status 1 for a finding, 3 for an unreadable replay file", 
   CHECK(missing.status == 3);
   const std::string bad = test::temp_file("bad.case", "not a case file\n");
   CHECK(fuzz({"--replay", bad, "--quiet"}).status == 3);
+}
+
+TEST_CASE("fuzz: a replay directory replays its cases, and one without any is an error", "[fuzz][cli]") {
+  // (the campaign's messages go to the process's stderr: the program's runs check them, exit_status_test)
+  const auto empty = test::temp_dir().path / "no_cases";
+  std::filesystem::create_directories(empty);
+  test::temp_dir().write("no_cases/notes.txt", "not a case\n");
+  CHECK(fuzz({"--replay", empty.string(), "--quiet"}).status == 3);
+
+  // libFuzzer corpus files have no extension: with --bytes every file counts
+  const auto corpus = test::temp_dir().path / "libfuzzer_corpus";
+  std::filesystem::create_directories(corpus);
+  test::temp_dir().write("libfuzzer_corpus/3f2a9c", std::string(64, '\x5a'));
+  CHECK(fuzz({"--replay", corpus.string(), "--bytes", "--quiet"}).status == 0);
+  CHECK(fuzz({"--replay", empty.string(), "--bytes", "--quiet"}).status != 3);  // notes.txt is an input
 }
