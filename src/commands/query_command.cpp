@@ -139,8 +139,16 @@ int run_info(const std::vector<std::string>& args, std::ostream& out, std::ostre
     try {
       std::optional<io::ShapeData> read;
       if (!hull) {
-        if (const auto listing = io::object_listing(shapes[0], &read); listing && !json) {
-          out << *listing;
+        if (const auto listing = io::object_listing(shapes[0], &read)) {
+          if (json) {
+            json::Value objects = json::Value::array();
+            for (const auto& e : listing->objects)
+              objects.push_back(json::Value{{"name", e.name}, {"vertices", e.vertices}, {"faces", e.faces}});
+            out << json::write(json::Value{{"shape", listing->spec}, {"objects", std::move(objects)}})
+                << "\n";
+          } else {
+            out << listing->text();
+          }
           return kExitOk;
         }
       }

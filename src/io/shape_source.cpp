@@ -217,7 +217,7 @@ ShapeData load_shape(const std::string& spec, std::istream& standard_input) {
 
 ShapeData load_shape(const std::string& spec) { return load_shape(spec, std::cin); }
 
-std::optional<std::string> object_listing(const std::string& spec, std::optional<ShapeData>* single) {
+std::optional<ObjectListing> object_listing(const std::string& spec, std::optional<ShapeData>* single) {
   if (lower_extension(spec) != ".obj" || spec.starts_with("hull:") || is_builtin_shape(spec))
     return std::nullopt;
   auto in = open_input(spec);
@@ -226,13 +226,19 @@ std::optional<std::string> object_listing(const std::string& spec, std::optional
     if (single) *single = std::move(objects[0].shape);
     return std::nullopt;
   }
+  ObjectListing listing{spec, {}};
+  for (const auto& o : objects)
+    listing.objects.push_back({o.name, o.shape.vertices.size(), o.shape.faces.size()});
+  return listing;
+}
+
+std::string ObjectListing::text() const {
   std::string s = spec + ": " + std::to_string(objects.size()) + " objects (select one with " + spec +
                   "#NAME or " + spec + "#K)\n";
   for (std::size_t k = 0; k < objects.size(); ++k) {
-    const ShapeData& d = objects[k].shape;
-    s += "  " + std::to_string(k) + "  " + (objects[k].name.empty() ? "(no name)" : objects[k].name) + ": " +
-         std::to_string(d.vertices.size()) + " vertices, " + std::to_string(d.faces.size()) +
-         " faces in the file\n";
+    const Entry& e = objects[k];
+    s += "  " + std::to_string(k) + "  " + (e.name.empty() ? "(no name)" : e.name) + ": " +
+         std::to_string(e.vertices) + " vertices, " + std::to_string(e.faces) + " faces in the file\n";
   }
   return s;
 }

@@ -20,6 +20,7 @@
 #include <istream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "io/shape_data.hpp"
 
@@ -36,12 +37,27 @@ ShapeData builtin_shape(const std::string& spec);
 ShapeData load_shape(const std::string& spec, std::istream& standard_input);
 ShapeData load_shape(const std::string& spec);
 
-/// For an OBJ file of several objects, one line per object (index, name,
-/// counts) for `sepax info`; nullopt for any other shape argument.  When
-/// spec is an OBJ file of one object and `single` is given, that object is
-/// stored there, so that the file is read once.
-std::optional<std::string> object_listing(const std::string& spec,
-                                          std::optional<ShapeData>* single = nullptr);
+/// The objects of an OBJ file of several objects, as `sepax info` lists them.
+struct ObjectListing {
+  /// One object of the file: its name ("" when it has none) and its size in the file.
+  struct Entry {
+    std::string name;          ///< the `o` (else `g`) name; "" for faces before any
+    std::size_t vertices = 0;  ///< vertices its faces use
+    std::size_t faces = 0;     ///< faces as written in the file
+  };
+  std::string spec;            ///< the shape argument as given
+  std::vector<Entry> objects;  ///< in file order; the index is the `FILE.obj#K` selector
+
+  /// A header line and one line per object (index, name, counts).
+  std::string text() const;
+};
+
+/// For an OBJ file of several objects, its objects (for `sepax info`);
+/// nullopt for any other shape argument.  When spec is an OBJ file of one
+/// object and `single` is given, that object is stored there, so that the
+/// file is read once.
+std::optional<ObjectListing> object_listing(const std::string& spec,
+                                            std::optional<ShapeData>* single = nullptr);
 
 /// One line per built-in, for --help.
 const char* builtin_shapes_help();

@@ -80,6 +80,12 @@ TEST_CASE("exit status: info gives 0, 2 and 3", "[exit]") {
            {{"info", "cube", "--robust"}, 2, "", "sepax info: unknown option '--robust'"},
            {{"info", "box:0,1,1"}, 3, "", "sepax info: error: shape 'box:0,1,1'"},
            {{"info", kData + "malformed.off"}, 3, "", "malformed.off:5: "},
+           // a file of several objects lists them, as text or as JSON
+           {{"info", kData + "vhacd_pieces.obj"}, 0, "2  convex_2: 14 vertices, 24 faces in the file", ""},
+           {{"info", kData + "vhacd_pieces.obj", "--json"},
+            0,
+            "\"objects\":[{\"name\":\"convex_0\",\"vertices\":8,\"faces\":12}",
+            ""},
        })
     check_program(e);
 }

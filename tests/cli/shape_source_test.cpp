@@ -146,7 +146,11 @@ TEST_CASE("shape source: OBJ objects by #NAME or #K, hull:, and - for standard i
   CHECK_THROWS_WITH(io::load_shape(dir.path.string() + "/x#1.off"), Catch::Contains("x#1.off: cannot open"));
   const auto listing = io::object_listing(two);
   REQUIRE(listing);
-  CHECK_THAT(*listing, Catch::Contains("2 objects") && Catch::Contains("1  b piece: 4 vertices, 4 faces"));
+  CHECK_THAT(listing->text(),
+             Catch::Contains("2 objects") && Catch::Contains("1  b piece: 4 vertices, 4 faces"));
+  REQUIRE(listing->objects.size() == 2);
+  CHECK(listing->objects[1].name == "b piece");
+  CHECK(listing->objects[1].faces == 4);
   CHECK_FALSE(io::object_listing(two + "#a"));
   CHECK_FALSE(io::object_listing("cube"));
 
