@@ -273,7 +273,9 @@ class ConvexPolyhedron {
   /// Same topology with new vertex positions (for rigid motions: the caller
   /// guarantees the new positions are a rigid image of the old ones).
   /// Throws InvalidInput: NonFinite (a NaN or infinite coordinate), BadScale
-  /// (float/double: coordinates beyond the range check_range() documents).
+  /// (float/double: coordinates beyond the range check_range() documents;
+  /// any T: a face whose plane triple is collinear at the new coordinates,
+  /// check_plane_normals).
   ConvexPolyhedron with_vertices(std::vector<Vec3<T>> vertices) const {
     ConvexPolyhedron p = *this;
     p.vertices_ = std::move(vertices);
@@ -297,7 +299,7 @@ class ConvexPolyhedron {
   /// planes (the robust kernel asks for it on every posed query).  The topology is src's, shared
   /// (detail::SharedTopology), never copied.  Reuses the capacity
   /// of *this: no allocation once it has held a shape at least as large.
-  /// Throws as with_vertices does (NonFinite, BadScale).
+  /// Throws as with_vertices does (NonFinite, BadScale, a face without a plane).
   template <class Point>
   void assign_rigid_image(const ConvexPolyhedron& src, Point&& point) {
     assign_rigid_vertices(src, point);
@@ -519,7 +521,7 @@ class ConvexPolyhedron {
   // lanes, bounds and normal_conditioning() from the vertices and topology.
   void compute_derived(bool eager_conditioning = false, bool with_bounds = true);
   struct PlanesInRange {
-    bool normals_bounded = false;  // every normal component |x| <= 2^60
+    bool normals_bounded = false;  // every normal non-zero, every component |x| <= 2^60
     bool offsets_finite = false;
   };
   PlanesInRange compute_planes(bool eager_conditioning);
@@ -573,6 +575,7 @@ class ConvexPolyhedron {
   bool coordinates_in_range() const;
   double triple_aspect(int f) const;
   void check_new_range();
+  void check_plane_normals() const;
   void local_convexity_witnesses(int f, std::vector<int>& out) const;
   bool vertex_windings_once() const;
   void validate_geometry(double scan_pairs = kConvexityScanPairs);

@@ -80,12 +80,16 @@ inline typename ConvexPolyhedron<T>::PlanesInRange ConvexPolyhedron<T>::compute_
 
 // compute_planes' range tests of one plane (float/double): ANDs into nb
 // whether every normal component is within 2^60 in magnitude (false for NaN)
-// and into of whether the offset is finite.
+// and the normal is not 0 (a plane triple that rounded to collinear points:
+// check_plane_normals), and into of whether the offset is finite.  (Only
+// the faces plane_groups leaves come here: its lanes' normals are non-zero,
+// their c.c being above 2^40 min.)
 template <Number T>
 [[gnu::always_inline]] inline void ConvexPolyhedron<T>::planes_in_range(const Plane<T>& pl, bool& nb,
                                                                         bool& of) {
   const T big = T(0x1p60);
   nb &= std::abs(pl.normal[0]) <= big && std::abs(pl.normal[1]) <= big && std::abs(pl.normal[2]) <= big;
+  nb &= pl.normal[0] != T(0) || pl.normal[1] != T(0) || pl.normal[2] != T(0);
   of &= std::abs(pl.offset) <= std::numeric_limits<T>::max();
 }
 

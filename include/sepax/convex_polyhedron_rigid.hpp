@@ -128,8 +128,12 @@ inline void ConvexPolyhedron<T>::finish_rigid_image(bool edge_lanes) {
   if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
     const PlanesInRange pr = compute_planes(true);
     // extent and coordinates were checked with the vertices; a plane that
-    // is not finite is refused by check_range (which passes otherwise)
-    if (!(pr.normals_bounded && pr.offsets_finite)) check_range();
+    // is not finite is refused by check_range, one without a normal by
+    // check_plane_normals (both pass otherwise)
+    if (!(pr.normals_bounded && pr.offsets_finite)) {
+      check_range();
+      check_plane_normals();
+    }
     const bool edges_bounded = edge_lanes ? derive_rigid_edges<true>() : derive_rigid_edges<false>();
     // compute_lanes' bound: normals, directions and vertices within 2^60
     // (max_abs_ is the largest |vertex coordinate|, exactly)

@@ -122,6 +122,33 @@ inline void ConvexPolyhedron<T>::check_new_range() {
     if (!(extent_ > 0)) fail(ErrorCode::BadScale, "all vertices coincide: the shape has no extent");
     check_range();
   }
+  check_plane_normals();
+}
+
+// convert_from, with_vertices and rigid images: the new coordinates need not
+// keep a face's plane triple apart.  A small shape placed far from the origin
+// of its frame (or converted to a narrower type) has its coordinates rounded
+// to a spacing near its own size; when a triple rounds to three collinear
+// points the face has no plane (normal 0, in every number type: exact T
+// takes the coordinates as given), and every SAT value on it would be
+// meaningless.  Refused here, naming the face, the extent and how far the
+// coordinates reach.  (A validated shape never has such a face: validation
+// refuses a plane triangle without area.)
+template <Number T>
+inline void ConvexPolyhedron<T>::check_plane_normals() const {
+  for (int f = 0; f < face_count(); ++f) {
+    const Vec3<T>& n = planes_[static_cast<std::size_t>(f)].normal;
+    if (n[0] == T(0) && n[1] == T(0) && n[2] == T(0)) [[unlikely]] {
+      const auto& t = face(f).plane_vertices;
+      fail(ErrorCode::BadScale,
+           "face " + std::to_string(f) + " has no plane at these coordinates: its plane vertices " +
+               std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+               " are collinear in " + std::string(number_traits<T>::name) + " (extent " + num_str(extent_) +
+               ", coordinates up to " + num_str(max_abs_) +
+               "): the shape is too small for its distance from the origin in this type; place it "
+               "nearer the origin of its frame or use a wider number type");
+    }
+  }
 }
 
 // The local convexity certificate of a large closed shape (validate_geometry

@@ -69,6 +69,20 @@ TEST_CASE("exit status: query gives 0, 1 (a batch line failed), 2 and 3", "[exit
             "{\"error\":\"",
             "malformed.off:5: bad number 'oops'"},
            {{"query", "--batch", "/nonexistent/lines.jsonl"}, 3, "", "/nonexistent/lines.jsonl: cannot open"},
+           // a unit cube posed 1e19 away: its coordinates round to a spacing of 2048 in double, so its
+           // faces have no plane, in double and in the exact run on the same coordinates
+           {{"query", "box:1e20,1e20,1e20", "cube", "--pose", "0", "1e19", "0"},
+            3,
+            "",
+            "cube: face 0 has no plane at these coordinates"},
+           {{"query", "box:1e20,1e20,1e20", "cube", "--pose", "0", "1e19", "0", "--number", "exact"},
+            3,
+            "",
+            "cube: face 0 has no plane at these coordinates"},
+           {{"query", "triangle", "cube", "--pose", "1e8", "-1e8", "0", "--number", "float", "--robust"},
+            3,
+            "",
+            "collinear in float"},
        })
     check_program(e);
 }

@@ -70,6 +70,37 @@ TEST_CASE("a posed result is in world coordinates", "[posed]") {
 // lanes_bounded() included, must be bit for bit the same without them, and a
 // later request with them must complete the full image (pass 1: after a
 // check's partial image at the same pose).
+TEMPLATE_TEST_CASE("a shape too small for where it is placed in T is refused, posed or not", "[posed]", float,
+                   double) {
+  using T = TestType;
+  // A unit cube 2^27 (float) or 2^57 (double) from the origin: there T's spacing is 16 or 32, every x
+  // coordinate rounds to one value and every y coordinate to another, so the side faces' plane
+  // triples are collinear.  Nearer (2^10), the same pose gives a separated pair.
+  const double far = std::is_same_v<T, float> ? 0x1p27 : 0x1p57;
+  const PreparedShape<T> a(shapes::cube<T>(1.0)), b(shapes::cube<T>(1.0));
+  auto refused = [](auto&& call) {
+    try {
+      call();
+    } catch (const InvalidInput& e) {
+      CHECK(e.code() == ErrorCode::BadScale);
+      CHECK_THAT(e.what(), Catch::Contains("has no plane at these coordinates"));
+      return true;
+    }
+    return false;
+  };
+  for (const double d : {far, -far}) {
+    INFO("d = " << d);
+    const auto pose = RigidTransform<T>::translation_by(Vec3<T>(T(d), T(-d), T(0)));
+    CHECK(refused([&] { (void)sat::traversal(a, RigidTransform<T>{}, b, pose); }));
+    CHECK(refused([&] { (void)sat::brute_force(a, RigidTransform<T>{}, b, pose); }));
+    std::vector<Vec3<T>> moved;
+    for (const auto& v : b.polyhedron().vertices()) moved.push_back(Vec3<T>(v + Vec3<T>(T(d), T(-d), T(0))));
+    CHECK(refused([&] { (void)b.polyhedron().with_vertices(moved); }));
+  }
+  const auto near = RigidTransform<T>::translation_by(Vec3<T>(T(1024), T(-1024), T(0)));
+  CHECK_FALSE(sat::traversal(a, RigidTransform<T>{}, b, near).overlap);
+}
+
 TEMPLATE_TEST_CASE("posing derives bit for bit what with_vertices derives", "[posed]", float, double) {
   using T = TestType;
   std::mt19937_64 rng(1802);
