@@ -248,7 +248,7 @@ Value number(double d) {
 }
 
 std::string write(const Value& v) {
-  return v.dump(-1, ' ', false, nlohmann::detail::error_handler_t::strict);
+  return v.dump(-1, ' ', false, nlohmann::detail::error_handler_t::replace);
 }
 
 std::string number_text(double d) {
@@ -259,7 +259,9 @@ std::string number_text(double d) {
   return std::string(buf, r.ptr);
 }
 
-std::string quote(std::string_view s) { return Value(std::string(s)).dump(); }
+std::string quote(std::string_view s) {
+  return Value(std::string(s)).dump(-1, ' ', false, nlohmann::detail::error_handler_t::replace);
+}
 
 const char* kind_name(const Value& v) {
   switch (v.type()) {

@@ -60,14 +60,16 @@ Value parse(std::string_view text, const ParseOptions& options = {});
 /// that it is written without ".0"; null when d is not finite.
 Value number(double d);
 
-/// Compact JSON text of v.
+/// Compact JSON text of v.  A string that is not valid UTF-8 (a file name,
+/// a batch line's id, a message quoting input) is written with U+FFFD for
+/// each invalid byte: the output is always valid JSON.
 std::string write(const Value& v);
 
 /// The shortest decimal text that reads back as d ("null" when not finite),
 /// for text output.
 std::string number_text(double d);
 
-/// s as a quoted, escaped JSON string.
+/// s as a quoted, escaped JSON string (invalid UTF-8 as write() writes it).
 std::string quote(std::string_view s);
 
 /// "null", "boolean", "number", "string", "array" or "object".

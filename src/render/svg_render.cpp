@@ -53,9 +53,37 @@ std::string fmt(double v) {
   return buf;
 }
 
+// The length of the well-formed UTF-8 sequence at s[i] (RFC 3629, table 3-7 of the Unicode
+// standard), or 0 when the byte there does not start one.
+std::size_t utf8_sequence(const std::string& s, std::size_t i) {
+  const auto at = [&](std::size_t k) { return i + k < s.size() ? static_cast<unsigned char>(s[i + k]) : 0u; };
+  const unsigned b = at(0);
+  const auto cont = [&](std::size_t k, unsigned lo = 0x80, unsigned hi = 0xBF) {
+    return at(k) >= lo && at(k) <= hi;
+  };
+  if (b < 0x80) return 1;
+  if (b >= 0xC2 && b <= 0xDF) return cont(1) ? 2 : 0;
+  if (b >= 0xE0 && b <= 0xEF) {
+    const bool second = b == 0xE0 ? cont(1, 0xA0) : b == 0xED ? cont(1, 0x80, 0x9F) : cont(1);
+    return second && cont(2) ? 3 : 0;
+  }
+  if (b >= 0xF0 && b <= 0xF4) {
+    const bool second = b == 0xF0 ? cont(1, 0x90) : b == 0xF4 ? cont(1, 0x80, 0x8F) : cont(1);
+    return second && cont(2) && cont(3) ? 4 : 0;
+  }
+  return 0;
+}
+
 std::string escape(const std::string& s) {
   std::string out;
-  for (char c : s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (const std::size_t n = utf8_sequence(s, i); n != 1) {
+      // a byte that is not UTF-8 would make the file ill-formed XML: U+FFFD, the replacement character
+      out += n == 0 ? std::string("\xEF\xBF\xBD") : s.substr(i, n);
+      if (n > 1) i += n - 1;
+      continue;
+    }
     switch (c) {
       case '<':
         out += "&lt;";

@@ -6,6 +6,7 @@
 // naming the problem; none may crash or hang.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -87,6 +88,39 @@ TEST_CASE("bad input: binary garbage", "[bad_input]") {
   }
   // garbage on standard input
   check_run({"query", "-", "cube"}, 3, "standard input: ", test::temp_file("garbage.bin", garbage(4096, 4)));
+}
+
+TEST_CASE("bad input: bytes that are not UTF-8 in names, ids and batch lines", "[bad_input]") {
+  // JSON output stays valid JSON and SVG stays well-formed XML: each invalid byte is U+FFFD
+  const std::string replacement = "\xEF\xBF\xBD";
+  const std::string off = test::temp_file("\xff.off",
+                                          "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                                          "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  auto no_raw_byte = [](const std::string& s) { return s.find('\xff') == std::string::npos; };
+  test::ProgramRun r = test::run_program({"info", off, "--json"}, "", 60);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("{\"shape\":\"") && Catch::Contains(replacement + ".off\""));
+  CHECK(no_raw_byte(r.out));
+  r = test::run_program({"render", off, "cube", "--svg", "-"}, "", 60);
+  CHECK(r.status == 0);
+  CHECK(no_raw_byte(r.out));
+  r = test::run_program({"query", "box:1,\xff,1", "cube", "--json"}, "", 60);
+  CHECK(r.status == 3);
+  CHECK_THAT(r.out, Catch::StartsWith("{\"error\":\"shape 'box:1," + replacement));
+  // a batch: a bad id, a line of one bad byte, then a good line that is still answered
+  const std::string tri = "\"a\":[[0,0,0],[1,0,0],[0,1,0]],\"b\":[[2,0,0],[3,0,0],[2,1,0]]";
+  const std::string batch =
+      test::temp_file("utf8.jsonl", "{\"id\":\"\xff\"," + tri + "}\n\xff\n{\"id\":2," + tri + "}\n");
+  for (const char* jobs : {"1", "2"}) {
+    INFO("--jobs " << jobs);
+    r = test::run_program({"query", "--batch", batch, "--jobs", jobs}, "", 60);
+    REQUIRE(r.signal == 0);
+    CHECK(r.status == 1);
+    CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 3);
+    CHECK_THAT(r.out,
+               Catch::Contains("line 2: invalid JSON") && Catch::Contains("{\"id\":2,\"overlap\":false"));
+    CHECK(no_raw_byte(r.out));
+  }
 }
 
 TEST_CASE("bad input: NaN, infinite and out-of-range coordinates", "[bad_input]") {
