@@ -222,18 +222,20 @@ CLI::Option* CommandLine::add_unsigned(const std::string& name, std::uint64_t& t
           "");
 }
 
-CLI::Option* CommandLine::add_unsigned(const std::string& name, int& target, const std::string& desc) {
+CLI::Option* CommandLine::add_unsigned(const std::string& name, int& target, const std::string& desc,
+                                       int max) {
   describe_value(name, "a non-negative integer");
-  constexpr auto kMax = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
   return app
       .add_option_function<std::string>(
           name, [&target](const std::string& v) { target = static_cast<int>(*parse_unsigned(v)); }, desc)
       ->type_name("N")
       ->check(
-          [](const std::string& v) {
+          [max](const std::string& v) {
             const auto x = parse_unsigned(v);
             if (!x) return "'" + v + "' is not a non-negative integer";
-            return *x <= kMax ? std::string() : "'" + v + "' is too large";
+            if (*x <= static_cast<std::uint64_t>(max)) return std::string();
+            return "'" + v + "' is too large" +
+                   (max < std::numeric_limits<int>::max() ? " (at most " + std::to_string(max) + ")" : "");
           },
           "");
 }

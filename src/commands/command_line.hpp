@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <ostream>
@@ -73,7 +74,9 @@ class CommandLine {
   /// A non-negative decimal integer: digits only ("1.5", "-1" and "0x10" are
   /// usage errors), within the range of the target.
   CLI::Option* add_unsigned(const std::string& name, std::uint64_t& target, const std::string& desc);
-  CLI::Option* add_unsigned(const std::string& name, int& target, const std::string& desc);
+  /// An integer in [0, max] (max defaults to INT_MAX).
+  CLI::Option* add_unsigned(const std::string& name, int& target, const std::string& desc,
+                            int max = std::numeric_limits<int>::max());
   /// A finite number >= 0.
   CLI::Option* add_nonnegative(const std::string& name, double& target, const std::string& desc);
 
@@ -85,6 +88,10 @@ class CommandLine {
   std::string pose_text_;  // "tx,ty,tz[,qw,qx,qy,qz]"
   bool has_pose_ = false;
 };
+
+/// The most worker threads --jobs asks for (query --batch, fuzz): far more
+/// than any machine's cores, few enough that starting them cannot fail.
+inline constexpr int kMaxJobs = 1024;
 
 /// An input that cannot be read, parsed or built: prints "sepax VERB: error:
 /// what" to err and, when json, {"error": what} to out; returns 3.

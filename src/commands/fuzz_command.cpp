@@ -49,7 +49,9 @@ int run_fuzz(const std::vector<std::string>& args, std::ostream& out, std::ostre
           },
           "");
   cl.describe_value("--families", "a comma-separated list of families");
-  cl.add_unsigned("--jobs", o.jobs, "parallel workers (default 0: all cores)");
+  cl.add_unsigned("--jobs", o.jobs,
+                  "parallel workers (default 0: all cores; at most " + std::to_string(kMaxJobs) + ")",
+                  kMaxJobs);
   app.add_option("--out", o.out_dir, "directory for reproducers (default fuzz-reproducers)")
       ->type_name("DIR");
   cl.describe_value("--out", "a directory");

@@ -83,7 +83,9 @@ int run_query(const std::vector<std::string>& args, std::istream& in, std::ostre
   app.add_flag("--manifold,!--no-manifold", manifold,
                "with --batch: the contact manifold in every answer (default on)");
   cl.add_unsigned("--jobs", jobs,
-                  "with --batch: threads answering lines (default 0: all cores; same output)");
+                  "with --batch: threads answering lines (default 0: all cores; at most " +
+                      std::to_string(kMaxJobs) + "; same output)",
+                  kMaxJobs);
   if (const auto status = cl.parse(args, out, err)) return *status;
   try {
     const std::optional<Pose> pose = cl.pose();
