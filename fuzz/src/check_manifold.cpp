@@ -188,7 +188,8 @@ double poly_dist(const V& x, const std::vector<V>& poly) {
 
 // ---------------------------------------------------------------------------
 // Clip replay: the clip of contact_manifold.hpp's face_contact, step by step,
-// with the bounds (M2)-(M4) propagated for float T (ignored for exact T).
+// with the bounds (M2)-(M4) propagated for float T (ignored for exact T);
+// welded as the library welds, squared lengths in units of 2^unit.
 template <class T>
 struct Replay {
   std::vector<ClipVertex<T>> poly;  // the clipped incident polygon (float: after the welds)
@@ -202,7 +203,7 @@ struct Replay {
 
 template <class T>
 Replay<T> replay_clip(const ConvexPolyhedron<T>& R, const ConvexPolyhedron<T>& I, int ref_face, int inc,
-                      double dn, const T& weld2) {
+                      double dn, const T& weld2, int unit) {
   constexpr bool fl = !number_traits<T>::is_exact;
   const double u = fl ? number_traits<T>::unit_roundoff : 0.0;
   const double g1 = gamma(1, u), g2 = gamma(2, u), g3 = gamma(3, u);
@@ -285,7 +286,7 @@ Replay<T> replay_clip(const ConvexPolyhedron<T>& R, const ConvexPolyhedron<T>& I
       // weld_polygon keeps the first vertex of each run of near-duplicates
       // (with its bound); replay it to know which bounds survive.
       std::vector<ClipVertex<T>> before = tmp;
-      weld_polygon(tmp, weld2);
+      weld_polygon(tmp, weld2, unit);
       std::vector<double> ew;
       std::size_t j = 0;
       for (const auto& v : tmp) {
@@ -296,7 +297,7 @@ Replay<T> replay_clip(const ConvexPolyhedron<T>& R, const ConvexPolyhedron<T>& I
       }
       etmp = ew;
     } else {
-      (void)weld2;  // exact: contact_manifold does not weld
+      (void)weld2, (void)unit;  // exact: contact_manifold does not weld
     }
     poly.swap(tmp);
     ep.swap(etmp);
@@ -556,10 +557,12 @@ struct FloatCheck {
     const int inc = mf.incident_face;
     // -- replay both clips --
     const double ext = std::min(A.extent(), B.extent());
-    const F weld2 = detail::extent_tolerance(A, B, Tolerances<F>::kContactWeld, 2);
-    const double weld = std::sqrt(double(weld2));
-    const Replay<F> rpf = replay_clip(R, I, rf, inc, dn, weld2);
-    const Replay<Q> rpe = replay_clip(Re, Ie, rf, inc, 0.0, Q(0));
+    // (the library's weld: squared lengths in units of 2^unit, in range at every scale)
+    const int unit = detail::manifold_scale_exponent(A, B);
+    const F weld2 = detail::extent_tolerance(A, B, Tolerances<F>::kContactWeld, 2, unit);
+    const double weld = std::ldexp(std::sqrt(double(weld2)), unit);  // (a length)
+    const Replay<F> rpf = replay_clip(R, I, rf, inc, dn, weld2, unit);
+    const Replay<Q> rpe = replay_clip(Re, Ie, rf, inc, 0.0, Q(0), 0);
     // A cut of a segment lying within its bound of a side plane has no finite
     // bound (M4): counted, so that vacuous comparisons are visible.
     if (rpf.infinite || !std::isfinite(rpf.rho))

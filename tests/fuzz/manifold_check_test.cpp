@@ -121,6 +121,29 @@ TEST_CASE("edge contact: agrees, and a float depth off by more than its bound is
   }
 }
 
+TEST_CASE("face contacts at every scale: the clip replay welds as contact_manifold does",
+          "[fuzz][manifold]") {
+  // (a squared weld tolerance leaves float's range beyond about 1e19 and below 1e-19: contact_manifold
+  // and the replay compare squared lengths in units of a power of two near the extent)
+  for (const double s : {1e-30, 1e-20, 1.0, 1e24, 1e30}) {
+    INFO("scale " << s);
+    const auto a = shapes::box<float>(s, s, s);
+    std::vector<Vec3<float>> moved;
+    for (const auto& v : a.vertices())
+      moved.push_back(Vec3<float>(v + Vec3<float>(float(1.9 * s), float(0.3 * s), 0)));
+    const auto b = a.with_vertices(moved);
+    const auto aq = ConvexPolyhedron<Q>::convert_from(a), bq = ConvexPolyhedron<Q>::convert_from(b);
+    const auto rq = sat::gauss_map(aq, bq);
+    const auto rf = sat::gauss_map(a, b);
+    REQUIRE(rf.feature == rq.feature);
+    CaseReport rep;
+    CHECK(check_manifold_float(a, b, aq, bq, rq, rf, CheckOptions{}, rep) == Classification::agree);
+    CHECK(rep.unexplained.empty());
+    CHECK(rep.details["manifold.points"][Classification::agree] == 1);
+    CHECK(rep.details["manifold.depth_position"][Classification::agree] == 1);
+  }
+}
+
 TEST_CASE("a float SAT feature other than the exact one is not compared", "[fuzz][manifold]") {
   const auto a = shapes::cube<float>(1.0);
   const auto small = shapes::cube<float>(0.5);
