@@ -119,7 +119,18 @@ def test_bad_margin(margin, code):
 def test_float_range():
     # finite in double, beyond float: refused when first queried in float, with the coordinate named
     big = sepax.cube(1e39)
-    assert sepax.query(big, sepax.cube(), None, [0, 0, 3e39]).separation == pytest.approx(2e39)
+    assert sepax.query(big, sepax.cube(1e38), None, [0, 0, 3e39]).separation == pytest.approx(1.9e39)
     with pytest.raises(sepax.InvalidInput, match="beyond the range of float") as ei:
-        sepax.query(big, sepax.cube(), None, [0, 0, 3e39], number="float")
+        sepax.query(big, sepax.cube(1e38), None, [0, 0, 3e39], number="float")
     check(ei, sepax.ErrorCode.BadScale, "bad-scale")
+
+
+def test_shape_too_small_for_its_position():
+    # a unit cube 3e39 away: double's spacing there (about 5e23) puts its vertices on one line per face,
+    # so its faces have no plane: refused, in the number type that cannot hold it
+    big = sepax.cube(1e39)
+    with pytest.raises(sepax.InvalidInput, match="face 2 has no plane at these coordinates") as ei:
+        sepax.query(big, sepax.cube(), None, [0, 0, 3e39])
+    check(ei, sepax.ErrorCode.BadScale, "bad-scale")
+    # exact: the pose is applied exactly, the cube keeps its faces
+    assert sepax.query(big, sepax.cube(), None, [0, 0, 3e39], number="exact").separation == pytest.approx(2e39)
