@@ -108,6 +108,10 @@ int run(int argc, char** argv) {
       return kExitUsage;
     }
     std::cout << "sepax " << version_text() << "\n";
+    if (!std::cout.flush()) {
+      std::cerr << "sepax: error: cannot write standard output\n";
+      return kExitInput;
+    }
     return kExitOk;
   }
   const Verb* v = find_verb(verb);
@@ -130,10 +134,10 @@ int run(int argc, char** argv) {
     return kExitInternal;
   }
   // Output that did not reach standard output (a full disk, a closed pipe)
-  // is not a success.
+  // is not a success; nor is a finding (status 1) whose report was lost.
   if (!std::cout.flush()) {
     std::cerr << "sepax " << verb << ": error: cannot write standard output\n";
-    if (status == kExitOk) status = kExitInput;
+    if (status == kExitOk || status == kExitFinding) status = kExitInput;
   }
   return status;
 }

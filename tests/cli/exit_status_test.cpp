@@ -201,13 +201,19 @@ TEST_CASE("exit status: help, --version, no verb and an unknown verb", "[exit]")
 }
 
 TEST_CASE("exit status: 3 when standard output cannot be written", "[exit]") {
-  for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"query", "cube", "cube"}, {"info", "cube"}, {"help"}}) {
+  // (the batch has failing lines, status 1 when its answers are written: its report is lost too)
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"query", "cube", "cube"},
+                                               {"info", "cube"},
+                                               {"help"},
+                                               {"query", "--batch", kData + "batch.jsonl"}}) {
     INFO(args[0]);
     const test::ProgramRun r = test::run_program(args, "", 60, "/dev/full");
     CHECK(r.status == 3);
     CHECK_THAT(r.err, Catch::Contains("sepax " + args[0] + ": error: cannot write standard output"));
   }
+  const test::ProgramRun v = test::run_program({"--version"}, "", 60, "/dev/full");
+  CHECK(v.status == 3);
+  CHECK_THAT(v.err, Catch::Contains("sepax: error: cannot write standard output"));
 }
 
 TEST_CASE("exit status: 4 for an exception escaping any verb, with its message", "[exit]") {
