@@ -81,6 +81,8 @@ int run_fuzz(const std::vector<std::string>& args, std::ostream& out, std::ostre
   if (!o.replay) {
     for (const char* only : {"--bytes", "--shrink", "--inject-fault"})
       if (app.count(only)) return cl.usage_error(err, std::string(only) + " applies to --replay only");
+    if (app.count("--cases") && o.cases == 0)
+      return cl.usage_error(err, "--cases 0 would run no case (give N >= 1, or --seconds S)");
   } else {
     for (const char* no : {"--seconds", "--cases", "--seed", "--families"})
       if (app.count(no)) return cl.usage_error(err, std::string(no) + " does not apply to --replay");

@@ -147,6 +147,7 @@ TEST_CASE("exit status: fuzz gives 0, 1, 2 and 3", "[exit][fuzz]") {
            {{"fuzz", "--cases", "2", "--inject-fault"}, 2, "", "--inject-fault applies to --replay only"},
            {{"fuzz", "--seed", "1.5"}, 2, "", "sepax fuzz: --seed: '1.5' is not a non-negative integer"},
            {{"fuzz", "--frobnicate"}, 2, "", "unknown option '--frobnicate'"},
+           {{"fuzz", "--cases", "0"}, 2, "", "--cases 0 would run no case"},
            {{"fuzz", "--cases", "3", "--jobs", "100000"},
             2,
             "",
