@@ -47,6 +47,9 @@ TEST_CASE("points: malformed files are rejected naming FILE:LINE and the problem
       {"0 0 0\n0 0 zero\n", 2, "bad number 'zero' for coordinate z of point 1"},
       {"0 inf 0\n", 1, "NaN and infinity are not allowed"},
       {"0 0 -1e309\n", 1, "out of the range"},
+      {"0 0 0\n1,,2,3\n", 2, "point 1 has 3 commas; commas separate exactly 3 values"},
+      {"4,5,6,\n", 1, "point 0 has 3 commas"},
+      {"4,5 6\n", 1, "point 0 has 1 comma;"},
   };
   test::check_malformed(
       cases, [](const std::string& text) { (void)read(text); }, "p.pts");
