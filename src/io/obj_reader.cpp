@@ -1,6 +1,7 @@
 // src/io/obj_reader.cpp -- see obj_reader.hpp.
 #include "io/obj_reader.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <map>
 
@@ -12,6 +13,23 @@
 namespace sepax::cli::io {
 
 namespace {
+
+/// Whether a face entry is v, v/vt, v//vn or v/vt/vn (also v/, as some
+/// exporters write it) with integer texture and normal indices: they are
+/// read past, not used, but "1/1/1/1" or "1/x" is not OBJ.
+bool face_entry_well_formed(std::string_view entry) {
+  const auto slash = entry.find('/');
+  if (slash == std::string_view::npos) return true;
+  auto integer = [](std::string_view t) {
+    if (t.starts_with('-')) t.remove_prefix(1);
+    return !t.empty() && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  const std::string_view rest = entry.substr(slash + 1);
+  const auto second = rest.find('/');
+  if (second == std::string_view::npos) return rest.empty() || integer(rest);  // v/ or v/vt
+  const std::string_view vt = rest.substr(0, second), vn = rest.substr(second + 1);
+  return (vt.empty() || integer(vt)) && integer(vn);  // v//vn or v/vt/vn (a third '/' is not an integer)
+}
 
 /// The name an 'o' or 'g' statement gives: the rest of the line, or "" (the
 /// default group) when there is none.
@@ -95,6 +113,8 @@ std::vector<ObjObject> read_obj_objects(std::istream& in, const std::string& nam
       const auto nv = static_cast<long long>(out.vertices.size());
       for (std::size_t k = 1; k < tok.size(); ++k) {
         const std::string_view entry = tok[k];
+        if (!face_entry_well_formed(entry))
+          r.fail(what + ": bad vertex entry " + shown(entry) + " (expected v, v/vt, v//vn or v/vt/vn)");
         const std::string_view index = entry.substr(0, entry.find('/'));
         const long long i = parse_integer(r, index, [&] { return "a vertex index of " + what; });
         long long zero_based;

@@ -82,6 +82,9 @@ TEST_CASE("obj: malformed files are rejected naming FILE:LINE and the problem", 
       {v + "f 1 2 /1\n", 9, "bad integer ''"},
       {v + "f 1 2 3.5\n", 9, "bad integer '3.5'"},
       {v + "f 1 2 99999999999999999999\n", 9, "too large"},
+      {v + "f 1/1/1/1 2 3\n", 9, "face 1: bad vertex entry '1/1/1/1' (expected v, v/vt, v//vn or v/vt/vn)"},
+      {v + "f 1 2/x 3\n", 9, "face 1: bad vertex entry '2/x'"},
+      {v + "f 1 2//1.5 3\n", 9, "face 1: bad vertex entry '2//1.5'"},
   };
   test::check_malformed(
       cases, [](const std::string& text) { (void)read(text, "bad.obj"); }, "bad.obj");
