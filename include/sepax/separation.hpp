@@ -49,19 +49,49 @@ inline int compare(const Separation<T>& a, const Separation<T>& b) {
   }
 }
 
+namespace detail {
+
+/// The nearest double to sqrt(sq) for an exact sq > 0 whose double rounding
+/// is a normal double: sqrt of that rounding is within about one ulp, and
+/// the nearest double is the v whose two rounding midpoints m- < m+ (exact
+/// in T) have m-^2 <= sq <= m+^2, so step to a neighbour while sq lies
+/// beyond one of them (exact comparisons; a tie keeps v).
+template <Number T>
+double nearest_sqrt(const T& sq) {
+  double v = std::sqrt(number_traits<T>::to_double(sq));
+  for (int i = 0; i < 8; ++i) {
+    const T tv = number_traits<T>::from_double(v);
+    const double up = std::nextafter(v, std::numeric_limits<double>::infinity());
+    const T m_up = T((tv + number_traits<T>::from_double(up)) / 2);
+    if (sq > T(m_up * m_up)) {
+      v = up;
+      continue;
+    }
+    const double down = std::nextafter(v, 0.0);
+    const T m_down = T((tv + number_traits<T>::from_double(down)) / 2);
+    if (sq < T(m_down * m_down)) {
+      v = down;
+      continue;
+    }
+    break;
+  }
+  return v;
+}
+
+}  // namespace detail
+
 /// The separation as a double, for reporting (never fed back into a decision).
 ///
 /// Normalising T: num itself.  Otherwise value = num / sqrt(norm2) with
 /// norm2 > 0, and num and norm2 can be far beyond double's range when the
-/// value is not (an edge axis of coordinates 1e200 has norm2 ~ 1e800), so:
-/// value^2 = num^2 / norm2 is exact in T; rounded to double and through a
-/// correctly rounded sqrt it gives the value within about one ulp, and exact
-/// comparisons of value^2 with the rounding midpoints around it then give
-/// the nearest double, where value^2 is a normal double.  Else (|value| above ~1e154 or below ~1e-154) norm2
-/// is first brought into [1, 4) by exact power-of-4 scalings (num by the
-/// matching powers of 2, which leaves the value unchanged), so that only
-/// one rounding of num / norm2 and the sqrt are left: infinity only beyond
-/// ~1e308.
+/// value is not (an edge axis of coordinates 1e200 has norm2 ~ 1e800), so
+/// the square value^2 = num^2 / norm2, exact in T, is rounded to the nearest
+/// double's square root by exact comparisons (detail::nearest_sqrt).  When
+/// value^2 is outside double's normal range (|value| above ~1e154 or below
+/// ~1e-154) it is first scaled by 4^-k, exactly, into [1, 4): the nearest
+/// double to value 2^-k times 2^k is the nearest double to value while that
+/// is a normal double (a subnormal result, below ~2.2e-308, is rounded
+/// twice; beyond ~1.8e308 it is infinity).
 template <Number T>
 inline double to_double(const Separation<T>& s) {
   if constexpr (number_traits<T>::normalizes) {
@@ -70,53 +100,30 @@ inline double to_double(const Separation<T>& s) {
     if (!(sign_of(s.norm2) > 0)) return std::numeric_limits<double>::quiet_NaN();
     const int sg = sign_of(s.num);
     if (sg == 0) return 0.0;
-    const T sq = T(s.num * s.num / s.norm2);
-    const double q2 = to_double(sq);
-    if (q2 >= std::numeric_limits<double>::min() && q2 <= std::numeric_limits<double>::max()) {
-      // sqrt(q2) is within about one ulp of |value| = sqrt(sq); the nearest
-      // double is the v whose two rounding midpoints m- < m+ (exact in T)
-      // have m-^2 <= sq <= m+^2, so step to a neighbour while sq lies beyond
-      // one of them (exact comparisons; a tie keeps v).
-      double v = std::sqrt(q2);
-      for (int i = 0; i < 8; ++i) {
-        const T tv = number_traits<T>::from_double(v);
-        const double up = std::nextafter(v, std::numeric_limits<double>::infinity());
-        const T m_up = T((tv + number_traits<T>::from_double(up)) / 2);
-        if (sq > T(m_up * m_up)) {
-          v = up;
-          continue;
-        }
-        const double down = std::nextafter(v, 0.0);
-        const T m_down = T((tv + number_traits<T>::from_double(down)) / 2);
-        if (sq < T(m_down * m_down)) {
-          v = down;
-          continue;
-        }
-        break;
+    T sq = T(s.num * s.num / s.norm2);
+    auto normal = [](double x) {
+      return x >= std::numeric_limits<double>::min() && x <= std::numeric_limits<double>::max();
+    };
+    if (normal(to_double(sq))) return sg * detail::nearest_sqrt(sq);
+    // steps of 4^256, 4^32 and 4 (at most 80 of each: value^2 within
+    // 2^(+-40000), far beyond any separation of shapes sepax accepts)
+    int k = 0;
+    for (const int step : {256, 32, 1}) {
+      const T down = number_traits<T>::from_double(std::ldexp(1.0, -2 * step));
+      const T up = number_traits<T>::from_double(std::ldexp(1.0, 2 * step));
+      const double hi = step == 1 ? 4.0 : std::ldexp(1.0, 2 * step + 2);
+      const double lo = step == 1 ? 1.0 : std::ldexp(1.0, -2 * step - 2);
+      for (int i = 0; i < 80 && !(to_double(sq) < hi); ++i) {
+        sq = T(sq * down);
+        k += step;
       }
-      return sg * v;
-    }
-    T num = s.num, n2 = s.norm2;
-    // steps of 4^256, 4^32 and 4 (at most ~80 of each: norm2 within
-    // 2^(+-40000); a larger exponent keeps what the budget reached)
-    for (const int k : {256, 32, 1}) {
-      const T down = number_traits<T>::from_double(std::ldexp(1.0, -2 * k));
-      const T up = number_traits<T>::from_double(std::ldexp(1.0, 2 * k));
-      const T half_down = number_traits<T>::from_double(std::ldexp(1.0, -k));
-      const T half_up = number_traits<T>::from_double(std::ldexp(1.0, k));
-      const double hi = k == 1 ? 4.0 : std::ldexp(1.0, 2 * k + 2);
-      const double lo = k == 1 ? 1.0 : std::ldexp(1.0, -2 * k - 2);
-      for (int i = 0; i < 80 && !(to_double(n2) < hi); ++i) {
-        n2 = T(n2 * down);
-        num = T(num * half_down);
-      }
-      for (int i = 0; i < 80 && !(to_double(n2) >= lo); ++i) {
-        n2 = T(n2 * up);
-        num = T(num * half_up);
+      for (int i = 0; i < 80 && !(to_double(sq) >= lo); ++i) {
+        sq = T(sq * up);
+        k -= step;
       }
     }
-    // norm2 in about [1, 4): num / norm2 is within a factor 2 of the value
-    return to_double(T(num / n2)) * std::sqrt(to_double(n2));
+    const double r = normal(to_double(sq)) ? detail::nearest_sqrt(sq) : std::sqrt(to_double(sq));
+    return sg * std::ldexp(r, k);
   }
 }
 

@@ -94,16 +94,13 @@ TEST_CASE("exact separations convert to double without spurious overflow", "[rob
   CHECK(to_double(Separation<Q>{Q(0), Q(4)}) == 0.0);
   // num and norm2 beyond double's range, the value not: 1e308 and 1e200
   CHECK(to_double(Separation<Q>{Q(1e308) * 4, Q(16)}) == 1e308);
-  // (a few roundings: within 2 ulp)
-  auto near = [](double v, double want) {
-    return std::abs(v - want) <= 4 * std::numeric_limits<double>::epsilon() * std::abs(want);
-  };
+  // (the value is exactly the double 1e200: the nearest double is that double)
   const Q big = Q(1e200) * Q(1e200) * Q(1e200) * Q(1e200);  // norm2 ~ 1e800, num ~ 1e600
-  CHECK(near(to_double(Separation<Q>{Q(1e200) * Q(1e200) * Q(1e200), big}), 1e200));
-  CHECK(near(to_double(Separation<Q>{-Q(1e200) * Q(1e200) * Q(1e200), big}), -1e200));
+  CHECK(to_double(Separation<Q>{Q(1e200) * Q(1e200) * Q(1e200), big}) == 1e200);
+  CHECK(to_double(Separation<Q>{-Q(1e200) * Q(1e200) * Q(1e200), big}) == -1e200);
   // and tiny: norm2 ~ 1e-1200, num ~ 1e-900, value 1e-300
   const Q tiny = Q(1e-300) * Q(1e-300);
-  CHECK(near(to_double(Separation<Q>{Q(1e-300) * Q(1e-300) * Q(1e-300), tiny * tiny}), 1e-300));
+  CHECK(to_double(Separation<Q>{Q(1e-300) * Q(1e-300) * Q(1e-300), tiny * tiny}) == 1e-300);
   // the nearest double where value^2 is a normal double: against MPFR at
   // 300 bits, rounded once more to 53 (the odds that this second rounding
   // matters are about 2^-247 per value)
@@ -129,6 +126,23 @@ TEST_CASE("exact separations convert to double without spurious overflow", "[rob
     }
   }
   CHECK(plain_differs > 10);  // the naive quotient is not always the nearest
+  // the nearest double where value^2 is outside double's range too: values near 2^+-600 and 2^+-1000
+  // (value 2^-k scaled exactly, rounded, scaled back), and 5e299 = 2.5e300 - 2e300 exactly
+  for (const int e : {600, -600, 1000, -1000}) {
+    INFO("value ~ 2^" << e);
+    Q scale = 1;
+    for (int i = 0; i < std::abs(e); ++i) scale *= 2;
+    if (e < 0) scale = 1 / scale;
+    for (int n2 = 2; n2 < 60; ++n2) {
+      for (const Q& num0 : {Q(7), Q(-2, 5), Q(12345, 677)}) {
+        const Q num = num0 * scale;
+        CHECK(to_double(Separation<Q>{num, Q(n2)}) == nearest(num, Q(n2)));
+      }
+    }
+  }
+  const Q q5(Q(2.5e300) - Q(2e300));
+  CHECK(to_double(Separation<Q>{q5 * 3, Q(9)}) == 5e299);
+  CHECK(to_double(Separation<Q>{q5 * Q(1e300) * 4, Q(1e300) * Q(1e300) * 16}) == 5e299);
   // the tetrahedron's face against the point (0.2, 0.2, 0.2) in doubles
   const Q p(0.2);
   CHECK(to_double(Separation<Q>{3 * p - 1, Q(3)}) == nearest(3 * p - 1, Q(3)));
