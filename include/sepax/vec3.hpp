@@ -227,8 +227,10 @@ inline bool safe_squared_norm(T n2) {
 }  // namespace detail
 
 /// A positive multiple of u x w: u x w itself for exact T, and for float and
-/// double whenever |u x w|^2 is in range; otherwise (u 2^-e) x (w 2^-e) for
-/// the e that puts the largest |component| of u and w in [1, 2).  Its
+/// double whenever |u x w|^2 is in range; otherwise (u 2^-eu) x (w 2^-ew) for
+/// the eu that puts the largest |component| of u in [1, 2) and the ew that
+/// does so for w (each vector scaled by its own power of two, so that a long
+/// vector against a short one still gives a cross product in range).  Its
 /// direction is that of u x w at any scale; normalise it, never use its length.
 template <class T>
 inline Vec3<T> scaled_cross(const Vec3<T>& u, const Vec3<T>& w, Vec3<T> n);
@@ -241,10 +243,11 @@ template <class T>
 inline Vec3<T> scaled_cross(const Vec3<T>& u, const Vec3<T>& w, Vec3<T> n) {
   if constexpr (std::is_floating_point_v<T>) {
     if (!detail::safe_squared_norm(squared_norm(n))) {
-      const T m = detail::max_abs2(u, w);
-      if (m > T(0) && m <= std::numeric_limits<T>::max()) {
-        const int e = detail::pow2_exponent(m);
-        n = cross(detail::scale_pow2(u, e), detail::scale_pow2(w, e));
+      const T mu = detail::max_abs2(u, u), mw = detail::max_abs2(w, w);
+      if (mu > T(0) && mu <= std::numeric_limits<T>::max() && mw > T(0) &&
+          mw <= std::numeric_limits<T>::max()) {
+        n = cross(detail::scale_pow2(u, detail::pow2_exponent(mu)),
+                  detail::scale_pow2(w, detail::pow2_exponent(mw)));
       }
     }
   }

@@ -92,3 +92,37 @@ TEST_CASE("PlainKernel: shapes of very different scales (double)", "[kernel][sca
     }
   }
 }
+
+TEMPLATE_TEST_CASE("PlainKernel: edge axes of a long edge against a short one", "[kernel][scale]", float,
+                   double) {
+  using T = TestType;
+  // edges of length about 2e20 against edges of about 0.7: |eA x eB|^2 is far below float's normal range
+  // when both are scaled by one power of two, so each is scaled by its own (scaled_cross, vec3.hpp)
+  const double h = std::is_same_v<T, float> ? 1e20 : 1e160;
+  const auto big = shapes::box<T>(h, h, h);
+  const auto polygon = shapes::regular_polygon<T>(9);
+  for (const int e : {0, 3, 7}) {
+    const Vec3<T> u = big.edge_direction(e), w = polygon.edge_direction(e);
+    const Vec3<T> n = scaled_cross(u, w);
+    // the reference in long double (x87: its range holds |u x w|^2 here; elsewhere it is double, and the
+    // float case still checks what it must)
+    using L = long double;
+    const L c[3] = {L(u[1]) * L(w[2]) - L(u[2]) * L(w[1]), L(u[2]) * L(w[0]) - L(u[0]) * L(w[2]),
+                    L(u[0]) * L(w[1]) - L(u[1]) * L(w[0])};
+    const L cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    const L nn = L(n[0]) * L(n[0]) + L(n[1]) * L(n[1]) + L(n[2]) * L(n[2]);
+    INFO("edge " << e);
+    if (!(cc > 0) || !std::isfinite(cc)) continue;
+    CHECK(std::abs((L(n[0]) * c[0] + L(n[1]) * c[1] + L(n[2]) * c[2]) / std::sqrt(nn * cc) - 1) < 1e-6L);
+  }
+  const auto r_bf = sat::brute_force(big, polygon);
+  const auto r_gm = sat::gauss_map(big, polygon);
+  const auto r_tr = sat::traversal(big, polygon);
+  for (const auto* r : {&r_bf, &r_gm, &r_tr}) {
+    CHECK(r->overlap);
+    CHECK(std::abs(std::sqrt(static_cast<double>(squared_norm(r->axis))) - 1.0) < 1e-6);
+  }
+  CHECK(r_bf.feature == r_gm.feature);
+  CHECK(r_bf.feature == r_tr.feature);
+  CHECK(r_bf.separation_as_double() == r_gm.separation_as_double());
+}
