@@ -70,8 +70,10 @@ std::vector<std::string> join_pose_tokens(const std::vector<std::string>& args) 
     std::vector<std::string> v;
     while (v.size() < 3 && i + 1 < args.size() && !looks_like_option(args[i + 1]) && args[i + 1] != "--")
       v.push_back(args[++i]);
+    // (numbers beyond the seventh are taken too, so that pose() reports the count rather than the
+    // parser an extra shape argument)
     if (v.size() == 3)
-      while (v.size() < 7 && i + 1 < args.size() && parse_double(args[i + 1])) v.push_back(args[++i]);
+      while (i + 1 < args.size() && parse_double(args[i + 1])) v.push_back(args[++i]);
     if (v.empty()) {
       out.push_back(args[i]);  // CLI11 reports the missing value
       continue;
@@ -123,6 +125,8 @@ std::optional<int> CommandLine::parse(const std::vector<std::string>& args, std:
         err, (looks_like_option(first) ? "unknown option '" : "unexpected argument '") + first + "'");
   } catch (const CLI::ArgumentMismatch& e) {
     const std::string name = option_in(e.what());
+    if (std::string_view(e.what()).find(": At Most ") != std::string_view::npos)  // (CLI11's wording)
+      return usage_error(err, name + " is given more than once (it takes one value)");
     const auto it = needs_.find(name);
     return usage_error(err, it != needs_.end() ? name + " needs " + it->second : std::string(e.what()));
   } catch (const CLI::ParseError& e) {
@@ -182,6 +186,9 @@ std::optional<Pose> CommandLine::pose() const {
   }
   if (t.size() < 3)
     throw UsageError("--pose needs 3 numbers (tx ty tz), optionally followed by 4 (qw qx qy qz)");
+  if (t.size() > 7)
+    throw UsageError("--pose takes 3 numbers (tx ty tz) or 7 (tx ty tz qw qx qy qz), not " +
+                     std::to_string(t.size()));
   if (t.size() != 3 && t.size() != 7)
     throw UsageError("--pose: a rotation needs 4 numbers (qw qx qy qz) after the translation");
   double v[7] = {0, 0, 0, 1, 0, 0, 0};

@@ -21,14 +21,18 @@ namespace sepax::cli {
 
 namespace {
 
-constexpr const char* kExitText =
+// The exit statuses of query (with --batch's status 1) and of info and render.
+constexpr const char* kQueryExitText =
     "\nExit status: 0 success, 1 a batch line answered with an error, 2 usage error,\n"
     "3 an input that cannot be read, parsed or built, 4 internal error.\n";
+constexpr const char* kExitText =
+    "\nExit status: 0 success, 2 usage error, 3 an input that cannot be read, parsed or built,\n"
+    "4 internal error.\n";
 
-std::string shapes_footer(const char* extra = "") {
+std::string shapes_footer(const char* extra = "", const char* exit_text = kExitText) {
   return std::string("shapes (A, B, SHAPE):\n") + io::builtin_shapes_help() +
          "FILE.case as the only argument: a fuzzer reproducer (A and B, B placed by the case)\n" + extra +
-         kExitText;
+         exit_text;
 }
 
 const char* const kPoseHelp =
@@ -68,7 +72,8 @@ int run_query(const std::vector<std::string>& args, std::istream& in, std::ostre
       "query", "Separating axis test of two convex shapes A and B, or of a batch of JSON lines.",
       shapes_footer("\n--batch: one JSON object per line, {\"id\": ID, \"a\": [[x,y,z], ...], \"b\": [...]} "
                     "(point sets, hulled);\none JSON object per line out, in input order, with the contact "
-                    "manifold unless --no-manifold.\n"));
+                    "manifold unless --no-manifold.\n",
+                    kQueryExitText));
   auto& app = cl.app;
   app.add_option("shapes", shapes, "A B, or one FILE.case")->type_name("");
   cl.add_pose(kPoseHelp);
