@@ -261,6 +261,7 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
         paths.push_back(f);
       }
     }
+    std::size_t read = 0;  // the cases read (checked, or rejected as invalid)
     for (const auto& p : paths) {
       FuzzCase c;
       try {
@@ -284,6 +285,7 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
         status = 3;
         continue;
       }
+      ++read;
       CheckOptions check;
       check.inject_fault = opt.inject_fault;
       const CaseReport r = check_case_guarded(c, check);
@@ -301,6 +303,7 @@ int run_campaign(const CampaignOptions& opt, std::ostream& out) {
       }
     }
     rep.seconds = elapsed();
+    if (read == 0) return status;  // (no case read: the errors above, and no report of zero cases)
     if (json)
       print_json(out, rep);
     else

@@ -87,8 +87,15 @@ TEST_CASE("fuzz: numbers are validated, --opt=value works, help goes to stdout",
 TEST_CASE("fuzz: exit status 1 for a finding, 3 for an unreadable replay file", "[fuzz][cli]") {
   const auto missing = fuzz({"--replay", "/nonexistent/x.case", "--quiet"});
   CHECK(missing.status == 3);
+  CHECK(missing.out.empty());  // nothing was checked: no report of zero cases
+  CHECK(fuzz({"--replay", "/nonexistent/x.case", "--quiet", "--json"}).out.empty());
   const std::string bad = test::temp_file("bad.case", "not a case file\n");
   CHECK(fuzz({"--replay", bad, "--quiet"}).status == 3);
+  // one case read and one not: the report of the one, and status 3
+  const std::string good = std::string(SEPAX_SOURCE_DIR) + "/fuzz/corpus/00-triangle-on-box-face.case";
+  const auto mixed = fuzz({"--replay", good, "/nonexistent/x.case", "--quiet", "--json"});
+  CHECK(mixed.status == 3);
+  CHECK_THAT(mixed.out, Catch::Contains("\"unexplained\""));
 }
 
 TEST_CASE("fuzz: a replay directory replays its cases, and one without any is an error", "[fuzz][cli]") {
