@@ -1,9 +1,8 @@
 """Type stubs for the sepax extension module (python/src/module.cpp; docs/python.md)."""
 
-import enum
 import os
 from fractions import Fraction
-from typing import Any, Literal, Optional, Sequence, Tuple, Union, overload
+from typing import Any, ClassVar, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -23,23 +22,34 @@ VERTEX: int
 EDGE: int
 FACE: int
 
-class ErrorCode(enum.Enum):
-    NonFinite: int
-    TooFewPoints: int
-    Collinear: int
-    BadIndex: int
-    DegenerateFace: int
-    NotManifold: int
-    BadEuler: int
-    UnusedVertex: int
-    NonPlanarFace: int
-    NonConvexFace: int
-    NotConvex: int
-    InwardFaces: int
-    BadScale: int
-    Parse: int
+class ErrorCode:
+    """Which rule an input broke: a pybind11 enum (compare with ==, int(code), code.name,
+    ErrorCode.__members__ for the list), not an enum.Enum."""
+
+    NonFinite: ClassVar["ErrorCode"]
+    TooFewPoints: ClassVar["ErrorCode"]
+    Collinear: ClassVar["ErrorCode"]
+    BadIndex: ClassVar["ErrorCode"]
+    DegenerateFace: ClassVar["ErrorCode"]
+    NotManifold: ClassVar["ErrorCode"]
+    BadEuler: ClassVar["ErrorCode"]
+    UnusedVertex: ClassVar["ErrorCode"]
+    NonPlanarFace: ClassVar["ErrorCode"]
+    NonConvexFace: ClassVar["ErrorCode"]
+    NotConvex: ClassVar["ErrorCode"]
+    InwardFaces: ClassVar["ErrorCode"]
+    BadScale: ClassVar["ErrorCode"]
+    Parse: ClassVar["ErrorCode"]
+    __members__: ClassVar[dict[str, "ErrorCode"]]
+    def __init__(self, value: int) -> None: ...
+    @property
+    def name(self) -> str: ...
     @property
     def value(self) -> int: ...
+    def __int__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
 
 class InvalidInput(ValueError):
     """Bad input refused by sepax: .code says which rule it broke, str(e) names the element."""
@@ -296,7 +306,7 @@ class fuzz:
         def b(self) -> Tuple[F64, list[list[int]]]: ...
 
     @staticmethod
-    def replay(path: Union[str, "os.PathLike[str]"], *, bytes: bool = False) -> "fuzz.CaseReport": ...
+    def replay(path: Union[str, bytes, "os.PathLike[str]", "os.PathLike[bytes]"], *, bytes: bool = False) -> "fuzz.CaseReport": ...
 def query_batch(
     a: Shape,
     b: Shape,

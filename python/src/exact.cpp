@@ -41,6 +41,8 @@ void run_query_exact(const QueryOptions& o, const ExactShape& a, const PoseD& po
   run_query(o, a.shape, pose_a, b.shape, pose_b, cache ? &cache->cache : nullptr, out);
 }
 
+void check_rigid_exact(const PoseD& p) { detail::check_rigid(to_transform<mpq_class>(p)); }
+
 namespace {
 template <Number U>
 void exact_sign_table_of(const ConvexPolyhedron<U>& a, const ConvexPolyhedron<U>& b, SignTable& t) {

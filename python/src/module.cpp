@@ -296,6 +296,10 @@ void dispatch(const Request& q, Shape& a, Shape& b, Cache* cache, Fn&& fn) {
 
 // ---- results ------------------------------------------------------------------
 
+/// Results are values: their arrays are read-only (a result's attribute returns the same array each
+/// time, so a write would change the result; np.array(r.axis) is a writable copy).
+void freeze(const py::array& a) { a.attr("flags").attr("writeable") = false; }
+
 struct Manifold {
   std::string kind;
   py::array_t<double> normal, points, points_a, points_b, separations;
@@ -352,6 +356,10 @@ Manifold make_manifold(const QueryOut& o) {
   m.reference_shape = o.reference_shape;
   m.reference_face = o.reference_face;
   m.incident_face = o.incident_face;
+  for (const py::array& a :
+       {py::array(m.normal), py::array(m.points), py::array(m.points_a), py::array(m.points_b),
+        py::array(m.separations), py::array(m.ids), py::array(m.id_keys)})
+    freeze(a);
   return m;
 }
 
@@ -362,6 +370,7 @@ Result make_result(const QueryOut& o, const Request& q) {
   r.robust = q.opt.robust;
   r.separation = o.separation;
   r.axis = array3(o.axis);
+  freeze(r.axis);
   r.feature = o.feature;
   r.stats["face_axes"] = o.stats.face_axes;
   r.stats["edge_pairs"] = o.stats.edge_pairs;
@@ -376,6 +385,47 @@ Result make_result(const QueryOut& o, const Request& q) {
   r.number = q.number_name;
   r.algorithm = q.algorithm_name;
   return r;
+}
+
+/// The posed query's rigidity check (check_rigid, posing.hpp, in the request's number type), run
+/// before the query so that its refusal names the argument: "pose_b: the rotation is ...".
+void check_poses(NumberKind number, const std::vector<PoseD>& poses, const std::string& what) {
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    const std::string name = poses.size() > 1 ? what + "[" + std::to_string(k) + "]" : what;
+    if (number == NumberKind::Float) {  // (finite in double, checked when read)
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (std::fabs(poses[k].t[i]) > std::numeric_limits<float>::max())
+          throw InvalidInput(ErrorCode::BadScale, name + ": translation entry " + std::to_string(i) + " (" +
+                                                      format_number(poses[k].t[i]) +
+                                                      ") is beyond the range of float");
+      }
+    }
+    try {
+      switch (number) {
+        case NumberKind::Float:
+          detail::check_rigid(to_transform<float>(poses[k]));
+          break;
+        case NumberKind::Double:
+          detail::check_rigid(to_transform<double>(poses[k]));
+          break;
+        case NumberKind::Exact:
+          check_rigid_exact(poses[k]);
+          break;
+      }
+    } catch (const InvalidInput& e) {
+      std::string message = e.what();
+      const std::string generic = "pose: ";
+      if (message.compare(0, generic.size(), generic) == 0) message.erase(0, generic.size());
+      throw InvalidInput(e.code(), name + ": " + message);
+    }
+  }
+}
+
+/// One pose argument, read and checked (check_poses).
+PoseD checked_pose(NumberKind number, const py::handle& obj, const std::string& what) {
+  const std::vector<PoseD> p = poses_from(obj, what, false);
+  check_poses(number, p, what);
+  return p.front();
 }
 
 QueryOut run_request(const Request& q, Shape& a, Shape& b, const PoseD& pa, const PoseD& pb, Cache* cache) {
@@ -395,8 +445,8 @@ Result query(Shape& a, Shape& b, const py::object& pose_a, const py::object& pos
              const std::string& number, bool robust, const std::string& algorithm, double margin,
              bool early_out, Cache* cache, bool manifold) {
   const Request q = make_request(number, robust, algorithm, margin, early_out, manifold, cache);
-  const PoseD pa = poses_from(pose_a, "pose_a", false).front();
-  const PoseD pb = poses_from(pose_b, "pose_b", false).front();
+  const PoseD pa = checked_pose(q.number, pose_a, "pose_a");
+  const PoseD pb = checked_pose(q.number, pose_b, "pose_b");
   return make_result(run_request(q, a, b, pa, pb, cache), q);
 }
 
@@ -419,6 +469,8 @@ BatchResult query_batch(Shape& a, Shape& b, const py::object& poses_a, const py:
   const Request q = make_request(number, robust, algorithm, margin, early_out, manifold, cache);
   const std::vector<PoseD> pa = poses_from(poses_a, "poses_a", true);
   const std::vector<PoseD> pb = poses_from(poses_b, "poses_b", true);
+  check_poses(q.number, pa, "poses_a");
+  check_poses(q.number, pb, "poses_b");
   // K: the larger count, or 0 when either side holds no pose (an empty batch: empty columns)
   const std::size_t rows = pa.empty() || pb.empty() ? 0 : std::max(pa.size(), pb.size());
   BatchPoses poses{pa.data(), pa.size(), pb.data(), pb.size(), rows};
@@ -470,6 +522,12 @@ BatchResult query_batch(Shape& a, Shape& b, const py::object& poses_a, const py:
       run_batch(q.opt, sa, sb, poses, cc, c);
     }
   });
+  for (const py::array& x :
+       {py::array(r.overlap), py::array(r.early_out), py::array(r.separation), py::array(r.axis),
+        py::array(r.feature_type), py::array(r.feature), py::array(r.exact_fallbacks)})
+    freeze(x);
+  for (const py::object& x : {r.contact_count, r.contact_points, r.contact_separations, r.contact_ids})
+    if (!x.is_none()) freeze(py::array(x));
   return r;
 }
 
@@ -530,12 +588,12 @@ py::object audit_report_object(Shape& a, Shape& b, const PoseD& pa, const PoseD&
 
 py::object audit(Shape& a, Shape& b, const py::object& pose_a, const py::object& pose_b,
                  const std::string& number, const py::object& report) {
-  const PoseD pa = poses_from(pose_a, "pose_a", false).front();
-  const PoseD pb = poses_from(pose_b, "pose_b", false).front();
   const NumberKind n = parse_number(number);
   if (n == NumberKind::Exact) {
     usage_error("audit compares float or double against exact: number must be \"float\" or \"double\"");
   }
+  const PoseD pa = checked_pose(n, pose_a, "pose_a");
+  const PoseD pb = checked_pose(n, pose_b, "pose_b");
   if (!report.is_none()) {
     if (!py::isinstance<py::str>(report)) usage_error("report must be None, \"text\" or \"json\"");
     return audit_report_object(a, b, pa, pb, n == NumberKind::Double, report.cast<std::string>());
@@ -570,8 +628,8 @@ std::string render_svg(Shape& a, Shape& b, const py::object& pose_a, const py::o
                        const std::string& number, bool robust, const std::string& algorithm, double margin,
                        const py::object& title) {
   const Request q = make_request(number, robust, algorithm, margin, false, true, nullptr);
-  const PoseD pa = poses_from(pose_a, "pose_a", false).front();
-  const PoseD pb = poses_from(pose_b, "pose_b", false).front();
+  const PoseD pa = checked_pose(q.number, pose_a, "pose_a");
+  const PoseD pb = checked_pose(q.number, pose_b, "pose_b");
   const QueryOut out = run_request(q, a, b, pa, pb, nullptr);
   std::string t;
   if (title.is_none()) {
@@ -589,7 +647,8 @@ std::string render_svg(Shape& a, Shape& b, const py::object& pose_a, const py::o
 
 /// sepax.fuzz.replay's answer.
 struct CaseReportPy {
-  std::string path, family, outcome, reject_reason;
+  py::object path = py::none();  // the path as os.fsdecode gives it
+  std::string family, outcome, reject_reason;
   std::uint64_t seed = 0;
   bool valid = false;
   std::int64_t unexplained_count = 0;
@@ -615,17 +674,29 @@ py::dict counts_map(const std::map<std::string, fuzz::Counts>& m) {
 
 py::tuple spec_tuple(const fuzz::ShapeSpec& s) { return py::make_tuple(vec_rows(s.vertices), s.faces); }
 
+// An OSError subclass (FileNotFoundError, IsADirectoryError) with errno, message and the path as given.
+[[noreturn]] void raise_os_error(const char* type, const char* errno_name, const char* message,
+                                 const py::object& path) {
+  const py::object err = py::module_::import("builtins").attr(type);
+  const py::object code = py::module_::import("errno").attr(errno_name);
+  PyErr_SetObject(err.ptr(), py::make_tuple(code, message, path).ptr());
+  throw py::error_already_set();
+}
+
 CaseReportPy replay(const py::object& path_like, bool bytes) {
-  const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like)).cast<std::string>();
-  if (!py::module_::import("os").attr("path").attr("isfile")(path).cast<bool>()) {
-    const py::object err = py::module_::import("builtins").attr("FileNotFoundError");
-    const py::object errno_mod = py::module_::import("errno");
-    PyErr_SetObject(err.ptr(),
-                    py::make_tuple(errno_mod.attr("ENOENT"),
-                                   "sepax.fuzz.replay: no such file (a fuzzer reproducer, .case)", path)
-                        .ptr());
-    throw py::error_already_set();
-  }
+  // str, bytes or os.PathLike; the file system's bytes for the C++ side, the decoded name for messages
+  const py::module_ os = py::module_::import("os");
+  const py::object fs_path = os.attr("fspath")(path_like);
+  const std::string path = os.attr("fsencode")(fs_path).cast<std::string>();
+  const py::object shown = os.attr("fsdecode")(fs_path);
+  if (!os.attr("path").attr("exists")(fs_path).cast<bool>())
+    raise_os_error("FileNotFoundError", "ENOENT",
+                   "sepax.fuzz.replay: no such file (a fuzzer reproducer, .case)", shown);
+  if (os.attr("path").attr("isdir")(fs_path).cast<bool>())
+    raise_os_error("IsADirectoryError", "EISDIR",
+                   "sepax.fuzz.replay: a directory (replay takes one file; `sepax fuzz --replay DIR` takes "
+                   "a directory)",
+                   shown);
   Replayed rp;
   {
     py::gil_scoped_release release;
@@ -633,7 +704,7 @@ CaseReportPy replay(const py::object& path_like, bool bytes) {
   }
   const fuzz::CaseReport& r = rp.r;
   CaseReportPy o;
-  o.path = path;
+  o.path = shown;
   o.family = rp.c.family;
   o.seed = rp.c.seed;
   o.valid = r.valid;
@@ -661,8 +732,9 @@ CaseReportPy replay(const py::object& path_like, bool bytes) {
 
 void add_tools(py::module_& m) {
   m.def("render_svg", &render_svg, py::arg("a"), py::arg("b"), py::arg("pose_a") = py::none(),
-        py::arg("pose_b") = py::none(), py::kw_only(), py::arg("number") = "double", py::arg("robust") = true,
-        py::arg("algorithm") = "traversal", py::arg("margin") = 0.0, py::arg("title") = py::none(),
+        py::arg("pose_b") = py::none(), py::kw_only(), py::arg("number") = "double",
+        py::arg("robust").none(false) = true, py::arg("algorithm") = "traversal", py::arg("margin") = 0.0,
+        py::arg("title") = py::none(),
         R"(render_svg(a, b, pose_a=None, pose_b=None, *, number="double", robust=True,
            algorithm="traversal", margin=0.0, title=None) -> str
 
@@ -699,14 +771,15 @@ axis.  The header line gives the verdict, separation, feature and contact count 
       .def_readonly("a", &CaseReportPy::a, "shape A of the case: (vertices (N, 3), faces)")
       .def_readonly("b", &CaseReportPy::b, "shape B of the case: (vertices (N, 3), faces)")
       .def("__repr__", [](const CaseReportPy& r) {
-        return "<sepax.fuzz.CaseReport: " + r.path + ": " + r.outcome + ">";
+        return "<sepax.fuzz.CaseReport: " + py::repr(r.path).cast<std::string>() + ": " + r.outcome + ">";
       });
-  fz.def("replay", &replay, py::arg("path"), py::kw_only(), py::arg("bytes") = false,
+  fz.def("replay", &replay, py::arg("path"), py::kw_only(), py::arg("bytes").none(false) = false,
          R"(replay(path, *, bytes=False) -> CaseReport
 
 Check one fuzzer case as `sepax fuzz --replay path` does: read the .case file (bytes=True: a
 libFuzzer input) and run it through every configuration and SAT against the exact reference.
-Raises FileNotFoundError naming the path when there is no such file, sepax.InvalidInput (code
+path: str, bytes or os.PathLike.  Raises FileNotFoundError naming the path when there is no such
+file, IsADirectoryError for a directory, sepax.InvalidInput (code
 Parse, naming the file and line) when it cannot be parsed.  A case whose shapes are invalid is
 not an error: its outcome is 'rejected', with reject_reason.  The GIL is released while it runs.)");
 }
@@ -1062,9 +1135,10 @@ class InvalidInput(ValueError):
            [](const BatchResult& r) { return "<sepax.BatchResult: " + std::to_string(r.size) + " rows>"; });
 
   m.def("query", &query, py::arg("a"), py::arg("b"), py::arg("pose_a") = py::none(),
-        py::arg("pose_b") = py::none(), py::kw_only(), py::arg("number") = "double", py::arg("robust") = true,
-        py::arg("algorithm") = "traversal", py::arg("margin") = 0.0, py::arg("early_out") = false,
-        py::arg("cache") = nullptr, py::arg("manifold") = true,
+        py::arg("pose_b") = py::none(), py::kw_only(), py::arg("number") = "double",
+        py::arg("robust").none(false) = true, py::arg("algorithm") = "traversal", py::arg("margin") = 0.0,
+        py::arg("early_out").none(false) = false, py::arg("cache") = nullptr,
+        py::arg("manifold").none(false) = true,
         R"(query(a, b, pose_a=None, pose_b=None, *, number="double", robust=True, algorithm="traversal",
       margin=0.0, early_out=False, cache=None, manifold=True) -> Result
 
@@ -1109,9 +1183,9 @@ double arithmetic on that input.)");
 #endif
 
   m.def("query_batch", &query_batch, py::arg("a"), py::arg("b"), py::arg("poses_a"), py::arg("poses_b"),
-        py::kw_only(), py::arg("number") = "double", py::arg("robust") = true,
-        py::arg("algorithm") = "traversal", py::arg("margin") = 0.0, py::arg("early_out") = false,
-        py::arg("cache") = nullptr, py::arg("manifold") = false,
+        py::kw_only(), py::arg("number") = "double", py::arg("robust").none(false) = true,
+        py::arg("algorithm") = "traversal", py::arg("margin") = 0.0, py::arg("early_out").none(false) = false,
+        py::arg("cache") = nullptr, py::arg("manifold").none(false) = false,
         R"(query_batch(a, b, poses_a, poses_b, *, number="double", robust=True, algorithm="traversal",
             margin=0.0, early_out=False, cache=None, manifold=False) -> BatchResult
 

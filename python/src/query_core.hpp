@@ -260,6 +260,8 @@ std::int64_t exact_cache_misses(const ExactCache& c);
 void reset_exact_cache(ExactCache& c);
 void run_query_exact(const QueryOptions& o, const ExactShape& a, const PoseD& pose_a, const ExactShape& b,
                      const PoseD& pose_b, ExactCache* cache, QueryOut& out);
+/// detail::check_rigid (posing.hpp) of the pose in mpq_class, as run_query_exact makes it.
+void check_rigid_exact(const PoseD& p);
 /// The exact sign table of the exact images of a and b (both in one frame):
 /// what the robust policy's decisions on (a, b) must equal.
 void exact_sign_table(const ConvexPolyhedron<double>& a, const ConvexPolyhedron<double>& b, SignTable& t);

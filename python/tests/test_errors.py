@@ -78,6 +78,12 @@ def test_malformed_arrays_are_value_errors():
         sepax.query(sepax.cube(), sepax.cube(), algorithm="magic")
     with pytest.raises(ValueError, match="pose_b"):
         sepax.query(sepax.cube(), sepax.cube(), None, np.eye(3))
+    # flags are booleans: None is not taken for False
+    for flag in ("robust", "early_out", "manifold"):
+        with pytest.raises(TypeError):
+            sepax.query(sepax.cube(), sepax.cube(), **{flag: None})
+        with pytest.raises(TypeError):
+            sepax.query_batch(sepax.cube(), sepax.cube(), None, None, **{flag: None})
 
 
 @pytest.mark.parametrize("number", ["float", "double", "exact"])
@@ -93,19 +99,29 @@ def test_bad_poses(number):
     with pytest.raises(sepax.InvalidInput, match="last row") as ei:
         sepax.query(a, b, p, None, number=number)
     check(ei, sepax.ErrorCode.BadScale, "bad-scale")
-    mirror = np.diag([1.0, 1.0, -1.0, 1.0])  # det R < 0: refused by every number type
-    with pytest.raises(sepax.InvalidInput) as ei:
+    mirror = np.diag([1.0, 1.0, -1.0, 1.0])  # det R < 0: refused by every number type, naming the argument
+    with pytest.raises(sepax.InvalidInput, match="^pose_b: the rotation") as ei:
         sepax.query(a, b, None, mirror, number=number)
     check(ei, sepax.ErrorCode.BadScale, "bad-scale")
+    with pytest.raises(sepax.InvalidInput, match="^pose_a: the rotation"):
+        sepax.render_svg(a, b, mirror, None, number=number)
     if number != "exact":  # float/double refuse |R^T R - I| > 1e-3 (exact T: only det R <= 0)
-        with pytest.raises(sepax.InvalidInput) as ei:
-            sepax.query(a, b, None, np.diag([2.0, 2.0, 2.0, 1.0]), number=number)
+        with pytest.raises(sepax.InvalidInput, match="^pose_a: the rotation is not a rotation") as ei:
+            sepax.query(a, b, np.diag([2.0, 2.0, 2.0, 1.0]), None, number=number)
         check(ei, sepax.ErrorCode.BadScale, "bad-scale")
+        with pytest.raises(sepax.InvalidInput, match="^pose_b: the rotation is not a rotation"):
+            sepax.audit(a, b, None, np.diag([2.0, 2.0, 2.0, 1.0]), number=number)
     stack = np.stack([np.eye(4)] * 3)
     stack[2, 0, 0] = np.inf
     with pytest.raises(sepax.InvalidInput, match=r"poses_b\[2\]") as ei:
         sepax.query_batch(a, b, None, stack, number=number)
     check(ei, sepax.ErrorCode.NonFinite, "non-finite")
+    stack[2] = mirror
+    with pytest.raises(sepax.InvalidInput, match=r"^poses_b\[2\]: the rotation") as ei:
+        sepax.query_batch(a, b, None, stack, number=number)
+    check(ei, sepax.ErrorCode.BadScale, "bad-scale")
+    with pytest.raises(sepax.InvalidInput, match=r"^poses_a: the rotation"):
+        sepax.query_batch(a, b, mirror, stack[:2], number=number)
 
 
 @pytest.mark.parametrize("margin,code", [(-0.1, sepax.ErrorCode.BadScale), (np.inf, sepax.ErrorCode.BadScale),
@@ -122,6 +138,10 @@ def test_float_range():
     assert sepax.query(big, sepax.cube(1e38), None, [0, 0, 3e39]).separation == pytest.approx(1.9e39)
     with pytest.raises(sepax.InvalidInput, match="beyond the range of float") as ei:
         sepax.query(big, sepax.cube(1e38), None, [0, 0, 3e39], number="float")
+    check(ei, sepax.ErrorCode.BadScale, "bad-scale")
+    # a translation beyond float's range: refused as the program refuses it, naming the entry
+    with pytest.raises(sepax.InvalidInput, match=r"^pose_b: translation entry 2 \(1e\+39\) is beyond the range of float") as ei:
+        sepax.query(sepax.cube(), sepax.cube(), None, [0, 0, 1e39], number="float")
     check(ei, sepax.ErrorCode.BadScale, "bad-scale")
 
 

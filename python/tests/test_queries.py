@@ -255,6 +255,22 @@ def test_batch_equals_loop(number, robust):
         assert one.separation[i] == sepax.query(a, b, pa[3], pb[i], number=number, robust=robust).separation
 
 
+def test_result_arrays_are_read_only():
+    a, b = sepax.cube(), sepax.cube()
+    r = sepax.query(a, b, None, [1.5, 0, 0])
+    m = r.manifold
+    for arr in (r.axis, m.normal, m.points, m.points_a, m.points_b, m.separations, m.ids, m.id_keys):
+        assert not arr.flags.writeable
+    with pytest.raises(ValueError):
+        r.axis[0] = 2.0
+    assert r.axis[0] == 1.0 and r.axis is r.axis
+    copy = np.array(r.axis)
+    copy[0] = 2.0  # a copy is the caller's
+    br = sepax.query_batch(a, b, None, np.stack([np.eye(4)] * 2), manifold=True)
+    for arr in (br.overlap, br.separation, br.axis, br.feature, br.contact_points, br.contact_count):
+        assert not arr.flags.writeable
+
+
 def test_batch_pose_count_mismatch():
     rng = np.random.default_rng(1)
     with pytest.raises(ValueError, match="each must hold K or 1"):
@@ -411,6 +427,12 @@ def test_stubs_cover_the_module():
         declared = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
         members = {n for n in dir(getattr(sepax, cls)) if not n.startswith("_")}
         assert members <= declared, (cls, members - declared)
+    # ErrorCode: a pybind11 enum, typed as one (its members, name and value; no enum.Enum iteration)
+    node = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == "ErrorCode")
+    declared = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
+    declared |= {n.target.id for n in node.body if isinstance(n, ast.AnnAssign)}
+    assert {n for n in dir(sepax.ErrorCode) if not n.startswith("_")} <= declared
+    assert set(sepax.ErrorCode.__members__) <= declared and not node.bases
     if hasattr(sepax, "fuzz"):  # the submodule, typed as a namespace class
         node = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == "fuzz")
         declared = {n.name for n in node.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}

@@ -261,5 +261,24 @@ def test_replay_errors(tmp_path):
     with pytest.raises(sepax.InvalidInput) as e:
         sepax.fuzz.replay(bad)
     assert e.value.code == sepax.ErrorCode.Parse and str(bad) in str(e.value)
-    with pytest.raises(FileNotFoundError):
+    with pytest.raises(IsADirectoryError) as e:
         sepax.fuzz.replay(tmp_path)  # a directory is not a case file
+    assert e.value.filename == str(tmp_path)
+
+
+def test_replay_path_kinds(tmp_path):
+    # str, bytes and os.PathLike name the same file; the report's path is the decoded name
+    case = CORPUS / "00-triangle-on-box-face.case"
+    by_bytes = sepax.fuzz.replay(os.fsencode(case))
+    assert by_bytes.path == str(case) and by_bytes.outcome == "ok"
+    assert by_bytes.comparisons == sepax.fuzz.replay(case).comparisons
+    with pytest.raises(FileNotFoundError) as e:
+        sepax.fuzz.replay(os.fsencode(tmp_path / "missing.case"))
+    assert e.value.filename == str(tmp_path / "missing.case")
+    with pytest.raises(TypeError):
+        sepax.fuzz.replay(3)
+    # a libFuzzer input need not be a regular file, and an empty input is an input
+    if os.path.exists("/dev/null"):
+        r = sepax.fuzz.replay("/dev/null", bytes=True)
+        assert r.outcome in ("ok", "rejected") and r.unexplained_count == 0
+        assert repr(r).startswith("<sepax.fuzz.CaseReport: '/dev/null': ")
