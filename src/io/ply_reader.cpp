@@ -350,10 +350,53 @@ double coordinate(double v, int c, std::size_t vertex, const Fail& fail) {
   return v;
 }
 
+/// The name and value range of an integer scalar type (false for float and double).
+bool integer_range(Scalar t, const char*& name, long long& lo, long long& hi) {
+  switch (t) {
+    case Scalar::Int8:
+      name = "char", lo = -128, hi = 127;
+      return true;
+    case Scalar::Uint8:
+      name = "uchar", lo = 0, hi = 255;
+      return true;
+    case Scalar::Int16:
+      name = "short", lo = -32768, hi = 32767;
+      return true;
+    case Scalar::Uint16:
+      name = "ushort", lo = 0, hi = 65535;
+      return true;
+    case Scalar::Int32:
+      name = "int", lo = -2147483648LL, hi = 2147483647;
+      return true;
+    case Scalar::Uint32:
+      name = "uint", lo = 0, hi = 4294967295LL;
+      return true;
+    default:
+      return false;
+  }
+}
+
+/// An integer of an ASCII body that its property's integer type holds (an error naming the value and the
+/// type otherwise, as a binary file could not store it); any value for float and double.
+template <class What>
+long long ascii_integer(const TextPlace& place, std::string_view token, Scalar type, const What& what) {
+  const long long v = parse_integer(place, token, what);
+  const char* name = nullptr;
+  long long lo = 0, hi = 0;
+  if (integer_range(type, name, lo, hi) && (v < lo || v > hi))
+    place.fail("value " + std::to_string(v) + " for " + what() + " is out of the range of its type " + name +
+               " (" + std::to_string(lo) + " to " + std::to_string(hi) + ")");
+  return v;
+}
+
 /// A number of an ASCII body as its property's type holds it: a float property's value is the float
-/// nearest the text (as a binary file would store it), any other type's the double nearest it.
+/// nearest the text (as a binary file would store it), an integer property's an integer in its type's
+/// range, a double property's the double nearest the text.
 template <class What>
 double ascii_number(const TextPlace& place, std::string_view token, Scalar type, const What& what) {
+  const char* name = nullptr;
+  long long lo = 0, hi = 0;
+  if (integer_range(type, name, lo, hi)) return static_cast<double>(ascii_integer(place, token, type, what));
   if (type == Scalar::Float32) {
     float f = 0;
     const auto r = std::from_chars(token.data(), token.data() + token.size(), f, std::chars_format::general);
@@ -410,13 +453,14 @@ void read_ascii(std::string_view text, const Header& h, const std::string& name,
               p[c] = ascii_number(body, t[k], prop.type,
                                   [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
             } else {
-              (void)parse_double(body, t[k], [&] { return "property " + prop.name + " of " + what; });
+              (void)ascii_number(body, t[k], prop.type,
+                                 [&] { return "property " + prop.name + " of " + what; });
             }
             ++k;
             continue;
           }
-          const long long n =
-              parse_integer(body, t[k], [&] { return "the count of list " + prop.name + " of " + what; });
+          auto count_what = [&] { return "the count of list " + prop.name + " of " + what; };
+          const long long n = parse_integer(body, t[k], count_what);
           const auto after = static_cast<long long>(t.size() - k - 1);
           if (n < 0)
             fail("the count of list " + prop.name + " of " + what + " is negative (" + std::to_string(n) +
@@ -424,13 +468,15 @@ void read_ascii(std::string_view text, const Header& h, const std::string& name,
           if (n > after)
             fail(what + "'s list " + prop.name + " counts " + std::to_string(n) + " values; its line has " +
                  std::to_string(after) + " after the count");
+          (void)ascii_integer(body, t[k], prop.count_type, count_what);  // (the count's type holds it)
           ++k;
           for (long long j = 0; j < n; ++j, ++k) {
             if (roles[pi] == Role::Indices) {
-              const long long v = parse_integer(body, t[k], [&] { return "a vertex index of " + what; });
+              const long long v =
+                  ascii_integer(body, t[k], prop.type, [&] { return "a vertex index of " + what; });
               loop.push_back(vertex_index(v, out.vertices.size(), i, fail));
             } else {
-              (void)parse_double(body, t[k], [&] { return "list " + prop.name + " of " + what; });
+              (void)ascii_number(body, t[k], prop.type, [&] { return "list " + prop.name + " of " + what; });
             }
           }
         }

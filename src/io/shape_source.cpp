@@ -137,7 +137,8 @@ std::pair<std::string, std::optional<std::string>> split_selector(const std::str
 /// "OFF" (and COFF, NOFF, ...), "ply", "solid" (ASCII STL), an OBJ keyword
 /// (v, vt, vn, f, o, g, ...), or a line of three numbers (a points file).
 std::string sniffed_format(const std::string& text) {
-  std::istringstream in(text);
+  const std::string_view bom = "\xEF\xBB\xBF";  // (a UTF-8 byte order mark before the first statement)
+  std::istringstream in(text.starts_with(bom) ? text.substr(bom.size()) : text);
   std::string line;
   while (std::getline(in, line)) {
     const auto tok = tokens(line, /*commas_separate=*/true);
@@ -145,7 +146,10 @@ std::string sniffed_format(const std::string& text) {
     const std::string_view t = tok[0];
     if (t.ends_with("OFF")) return "off";
     if (t == "ply") return "ply";
-    if (t == "solid") return "stl";
+    std::string word(t);
+    std::transform(word.begin(), word.end(), word.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (word == "solid") return "stl";  // (any case, as read_stl takes it)
     static constexpr std::string_view obj_words[] = {"v", "vt", "vn", "vp", "f",      "o",
                                                      "g", "s",  "l",  "p",  "usemtl", "mtllib"};
     for (const auto w : obj_words) {

@@ -1,9 +1,15 @@
 // src/io/soup_reader.cpp -- see soup_reader.hpp.
 #include "io/soup_reader.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
+#include <iterator>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -72,11 +78,43 @@ ShapeData soup(const std::string& name, const char* format, Read&& read) {
   return out;
 }
 
+/// The bytes of an STL file as CGAL's read_STL should see them.  CGAL reads a file as ASCII only when it
+/// starts with "solid" and a space or line end, and anything else as binary, so an ASCII file whose first
+/// line is "solid<TAB>name" or "SOLID name", or that starts with a UTF-8 byte order mark, was read as
+/// binary garbage.  Here: a file is ASCII when its first word is "solid" in any case, followed by
+/// white space, and it cannot be a binary file (a binary STL of N triangles, N the little-endian count
+/// at byte 80, has at least 84 + 50 N bytes; a binary header may start with "solid" too, and is then left
+/// to CGAL as it is).  An ASCII file is given to CGAL without the mark, its first word "solid" and a
+/// space, and its keywords in lower case (CGAL compares them exactly).
+std::string stl_for_cgal(std::string b) {
+  const std::string bom = "\xEF\xBB\xBF";
+  std::size_t start = b.starts_with(bom) ? bom.size() : 0;
+  start = std::min(b.find_first_not_of(" \t\r\n", start), b.size());
+  auto lower = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
+  std::string word = b.substr(start, 5);
+  std::transform(word.begin(), word.end(), word.begin(), lower);
+  const char after = start + 5 < b.size() ? b[start + 5] : '\n';
+  const bool ascii = word == "solid" && std::isspace(static_cast<unsigned char>(after));
+  bool binary = false;
+  if (b.size() >= 84) {
+    std::uint64_t n = 0;
+    for (int k = 3; k >= 0; --k)
+      n = (n << 8) | static_cast<unsigned char>(b[80 + static_cast<std::size_t>(k)]);
+    binary = 84 + 50 * n <= b.size();
+  }
+  if (!ascii || binary) return b;
+  b.erase(0, start);
+  std::transform(b.begin(), b.end(), b.begin(), lower);
+  if (b.size() > 5) b[5] = ' ';
+  return b;
+}
+
 }  // namespace
 
 ShapeData read_stl(std::istream& in, const std::string& name) {
+  std::istringstream bytes(stl_for_cgal(std::string(std::istreambuf_iterator<char>(in), {})));
   return soup(name, "STL", [&](auto& points, auto& polygons) {
-    return CGAL::IO::read_STL(in, points, polygons, CGAL::parameters::verbose(false));
+    return CGAL::IO::read_STL(bytes, points, polygons, CGAL::parameters::verbose(false));
   });
 }
 

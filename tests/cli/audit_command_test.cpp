@@ -140,5 +140,5 @@ TEST_CASE("audit: bad shape arguments name the file and exit 3", "[audit][errors
   CHECK_THAT(unknown.err, Catch::Contains("dodecahedron"));
   const Run usage = audit({"cube"});
   CHECK(usage.status == 2);
-  CHECK_THAT(usage.err, Catch::Contains("OFF or OBJ face list"));
+  CHECK_THAT(usage.err, Catch::Contains("OFF, OBJ, PLY or STL meshes"));
 }

@@ -5,6 +5,7 @@
 // shapes read from standard input.
 #include <catch2/catch.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -162,6 +163,36 @@ TEST_CASE("mesh files: hull: makes any mesh or point file its convex hull", "[me
   CHECK(info({"hull:cube"}).status == 0);
 }
 
+TEST_CASE("mesh files: an ASCII STL is ASCII whatever follows 'solid' and in any case", "[mesh]") {
+  // CGAL's reader takes only "solid" and a space or line end for ASCII, and read these as binary garbage
+  const std::string stl = test::file_text(kData + "cube.stl");
+  REQUIRE(stl.starts_with("solid cube\n"));
+  std::string upper = stl;
+  for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"tab.stl", "solid\tcube\n" + stl.substr(11)},
+           {"bare.stl", "solid\n" + stl.substr(11)},
+           {"upper.stl", upper},
+           {"bom.stl", "\xEF\xBB\xBF" + stl},
+           {"indented.stl", "\n  " + stl},
+       }) {
+    INFO(name);
+    const std::string path = test::temp_file(name, text);
+    const Run r = info({path});
+    CHECK(r.status == 0);
+    CHECK_THAT(r.out, Catch::Contains("8 vertices, 12 edges, 6 faces"));
+    const Run q = query({"hull:" + path, "cube", "--pose", "2.5", "0", "0", "--json"});
+    REQUIRE(q.status == 0);
+    CHECK(json::parse(q.out).at("separation").get<double>() == 0.5);
+  }
+  // a binary STL whose header starts with "solid " stays binary
+  std::string bin = test::file_text(kData + "cube_binary.stl");
+  bin.replace(0, 11, "solid cube ");
+  const Run b = info({test::temp_file("solid_header.stl", bin)});
+  CHECK(b.status == 0);
+  CHECK_THAT(b.out, Catch::Contains("8 vertices, 12 edges, 6 faces"));
+}
+
 TEST_CASE("mesh files: - reads a shape from standard input", "[mesh]") {
   const std::string cube_off = test::file_text(kData + "cube.off");
   const Run ref = query({kData + "cube.off", "cube", "--pose", "2.5", "0", "0", "--json"});
@@ -174,6 +205,8 @@ TEST_CASE("mesh files: - reads a shape from standard input", "[mesh]") {
            {"-", test::file_text(kData + "cube.ply")},
            {"-", test::file_text(kData + "cube.stl")},
            {"-:stl", test::file_text(kData + "cube_binary.stl")},
+           {"-", "\xEF\xBB\xBF" + test::file_text(kData + "cube.stl")},      // a byte order mark
+           {"-", "\xEF\xBB\xBF" + test::file_text(kData + "cube_tri.obj")},  // (read by name, skipped)
            {"-", "# points\n1 1 1\n1 1 -1\n1 -1 1\n1 -1 -1\n-1 1 1\n-1 1 -1\n-1 -1 1\n-1 -1 -1\n"},
            {"-:pts", "1 1 1\n1 1 -1\n1 -1 1\n1 -1 -1\n-1 1 1\n-1 1 -1\n-1 -1 1\n-1 -1 -1\n"},
        }) {

@@ -186,6 +186,29 @@ TEST_CASE("ply reader: malformed files are errors naming the file and the proble
        ":13: the count of list vertex_indices of face 0 is negative (-3)"},
       {"extra values", kVertexHeader + kFaceHeader + "0 0 0 9\n", ":10: vertex 0 has 1 value(s) more"},
       {"too few values", kVertexHeader + kFaceHeader + "0 0\n", ":10: vertex 0 has too few values (2)"},
+      {"uchar beyond its range",
+       "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty uchar z\n"
+       "end_header\n0 0 300\n",
+       ":8: value 300 for coordinate z of vertex 0 is out of the range of its type uchar (0 to 255)"},
+      {"negative uint",
+       "ply\nformat ascii 1.0\nelement vertex 1\nproperty uint x\nproperty float y\n"
+       "property float z\nend_header\n-1 0 0\n",
+       ":8: value -1 for coordinate x of vertex 0 is out of the range of its type uint (0 to 4294967295)"},
+      {"fraction in an int",
+       "ply\nformat ascii 1.0\nelement vertex 1\nproperty int x\nproperty float y\n"
+       "property float z\nend_header\n1.5 0 0\n",
+       ":8: "},
+      {"colour beyond uchar", kVertexHeader + "property uchar red\n" + kFaceHeader + "0 0 0 256\n",
+       ":11: value 256 for property red of vertex 0 is out of the range of its type uchar"},
+      {"uchar count beyond its range",
+       tri + "256" +
+           [] {
+             std::string v;
+             for (int i = 0; i < 256; ++i) v += " " + std::to_string(i % 3);
+             return v;
+           }() +
+           "\n",
+       ":13: value 256 for the count of list vertex_indices of face 0 is out of the range of its type uchar"},
       {"NaN", kVertexHeader + kFaceHeader + "0 nan 0\n",
        ":10: coordinate y of vertex 0 is 'nan': NaN and infinity are not allowed"},
       {"beyond a float", kVertexHeader + kFaceHeader + "1e39 0 0\n",
