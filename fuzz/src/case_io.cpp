@@ -1,6 +1,7 @@
 // Text I/O of fuzz cases (see sepax/fuzz/case.hpp for the format).
 #include <sepax/fuzz/case.hpp>
 
+#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <istream>
@@ -94,14 +95,18 @@ FuzzCase read_case(std::istream& in, const std::string& name) {
     } else if (key == "f") {
       if (!cur) fail("face outside a shape");
       std::vector<int> f;
-      long i;
-      while (ls >> i) {
-        if (i < 0 || i >= static_cast<long>(cur->vertices.size()))
-          fail("face refers to vertex " + std::to_string(i) + ", but only " +
-               std::to_string(cur->vertices.size()) + " vertices are defined above it");
+      // (each entry whole: `ls >> long` stopped silently at an index too large for a long)
+      for (std::string entry; ls >> entry;) {
+        long i = 0;
+        const char* const last = entry.data() + entry.size();
+        const auto [end, ec] = std::from_chars(entry.data(), last, i);
+        if (end != last || (ec != std::errc() && ec != std::errc::result_out_of_range))
+          fail("a face is a list of vertex indices ('" + entry + "' is not one)");
+        if (ec == std::errc::result_out_of_range || i < 0 || i >= static_cast<long>(cur->vertices.size()))
+          fail("face refers to vertex " + entry + ", but only " + std::to_string(cur->vertices.size()) +
+               " vertices are defined above it");
         f.push_back(static_cast<int>(i));
       }
-      if (!ls.eof()) fail("a face is a list of vertex indices");
       cur->faces.push_back(std::move(f));
     } else if (key == "end") {
       if (!cur) fail("'end' outside a shape");

@@ -63,6 +63,15 @@ TEST_CASE("parse errors name the line", "[fuzz][io]") {
   fails_with("sepax-fuzz-case 1\nshape A\nend\n", "shape B");
   fails_with("sepax-fuzz-case 1\nshape C\n", "A or B");
   fails_with("sepax-fuzz-case 1\nshape A\nv 0 0 0\n", "missing 'end'");
+  // face entries: whole integers in range, however large the text
+  const std::string three = "sepax-fuzz-case 1\nshape A\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  fails_with(three + "f 0 1 2 99999999999999999999\nend\n",
+             "t.case:6: face refers to vertex 99999999999999999999");
+  fails_with(three + "f 0 1 2 -99999999999999999999\nend\n", "vertex -99999999999999999999");
+  fails_with(three + "f 0 1 2 18446744073709551616\nend\n", "vertex 18446744073709551616");
+  fails_with(three + "f 0 1 2 -1\nend\n", "vertex -1");
+  fails_with(three + "f 0 1 1.5\nend\n", "'1.5' is not one");
+  fails_with(three + "f 0 1 2x\nend\n", "'2x' is not one");
 }
 
 TEST_CASE("a reproducer replays to the same report", "[fuzz][io]") {
