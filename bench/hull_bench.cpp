@@ -1,12 +1,14 @@
 // sepax_hull_bench: convex_hull<T> against CGAL's convex_hull_3 on the same
 // points, one run, wall time.  Point sets (seed 42): on the unit sphere, in
 // the unit ball, in a thin slab [-1, 1]^2 x [-1e-3, 1e-3], on a cylinder's
-// lateral surface (radius 1, height 2); 10^min .. 10^max points.
+// lateral surface (radius 1, height 2); 10^min .. 10^max points.  Not run by
+// default: "rim" (random angles on a cylinder's two rims, z = +-1: caps of
+// n / 2 corners) and "circle" (random angles on one circle: a flat hull).
 //   double, float: sepax against CGAL::Epick (float points widened exactly);
 //   Epeck, mpq: convex_hull<CGAL::Epeck::FT>, convex_hull<mpq_class> against CGAL::Epeck, up to 10^exact.
 // Ratio = sepax / CGAL (targets: 2 for double and float, 3 for Epeck and mpq).
 //
-//   sepax_hull_bench [--min 3] [--max 5] [--exact 4] [--kinds sphere,ball,slab,cylinder]
+//   sepax_hull_bench [--min 3] [--max 5] [--exact 4] [--kinds sphere,ball,slab,cylinder,rim,circle]
 //                    [--types double,float,Epeck,mpq] [--run both|sepax|cgal] [--clock wall|cpu]
 // --clock cpu times each hull by the thread's CPU time (CLOCK_THREAD_CPUTIME_ID) instead of the wall clock:
 //   on a shared, loaded machine the wall time also counts the time other processes run.
@@ -95,8 +97,20 @@ int main(int argc, char** argv) {
   std::vector<std::string> kinds{"sphere", "ball", "slab", "cylinder"};
   std::vector<std::string> types{"double", "float", "Epeck", "mpq"};
   std::string run = "both";
-  for (int i = 1; i + 1 < argc; i += 2) {
+  const char* usage =
+      "usage: sepax_hull_bench [--min 3] [--max 5] [--exact 4] "
+      "[--kinds sphere,ball,slab,cylinder,rim,circle] [--types double,float,Epeck,mpq] "
+      "[--run both|sepax|cgal] [--clock wall|cpu]\n";
+  for (int i = 1; i < argc; i += 2) {
     const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::printf("%s", usage);
+      return 0;
+    }
+    if (i + 1 == argc) {  // an option without its value (a lone trailing word is not ignored)
+      std::fprintf(stderr, "sepax_hull_bench: %s needs a value\n%s", a.c_str(), usage);
+      return 2;
+    }
     if (a == "--min") {
       min_exp = std::atoi(argv[i + 1]);
     } else if (a == "--max") {
@@ -113,10 +127,7 @@ int main(int argc, char** argv) {
     } else if (a == "--clock" && (std::string(argv[i + 1]) == "wall" || std::string(argv[i + 1]) == "cpu")) {
       cpu_clock = std::string(argv[i + 1]) == "cpu";
     } else {
-      std::fprintf(stderr,
-                   "usage: sepax_hull_bench [--min 3] [--max 5] [--exact 4] "
-                   "[--kinds sphere,ball,slab,cylinder] [--types double,float,Epeck,mpq] "
-                   "[--run both|sepax|cgal] [--clock wall|cpu]\n");
+      std::fprintf(stderr, "%s", usage);
       return 2;
     }
   }

@@ -101,18 +101,20 @@ int run(int argc, char** argv) {
     return kExitUsage;
   }
   const char* verb = argv[1];
-  if (std::strcmp(verb, "--help") == 0 || std::strcmp(verb, "-h") == 0) return help_main(0, nullptr);
+  // `sepax --help` and `sepax --version`: output that cannot be written is status 3, as for every verb
+  auto written = [](int status) -> int {
+    if (std::cout.flush()) return status;
+    std::cerr << "sepax: error: cannot write standard output\n";
+    return kExitInput;
+  };
+  if (std::strcmp(verb, "--help") == 0 || std::strcmp(verb, "-h") == 0) return written(help_main(0, nullptr));
   if (std::strcmp(verb, "--version") == 0) {
     if (argc > 2) {
       std::cerr << "sepax: --version takes no arguments\n";
       return kExitUsage;
     }
     std::cout << "sepax " << version_text() << "\n";
-    if (!std::cout.flush()) {
-      std::cerr << "sepax: error: cannot write standard output\n";
-      return kExitInput;
-    }
-    return kExitOk;
+    return written(kExitOk);
   }
   const Verb* v = find_verb(verb);
   if (!v) {

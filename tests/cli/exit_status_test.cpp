@@ -212,9 +212,12 @@ TEST_CASE("exit status: 3 when standard output cannot be written", "[exit]") {
     CHECK(r.status == 3);
     CHECK_THAT(r.err, Catch::Contains("sepax " + args[0] + ": error: cannot write standard output"));
   }
-  const test::ProgramRun v = test::run_program({"--version"}, "", 60, "/dev/full");
-  CHECK(v.status == 3);
-  CHECK_THAT(v.err, Catch::Contains("sepax: error: cannot write standard output"));
+  for (const char* flag : {"--version", "--help", "-h"}) {
+    INFO(flag);
+    const test::ProgramRun v = test::run_program({flag}, "", 60, "/dev/full");
+    CHECK(v.status == 3);
+    CHECK_THAT(v.err, Catch::Contains("sepax: error: cannot write standard output"));
+  }
 }
 
 TEST_CASE("exit status: 4 for an exception escaping any verb, with its message", "[exit]") {
