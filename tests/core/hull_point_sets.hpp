@@ -209,8 +209,9 @@ inline std::vector<Vec3<double>> random_point_set(std::mt19937& rng, int kind) {
 
 // The hull benchmark's point sets (bench/hull_bench.cpp, tools/hull_compare.cpp;
 // seed 42): n points on the unit sphere, in the unit ball, in the thin slab
-// [-1, 1]^2 x [-1e-3, 1e-3], or on a cylinder's lateral surface (radius 1,
-// height 2; any other kind).
+// [-1, 1]^2 x [-1e-3, 1e-3], at random angles on the two rims of a cylinder
+// (radius 1, z = +-1: "rim") or on one circle ("circle"), or on a cylinder's
+// lateral surface (radius 1, height 2; any other kind).
 inline std::vector<Vec3<double>> bench_point_set(const std::string& kind, std::size_t n) {
   std::mt19937_64 rng(42);
   std::normal_distribution<double> nd;
@@ -226,6 +227,9 @@ inline std::vector<Vec3<double>> bench_point_set(const std::string& kind, std::s
       if (x * x + y * y + z * z <= 1) p.emplace_back(x, y, z);
     } else if (kind == "slab") {
       p.emplace_back(ud(rng), ud(rng), 1e-3 * ud(rng));
+    } else if (kind == "rim" || kind == "circle") {  // a cylinder's two rims; one circle
+      const double a = 3.14159265358979323846 * ud(rng);
+      p.emplace_back(std::cos(a), std::sin(a), kind == "circle" ? 0.0 : p.size() % 2 == 0 ? 1.0 : -1.0);
     } else {
       const double a = 3.14159265358979323846 * ud(rng);
       p.emplace_back(std::cos(a), std::sin(a), ud(rng));
