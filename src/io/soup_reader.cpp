@@ -80,8 +80,8 @@ ShapeData soup(const std::string& name, const char* format, Read&& read) {
 
 /// The bytes of an STL file as CGAL's read_STL should see them.  CGAL reads a file as ASCII only when it
 /// starts with "solid" and a space or line end, and anything else as binary, so an ASCII file whose first
-/// line is "solid<TAB>name" or "SOLID name", or that starts with a UTF-8 byte order mark, was read as
-/// binary garbage.  Here: a file is ASCII when its first word is "solid" in any case, followed by
+/// line is "solid<TAB>name" or "SOLID name", or that starts with a UTF-8 byte order mark, would be read
+/// as binary garbage.  Here: a file is ASCII when its first word is "solid" in any case, followed by
 /// white space, and it cannot be a binary file (a binary STL of N triangles, N the little-endian count
 /// at byte 80, has at least 84 + 50 N bytes; a binary header may start with "solid" too, and is then left
 /// to CGAL as it is).  An ASCII file is given to CGAL without the mark, its first word "solid" and a

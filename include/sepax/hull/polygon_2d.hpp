@@ -64,9 +64,9 @@ inline std::vector<I> monotone_chain(const std::vector<I>& order, Left left) {
 //      still passes within the tolerance of every corner it skips (a stack
 //      pass around the loop, repeated until none is); one that cannot be
 //      dropped stays, a strictly convex corner.
-// A chain that drops corners one at a time against their current
-// neighbours instead lets the error add up along a dense arc (a circle of
-// 10^5 points kept 8 corners in float, points 3 800 eps outside).
+// (A chain that drops corners one at a time against their current
+// neighbours lets the error add up along a dense arc: on 10^5 points of a
+// circle in float it keeps 8 corners, with points 3 800 eps outside.)
 template <class I, class Within, class Left>
 inline std::vector<I> tolerant_loop(const std::vector<I>& loop, Within within, Left left) {
   const std::size_t m = loop.size();
