@@ -21,9 +21,7 @@ std::string shape_argument(const std::string& arg, bool hull) {
 
 const char* pair_arguments_help() {
   return "two shapes A and B (built-ins, OFF, OBJ, PLY or STL meshes, points files; 'sepax query --help' "
-         "lists "
-         "them), "
-         "or one fuzzer reproducer FILE.case";
+         "lists them), or one fuzzer reproducer FILE.case";
 }
 
 namespace {

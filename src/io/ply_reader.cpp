@@ -376,17 +376,22 @@ bool integer_range(Scalar t, const char*& name, long long& lo, long long& hi) {
   }
 }
 
-/// An integer of an ASCII body that its property's integer type holds (an error naming the value and the
-/// type otherwise, as a binary file could not store it); any value for float and double.
+/// v, an integer read from an ASCII body, if its property's integer type holds it (an error naming the
+/// value and the type otherwise, as a binary file could not store it); any value for float and double.
 template <class What>
-long long ascii_integer(const TextPlace& place, std::string_view token, Scalar type, const What& what) {
-  const long long v = parse_integer(place, token, what);
+long long in_type_range(const TextPlace& place, long long v, Scalar type, const What& what) {
   const char* name = nullptr;
   long long lo = 0, hi = 0;
   if (integer_range(type, name, lo, hi) && (v < lo || v > hi))
     place.fail("value " + std::to_string(v) + " for " + what() + " is out of the range of its type " + name +
                " (" + std::to_string(lo) + " to " + std::to_string(hi) + ")");
   return v;
+}
+
+/// An integer of an ASCII body that its property's integer type holds (in_type_range).
+template <class What>
+long long ascii_integer(const TextPlace& place, std::string_view token, Scalar type, const What& what) {
+  return in_type_range(place, parse_integer(place, token, what), type, what);
 }
 
 /// A number of an ASCII body as its property's type holds it: a float property's value is the float
@@ -468,7 +473,7 @@ void read_ascii(std::string_view text, const Header& h, const std::string& name,
           if (n > after)
             fail(what + "'s list " + prop.name + " counts " + std::to_string(n) + " values; its line has " +
                  std::to_string(after) + " after the count");
-          (void)ascii_integer(body, t[k], prop.count_type, count_what);  // (the count's type holds it)
+          (void)in_type_range(body, n, prop.count_type, count_what);  // (the count's type holds it)
           ++k;
           for (long long j = 0; j < n; ++j, ++k) {
             if (roles[pi] == Role::Indices) {

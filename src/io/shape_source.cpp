@@ -59,10 +59,7 @@ int side_count(const std::string& spec, std::string_view s) {
 }
 
 std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
+  return lower_ascii(std::filesystem::path(path).extension().string());
 }
 
 }  // namespace
@@ -137,8 +134,7 @@ std::pair<std::string, std::optional<std::string>> split_selector(const std::str
 /// "OFF" (and COFF, NOFF, ...), "ply", "solid" (ASCII STL), an OBJ keyword
 /// (v, vt, vn, f, o, g, ...), or a line of three numbers (a points file).
 std::string sniffed_format(const std::string& text) {
-  const std::string_view bom = "\xEF\xBB\xBF";  // (a UTF-8 byte order mark before the first statement)
-  std::istringstream in(text.starts_with(bom) ? text.substr(bom.size()) : text);
+  std::istringstream in{std::string(without_bom(text))};
   std::string line;
   while (std::getline(in, line)) {
     const auto tok = tokens(line, /*commas_separate=*/true);
@@ -146,10 +142,7 @@ std::string sniffed_format(const std::string& text) {
     const std::string_view t = tok[0];
     if (t.ends_with("OFF")) return "off";
     if (t == "ply") return "ply";
-    std::string word(t);
-    std::transform(word.begin(), word.end(), word.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (word == "solid") return "stl";  // (any case, as read_stl takes it)
+    if (lower_ascii(std::string(t)) == "solid") return "stl";  // (any case, as read_stl takes it)
     static constexpr std::string_view obj_words[] = {"v", "vt", "vn", "vp", "f",      "o",
                                                      "g", "s",  "l",  "p",  "usemtl", "mtllib"};
     for (const auto w : obj_words) {
@@ -164,9 +157,7 @@ std::string sniffed_format(const std::string& text) {
 }
 
 ShapeData read_stdin(const std::string& spec, const std::optional<std::string>& selector, std::istream& in) {
-  std::string format = spec == "-" ? "" : spec.substr(2);
-  std::transform(format.begin(), format.end(), format.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::string format = lower_ascii(spec == "-" ? "" : spec.substr(2));
   if (!in.good() || in.peek() == std::char_traits<char>::eof()) {
     throw InvalidInput(ErrorCode::Parse,
                        "standard input: nothing to read (empty, or already read by another '-')");

@@ -18,6 +18,7 @@
 #include <sepax/error.hpp>
 
 #include "io/open_file.hpp"
+#include "io/text_input.hpp"
 
 namespace sepax::cli::io {
 
@@ -87,12 +88,9 @@ ShapeData soup(const std::string& name, const char* format, Read&& read) {
 /// to CGAL as it is).  An ASCII file is given to CGAL without the mark, its first word "solid" and a
 /// space, and its keywords in lower case (CGAL compares them exactly).
 std::string stl_for_cgal(std::string b) {
-  const std::string bom = "\xEF\xBB\xBF";
-  std::size_t start = b.starts_with(bom) ? bom.size() : 0;
+  std::size_t start = b.size() - without_bom(b).size();
   start = std::min(b.find_first_not_of(" \t\r\n", start), b.size());
-  auto lower = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
-  std::string word = b.substr(start, 5);
-  std::transform(word.begin(), word.end(), word.begin(), lower);
+  const std::string word = lower_ascii(b.substr(start, 5));
   const char after = start + 5 < b.size() ? b[start + 5] : '\n';
   const bool ascii = word == "solid" && std::isspace(static_cast<unsigned char>(after));
   bool binary = false;
@@ -103,8 +101,7 @@ std::string stl_for_cgal(std::string b) {
     binary = 84 + 50 * n <= b.size();
   }
   if (!ascii || binary) return b;
-  b.erase(0, start);
-  std::transform(b.begin(), b.end(), b.begin(), lower);
+  b = lower_ascii(b.substr(start));
   if (b.size() > 5) b[5] = ' ';
   return b;
 }

@@ -1,6 +1,8 @@
 // src/io/text_input.cpp -- see text_input.hpp.
 #include "io/text_input.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -14,6 +16,12 @@ void fail_at(const std::string& file, std::size_t line, const std::string& what)
   throw InvalidInput(ErrorCode::Parse, file + ":" + std::to_string(line) + ": " + what);
 }
 
+std::string lower_ascii(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
 bool LineReader::next(std::string& line) {
   if (!std::getline(in_, line)) {
     if (in_.bad()) fail_at(file_, line_ + 1, "read error");
@@ -21,7 +29,7 @@ bool LineReader::next(std::string& line) {
   }
   ++line_;
   // a UTF-8 byte order mark before the first line (editors on Windows write one) is not content
-  if (line_ == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
+  if (line_ == 1 && line.starts_with(kUtf8Bom)) line.erase(0, kUtf8Bom.size());
   if (!line.empty() && line.back() == '\r') line.pop_back();
   if (line.find('\0') != std::string::npos) fail("NUL byte in text (is this a binary file?)");
   return true;

@@ -47,6 +47,17 @@ class LineReader : public TextPlace {
   std::istream& in_;
 };
 
+/// A UTF-8 byte order mark (editors on Windows write one before the first line); not content.
+inline constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
+/// text without a leading UTF-8 byte order mark.
+inline std::string_view without_bom(std::string_view text) {
+  return text.starts_with(kUtf8Bom) ? text.substr(kUtf8Bom.size()) : text;
+}
+
+/// s with its ASCII letters in lower case (file extensions, format names, STL keywords).
+std::string lower_ascii(std::string s);
+
 /// The whitespace-separated tokens of line, up to a '#' comment.  With
 /// commas_separate, ',' also separates tokens (points files).
 std::vector<std::string_view> tokens(std::string_view line, bool commas_separate = false);
