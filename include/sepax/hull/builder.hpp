@@ -67,6 +67,7 @@ template <Number T>
 struct GroupFit {
   Vec3<T> area = Vec3<T>(T(0), T(0), T(0));      ///< sum of triangle cross products
   Plane<T> pl{Vec3<T>(T(0), T(0), T(0)), T(0)};  ///< the refitted plane (HullTraits::group_plane)
+  Vec3<double> sum = Vec3<double>(0, 0, 0);      ///< sum of the group's vertices (local coordinates)
 };
 /// Exact T: no fitted plane to keep (a group's plane is its plane triangle's), so a group holds no T value.
 struct NoGroupFit {};
@@ -124,6 +125,11 @@ struct MergeRecord {
 /// makes every face stage merge all the triangles, which must give the same faces (the hull tests compare).
 /// (An atomic, read once per face stage: a test may switch it while other threads build hulls.)
 inline std::atomic<bool> local_face_merges{true};
+/// Whether the sweep's search for a kept point first walks towards it and then passes only through the
+/// triangles near it (first_above_nearby); false makes it pass through every face within reach of the
+/// point's height, a larger search whose builds take other (equally valid) turns: a test reproducing a
+/// build's path switches it off.  (An atomic, read once per sweep.)
+inline std::atomic<bool> sweep_walks{true};
 /// The float face stages that merged only around what changed (merge_locally), for the tests to see.
 inline std::atomic<std::size_t> local_face_stages{0};
 /// The results of passes that went on from their own triangles that validation refused (Builder::finish),
@@ -134,8 +140,26 @@ inline std::atomic<std::size_t> local_surface_refusals{0};
 template <Number T>
 struct RepairLog {
   std::optional<ConvexPolyhedron<T>> nearest;  ///< nearest every point (height or distance, the larger)
-  std::optional<ConvexPolyhedron<T>> lowest;   ///< lowest heights above the face planes
+  /// lowest heights above the face planes; empty while that result is the nearest one (lowest_is_nearest),
+  /// which is then not copied (the hull of 10^5 points takes tens of megabytes)
+  std::optional<ConvexPolyhedron<T>> lowest;
+  bool lowest_is_nearest = false;
   double nearest_out = 0, nearest_height = 0, lowest_height = 0;  ///< x eps
+
+  /// Whether a pass has been measured for the lowest heights.
+  bool has_lowest() const { return lowest_is_nearest || lowest.has_value(); }
+  /// The result with the lowest heights.
+  std::optional<ConvexPolyhedron<T>>& lowest_result() { return lowest_is_nearest ? nearest : lowest; }
+  /// Replaces the nearest result (out and height x eps), keeping the lowest one.
+  void set_nearest(ConvexPolyhedron<T> h, double out, double height) {
+    if (lowest_is_nearest) {
+      lowest = std::move(nearest);
+      lowest_is_nearest = false;
+    }
+    nearest = std::move(h);
+    nearest_out = out;
+    nearest_height = height;
+  }
 };
 
 /// What Builder::tris_ holds.
@@ -202,7 +226,8 @@ class Builder {
   void assign_live(int p);
   T threshold(int p) const;
   bool sweep();
-  int first_above_nearby(int p, int f, T reach, std::vector<int>& seen, std::vector<int>& queue) const;
+  int first_above_nearby(int p, int f, T reach, bool walk, std::vector<int>& seen,
+                         std::vector<int>& queue) const;
   static int edge_index(const Tri& t, int from);
   std::optional<ConvexPolyhedron<T>> solid(const std::vector<int>& active, int a, int b, int c, int d,
                                            std::vector<int>& reject);
@@ -320,6 +345,9 @@ class Builder {
   std::vector<std::byte> horizon_pool_ = std::vector<std::byte>(kHorizonPool);  // the horizon map's storage
   std::vector<int> moved_;       // scratch, per eye: the points of a removed face
   std::vector<int> degree_;      // scratch, per welded point
+  std::vector<int> union_;       // scratch: a union of two face groups' vertices (unite)
+  std::vector<int> shared_;      // scratch: the vertices two face groups share (unite)
+  std::vector<int> added_;       // scratch: the smaller group's vertices the larger lacks (unite)
   std::vector<int> eye_visits_;  // times each welded point was the eye (kHullMaxEyeVisits)
   std::vector<int> nomerge_;     // triangle -> id of the face it was split from (0: none)
   int splits_ = 0;

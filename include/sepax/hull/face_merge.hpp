@@ -64,6 +64,10 @@ inline int Builder<T>::find(int x) {
   return x;
 }
 
+// Up to this many vertices new to a group are inserted one by one (a move of the larger part), more by a
+// merge.
+inline constexpr std::size_t kUniteInserts = 4;
+
 // Unites the groups of x and y (the union's vertices, split ids, area and plane).
 template <Number T>
 inline void Builder<T>::unite(int x, int y) {
@@ -79,9 +83,26 @@ inline void Builder<T>::unite(int x, int y) {
         std::none_of(kept.begin(), kept.end(), [&](const auto& k) { return k.first == x; }))
       kept.emplace_back(x, gx);
   }
-  std::vector<int> vs;
-  std::set_union(gx.verts.begin(), gx.verts.end(), gy.verts.begin(), gy.verts.end(), std::back_inserter(vs));
-  gx.verts = std::move(vs);
+  // The union: the smaller group's vertices looked up in the larger's (a face of many triangles is united
+  // one triangle at a time: no pass over its vertices), the missing ones inserted.
+  const bool y_larger = gy.verts.size() > gx.verts.size();
+  const std::vector<int>& small = y_larger ? gx.verts : gy.verts;
+  const std::vector<int>& large = y_larger ? gy.verts : gx.verts;
+  shared_.clear();
+  added_.clear();
+  for (const int v : small)
+    (std::binary_search(large.begin(), large.end(), v) ? shared_ : added_).push_back(v);
+  Traits::unite_sum(*this, gx, gy, shared_);
+  if (y_larger) union_.assign(gy.verts.begin(), gy.verts.end());
+  std::vector<int>& out = y_larger ? union_ : gx.verts;
+  if (added_.size() <= kUniteInserts) {  // (a triangle joining a face adds a vertex or none)
+    for (const int v : added_) out.insert(std::upper_bound(out.begin(), out.end(), v), v);
+  } else {
+    const std::size_t before = out.size();
+    out.insert(out.end(), added_.begin(), added_.end());
+    std::inplace_merge(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(before), out.end());
+  }
+  if (y_larger) gx.verts.swap(union_);
   if (!gy.splits.empty()) {
     std::vector<int> sp;
     std::set_union(gx.splits.begin(), gx.splits.end(), gy.splits.begin(), gy.splits.end(),

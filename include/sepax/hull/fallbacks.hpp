@@ -128,8 +128,9 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
 
 // Float T: how far (in units of eps) the points' shadow on a plane (unit
 // normal nrm) reaches beyond the shadow of h's vertices: the largest
-// signed distance of a projected point beyond an edge of the 2D hull of
-// the projected vertices (a lower bound on its distance from h).
+// distance of a projected point from the 2D hull of the projected vertices
+// (face_distance, O(log n) a point on a large loop), a lower bound on its
+// distance from h (projection moves no two points apart).
 template <Number T>
 inline double Builder<T>::shadow_out(const ConvexPolyhedron<T>& h, const Vec3<double>& nrm) const {
   const auto [ax, bx] = plane_basis(nrm);
@@ -139,29 +140,18 @@ inline double Builder<T>::shadow_out(const ConvexPolyhedron<T>& h, const Vec3<do
     const Vec3<double> l(vec_to_double(x) - c);
     v.push_back({dot(ax, l), dot(bx, l)});
   }
-  std::vector<std::size_t> loop = hull_2d(v, 0.0);
+  const std::vector<std::size_t> loop = hull_2d(v, 0.0);
   if (loop.size() < 3) return 1e300;
-  // the loop's edges with length (start a, direction e, length), computed once for every point
-  struct Edge {
-    std::array<double, 2> a;
-    double ex, ey, len;
-  };
-  std::vector<Edge> edges;
-  for (std::size_t k = 0; k < loop.size(); ++k) {
-    const auto& a = v[loop[k]];
-    const auto& b = v[loop[(k + 1) % loop.size()]];
-    const double ex = b[0] - a[0], ey = b[1] - a[1];
-    const double len = std::hypot(ex, ey);
-    if (len > 0) edges.push_back({a, ex, ey, len});
-  }
+  // the loop as a face in the plane z = 0 of the basis (ax, bx, nrm)
+  std::vector<Vec3<double>> corners;
+  for (std::size_t k : loop) corners.emplace_back(v[k][0], v[k][1], 0.0);
+  PolygonFace shadow;
+  shadow.v = corners;
+  shadow.n = Vec3<double>(0, 0, 1);
   double worst = 0;
   for (std::size_t i = 0; i < pts_.size(); ++i) {
     const Vec3<double> x = vec_to_double(local_point(static_cast<int>(i)));
-    const std::array<double, 2> p{dot(ax, x), dot(bx, x)};
-    double out = -1e300;
-    for (const Edge& g : edges)
-      out = std::max(out, (g.ex * (p[1] - g.a[1]) - g.ey * (p[0] - g.a[0])) / -g.len);
-    worst = std::max(worst, out);
+    worst = std::max(worst, face_distance(shadow, Vec3<double>(dot(ax, x), dot(bx, x), 0.0), 0.0));
   }
   return worst / to_double(eps_);
 }

@@ -3,8 +3,9 @@
 // A point set within the flat tolerance of a plane (exact T: in one plane) is a flat double-sided polygon:
 //   1. sort the points on the two coordinates other than the normal's largest component, along the one
 //      they spread most on;
-//   2. Andrew's monotone chain (polygon_2d.hpp) with the turn decided in 3D against the normal (float T:
-//      a corner within eps of its neighbours' line is dropped);
+//   2. Andrew's monotone chain (polygon_2d.hpp) with the strict turn decided in 3D against the normal;
+//      float T: tolerant_loop drops corners within eps of their neighbours' line where every corner a new
+//      edge skips is within eps of it;
 //   3. float T: start the loop where validation accepts it (precheck.hpp), else reject the failing corner;
 //   4. ConvexPolyhedron::polygon validates the result.
 #pragma once
@@ -55,17 +56,28 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::polygon(const std::vector<
   });
   const bool flip = n[k] < T(0);
   const T nlen = length(n);
-  auto left = [&](int p0, int p1, int p2) {
-    const Vec3<T> e1(local_point(p1) - local_point(p0));
-    T t = dot(n, cross(e1, Vec3<T>(local_point(p2) - local_point(p1))));
-    if (flip) t = -t;
-    // float T: the distance of p2 from the line p0 p1 (and of p0 from p1 p2) > eps
-    return Traits::left_turn(t, [&] {
-      const T len = std::max(length(e1), length(Vec3<T>(local_point(p2) - local_point(p1))));
-      return T(eps_ * nlen * len);
-    });
+  auto turn = [&](int p0, int p1, int p2) {
+    const T t =
+        dot(n, cross(Vec3<T>(local_point(p1) - local_point(p0)), Vec3<T>(local_point(p2) - local_point(p1))));
+    return flip ? T(-t) : t;
   };
-  std::vector<int> hull = monotone_chain(pts, left);
+  std::vector<int> hull =
+      monotone_chain(pts, [&](int p0, int p1, int p2) { return turn(p0, p1, p2) > T(0); });
+  if constexpr (Traits::kTolerantChain) {
+    // the distance of p2 from the line p0 p1 (and of p0 from p1 p2) > eps
+    auto left = [&](int p0, int p1, int p2) {
+      return Traits::left_turn(turn(p0, p1, p2), [&] {
+        const T len = std::max(length(Vec3<T>(local_point(p1) - local_point(p0))),
+                               length(Vec3<T>(local_point(p2) - local_point(p1))));
+        return T(eps_ * nlen * len);
+      });
+    };
+    // q at most eps outside the line a c: turn(a, q, c) / (|n| |c - a|) <= eps
+    auto within = [&](int a, int c, int q) {
+      return turn(a, q, c) <= T(eps_ * nlen * length(Vec3<T>(local_point(c) - local_point(a))));
+    };
+    hull = tolerant_loop(hull, within, left);
+  }
   if (hull.size() < 3) {
     throw InvalidInput(ErrorCode::Collinear,
                        "convex_hull: all points lie on one line" + std::string(Traits::kLineNote));

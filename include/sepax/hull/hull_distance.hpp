@@ -6,7 +6,8 @@
 //   3. polygon_distance: a point's Euclidean distance from the hull, through its nearest face polygon.
 //   4. DeepInside: on a large solid, whether a point is certainly below every face plane, by a climb over
 //      adjacent faces instead of a pass over every face.
-//   5. distance_to_segment: a point's distance from a segment.
+//   5. face_distance: a point's distance from one face polygon (a large face: fan_edge, a bisection).
+//   6. distance_to_segment, distance_to_triangle: a point's distance from a segment, from a triangle.
 #pragma once
 
 #include <algorithm>
@@ -225,6 +226,94 @@ inline std::size_t next_within(const std::vector<double>& heights, std::size_t f
   return count;
 }
 
+// A face with at least this many corners is measured by fan_distance2 (O(log n) plus a short walk) rather
+// than by a pass over its edges (a cylinder's cap, a flat polygon of 10^5 corners).
+inline constexpr std::size_t kFanSearchCorners = 32;
+
+// The squared distance of x from edge i (corner i to i + 1) of the face.
+inline double edge_distance2(const PolygonFace& fc, std::size_t i, const Vec3<double>& x) {
+  const std::size_t n = fc.v.size();
+  const Vec3<double> e(fc.v[(i + 1) % n] - fc.v[i]), ax(x - fc.v[i]);
+  const double l2 = squared_norm(e);
+  const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
+  return squared_norm(Vec3<double>(ax - t * e));
+}
+
+// Whether x is beyond the line of edge i (outside its side of the face).
+inline bool beyond_edge(const PolygonFace& fc, std::size_t i, const Vec3<double>& x) {
+  const std::size_t n = fc.v.size();
+  return dot(cross(Vec3<double>(fc.v[(i + 1) % n] - fc.v[i]), fc.n), Vec3<double>(x - fc.v[i])) > 0;
+}
+
+// A large face: the edge of the polygon nearest x (by a walk to it that ends where the distance stops
+// falling), its squared distance in d2, and in inside whether x projects inside the polygon.  The corners
+// seen from corner 0 turn counter-clockwise by less than a half turn, so the side of x of the ray from
+// corner 0 through corner i changes once along the loop: a bisection finds the fan triangle (0, i, i + 1)
+// whose wedge holds x.  x is inside iff it is not beyond edge i (nor, for a wedge chosen by rounding, its
+// neighbours).  Outside, edge i is on the chain of edges x is beyond, along which the distance falls to its
+// minimum and rises again; inside near the boundary, edge i is next to the nearest edge (a point near edge
+// j lies in fan triangle j, one near a corner in a triangle of that corner): either way the walk from it
+// ends at the nearest edge.
+inline std::size_t fan_edge(const PolygonFace& fc, const Vec3<double>& x, double& d2, bool& inside) {
+  const std::size_t n = fc.v.size();
+  const Vec3<double> x0(x - fc.v[0]);
+  auto left_of_ray = [&](std::size_t i) {
+    return dot(fc.n, cross(Vec3<double>(fc.v[i] - fc.v[0]), x0)) >= 0;
+  };
+  std::size_t at;  // an edge x is beyond, or the wedge's edge
+  inside = false;
+  if (!left_of_ray(1)) {
+    at = 0;
+  } else if (left_of_ray(n - 1)) {
+    at = n - 1;
+  } else {
+    std::size_t lo = 1, hi = n - 1;  // left_of_ray(lo), !left_of_ray(hi)
+    while (hi - lo > 1) {
+      const std::size_t mid = lo + (hi - lo) / 2;
+      (left_of_ray(mid) ? lo : hi) = mid;
+    }
+    at = lo;
+    inside = !beyond_edge(fc, lo, x) && !beyond_edge(fc, lo - 1, x) && !beyond_edge(fc, (lo + 1) % n, x);
+  }
+  d2 = edge_distance2(fc, at, x);
+  for (const std::size_t step : {std::size_t{1}, n - 1}) {  // forwards, then backwards
+    for (std::size_t walked = 0; walked + 1 < n; ++walked) {
+      const std::size_t next = (at + step) % n;
+      const double nd2 = edge_distance2(fc, next, x);
+      if (!(nd2 < d2)) break;
+      at = next;
+      d2 = nd2;
+    }
+  }
+  return at;
+}
+
+// A large face: the squared distance of x's projection from the polygon's boundary if it projects outside
+// it, else -1 (fan_edge).
+inline double fan_distance2(const PolygonFace& fc, const Vec3<double>& x) {
+  double d2 = 0;
+  bool inside = false;
+  fan_edge(fc, x, d2, inside);
+  return inside ? -1 : d2;
+}
+
+// The distance of x from the face polygon: |h| (its height over the face's plane) if it projects inside,
+// else its distance from the nearest edge (squared distances compared first: sqrt is correctly rounded,
+// hence monotone, so the root of the smallest is the smallest root).
+inline double face_distance(const PolygonFace& fc, const Vec3<double>& x, double h) {
+  const std::size_t n = fc.v.size();
+  if (n >= kFanSearchCorners) {
+    const double d2 = fan_distance2(fc, x);
+    return d2 < 0 ? std::abs(h) : std::sqrt(d2);
+  }
+  bool inside = true;
+  for (std::size_t i = 0; i < n && inside; ++i) inside = !beyond_edge(fc, i, x);
+  if (inside) return std::abs(h);
+  double d2 = 1e300;
+  for (std::size_t i = 0; i < n; ++i) d2 = std::min(d2, edge_distance2(fc, i, x));
+  return std::sqrt(d2);
+}
+
 // Euclidean distance of x from the polyhedron given by faces: the distance
 // to the nearest face polygon (its height if it projects inside the
 // polygon, else the distance to the nearest edge), or 0 if x is below that
@@ -257,25 +346,7 @@ inline double polygon_distance(const PolygonFaces& polygons, bool flat, const Ve
   for (std::size_t k = next_within(heights, 0, reach); k < count; k = next_within(heights, k + 1, reach)) {
     const double h = heights[k];
     const auto& fc = faces[subset != nullptr ? as_index((*subset)[k]) : k];
-    // (inside: |h|; else the nearest edge, its squared distance taken first: sqrt is correctly rounded,
-    // hence monotone, so the root of the smallest is the smallest root)
-    const std::size_t n = fc.v.size();
-    bool inside = true;
-    for (std::size_t i = 0; i < n && inside; ++i) {
-      const Vec3<double> e(fc.v[(i + 1) % n] - fc.v[i]), ax(x - fc.v[i]);
-      if (dot(cross(e, fc.n), ax) > 0) inside = false;
-    }
-    double d = std::abs(h);
-    if (!inside) {
-      double d2 = 1e300;
-      for (std::size_t i = 0; i < n; ++i) {
-        const Vec3<double> e(fc.v[(i + 1) % n] - fc.v[i]), ax(x - fc.v[i]);
-        const double l2 = squared_norm(e);
-        const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
-        d2 = std::min(d2, squared_norm(Vec3<double>(ax - t * e)));
-      }
-      d = std::sqrt(d2);
-    }
+    const double d = face_distance(fc, x, h);
     if (d < best * (1 - kHullDistanceTie)) {
       best = d;
       above = h > 0;
@@ -294,6 +365,22 @@ inline double distance_to_segment(const Vec3<double>& x, const Vec3<double>& pa,
   const double l2 = squared_norm(e);
   const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
   return std::sqrt(squared_norm(Vec3<double>(ax - t * e)));
+}
+
+/// Euclidean distance of x from the triangle abc (its height over the plane if x projects inside, else the
+/// distance from the nearest side; a degenerate triangle: from its sides).
+inline double distance_to_triangle(const Vec3<double>& x, const Vec3<double>& a, const Vec3<double>& b,
+                                   const Vec3<double>& c) {
+  const Vec3<double> n = cross(Vec3<double>(b - a), Vec3<double>(c - a));
+  const double n2 = squared_norm(n);
+  if (n2 > 0) {
+    auto inside_of = [&](const Vec3<double>& p, const Vec3<double>& q) {
+      return dot(n, cross(Vec3<double>(q - p), Vec3<double>(x - p))) >= 0;
+    };
+    if (inside_of(a, b) && inside_of(b, c) && inside_of(c, a))
+      return std::abs(dot(n, Vec3<double>(x - a))) / std::sqrt(n2);
+  }
+  return std::min({distance_to_segment(x, a, b), distance_to_segment(x, b, c), distance_to_segment(x, c, a)});
 }
 
 }  // namespace sepax::hull::detail

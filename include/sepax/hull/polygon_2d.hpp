@@ -3,7 +3,9 @@
 // Convex polygons in a plane, in double, for the flat hull and the float fallbacks:
 //   1. plane_basis: an orthonormal basis of a plane given its unit normal.
 //   2. monotone_chain: Andrew's monotone chain over sorted points, with the turn test as a parameter.
-//   3. hull_2d: the counter-clockwise 2D hull of points, corners within a tolerance of their neighbours' line
+//   3. tolerant_loop: a convex loop with the corners dropped that a tolerance allows, every dropped corner
+//      checked against the edge that replaces it.
+//   4. hull_2d: the counter-clockwise 2D hull of points, corners within a tolerance of their neighbours' line
 //      dropped.
 #pragma once
 
@@ -51,21 +53,105 @@ inline std::vector<I> monotone_chain(const std::vector<I>& order, Left left) {
   return loop;
 }
 
+// The counter-clockwise convex loop with corners dropped, for a tolerant
+// hull: within(a, c, q) says that corner q is within the tolerance of the
+// line a c; left(p, q, r) that corner q turns left by more than it.
+//   1. From loop[0] (an extreme point of the sort, kept), the farthest
+//      next corner c whose chord every skipped corner is within, found by
+//      galloping and bisection: each chord tried is checked against every
+//      corner it skips, O(n log n) over the loop.
+//   2. A corner left refuses is dropped when the chord of its neighbours
+//      still passes within the tolerance of every corner it skips (a stack
+//      pass around the loop, repeated until none is); one that cannot be
+//      dropped stays, a strictly convex corner.
+// (A chain that drops corners one at a time against their current
+// neighbours lets the error add up along a dense arc: on 10^5 points of a
+// circle in float it keeps 8 corners, with points 3 800 eps outside.)
+template <class I, class Within, class Left>
+inline std::vector<I> tolerant_loop(const std::vector<I>& loop, Within within, Left left) {
+  const std::size_t m = loop.size();
+  if (m < 3) return loop;
+  auto at = [&](std::size_t i) { return loop[i % m]; };
+  auto chord = [&](std::size_t a, std::size_t c) {
+    for (std::size_t b = a + 1; b < c; ++b)
+      if (!within(at(a), at(c), at(b))) return false;
+    return true;
+  };
+  std::vector<std::size_t> kept;  // positions in loop, increasing
+  for (std::size_t a = 0; a < m;) {
+    kept.push_back(a);
+    std::size_t good = a + 1, bad = m + 1;  // chord(a, good) holds; chord(a, bad) fails (m + 1: none)
+    for (std::size_t step = 2; good < m; step *= 2) {
+      const std::size_t c = std::min(a + step, m);
+      if (!chord(a, c)) {
+        bad = c;
+        break;
+      }
+      good = c;
+    }
+    while (bad <= m && bad - good > 1) {
+      const std::size_t mid = good + (bad - good) / 2;
+      (chord(a, mid) ? good : bad) = mid;
+    }
+    a = good;
+  }
+  // corner b between a and c (positions, c may be past the end: c - m) is dropped if left refuses it and
+  // the chord a c is still within the tolerance of every corner it skips
+  auto drop = [&](std::size_t pa, std::size_t pb, std::size_t pc) {
+    return !left(at(pa), at(pb), at(pc)) && chord(pa, pc);
+  };
+  for (bool dropped = true; dropped && kept.size() >= 3;) {
+    dropped = false;
+    std::vector<std::size_t> next;
+    for (const std::size_t q : kept) {
+      while (next.size() >= 2 && drop(next[next.size() - 2], next.back(), q)) {
+        next.pop_back();
+        dropped = true;
+      }
+      next.push_back(q);
+    }
+    // the corners at the seam: the last one, then the first one
+    while (next.size() >= 3 && drop(next[next.size() - 2], next.back(), next.front() + m)) {
+      next.pop_back();
+      dropped = true;
+    }
+    while (next.size() >= 3 && drop(next.back(), next.front() + m, next[1] + m)) {
+      next.erase(next.begin());
+      dropped = true;
+    }
+    kept = std::move(next);
+  }
+  std::vector<I> out;
+  for (const std::size_t k : kept) out.push_back(loop[k]);
+  return out;
+}
+
 // Counter-clockwise 2D hull (Andrew's monotone chain) of p, indices into
-// p; a corner whose neighbours' line passes within tol of it (either end
-// point within tol of the other edge's line) is dropped.
+// p: the strict chain, then tolerant_loop drops a corner whose neighbours'
+// line passes within tol of it (either end point within tol of the other
+// edge's line) when every corner it skips is within tol of its chord.
 inline std::vector<std::size_t> hull_2d(const std::vector<std::array<double, 2>>& p, double tol) {
   const std::size_t n = p.size();
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return p[i] < p[j]; });
-  auto left = [&](std::size_t i0, std::size_t i1, std::size_t i2) {
+  auto turn = [&](std::size_t i0, std::size_t i1, std::size_t i2) {
     const double ex = p[i1][0] - p[i0][0], ey = p[i1][1] - p[i0][1];
     const double fx = p[i2][0] - p[i1][0], fy = p[i2][1] - p[i1][1];
-    const double len = std::max(std::hypot(ex, ey), std::hypot(fx, fy));
-    return ex * fy - ey * fx > tol * len;
+    return ex * fy - ey * fx;
   };
-  return monotone_chain(order, left);
+  auto left = [&](std::size_t i0, std::size_t i1, std::size_t i2) {
+    const double len = std::max(std::hypot(p[i1][0] - p[i0][0], p[i1][1] - p[i0][1]),
+                                std::hypot(p[i2][0] - p[i1][0], p[i2][1] - p[i1][1]));
+    return turn(i0, i1, i2) > tol * len;
+  };
+  // q within tol of the line a c: its distance outside it is turn(a, q, c) / |c - a|
+  auto within = [&](std::size_t a, std::size_t c, std::size_t q) {
+    return turn(a, q, c) <= tol * std::hypot(p[c][0] - p[a][0], p[c][1] - p[a][1]);
+  };
+  const std::vector<std::size_t> strict = monotone_chain(
+      order, [&](std::size_t i0, std::size_t i1, std::size_t i2) { return turn(i0, i1, i2) > 0; });
+  return tolerant_loop(strict, within, left);
 }
 
 }  // namespace sepax::hull::detail

@@ -34,6 +34,7 @@
 #include "../orientation_filter.hpp"
 #include "../tolerances.hpp"
 #include "builder.hpp"
+#include "hull_distance.hpp"
 #include "orientation_filter.hpp"
 #include "plane_tree.hpp"
 
@@ -315,6 +316,7 @@ inline bool Builder<T>::sweep() {
     // first in creation order, as the scan would find.
     const bool scan = on_count * static_cast<double>(live.size()) <= kHullPointScanPairs;
     const T reach = -(static_cast<T>(kHullOutsideBound) * eps_);
+    const bool walk = sweep_walks.load(std::memory_order_relaxed);
     std::vector<int> seen(scan ? 0 : tris_.size(), -1), queue;
     // (the search's answer for a kept point is a function of the point, its face, its threshold and the
     // faces the search reached: while every one of those is still alive, their neighbours are the same
@@ -355,7 +357,7 @@ inline bool Builder<T>::sweep() {
           for (std::size_t k = 0; k < live.size() && out < 0; ++k)
             if (height(tris_[as_index(live[k])].pl, p) > threshold(p)) out = live[k];
         } else if (!recall(p, f)) {
-          out = first_above_nearby(p, f, reach, seen, queue);
+          out = first_above_nearby(p, f, reach, walk, seen, queue);
           if (out < 0) {
             memo[as_index(p)] = SweepMemo<T>{f, threshold(p), memo_faces.size(), queue.size()};
             memo_faces.insert(memo_faces.end(), queue.begin(), queue.end());
@@ -378,15 +380,44 @@ inline bool Builder<T>::sweep() {
 
 // The sweep's search on a large hull for kept point p on face f: among the faces connected to f through
 // faces p is not more than -reach below (a zero-area face passed through), the first in creation order that
-// p is more than threshold(p) above, or -1.  seen (one entry per triangle) marks the faces reached for p;
-// queue is scratch.
+// p is more than threshold(p) above, or -1.  A coplanar region (a cylinder's cap) is within reach of every
+// point on it, so the search first walks from f to the neighbour nearest p while that brings it nearer, and
+// if it ends within -reach of p, passes only through faces whose triangle is that near p (a face p is
+// outside by more than eps is then among them on a convex surface: the point of the hull nearest p is on
+// one); a walk that ends farther (or none: walk false, sweep_walks) passes through every such face, as
+// from f.  seen (one entry per triangle)
+// marks the faces reached for p; queue is scratch.
 template <Number T>
-inline int Builder<T>::first_above_nearby(int p, int f, T reach, std::vector<int>& seen,
+inline int Builder<T>::first_above_nearby(int p, int f, T reach, bool walk, std::vector<int>& seen,
                                           std::vector<int>& queue) const {
   const T limit = threshold(p);
-  int out = -1;
+  const Vec3<double> x = vec_to_double(local_point(p));
+  const double near = -to_double(reach);
+  auto distance = [&](int g) {
+    const Tri& t = tris_[as_index(g)];
+    return distance_to_triangle(x, vec_to_double(local_point(t.v[0])), vec_to_double(local_point(t.v[1])),
+                                vec_to_double(local_point(t.v[2])));
+  };
   queue.assign(1, f);
   seen[as_index(f)] = p;
+  double at = walk ? distance(f) : 0.0;
+  for (int g = f; walk && at > near;) {
+    int best = -1;
+    for (const int n : tris_[as_index(g)].nb) {
+      if (seen[as_index(n)] == p) continue;
+      const double d = distance(n);
+      if (d < at) {
+        at = d;
+        best = n;
+      }
+    }
+    if (best < 0) break;
+    seen[as_index(best)] = p;
+    queue.push_back(best);
+    g = best;
+  }
+  const bool local = walk && at <= near;
+  int out = -1;
   for (std::size_t k = 0; k < queue.size(); ++k) {
     const int g = queue[k];
     const Tri& t = tris_[as_index(g)];
@@ -395,6 +426,7 @@ inline int Builder<T>::first_above_nearby(int p, int f, T reach, std::vector<int
       if (h > limit && (out < 0 || g < out)) out = g;
       if (h < reach) continue;
     }
+    if (local && distance(g) > near) continue;
     for (const int n : t.nb)
       if (seen[as_index(n)] != p) {
         seen[as_index(n)] = p;

@@ -147,14 +147,18 @@ inline std::uint64_t Builder<T>::measure(ConvexPolyhedron<T> result, std::vector
   double height = 0;
   const double out = outside_points(result, outside, height);
   const std::uint64_t d = outside.empty() ? 0 : digest(result);
-  if (!log.lowest || height < log.lowest_height) {
-    log.lowest = result;
-    log.lowest_height = height;
-  }
+  const bool is_lowest = !log.has_lowest() || height < log.lowest_height;
   if (!log.nearest || out < log.nearest_out) {
-    log.nearest = std::move(result);
-    log.nearest_out = out;
-    log.nearest_height = height;
+    log.set_nearest(std::move(result), out, height);
+    if (is_lowest) {  // (one result, held once)
+      log.lowest.reset();
+      log.lowest_is_nearest = true;
+      log.lowest_height = height;
+    }
+  } else if (is_lowest) {
+    log.lowest = std::move(result);
+    log.lowest_is_nearest = false;
+    log.lowest_height = height;
   }
   return d;
 }
@@ -201,7 +205,7 @@ inline ConvexPolyhedron<T> Builder<T>::choose_result(RepairLog<T>& log) {
   if (log.nearest_out > kHullRepairTolerance) try_simplex(log);
   if (auto slab = try_projected_slab(log)) return std::move(*slab);
   std::optional<ConvexPolyhedron<T>>& chosen =
-      log.nearest_height > kHullHeightSafe && log.nearest_height > log.lowest_height ? log.lowest
+      log.nearest_height > kHullHeightSafe && log.nearest_height > log.lowest_height ? log.lowest_result()
                                                                                      : log.nearest;
   if (log.nearest_out > kHullHeightSafe && tent_) {
     if (auto tent = try_tent(*chosen)) return std::move(*tent);
@@ -218,11 +222,7 @@ inline void Builder<T>::try_simplex(RepairLog<T>& log) {
   if (auto t = simplex_hull()) {
     double t_height = 0;
     const double t_out = outside_points(*t, none, t_height);
-    if (t_out < log.nearest_out) {
-      log.nearest = std::move(t);
-      log.nearest_out = t_out;
-      log.nearest_height = t_height;
-    }
+    if (t_out < log.nearest_out) log.set_nearest(std::move(*t), t_out, t_height);
   }
 }
 
@@ -236,7 +236,9 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::try_projected_slab(const R
   Vec3<double> nrm(0, 0, 0);
   double lo = 0, hi = 0;
   if (thin_plane(*log.nearest, nrm, lo, hi)) {
-    const double gap = std::max(log.nearest_out, shadow_out(*log.nearest, nrm));
+    // (a flat result's shadow is itself: its measure already holds every point's distance from it)
+    const double gap =
+        log.nearest->is_flat() ? log.nearest_out : std::max(log.nearest_out, shadow_out(*log.nearest, nrm));
     if (gap > kHullHeightSafe) {
       std::vector<int> none;
       if (auto s = projected_slab(nrm, lo, hi)) {
@@ -317,11 +319,32 @@ inline double Builder<T>::outside_points(const ConvexPolyhedron<T>& h, std::vect
         const double hf = plane_height(near[k]);
         hp = std::max(hp, hf);
         if (hf < reach && k > 0) continue;
-        for (int g : deep.neighbours(near[k]))
+        auto add = [&](int g) {
           if (seen[as_index(g)] != p) {
             seen[as_index(g)] = p;
             near.push_back(g);
           }
+        };
+        const std::span<const int> nb = deep.neighbours(near[k]);
+        if (nb.size() < kFanSearchCorners) {
+          for (int g : nb) add(g);
+          continue;
+        }
+        // a face of many edges (a cylinder's cap): the neighbours across its edge nearest the point and,
+        // each way from it, across the edges while the neighbour is within reach of the point or the edge
+        // is (the point's height over the faces around the rim falls away from it)
+        const Vec3<double> x = vec_to_double(local_point(p));
+        const PolygonFace& fc = faces[as_index(near[k])];
+        double d2 = 0;
+        bool inside = false;
+        const std::size_t e0 = fan_edge(fc, x, d2, inside);
+        add(nb[e0]);
+        for (const std::size_t step : {std::size_t{1}, nb.size() - 1}) {
+          for (std::size_t edge = (e0 + step) % nb.size(); edge != e0; edge = (edge + step) % nb.size()) {
+            if (!(plane_height(nb[edge]) >= reach) && !(edge_distance2(fc, edge, x) <= reach * reach)) break;
+            add(nb[edge]);
+          }
+        }
       }
       subset = &near;
     } else {

@@ -11,11 +11,11 @@
 //   set_plane                     a new triangle's plane (exact with double points: only when needed)
 //   coplanar, certainly_apart     "are two face groups one face" (exact: filtered for double points)
 //   init_group_fit, group_plane    a face group's plane (exact: its triangle's, built only when needed)
-//   refit, add_area, adopt_plane  float: a group's area-weighted plane
+//   refit, add_area, unite_sum, adopt_plane  float: a group's area-weighted plane
 //   collinear, left_turn, convex_corner  the tolerant (float) or exact turn tests
 //   rounding_case                 a case only rounding causes: for exact T a builder bug
 // and the capabilities kRepairs, kRechecksRounding, kPrechecks, kTriangleFacesConvex, kWorkingScale,
-// kRefits.
+// kTolerantChain, kRefits.
 #pragma once
 
 #include <algorithm>
@@ -52,6 +52,8 @@ struct ExactHullTraits {
   static constexpr bool kTriangleFacesConvex = true;
   /// No exponent range to stay within: built at the input's scale.
   static constexpr bool kWorkingScale = false;
+  /// The flat hull is the strict chain: no corner is dropped within a tolerance.
+  static constexpr bool kTolerantChain = false;
   /// A welded point is the input point itself (Builder::local_point reads the input; nothing is copied).
   static constexpr bool kLocalIsInput = true;
   /// A face group's plane is its plane triangle's: groups keep no fitted plane (FaceGroup::fit).
@@ -213,6 +215,9 @@ struct ExactHullTraits {
   /// A group's plane is its root triangle's: nothing to refit, no area to keep.
   template <class B, class Group>
   static void refit(const B&, Group&) {}
+  /// (no vertex sum to keep)
+  template <class B, class Group>
+  static void unite_sum(const B&, Group&, const Group&, std::span<const int>) {}
   template <class Group>
   static void add_area(Group&, const Group&) {}
   /// (the plane follows plane_tri)
@@ -254,6 +259,8 @@ struct FloatHullTraits {
   /// A point set wider than Tolerances<T>::kHullExtentHigh or narrower than kHullExtentLow is built at a
   /// power of two times its coordinates (working_scale.hpp).
   static constexpr bool kWorkingScale = true;
+  /// The flat hull's strict chain then drops corners within eps (polygon_2d.hpp, tolerant_loop).
+  static constexpr bool kTolerantChain = true;
   /// Welded points are kept relative to the bounding-box centre (Builder::q_).
   static constexpr bool kLocalIsInput = false;
   /// A face group keeps its area-weighted plane, refitted as groups unite (FaceGroup::fit).
@@ -407,6 +414,14 @@ struct FloatHullTraits {
   static void init_group_fit(B& b, Group& g, int f) {
     g.fit.pl = b.plane(f);
     g.fit.area = T(2) * number_traits<T>::sqrt(b.tri_area2(b.tris_[as_index(f)])) * g.fit.pl.normal;
+    g.fit.sum = Vec3<double>(0, 0, 0);
+    for (int v : g.verts) g.fit.sum += vec_to_double(b.local_point(v));
+  }
+  /// gx's vertex sum (what refit reads) once gy joins it, the vertices in shared counted once.
+  template <class B, class Group>
+  static void unite_sum(const B& b, Group& gx, const Group& gy, std::span<const int> shared) {
+    gx.fit.sum += gy.fit.sum;
+    for (int v : shared) gx.fit.sum -= vec_to_double(b.local_point(v));
   }
   template <class B, class Group>
   static const Plane<T>& group_plane(const B&, const Group& g) {
@@ -426,15 +441,14 @@ struct FloatHullTraits {
     };
     return close(ga, gb) || close(gb, ga);
   }
-  /// The group's plane: its area-weighted normal through the mean of its vertices.
+  /// The group's plane: its area-weighted normal through the mean of its vertices (from their sum in
+  /// double, kept as vertices join: O(1) a union).
   template <class B, class Group>
-  static void refit(const B& b, Group& g) {
+  static void refit(const B&, Group& g) {
     Vec3<T> n = g.fit.area;
     const T len = length(n);
     if (len > T(0)) n = Vec3<T>(n[0] / len, n[1] / len, n[2] / len);
-    T off(0);
-    for (int v : g.verts) off = off + dot(n, b.local_point(v));
-    off = off / static_cast<T>(g.verts.size());
+    const T off = static_cast<T>(dot(vec_to_double(n), g.fit.sum) / static_cast<double>(g.verts.size()));
     g.fit.pl = Plane<T>{n, off};
   }
   template <class Group>
