@@ -506,6 +506,19 @@ TEST_CASE("the needle of docs/hull.md keeps its length", "[hull][stress]") {
   CHECK(max_outside(h, pts) <= kHullOutsideBound);
 }
 
+// A float needle (tests/data/hull_needle_tip.pts) whose flat polygon has every corner within eps of the
+// line through its tips: a chord of the tolerant loop (hull/polygon_2d.hpp) measured against that line
+// alone reached past a tip and left a point 290 x coplanar*extent out.  Every point is within the bound.
+TEST_CASE("a needle's flat polygon keeps both tips", "[hull]") {
+  const auto pts =
+      to_t<float>(read_points(std::string(SEPAX_SOURCE_DIR) + "/tests/data/hull_needle_tip.pts"));
+  REQUIRE(pts.size() == 79);
+  const auto h = convex_hull(pts);
+  check_valid(h);
+  CHECK(max_distance(h, pts) <= kHullOutsideBound);
+  CHECK(max_outside(h, pts) <= kHullOutsideBound);
+}
+
 // Slab corners (docs/hull.md): kind-3 slabs (a plane of points and every
 // seventh point t above it) 127..2520 eps thick whose repair rounds all
 // lost a bottom corner whose rim faces validation cannot tell apart

@@ -5,7 +5,7 @@
 //      they spread most on;
 //   2. Andrew's monotone chain (polygon_2d.hpp) with the strict turn decided in 3D against the normal;
 //      float T: tolerant_loop drops corners within eps of their neighbours' line where every corner a new
-//      edge skips is within eps of it;
+//      edge skips is within eps of it (of the edge, not only of its line);
 //   3. float T: start the loop where validation accepts it (precheck.hpp), else reject the failing corner;
 //   4. ConvexPolyhedron::polygon validates the result.
 #pragma once
@@ -72,9 +72,14 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::polygon(const std::vector<
         return T(eps_ * nlen * len);
       });
     };
-    // q at most eps outside the line a c: turn(a, q, c) / (|n| |c - a|) <= eps
+    // q within eps of the segment a c: of an end point if q lies beyond it, else at most eps outside
+    // the line a c, turn(a, q, c) / (|n| |c - a|) <= eps
     auto within = [&](int a, int c, int q) {
-      return turn(a, q, c) <= T(eps_ * nlen * length(Vec3<T>(local_point(c) - local_point(a))));
+      const Vec3<T> e(local_point(c) - local_point(a));
+      const Vec3<T> qa(local_point(q) - local_point(a)), qc(local_point(q) - local_point(c));
+      if (dot(qa, e) < T(0)) return length(qa) <= eps_;
+      if (dot(qc, e) > T(0)) return length(qc) <= eps_;
+      return turn(a, q, c) <= T(eps_ * nlen * length(e));
     };
     hull = tolerant_loop(hull, within, left);
   }

@@ -55,7 +55,10 @@ inline std::vector<I> monotone_chain(const std::vector<I>& order, Left left) {
 
 // The counter-clockwise convex loop with corners dropped, for a tolerant
 // hull: within(a, c, q) says that corner q is within the tolerance of the
-// line a c; left(p, q, r) that corner q turns left by more than it.
+// segment a c (of the segment, not of its line: a corner beyond c near the
+// line's extension is not within the polygon's tolerance, and a chord
+// from the tip of a needle would otherwise reach around the other tip);
+// left(p, q, r) that corner q turns left by more than it.
 //   1. From loop[0] (an extreme point of the sort, kept), the farthest
 //      next corner c whose chord every skipped corner is within, found by
 //      galloping and bisection: each chord tried is checked against every
@@ -80,16 +83,19 @@ inline std::vector<I> tolerant_loop(const std::vector<I>& loop, Within within, L
   std::vector<std::size_t> kept;  // positions in loop, increasing
   for (std::size_t a = 0; a < m;) {
     kept.push_back(a);
-    std::size_t good = a + 1, bad = m + 1;  // chord(a, good) holds; chord(a, bad) fails (m + 1: none)
-    for (std::size_t step = 2; good < m; step *= 2) {
-      const std::size_t c = std::min(a + step, m);
+    // the farthest corner a chord may reach: back to loop[0] (position m), except from loop[0] itself,
+    // whose chord to itself would skip every corner with no line to measure them against
+    const std::size_t last = a == 0 ? m - 1 : m;
+    std::size_t good = a + 1, bad = last + 1;  // chord(a, good) holds; chord(a, bad) fails (last + 1: none)
+    for (std::size_t step = 2; good < last; step *= 2) {
+      const std::size_t c = std::min(a + step, last);
       if (!chord(a, c)) {
         bad = c;
         break;
       }
       good = c;
     }
-    while (bad <= m && bad - good > 1) {
+    while (bad <= last && bad - good > 1) {
       const std::size_t mid = good + (bad - good) / 2;
       (chord(a, mid) ? good : bad) = mid;
     }
@@ -145,9 +151,15 @@ inline std::vector<std::size_t> hull_2d(const std::vector<std::array<double, 2>>
                                 std::hypot(p[i2][0] - p[i1][0], p[i2][1] - p[i1][1]));
     return turn(i0, i1, i2) > tol * len;
   };
-  // q within tol of the line a c: its distance outside it is turn(a, q, c) / |c - a|
+  // q within tol of the segment a c: of an end point if q lies beyond it, else of the line, whose
+  // distance outside it is turn(a, q, c) / |c - a|
   auto within = [&](std::size_t a, std::size_t c, std::size_t q) {
-    return turn(a, q, c) <= tol * std::hypot(p[c][0] - p[a][0], p[c][1] - p[a][1]);
+    const double ex = p[c][0] - p[a][0], ey = p[c][1] - p[a][1];
+    if ((p[q][0] - p[a][0]) * ex + (p[q][1] - p[a][1]) * ey < 0)
+      return std::hypot(p[q][0] - p[a][0], p[q][1] - p[a][1]) <= tol;
+    if ((p[q][0] - p[c][0]) * ex + (p[q][1] - p[c][1]) * ey > 0)
+      return std::hypot(p[q][0] - p[c][0], p[q][1] - p[c][1]) <= tol;
+    return turn(a, q, c) <= tol * std::hypot(ex, ey);
   };
   const std::vector<std::size_t> strict = monotone_chain(
       order, [&](std::size_t i0, std::size_t i1, std::size_t i2) { return turn(i0, i1, i2) > 0; });
