@@ -1,5 +1,6 @@
 // hull/repair.hpp and the repair loop of convex_hull.hpp (build_hull): a repair pass that repeats the one
-// before (the same result, Builder::digest, with only points already pinned left out) ends the repairs.
+// before (Builder::repeats: the same result, the same points taken out by the clean-up, only points already
+// pinned left out) ends the repairs.
 // On the stress streams of tests/core/hull_point_sets.hpp, in float and double: the passes run to the
 // end (kHullMaxRepairs, as build_hull ran them before it stopped at a repeat) choose the same polytope
 // as build_hull, and every pass after a repeat repeats it again; the streams do contain repeats.
@@ -17,6 +18,7 @@
 #include <optional>
 #include <random>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace {
@@ -59,7 +61,7 @@ AllPasses all_passes(std::span<const Vec3<T>> points) {
       r.digest = Builder<T>::digest(b.choose_result(log));
       return r;
     }
-    if (pass > 0 && d == last && !b.pins_new(outside)) {
+    if (pass > 0 && b.repeats(d, last, outside)) {
       ++r.repeats;
       repeating = true;
     }
@@ -101,6 +103,19 @@ TEMPLATE_TEST_CASE("repair passes: a repeated pass ends them, and the result is 
   // the streams contain sets whose repair passes repeat (else the test shows nothing)
   CHECK(repeats > 0);
   CHECK(repeated_again >= repeats);
+}
+
+// A set whose second repair pass's clean-up takes out a point the first pass kept, with the same result
+// (tests/data/hull_repair_removal.pts, double): the third pass starts without that point and builds
+// another hull, so the second pass is not a repeat (Builder::repeats) and the passes go on.
+TEST_CASE("repair passes: a pass whose clean-up took out another point is not a repeat", "[hull][repair]") {
+  const auto p =
+      sepax::hull_sets::read_points(std::string(SEPAX_SOURCE_DIR) + "/tests/data/hull_repair_removal.pts");
+  REQUIRE(p.size() == 60);
+  const std::span<const Vec3<double>> s(p.data(), p.size());
+  const AllPasses all = all_passes<double>(s);
+  CHECK_FALSE(all.broke);
+  CHECK(all.digest == Builder<double>::digest(sepax::hull::detail::build_hull<double>(s, true)));
 }
 
 // 200 000 points of the unit sphere in float (mt19937_64 seed 5, normalised normal triples: the

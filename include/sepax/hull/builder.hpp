@@ -186,7 +186,8 @@ class Builder {
   std::optional<ConvexPolyhedron<T>> build_pass(bool may_fail, const std::vector<int>& pinned = {});
   std::uint64_t measure(ConvexPolyhedron<T> result, std::vector<int>& outside, RepairLog<T>& log);
   void pin(const std::vector<int>& outside);
-  bool pins_new(const std::vector<int>& outside) const;
+  bool repeats(std::uint64_t digest, std::uint64_t last_digest, const std::vector<int>& outside) const;
+  std::uint64_t removed_hash() const;
   static std::uint64_t digest(const ConvexPolyhedron<T>& h);
   ConvexPolyhedron<T> choose_result(RepairLog<T>& log);
 
@@ -320,10 +321,11 @@ class Builder {
   std::array<int, 4> simplex_{-1, -1, -1, -1};  // the first build's initial simplex
   Vec3<T> base_normal_;                         // normal of its initial triangle
   std::vector<Group> groups_;
-  std::vector<int> group_version_;  // per group root: the unions it has taken (face_merge.hpp)
-  MergeRecord<T> merge_record_;     // float: the last face stage's plane merges (face_merge.hpp)
-  std::vector<char> removed_;       // points the clean-up rejected (put back when pinned)
-  std::vector<char> pinned_;        // float: points a repair pass put back
+  std::vector<int> group_version_;    // per group root: the unions it has taken (face_merge.hpp)
+  MergeRecord<T> merge_record_;       // float: the last face stage's plane merges (face_merge.hpp)
+  std::vector<char> removed_;         // points the clean-up rejected (put back when pinned)
+  std::uint64_t removed_at_pin_ = 0;  // removed_hash() when pin() was last called (the last pass's end)
+  std::vector<char> pinned_;          // float: points a repair pass put back
   bool any_pinned_ = false;
   TrisState tris_state_ = TrisState::none;  ///< what tris_ holds: remove_vertices and resume go on from it
   bool local_surface_ = false;          // finishing triangles a pass went on from (faces_of_local_surface)

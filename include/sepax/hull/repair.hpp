@@ -8,7 +8,8 @@
 //      more than kHullRepairTolerance x eps out are pinned and put back, and the hull rebuilt (from the last
 //      pass's quickhull triangles when they can take the pinned points, resume), for at most
 //      kHullMaxRepairs repair passes, keeping the best result, and no more once a pass repeats the one
-//      before (the same result, digest, leaving out only points already pinned);
+//      before (the same result, digest, no point removed by its clean-up, leaving out only points already
+//      pinned: Builder::repeats);
 //   4. float T: the fallback policy (fallbacks.hpp) when no pass keeps every point within that tolerance.
 #pragma once
 
@@ -167,6 +168,7 @@ inline std::uint64_t Builder<T>::measure(ConvexPolyhedron<T> result, std::vector
 /// at all, and is rejected by the clean-up only when nothing else can be.
 template <Number T>
 inline void Builder<T>::pin(const std::vector<int>& outside) {
+  removed_at_pin_ = removed_hash();
   any_pinned_ = true;
   for (int p : outside) {
     removed_[as_index(p)] = 0;
@@ -174,10 +176,27 @@ inline void Builder<T>::pin(const std::vector<int>& outside) {
   }
 }
 
-/// Float T: whether pin(outside) would pin a point no earlier repair pass pinned.
+/// Float T: whether the pass just measured (after a repair pass, before pin) repeats the one before: the
+/// same result (its digest equal to the last pass's), the same points taken out by the clean-up at its end
+/// as at the end of the last pass (removed_hash), and no point outside it that an earlier pass did not
+/// pin.  The next pass then starts with the pinned and removed points this one started with.  (A pass
+/// whose clean-up took out another point starts the next one without it, which can build another hull:
+/// not a repeat.  A pinned point the clean-up takes out again in every pass is one.)
 template <Number T>
-inline bool Builder<T>::pins_new(const std::vector<int>& outside) const {
-  return std::any_of(outside.begin(), outside.end(), [&](int p) { return !pinned_[as_index(p)]; });
+inline bool Builder<T>::repeats(std::uint64_t digest, std::uint64_t last_digest,
+                                const std::vector<int>& outside) const {
+  return digest == last_digest && removed_hash() == removed_at_pin_ &&
+         std::none_of(outside.begin(), outside.end(), [&](int p) { return !pinned_[as_index(p)]; });
+}
+
+/// A 64-bit FNV-1a-style hash (a word per index) of the indices of the points the clean-up has taken out
+/// (removed_).
+template <Number T>
+inline std::uint64_t Builder<T>::removed_hash() const {
+  std::uint64_t x = 0xcbf29ce484222325ull;
+  for (std::size_t i = 0; i < removed_.size(); ++i)
+    if (removed_[i]) x = (x ^ static_cast<std::uint64_t>(i)) * 0x100000001b3ull;
+  return x;
 }
 
 /// Float T: a 64-bit FNV-1a hash of h's vertex coordinates and face loops, in their order: equal for
