@@ -253,14 +253,21 @@ inline void ConvexPolyhedron<T>::validate_geometry(double scan_pairs) {
       const T h = height(f, vertex(loop[static_cast<std::size_t>(i)]));
       if (abs_of(h) > plan_tol) {
         fail(ErrorCode::NonPlanarFace, "face " + std::to_string(f) + " is not planar: vertex " +
-                                           std::to_string(loop[i]) + " is " + std::to_string(to_double(h)) +
-                                           " off the face's plane");
+                                           std::to_string(loop[i]) + " is " + num_str(to_double(h)) +
+                                           " off the face's plane (tolerance " +
+                                           num_str(to_double(plan_tol)) + ")");
       }
     }
     for (int i = 0; i < n; ++i) {
       const Vec3<T>& a = vertex(loop[static_cast<std::size_t>((i + n - 1) % n)]);
       const Vec3<T>& b = vertex(loop[static_cast<std::size_t>(i)]);
       const Vec3<T>& c = vertex(loop[static_cast<std::size_t>((i + 1) % n)]);
+      if (a == b) {
+        fail(ErrorCode::DegenerateFace,
+             "face " + std::to_string(f) + " has two consecutive corners at one point (vertices " +
+                 std::to_string(loop[static_cast<std::size_t>((i + n - 1) % n)]) + " and " +
+                 std::to_string(loop[static_cast<std::size_t>(i)]) + ")");
+      }
       Vec3<T> ab(b - a);
       Vec3<T> bc(c - b);
       bool bad;

@@ -18,7 +18,7 @@ enum class ErrorCode {
   TooFewPoints,    // fewer than 3 distinct points (or 4 for a solid face list)
   Collinear,       // all points on one line
   BadIndex,        // a face refers to a vertex that does not exist
-  DegenerateFace,  // a face with < 3 vertices, a repeated vertex, or zero area
+  DegenerateFace,  // a face with < 3 vertices, a repeated vertex (or two corners at one point), or zero area
   NotManifold,     // an edge not shared by exactly two faces, or used twice in one direction
   BadEuler,        // V - E + F != 2
   UnusedVertex,    // a vertex on no face

@@ -214,6 +214,16 @@ TEMPLATE_TEST_CASE("validation: geometric errors", "[polyhedron][errors]", float
   CHECK(r.code == ErrorCode::NonPlanarFace);
   CHECK(contains(r.message, "is not planar"));
   CHECK(contains(r.message, "face "));
+  CHECK_FALSE(contains(r.message, "0.010000 off"));  // (the height as "%.9g", not std::to_string's "%f")
+  CHECK(contains(r.message, "(tolerance "));
+  // two corners of a face at one point: vertex 6 of the cube given twice (6 and 8), joined by an edge of
+  // length 0 between the top face and the face y = +1
+  v = cube_vertices<T>();
+  v.push_back(v[6]);
+  r = failure<T>(v,
+                 {{0, 3, 2, 1}, {4, 5, 6, 8, 7}, {0, 1, 5, 4}, {2, 3, 7, 8, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}});
+  CHECK(r.code == ErrorCode::DegenerateFace);
+  CHECK(contains(r.message, "two consecutive corners at one point (vertices 6 and 8)"));
   // reflex face: a chevron prism (cap polygon with a reflex corner at vertex 3)
   std::vector<Vec3<T>> cv;
   const double pts2[4][2] = {{0, 0}, {2, 2}, {0, 1}, {-2, 2}};  // (0,1) is reflex
