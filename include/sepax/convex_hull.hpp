@@ -89,7 +89,7 @@ ConvexPolyhedron<T> convex_hull(std::span<const Vec3<T>> points) {
     // float / double far from unit size: built at a power of two times the points (working_scale.hpp)
     if (const int k = hull::detail::working_scale(points); k != 0) {
       const std::vector<Vec3<T>> scaled = hull::detail::scaled_points(points, k);
-      return hull::detail::scaled_back(hull::detail::build_hull<T>(scaled, true), k);
+      return hull::detail::scaled_back(hull::detail::build_hull<T>(scaled, true), k, points, scaled);
     }
   }
   return hull::detail::build_hull<T>(points, true);

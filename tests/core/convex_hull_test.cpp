@@ -368,6 +368,25 @@ TEMPLATE_TEST_CASE("every scale ConvexPolyhedron accepts: the hull of 2^e x poin
   }
 }
 
+// A set far above unit size with coordinates far below its width: scaled down to its working scale they
+// fall below T's normal range and lose bits (a pyramid 2 x 10^20 wide in float, 10^200 in double, whose apex
+// and an interior point have coordinates of 10^-30 / 10^-300).  The hull is built (it was refused as
+// BadScale), and its vertices are the input points, the apex's tiny coordinates included.
+TEMPLATE_TEST_CASE("a far-from-unit set with coordinates below the normal range at its working scale",
+                   "[hull]", float, double) {
+  using T = TestType;
+  const bool is_float = std::is_same_v<T, float>;
+  const T big = is_float ? T(1e20) : T(1e200);
+  const T tiny = is_float ? T(1e-30) : T(1e-300);
+  const std::vector<Vec3<T>> pts{{-big, -big, -big}, {big, -big, -big},        {big, big, -big},
+                                 {-big, big, -big},  {tiny, T(3) * tiny, big}, {tiny, T(0), T(0)}};
+  const auto h = convex_hull(pts);
+  check_valid(h);
+  CHECK(h.vertex_count() == 5);
+  CHECK(vertices_are_inputs(h, pts));
+  CHECK(std::find(h.vertices().begin(), h.vertices().end(), pts[4]) != h.vertices().end());
+}
+
 TEST_CASE("double hull far from the origin", "[hull]") {
   std::mt19937 rng(9);
   for (int rep = 0; rep < 5; ++rep) {
