@@ -100,6 +100,13 @@ struct Header {
   std::size_t body_line = 1;  // line of the body's first byte (ASCII)
 };
 
+/// The header's element counts, "vertex 8, face 6".
+std::string declared(const Header& h) {
+  std::string s;
+  for (const Element& e : h.elements) s += (s.empty() ? "" : ", ") + e.name + " " + std::to_string(e.count);
+  return s;
+}
+
 /// The line [from, end of line) of text, without its '\r' and the offset after its '\n' in next.
 std::string_view line_at(std::string_view text, std::size_t from, std::size_t& next) {
   const std::size_t nl = text.find('\n', from);
@@ -262,6 +269,17 @@ class AsciiBody : public TextPlace {
       if (!tokens_.empty()) return tokens_;
     }
   }
+  /// After the last instance: fails at the first line that is not blank (the header's counts are fewer
+  /// than the lines of data: every element would be read short).
+  void expect_end(const Header& h) {
+    while (at_ < text_.size()) {
+      std::size_t next = 0;
+      const std::string_view l = line_at(text_, at_, next);
+      at_ = next;
+      ++line_;
+      if (!tokens(l).empty()) fail("more data than the header declares (" + declared(h) + ")");
+    }
+  }
 
  private:
   std::string_view text_;
@@ -312,6 +330,14 @@ class BinaryBody {
   /// Throws the parse error "FILE: what (byte at)".
   [[noreturn]] void fail(const std::string& what, std::size_t at) const {
     throw InvalidInput(ErrorCode::Parse, name_ + ": " + what + " (byte " + std::to_string(at) + ")");
+  }
+  /// After the last instance: fails if bytes other than white space are left (the header's counts are
+  /// fewer than the data holds).
+  void expect_end(const Header& h) const {
+    const std::string_view rest = text_.substr(at_);
+    if (rest.find_first_not_of(" \t\r\n") != std::string_view::npos)
+      fail(std::to_string(rest.size()) + " bytes after the data the header declares (" + declared(h) + ")",
+           at_);
   }
   /// Bytes left in the body.
   std::size_t left() const { return text_.size() - at_; }
@@ -490,6 +516,7 @@ void read_ascii(std::string_view text, const Header& h, const std::string& name,
                e.name + " a line)");
         return body.line_number();
       });
+  body.expect_end(h);
 }
 
 void read_binary(std::string_view text, const Header& h, const std::string& name, ShapeData& out,
@@ -530,6 +557,7 @@ void read_binary(std::string_view text, const Header& h, const std::string& name
               }
               return 0;
             });
+  body.expect_end(h);
 }
 
 }  // namespace

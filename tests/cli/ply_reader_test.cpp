@@ -218,6 +218,10 @@ TEST_CASE("ply reader: malformed files are errors naming the file and the proble
       {"binary NaN", nan_binary, "t.ply: coordinate y of vertex 1 is not finite"},
       {"binary truncated", binary_square(false).substr(0, binary_square(false).size() - 30),
        "t.ply: the binary data ends inside vertex 3"},
+      {"more data than declared", tri + "3 0 1 2\n\n1 1 1\n",
+       ":15: more data than the header declares (vertex 3, face 1)"},
+      {"binary bytes after the data", binary_square(false) + "abc",
+       "t.ply: 3 bytes after the data the header declares (vertex 4, face 1, edge 1)"},
       {"binary huge list", huge_list,
        "t.ply: the count of list vertex_indices of face 0 (2000000000) is more than the data left holds"},
   };
@@ -274,4 +278,11 @@ TEST_CASE("ply reader: mutated files are read or refused, never a crash or an un
   }
   CHECK(read_ok > 0);
   CHECK(refused > 0);
+}
+
+TEST_CASE("ply reader: blank lines and white space after the data are read past", "[ply]") {
+  const std::string tri = kVertexHeader + kFaceHeader + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  CHECK(read(tri + "\n  \n\t\n").faces.size() == 1);
+  CHECK(read(binary_square(true) + "\n").faces.size() == 1);
+  CHECK(read(binary_square(false) + "\r\n").vertices.size() == 4);
 }
