@@ -1229,10 +1229,15 @@ std::vector<int> exact_face_supports(const ConvexPolyhedron<float>& A, const Con
 CaseReport check_case(const FuzzCase& c, const CheckOptions& opt) {
   CaseReport rep;
   ConvexPolyhedron<float> Af, Bf;
+  // (a finite coordinate beyond float's range is named as such, not as the infinity it rounds to)
   auto build = [](const ShapeSpec& s) {
     std::vector<Vec3<float>> v;
-    for (const auto& p : s.vertices)
+    for (const auto& p : s.vertices) {
       v.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]));
+      for (int k = 0; k < 3; ++k)
+        if (std::isfinite(p[k]) && !std::isfinite(v.back()[k]))
+          throw coordinate_beyond_range(k, "vertex", v.size() - 1, p[k], "float");
+    }
     return ConvexPolyhedron<float>::from_faces(std::move(v), s.faces);
   };
   try {

@@ -98,6 +98,15 @@ TEST_CASE("invalid shapes are rejected, never crash", "[fuzz][io]") {
   const CaseReport r = check_case(c);
   CHECK_FALSE(r.valid);
   CHECK(r.reject_reason.find("shape A") != std::string::npos);
+  // a coordinate a double holds and float does not: named with its value, not as an infinity
+  FuzzCase big;
+  big.a = builtin_shape("cube");
+  big.b = builtin_shape("cube");
+  big.b.vertices[2][1] = 1e39;
+  const CaseReport rb = check_case(big);
+  CHECK_FALSE(rb.valid);
+  CHECK(rb.reject_reason.find("shape B: coordinate y of vertex 2 (1e+39) is beyond the range of float") !=
+        std::string::npos);
   CHECK_THROWS_AS(builtin_shape("dodecahedron"), InvalidInput);
   CHECK_THROWS_AS(builtin_shape("prism:2"), InvalidInput);
   CHECK_THROWS_AS(builtin_shape("box:1,x,2"), InvalidInput);
