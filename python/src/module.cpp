@@ -26,6 +26,7 @@
 #include <sepax/shapes.hpp>
 #include <sepax/version.hpp>
 
+#include "io/convex_mesh.hpp"
 #include "query_core.hpp"
 #ifdef SEPAX_PYTHON_TOOLS
 #include "tools.hpp"
@@ -56,6 +57,40 @@ std::string shape_string(const py::array& a) {
 }
 
 // ---- shapes -----------------------------------------------------------------
+
+/// The polyhedron of a face list: validated as given (ConvexPolyhedron::from_faces); or, when validation
+/// refuses it for its shape (coplanar neighbours, a split face: a triangulated cube) and it is a closed
+/// convex mesh, the polyhedron it bounds, as the sepax program reads a mesh file (src/io/convex_mesh.hpp:
+/// the hull of its vertices, accepted only when the faces tile the hull's boundary once).  Otherwise
+/// validation's error.
+ConvexPolyhedron<double> polyhedron_from_faces(std::vector<Vec3<double>> v,
+                                               const std::vector<std::vector<int>>& faces) {
+  try {
+    return ConvexPolyhedron<double>::from_faces(v, faces);
+  } catch (const InvalidInput& e) {
+    switch (e.code()) {
+      case ErrorCode::NotConvex:
+      case ErrorCode::NotManifold:
+      case ErrorCode::BadEuler:
+      case ErrorCode::NonPlanarFace:
+      case ErrorCode::NonConvexFace:
+      case ErrorCode::InwardFaces:
+        break;
+      default:
+        throw;
+    }
+    if (faces.size() < 4) throw;
+    cli::io::ShapeData mesh;
+    mesh.name = "Shape";
+    mesh.vertices = v;
+    mesh.faces = faces;
+    try {
+      return cli::io::convex_mesh<double>(mesh, v);
+    } catch (const InvalidInput&) {
+      throw e;  // (the face list as given is what the caller wrote: its error names the problem)
+    }
+  }
+}
 
 /// A validated convex hull (double), prepared for each number type on first use.
 struct Shape {
@@ -874,12 +909,14 @@ class InvalidInput(ValueError):
       .def(py::init([](const py::object& vertices, const std::vector<std::vector<int>>& faces) {
              std::vector<Vec3<double>> v = points_from(vertices, "vertices");
              py::gil_scoped_release release;
-             return Shape(ConvexPolyhedron<double>::from_faces(std::move(v), faces));
+             return Shape(polyhedron_from_faces(std::move(v), faces));
            }),
            py::arg("vertices"), py::arg("faces"),
            "Shape(vertices, faces): vertices (N, 3); faces: lists of vertex indices, counter-clockwise seen "
-           "from outside (a flat shape: the polygon and the same polygon reversed).  Validated; raises "
-           "sepax.InvalidInput naming the problem.")
+           "from outside (a flat shape: the polygon and the same polygon reversed).  Validated; a closed "
+           "convex mesh with coplanar neighbouring faces (a triangulated cube) is the polyhedron it bounds, "
+           "with its faces merged and only its corners as vertices.  Raises sepax.InvalidInput naming the "
+           "problem.")
       .def_property_readonly(
           "vertices", [](const Shape& s) { return vec_rows(s.poly().vertices()); },
           "(N, 3) float64 array of the vertices (a copy).")

@@ -69,6 +69,24 @@ def test_bad_face_lists():
     assert ei.value.code in (sepax.ErrorCode.NotManifold, sepax.ErrorCode.UnusedVertex, sepax.ErrorCode.BadEuler)
 
 
+def test_triangulated_convex_mesh_is_its_polyhedron():
+    # a cube with every face split into two triangles (as trimesh and STL files hold it): the cube
+    c = sepax.cube(1.0)
+    tris = [t for f in c.faces for t in ([f[0], f[1], f[2]], [f[0], f[2], f[3]])]
+    s = sepax.Shape(c.vertices, tris)
+    assert len(s.faces) == 6 and s.vertices.shape == (8, 3)
+    assert sorted(map(tuple, s.vertices.tolist())) == sorted(map(tuple, c.vertices.tolist()))
+    r = sepax.query(s, c, None, [1.5, 0, 0])
+    assert r.overlap and abs(r.depth - 0.5) < 1e-12
+    # a closed triangulated mesh with a dent is not convex: validation's error on the face list as given
+    v = np.vstack([c.vertices, [[0, 0, 0.5]]])
+    top = [f for f in c.faces if all(c.vertices[i][2] > 0 for i in f)][0]
+    dented = [f for f in c.faces if f != top] + [[top[k], top[(k + 1) % 4], 8] for k in range(4)]
+    with pytest.raises(sepax.InvalidInput) as ei:
+        sepax.Shape(v, dented)
+    check(ei, sepax.ErrorCode.NotConvex, "not-convex")
+
+
 def test_malformed_arrays_are_value_errors():
     with pytest.raises(ValueError, match=r"shape \(N, 3\)"):
         sepax.convex_hull(np.zeros((5, 2)))
