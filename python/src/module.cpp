@@ -68,18 +68,7 @@ ConvexPolyhedron<double> polyhedron_from_faces(std::vector<Vec3<double>> v,
   try {
     return ConvexPolyhedron<double>::from_faces(v, faces);
   } catch (const InvalidInput& e) {
-    switch (e.code()) {
-      case ErrorCode::NotConvex:
-      case ErrorCode::NotManifold:
-      case ErrorCode::BadEuler:
-      case ErrorCode::NonPlanarFace:
-      case ErrorCode::NonConvexFace:
-      case ErrorCode::InwardFaces:
-        break;
-      default:
-        throw;
-    }
-    if (faces.size() < 4) throw;
+    if (!cli::io::may_be_convex_mesh(e.code()) || faces.size() < 4) throw;
     cli::io::ShapeData mesh;
     mesh.name = "Shape";
     mesh.vertices = v;

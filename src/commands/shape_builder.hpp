@@ -111,22 +111,13 @@ ConvexPolyhedron<T> face_polyhedron(const io::ShapeData& s, std::vector<Vec3<T>>
     return ConvexPolyhedron<T>::from_faces(v, s.closed_faces());
   } catch (const InvalidInput& e) {
     if (!s.from_file || s.faces.size() < 2) throw;
-    switch (e.code()) {
-      case ErrorCode::NotConvex:
-      case ErrorCode::NotManifold:
-      case ErrorCode::BadEuler:
-      case ErrorCode::NonPlanarFace:
-      case ErrorCode::NonConvexFace:
-      case ErrorCode::InwardFaces:
 #if SEPAX_CLI_HAVE_HULL
-        return io::convex_mesh<T>(s, v);
+    if (io::may_be_convex_mesh(e.code())) return io::convex_mesh<T>(s, v);
 #endif
-      case ErrorCode::DegenerateFace:
-      case ErrorCode::UnusedVertex:
-        throw InvalidInput(e.code(), e.what() + std::string(io::kHullHint));
-      default:
-        throw;
-    }
+    if (io::may_be_convex_mesh(e.code()) || e.code() == ErrorCode::DegenerateFace ||
+        e.code() == ErrorCode::UnusedVertex)
+      throw InvalidInput(e.code(), e.what() + std::string(io::kHullHint));
+    throw;
   }
 }
 

@@ -14,6 +14,8 @@
 
 #include <vector>
 
+#include <sepax/error.hpp>
+
 #include "io/shape_data.hpp"
 
 namespace sepax::cli::io {
@@ -21,6 +23,23 @@ namespace sepax::cli::io {
 /// Appended to the errors of face lists that are not convex polyhedra.
 inline constexpr const char* kHullHint =
     "; to use the convex hull of the vertices, write hull:FILE (or pass --hull)";
+
+/// Whether validation's refusal of a face list with this code may be a closed convex mesh's (coplanar
+/// neighbouring faces, a face split into several: a triangulated cube), which convex_mesh.hpp then reads
+/// as the polyhedron it bounds.
+inline bool may_be_convex_mesh(ErrorCode code) {
+  switch (code) {
+    case ErrorCode::NotConvex:
+    case ErrorCode::NotManifold:
+    case ErrorCode::BadEuler:
+    case ErrorCode::NonPlanarFace:
+    case ErrorCode::NonConvexFace:
+    case ErrorCode::InwardFaces:
+      return true;
+    default:
+      return false;
+  }
+}
 
 struct ClosedMesh {
   std::vector<int> vertex;              // welded vertex -> its first index in ShapeData::vertices
