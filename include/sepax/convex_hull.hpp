@@ -63,8 +63,8 @@ ConvexPolyhedron<T> build_hull(std::span<const Vec3<T>> points, bool allow_tent)
     } else {
       // 8. Float T: points farther than kHullRepairTolerance x eps from the result are pinned and the
       // hull rebuilt, at most kHullMaxRepairs times, and no more once a repair pass repeated the one
-      // before: the same result (digest), no point removed by its clean-up, and only points already
-      // pinned left out (Builder::repeats).  Then the best result or a fallback.
+      // before: the same result (digest), the same points taken out by the clean-up at its end, and only
+      // points already pinned left out (Builder::repeats).  Then the best result or a fallback.
       std::vector<int> outside;
       const std::uint64_t d = hull ? builder.measure(std::move(*hull), outside, log) : 0;
       if (!hull || outside.empty() || pass == kHullMaxRepairs) return builder.choose_result(log);

@@ -8,8 +8,8 @@
 //      more than kHullRepairTolerance x eps out are pinned and put back, and the hull rebuilt (from the last
 //      pass's quickhull triangles when they can take the pinned points, resume), for at most
 //      kHullMaxRepairs repair passes, keeping the best result, and no more once a pass repeats the one
-//      before (the same result, digest, no point removed by its clean-up, leaving out only points already
-//      pinned: Builder::repeats);
+//      before (the same result, digest, the same points taken out by the clean-up at its end, leaving out
+//      only points already pinned: Builder::repeats);
 //   4. float T: the fallback policy (fallbacks.hpp) when no pass keeps every point within that tolerance.
 #pragma once
 
