@@ -230,13 +230,17 @@ inline std::size_t next_within(const std::vector<double>& heights, std::size_t f
 // than by a pass over its edges (a cylinder's cap, a flat polygon of 10^5 corners).
 inline constexpr std::size_t kFanSearchCorners = 32;
 
-// The squared distance of x from edge i (corner i to i + 1) of the face.
-inline double edge_distance2(const PolygonFace& fc, std::size_t i, const Vec3<double>& x) {
-  const std::size_t n = fc.v.size();
-  const Vec3<double> e(fc.v[(i + 1) % n] - fc.v[i]), ax(x - fc.v[i]);
+// The squared distance of x from the segment pa pb.
+inline double segment_distance2(const Vec3<double>& x, const Vec3<double>& pa, const Vec3<double>& pb) {
+  const Vec3<double> e(pb - pa), ax(x - pa);
   const double l2 = squared_norm(e);
   const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
   return squared_norm(Vec3<double>(ax - t * e));
+}
+
+// The squared distance of x from edge i (corner i to i + 1) of the face.
+inline double edge_distance2(const PolygonFace& fc, std::size_t i, const Vec3<double>& x) {
+  return segment_distance2(x, fc.v[i], fc.v[(i + 1) % fc.v.size()]);
 }
 
 // Whether x is beyond the line of edge i (outside its side of the face).
@@ -361,10 +365,7 @@ inline double polygon_distance(const PolygonFaces& polygons, bool flat, const Ve
 
 /// Euclidean distance of x from the segment between a and b.
 inline double distance_to_segment(const Vec3<double>& x, const Vec3<double>& pa, const Vec3<double>& pb) {
-  const Vec3<double> e(pb - pa), ax(x - pa);
-  const double l2 = squared_norm(e);
-  const double t = l2 > 0 ? std::clamp(dot(ax, e) / l2, 0.0, 1.0) : 0.0;
-  return std::sqrt(squared_norm(Vec3<double>(ax - t * e)));
+  return std::sqrt(segment_distance2(x, pa, pb));
 }
 
 /// Euclidean distance of x from the triangle abc (its height over the plane if x projects inside, else the
