@@ -186,28 +186,36 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
   // vertices of the neighbouring face next to that edge.
   const bool scan =
       flat || static_cast<double>(loops.size()) * static_cast<double>(used.size()) <= kConvexityScanPairs;
-  // face f's witnesses: witness[witness_start[f], witness_start[f + 1])
-  std::vector<int> witness, witness_start(loops.size() + 1, 0);
-  if (!scan) {
-    witness.reserve(2 * edge_face.size());
+  // A solid's edges, once: the face across edge i of face f (loops[f][i] -> loops[f][i + 1]) and that
+  // face's two vertices next to the edge (the local certificate's witnesses), at across[edge_start[f] + i]
+  // (face -1: no twin, an open surface from_faces refuses).
+  struct Across {
+    int face = -1, w1 = -1, w2 = -1;
+  };
+  std::vector<Across> across;
+  std::vector<int> edge_start(loops.size() + 1, 0);
+  if (!flat) {
+    across.reserve(edge_face.size());
     for (std::size_t f = 0; f < loops.size(); ++f) {
       const auto& l = loops[f];
       for (std::size_t i = 0; i < l.size(); ++i) {
-        const auto* twin = edge_face.find(l[(i + 1) % l.size()], l[i]);
-        if (twin == nullptr) continue;  // (from_faces refuses an open surface)
-        const auto& m = loops[as_index(twin->face)];
-        const std::size_t k = m.size();
-        witness.push_back(m[(as_index(twin->pos) + 2) % k]);
-        witness.push_back(m[(as_index(twin->pos) + k - 1) % k]);
+        Across a;
+        if (const auto* twin = edge_face.find(l[(i + 1) % l.size()], l[i])) {
+          const auto& m = loops[as_index(twin->face)];
+          const std::size_t k = m.size();
+          a = {twin->face, m[(as_index(twin->pos) + 2) % k], m[(as_index(twin->pos) + k - 1) % k]};
+        }
+        across.push_back(a);
       }
-      witness_start[f + 1] = static_cast<int>(witness.size());
+      edge_start[f + 1] = static_cast<int>(across.size());
     }
   }
   // (a solid's scan through the tree; a flat pair of faces scans its few vertices directly)
   const VertexTree<T> tree(scan && !flat ? used : std::vector<int>{}, [&](int v) { return input_point(v); });
   std::vector<char> bad(loops.size(), 0);
-  std::vector<int> rotated;  // (one loop, rotated)
-  std::vector<Vec3<T>> pts;  // (its points)
+  std::vector<std::size_t> start(loops.size(), 0);  // loops[f] rotated by start[f] since across was built
+  std::vector<int> rotated;                         // (one loop, rotated)
+  std::vector<Vec3<T>> pts;                         // (its points)
   for (std::size_t f = 0; f < loops.size(); ++f) {
     for (std::size_t rot = 0; rot < (flat ? 1 : loops[f].size()); ++rot) {
       rotated.assign(loops[f].begin(), loops[f].end());
@@ -242,8 +250,10 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
           tree.may_exceed(pl, conv_tol, [&](int v) { ok = ok && h(v) <= conv_tol; });
         }
       } else {
-        for (int w = witness_start[f]; w < witness_start[f + 1] && ok; ++w)
-          ok = h(witness[as_index(w)]) <= conv_tol;
+        for (int e = edge_start[f]; e < edge_start[f + 1] && ok; ++e) {
+          const Across& a = across[as_index(e)];
+          if (a.face >= 0) ok = h(a.w1) <= conv_tol && h(a.w2) <= conv_tol;
+        }
       }
       // corners as validation sees them: no reflex turn about this normal
       const std::size_t n = rotated.size();
@@ -256,6 +266,7 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
       if (ok) {
         bad[f] = 0;
         if (rot != 0) loops[f] = rotated;
+        start[f] = rot;
         planes[f] = pl;
         break;
       }
@@ -278,14 +289,17 @@ inline void Builder<T>::prevalidate(std::vector<std::vector<int>>& loops, std::v
     if (bad[f]) continue;
     const auto& l = loops[f];
     for (std::size_t i = 0; i < l.size() && !bad[f]; ++i) {
-      const auto* twin = edge_face.find(l[(i + 1) % l.size()], l[i]);
-      if (twin == nullptr) continue;
-      const int g = twin->face;
-      bool coplanar = true;
-      for (std::size_t k = 0; k < loops[as_index(g)].size() && coplanar; ++k) {
-        const int v = loops[as_index(g)][k];
-        coplanar = abs_of(T(dot(planes[f].normal, input_point(v)) - planes[f].offset)) <= copl_tol;
-      }
+      const Across& a = across[as_index(edge_start[f]) + (start[f] + i) % l.size()];
+      if (a.face < 0) continue;
+      const int g = a.face;
+      // every vertex of g within copl_tol of f's plane; the witnesses first (off the edge: the vertices
+      // that usually fail)
+      auto near = [&](int v) {
+        return abs_of(T(dot(planes[f].normal, input_point(v)) - planes[f].offset)) <= copl_tol;
+      };
+      bool coplanar = near(a.w1) && near(a.w2);
+      for (std::size_t k = 0; k < loops[as_index(g)].size() && coplanar; ++k)
+        coplanar = near(loops[as_index(g)][k]);
       if (coplanar && merges != nullptr &&
           !split_apart(groups_[as_index((*loop_group)[f])], groups_[as_index((*loop_group)[as_index(g)])])) {
         merges->emplace_back(static_cast<int>(f), g);
