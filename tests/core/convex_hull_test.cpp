@@ -734,11 +734,12 @@ TEMPLATE_TEST_CASE("large hull: a height-field grid whose corner defeats the win
 
 namespace {
 
-// The guarantees of a float hull built from the start: every vertex an input point, convex within the
-// convexity tolerance, every point inside within the repair tolerance.
-void check_large_float_hull(const ConvexPolyhedron<float>& h, const std::vector<Vec3<float>>& pts) {
+// The guarantees of a float or double hull built from the start: every vertex an input point, convex
+// within the convexity tolerance, every point inside within the repair tolerance.
+template <class T>
+void check_large_hull(const ConvexPolyhedron<T>& h, const std::vector<Vec3<T>>& pts) {
   CHECK(vertices_are_inputs(h, pts));
-  CHECK(max_vertex_height(h) <= Tolerances<float>::kConvexity * h.extent());
+  CHECK(max_vertex_height(h) <= Tolerances<T>::kConvexity * h.extent());
   CHECK(max_outside(h, pts) <= kHullRepairTolerance);
 }
 
@@ -760,7 +761,7 @@ TEST_CASE("large hull: the clean-up's rejected corners taken out of the triangle
   const auto h = convex_hull(pts);
   INFO(h.vertex_count() << " vertices, " << h.face_count() << " faces");
   CHECK(h.vertex_count() < static_cast<int>(pts.size()));  // (faces merged: corners tested)
-  check_large_float_hull(h, pts);
+  check_large_hull(h, pts);
 }
 
 // The benchmark's 3 x 10^4 points on the sphere in float.  Among the corners the clean-up rejects is one
@@ -778,7 +779,33 @@ TEST_CASE("large hull: a cap wrapped again over its link, and the sweep's record
   INFO(h.vertex_count() << " vertices, " << h.face_count() << " faces");
   CHECK(h.vertex_count() == 28300);
   CHECK(h.face_count() == 44065);
-  check_large_float_hull(h, pts);
+  check_large_hull(h, pts);
+}
+
+// Double takes the clean-up's rejected corners out of the triangles as float does: the benchmark's 6 000
+// points on a cylinder's two rims, whose clean-up rejects a corner of a merged face (a point within eps
+// of its neighbours' line on a rim).  The face stage after the removal merges locally (which only a
+// removal's triangles do), gives the hull of the face stage that merges every triangle, and the result
+// holds the guarantees of a build from the start.
+TEST_CASE("large hull in double: a rejected corner taken out of the triangles", "[hull][large]") {
+  using T = double;
+  const auto pts = to_t<T>(bench_point_set("rim", 6000));
+  struct Restore {
+    ~Restore() { hull::detail::local_face_merges.store(true); }
+  } restore;
+  hull::detail::local_face_merges.store(false);
+  const auto full = convex_hull(pts);
+  hull::detail::local_face_merges.store(true);
+  const std::size_t before = hull::detail::local_face_stages.load();
+  const auto local = convex_hull(pts);
+  CHECK(hull::detail::local_face_stages.load() > before);  // (a removal's face stage merged locally)
+  REQUIRE(local.vertex_count() == full.vertex_count());
+  REQUIRE(local.face_count() == full.face_count());
+  CHECK(local.vertices() == full.vertices());
+  int differing = 0;
+  for (int f = 0; f < full.face_count(); ++f) differing += local.face_vertices(f) != full.face_vertices(f);
+  CHECK(differing == 0);
+  check_large_hull(local, pts);
 }
 
 // After a local removal the face stage merges again only around the triangles that changed, keeping the

@@ -76,7 +76,7 @@ inline void Builder<T>::unite(int x, int y) {
   if (x == y) return;
   Group& gx = groups_[as_index(x)];
   Group& gy = groups_[as_index(y)];
-  if constexpr (std::is_same_v<T, float>) {
+  if constexpr (Traits::kRepairs) {
     // (a union after the recorded plane merges: the root's recorded group kept for merge_locally)
     auto& kept = merge_record_.kept;
     if (merge_record_.recorded &&
@@ -260,7 +260,7 @@ inline void Builder<T>::plane_merges(const std::vector<int>& tris, const std::ve
 // pinned points (strands_vertex depends on the groups around a vertex), split faces or a zero-area triangle.
 template <Number T>
 inline bool Builder<T>::merge_locally(const std::vector<int>& live) {
-  if constexpr (!std::is_same_v<T, float>) {
+  if constexpr (!Traits::kRepairs) {
     return false;
   } else {
     MergeRecord<T>& rec = merge_record_;
@@ -355,7 +355,7 @@ inline bool Builder<T>::merge_locally(const std::vector<int>& live) {
 // or zero-area triangle.
 template <Number T>
 inline void Builder<T>::record_merges(const std::vector<int>& live, bool valid) {
-  if constexpr (std::is_same_v<T, float>) {
+  if constexpr (Traits::kRepairs) {
     MergeRecord<T>& rec = merge_record_;
     rec.valid = valid && !any_pinned_ && splits_ == 0 && live.size() >= kLocalRemovalFaces;
     rec.kept.clear();

@@ -1,6 +1,6 @@
 // sepax/hull/vertex_removal.hpp
 //
-// Step 6 of quickhull (quickhull.hpp), float only, on large hulls: the vertices the clean-up rejects
+// Step 6 of quickhull (quickhull.hpp), float T only, on large hulls: the vertices the clean-up rejects
 // (a merged face's corner within eps of its neighbours' line) taken out of the last build's triangles
 // instead of building the hull again without them:
 //   1. remove_vertices: each rejected vertex's star found among the live triangles, one at a time;
@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <type_traits>
 #include <vector>
 
 #include "../number_traits.hpp"
@@ -22,16 +21,15 @@
 
 namespace sepax::hull::detail {
 
-/// Float (not double), on at least kLocalRemovalFaces live triangles: the vertices the clean-up
-/// rejected are taken out of the last build's quickhull triangles one at a time (remove_vertex), so the
-/// build goes on from there (quickhull_and_faces) instead of starting over without them.  Exact T, double
-/// (whose results stay those of the builds from the start) and small hulls (cheap to build again) always
-/// start over.  False when the triangles cannot take the removal (not a solid build's; a vertex's hole
-/// that remove_vertex does not fill; a removal's surface already refused by validation in this hull,
-/// local_removal_refused_): the caller then builds from the start, which resets the triangles.
+/// Float T, on at least kLocalRemovalFaces live triangles: the vertices the clean-up rejected are taken
+/// out of the last build's quickhull triangles one at a time (remove_vertex), so the build goes on from
+/// there (quickhull_and_faces) instead of starting over without them.  Exact T and small hulls (cheap to
+/// build again) always start over.  False when the triangles cannot take the removal (not a solid build's;
+/// a vertex's hole that remove_vertex does not fill; a removal's surface already refused by validation in
+/// this hull, local_removal_refused_): the caller then builds from the start, which resets the triangles.
 template <Number T>
 inline bool Builder<T>::remove_vertices(const std::vector<int>& reject) {
-  if constexpr (!Traits::kRepairs || !std::is_same_v<T, float>) {
+  if constexpr (!Traits::kRepairs) {
     return false;
   } else {
     if (tris_state_ == TrisState::none || local_removal_refused_) return false;
