@@ -8,12 +8,28 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 #include <vector>
 
 #include "convex_polyhedron.hpp"
+#include "error.hpp"
+#include "number_traits.hpp"
+#include "vec3.hpp"
 
 namespace sepax::shapes {
+
+/// A point given in doubles, in T: a coordinate finite as a double that T cannot hold (1e300 in float) is
+/// BadScale naming it ("coordinate x of vertex 0 (1e+300) is beyond the range of float"), not an
+/// infinity for validation to call non-finite.  `what` and `index` name the point.
+template <Number T>
+Vec3<T> point_from_double(const Vec3<double>& p, std::size_t index, const char* what = "vertex") {
+  const Vec3<T> x = vec_from_double<T>(p);
+  for (int c = 0; c < 3; ++c)
+    if (std::isfinite(p[c]) && !number_traits<T>::is_finite(x[c]))
+      throw coordinate_beyond_range(c, what, index, p[c], number_traits<T>::name);
+  return x;
+}
 
 /// Axis-aligned box centred at the origin with half extents (hx, hy, hz).
 template <Number T>
@@ -23,7 +39,7 @@ ConvexPolyhedron<T> box(double hx, double hy, double hz) {
     const double x = ((i & 1) ^ ((i >> 1) & 1)) ? hx : -hx;
     const double y = (i & 2) ? hy : -hy;
     const double z = (i & 4) ? hz : -hz;
-    v.push_back(vec_from_double<T>(Vec3<double>(x, y, z)));
+    v.push_back(point_from_double<T>(Vec3<double>(x, y, z), v.size()));
   }
   // 0(-,-,-) 1(+,-,-) 2(+,+,-) 3(-,+,-) 4(-,-,+) 5(+,-,+) 6(+,+,+) 7(-,+,+)
   return ConvexPolyhedron<T>::from_faces(
@@ -39,8 +55,8 @@ ConvexPolyhedron<T> cube(double half = 1.0) {
 template <Number T>
 ConvexPolyhedron<T> tetrahedron(double s = 1.0) {
   std::vector<Vec3<T>> v{
-      vec_from_double<T>(Vec3<double>(s, s, s)), vec_from_double<T>(Vec3<double>(s, -s, -s)),
-      vec_from_double<T>(Vec3<double>(-s, s, -s)), vec_from_double<T>(Vec3<double>(-s, -s, s))};
+      point_from_double<T>(Vec3<double>(s, s, s), 0), point_from_double<T>(Vec3<double>(s, -s, -s), 1),
+      point_from_double<T>(Vec3<double>(-s, s, -s), 2), point_from_double<T>(Vec3<double>(-s, -s, s), 3)};
   return ConvexPolyhedron<T>::from_faces(std::move(v), {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
 }
 
@@ -56,7 +72,7 @@ ConvexPolyhedron<T> prism(int n, double r = 1.0, double h = 1.0) {
   for (int k = 0; k < 2; ++k) {
     for (int i = 0; i < n; ++i) {
       const double t = 2.0 * std::numbers::pi * i / n;
-      v.push_back(vec_from_double<T>(Vec3<double>(r * std::cos(t), r * std::sin(t), k ? h : -h)));
+      v.push_back(point_from_double<T>(Vec3<double>(r * std::cos(t), r * std::sin(t), k ? h : -h), v.size()));
     }
   }
   std::vector<std::vector<int>> faces;
@@ -80,7 +96,7 @@ ConvexPolyhedron<T> regular_polygon(int n, double r = 1.0) {
   std::vector<Vec3<T>> v;
   for (int i = 0; i < n; ++i) {
     const double t = 2.0 * std::numbers::pi * i / n;
-    v.push_back(vec_from_double<T>(Vec3<double>(r * std::cos(t), r * std::sin(t), 0.0)));
+    v.push_back(point_from_double<T>(Vec3<double>(r * std::cos(t), r * std::sin(t), 0.0), v.size()));
   }
   return ConvexPolyhedron<T>::polygon(std::move(v));
 }

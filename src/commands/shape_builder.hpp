@@ -35,6 +35,7 @@
 
 #include <sepax/convex_polyhedron.hpp>
 #include <sepax/error.hpp>
+#include <sepax/shapes.hpp>
 
 #include "commands/pose.hpp"
 #include "io/closed_mesh.hpp"
@@ -80,15 +81,9 @@ template <Number T>
 std::vector<Vec3<T>> converted(const io::ShapeData& s, const std::vector<Vec3<double>>& v) {
   std::vector<Vec3<T>> out;
   out.reserve(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    out.push_back(vec_from_double<T>(v[i]));
-    for (int c = 0; c < 3; ++c) {
-      if (!number_traits<T>::is_finite(out.back()[c])) {
-        throw coordinate_beyond_range(c, s.kind == io::ShapeData::Kind::Points ? "point" : "vertex", i,
-                                      v[i][c], number_traits<T>::name);
-      }
-    }
-  }
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out.push_back(
+        shapes::point_from_double<T>(v[i], i, s.kind == io::ShapeData::Kind::Points ? "point" : "vertex"));
   return out;
 }
 

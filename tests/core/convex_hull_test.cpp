@@ -782,6 +782,34 @@ TEST_CASE("large hull: a cap wrapped again over its link, and the sweep's record
   check_large_hull(h, pts);
 }
 
+namespace {
+
+// The hull of pts built twice: with every face stage merging all the triangles (no face stage merges
+// locally) and with the face stages after a local removal merging only around what changed (at least one
+// does).  Both give the same vertices in the same order and the same faces; returns the second.
+template <class T>
+ConvexPolyhedron<T> check_local_merges_give_full_hull(const std::vector<Vec3<T>>& pts) {
+  struct Restore {
+    ~Restore() { hull::detail::local_face_merges.store(true); }
+  } restore;
+  hull::detail::local_face_merges.store(false);
+  const std::size_t before = hull::detail::local_face_stages.load();
+  const auto full = convex_hull(pts);
+  CHECK(hull::detail::local_face_stages.load() == before);
+  hull::detail::local_face_merges.store(true);
+  auto local = convex_hull(pts);
+  CHECK(hull::detail::local_face_stages.load() > before);  // (some face stage merged locally)
+  REQUIRE(local.vertex_count() == full.vertex_count());
+  REQUIRE(local.face_count() == full.face_count());
+  CHECK(local.vertices() == full.vertices());
+  int differing = 0;
+  for (int f = 0; f < full.face_count(); ++f) differing += local.face_vertices(f) != full.face_vertices(f);
+  CHECK(differing == 0);
+  return local;
+}
+
+}  // namespace
+
 // Double takes the clean-up's rejected corners out of the triangles as float does: the benchmark's 6 000
 // points on a cylinder's two rims, whose clean-up rejects a corner of a merged face (a point within eps
 // of its neighbours' line on a rim).  The face stage after the removal merges locally (which only a
@@ -790,22 +818,7 @@ TEST_CASE("large hull: a cap wrapped again over its link, and the sweep's record
 TEST_CASE("large hull in double: a rejected corner taken out of the triangles", "[hull][large]") {
   using T = double;
   const auto pts = to_t<T>(bench_point_set("rim", 6000));
-  struct Restore {
-    ~Restore() { hull::detail::local_face_merges.store(true); }
-  } restore;
-  hull::detail::local_face_merges.store(false);
-  const auto full = convex_hull(pts);
-  hull::detail::local_face_merges.store(true);
-  const std::size_t before = hull::detail::local_face_stages.load();
-  const auto local = convex_hull(pts);
-  CHECK(hull::detail::local_face_stages.load() > before);  // (a removal's face stage merged locally)
-  REQUIRE(local.vertex_count() == full.vertex_count());
-  REQUIRE(local.face_count() == full.face_count());
-  CHECK(local.vertices() == full.vertices());
-  int differing = 0;
-  for (int f = 0; f < full.face_count(); ++f) differing += local.face_vertices(f) != full.face_vertices(f);
-  CHECK(differing == 0);
-  check_large_hull(local, pts);
+  check_large_hull(check_local_merges_give_full_hull(pts), pts);
 }
 
 // After a local removal the face stage merges again only around the triangles that changed, keeping the
@@ -817,23 +830,7 @@ TEST_CASE("large hull in double: a rejected corner taken out of the triangles", 
 TEST_CASE("large hull: the face stages merging only around what changed give the full face stages' hull",
           "[hull][large]") {
   using T = float;
-  const auto pts = to_t<T>(bench_point_set("sphere", 40000));
-  struct Restore {
-    ~Restore() { hull::detail::local_face_merges.store(true); }
-  } restore;
-  hull::detail::local_face_merges.store(false);
-  const std::size_t before = hull::detail::local_face_stages.load();
-  const auto full = convex_hull(pts);
-  CHECK(hull::detail::local_face_stages.load() == before);
-  hull::detail::local_face_merges.store(true);
-  const auto local = convex_hull(pts);
-  CHECK(hull::detail::local_face_stages.load() > before);  // (some face stage merged locally)
-  REQUIRE(local.vertex_count() == full.vertex_count());
-  REQUIRE(local.face_count() == full.face_count());
-  CHECK(local.vertices() == full.vertices());
-  int differing = 0;
-  for (int f = 0; f < full.face_count(); ++f) differing += local.face_vertices(f) != full.face_vertices(f);
-  CHECK(differing == 0);
+  check_local_merges_give_full_hull(to_t<T>(bench_point_set("sphere", 40000)));
 }
 
 // A 0.4-unit piece 150 units from the origin: built in its own frame, whose

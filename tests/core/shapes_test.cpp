@@ -7,6 +7,8 @@
 #include <sepax/shapes.hpp>
 
 #include <cmath>
+#include <string>
+#include <utility>
 #include <vector>
 
 using namespace sepax;
@@ -113,4 +115,37 @@ TEMPLATE_TEST_CASE("regular_polygon and triangle are double-sided with exactly o
   } catch (const InvalidInput& e) {
     CHECK(e.code() == ErrorCode::DegenerateFace);
   }
+}
+
+// A size finite as a double that float cannot hold is BadScale naming the coordinate, for every shape;
+// in double the same size is a valid shape, and a NaN size stays NonFinite.
+TEST_CASE("shapes beyond float's range are BadScale naming the coordinate", "[shapes]") {
+  auto code_and_message = [](auto&& make) {
+    try {
+      make();
+    } catch (const InvalidInput& e) {
+      return std::make_pair(e.code(), std::string(e.what()));
+    }
+    return std::make_pair(ErrorCode::NonFinite, std::string("no error"));
+  };
+  const auto box = code_and_message([] { return shapes::box<float>(1e300, 1.0, 1.0); });
+  CHECK(box.first == ErrorCode::BadScale);
+  CHECK(box.second.find("coordinate x of vertex 0 (-1e+300) is beyond the range of float") !=
+        std::string::npos);
+  const auto cube = code_and_message([] { return shapes::cube<float>(1e39); });
+  CHECK(cube.first == ErrorCode::BadScale);
+  CHECK(cube.second.find("is beyond the range of float") != std::string::npos);
+  const auto tet = code_and_message([] { return shapes::tetrahedron<float>(-1e300); });
+  CHECK(tet.first == ErrorCode::BadScale);
+  CHECK(tet.second.find("coordinate x of vertex 0 (-1e+300)") != std::string::npos);
+  const auto prism = code_and_message([] { return shapes::prism<float>(8, 1.0, 1e40); });
+  CHECK(prism.first == ErrorCode::BadScale);
+  CHECK(prism.second.find("coordinate z of vertex 0 (-1e+40)") != std::string::npos);
+  const auto polygon = code_and_message([] { return shapes::regular_polygon<float>(5, 1e300); });
+  CHECK(polygon.first == ErrorCode::BadScale);
+  CHECK(polygon.second.find("coordinate x of vertex 0 (1e+300)") != std::string::npos);
+  CHECK_NOTHROW(shapes::cube<double>(1e39));
+  const auto nan = code_and_message([] { return shapes::cube<float>(std::nan("")); });
+  CHECK(nan.first == ErrorCode::NonFinite);
+  CHECK(nan.second != "no error");
 }
