@@ -9,8 +9,8 @@
 //      its boundary is the horizon, coned to the eye; the removed faces' points are assigned to new faces.
 //   4. sweep (float T): points kept on a face within eps are tested against the faces around them again.
 //   5. merge_and_build (face_merge.hpp) groups the triangles into faces.
-//   6. remove_vertices (float, large hulls; vertex_removal.hpp): the clean-up's rejected vertices taken
-//      out of the triangles, and quickhull and the face stage go on from there.
+//   6. remove_vertices (float and double, large hulls; vertex_removal.hpp): the clean-up's rejected
+//      vertices taken out of the triangles, and quickhull and the face stage go on from there.
 // The predicates (outside, sees, zero_area, the eye) are HullTraits<T>'s (traits.hpp).
 #pragma once
 

@@ -1,6 +1,6 @@
 // sepax/hull/vertex_removal.hpp
 //
-// Step 6 of quickhull (quickhull.hpp), float T only, on large hulls: the vertices the clean-up rejects
+// Step 6 of quickhull (quickhull.hpp), float and double, on large hulls: the vertices the clean-up rejects
 // (a merged face's corner within eps of its neighbours' line) taken out of the last build's triangles
 // instead of building the hull again without them:
 //   1. remove_vertices: each rejected vertex's star found among the live triangles, one at a time;
