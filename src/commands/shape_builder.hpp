@@ -28,6 +28,7 @@
 #pragma once
 
 #include <cctype>
+#include <cmath>
 #include <span>
 #include <string>
 #include <utility>
@@ -116,14 +117,33 @@ ConvexPolyhedron<T> face_polyhedron(const io::ShapeData& s, std::vector<Vec3<T>>
   }
 }
 
+/// The points v of s moved by pose, in double.  A point the pose moves beyond
+/// double's range is BadScale naming it (the file's coordinates are finite: an
+/// infinity here is the pose's, not the input's).
+inline std::vector<Vec3<double>> posed(const io::ShapeData& s, const std::vector<Vec3<double>>& v,
+                                       const Pose& pose) {
+  std::vector<Vec3<double>> moved;
+  moved.reserve(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    moved.push_back(pose.apply(v[i]));
+    for (int c = 0; c < 3; ++c) {
+      if (!std::isfinite(moved.back()[c])) {
+        std::string m = "the pose moves coordinate ";
+        m += "xyz"[c];
+        m += s.kind == io::ShapeData::Kind::Points ? " of point " : " of vertex ";
+        m += std::to_string(i) + " beyond the range of double";
+        throw InvalidInput(ErrorCode::BadScale, std::move(m));
+      }
+    }
+  }
+  return moved;
+}
+
 /// The coordinates of s in T as it is placed (posed when pose is given): the
 /// points exact_centre<T> is taken over.
 template <Number T>
 std::vector<Vec3<T>> world_points(const io::ShapeData& s, const Pose* pose) {
-  if (!pose) return converted<T>(s, s.vertices);
-  std::vector<Vec3<double>> moved = s.vertices;
-  for (auto& p : moved) p = pose->apply(p);
-  return converted<T>(s, moved);
+  return converted<T>(s, pose ? posed(s, s.vertices, *pose) : s.vertices);
 }
 
 template <Number T>
@@ -138,10 +158,7 @@ ConvexPolyhedron<T> build_unnamed(const io::ShapeData& s, const Pose* pose, cons
   }
   if (!pose) return face_polyhedron<T>(s, io::minus(converted<T>(s, s.vertices), c));
   const auto base = face_polyhedron<double>(s, s.vertices);
-  std::vector<Vec3<double>> moved;
-  moved.reserve(base.vertices().size());
-  for (const auto& p : base.vertices()) moved.push_back(pose->apply(p));
-  std::vector<Vec3<T>> local = io::minus(converted<T>(s, moved), c);
+  std::vector<Vec3<T>> local = io::minus(converted<T>(s, posed(s, base.vertices(), *pose)), c);
   if constexpr (std::is_same_v<T, double>) {
     return base.with_vertices(std::move(local));
   } else {

@@ -135,6 +135,20 @@ TEST_CASE("bad input: NaN, infinite and out-of-range coordinates", "[bad_input]"
                    "e400.pts:2: number '1e400' for coordinate x of point 1 is out of the range of a double");
 }
 
+TEST_CASE("bad input: a pose that moves a point beyond double's range", "[bad_input]") {
+  // The file's coordinates are finite; the pose's translation takes them past max(double): BadScale naming
+  // the point, in every number type (the pose is applied in double first), for a point set and a face list.
+  const std::string pts = test::temp_file("far.pts", "0 0 0\n1e308 0 0\n0 1 0\n0 0 1\n");
+  const std::string obj = test::temp_file(
+      "far.obj", "v 0 0 0\nv 1e308 0 0\nv 0 1e308 0\nv 0 0 1e308\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  for (const char* number : {"double", "float", "exact"}) {
+    check_run({"info", pts, "--pose", "1e308", "0", "0", "--number", number}, 3,
+              "far.pts: the pose moves coordinate x of point 1 beyond the range of double");
+    check_run({"query", "cube", obj, "--pose", "1e308", "0", "0", "--number", number}, 3,
+              "far.obj: the pose moves coordinate x of vertex 1 beyond the range of double");
+  }
+}
+
 TEST_CASE("bad input: 1e300 coordinates", "[bad_input]") {
   // A face list at 1e300 is a valid shape in double and exactly: the same
   // answer both ways.  float cannot hold it: an error naming the coordinate.
