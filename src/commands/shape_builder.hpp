@@ -143,7 +143,8 @@ inline std::vector<Vec3<double>> posed(const io::ShapeData& s, const std::vector
 /// points exact_centre<T> is taken over.
 template <Number T>
 std::vector<Vec3<T>> world_points(const io::ShapeData& s, const Pose* pose) {
-  return converted<T>(s, pose ? posed(s, s.vertices, *pose) : s.vertices);
+  if (!pose) return converted<T>(s, s.vertices);
+  return converted<T>(s, posed(s, s.vertices, *pose));
 }
 
 template <Number T>
