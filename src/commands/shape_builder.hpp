@@ -27,10 +27,12 @@
 // "FILE:LINE" of the face they name when the face came from a file.
 #pragma once
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -158,12 +160,30 @@ ConvexPolyhedron<T> build_unnamed(const io::ShapeData& s, const Pose* pose, cons
 #endif
   }
   if (!pose) return face_polyhedron<T>(s, io::minus(converted<T>(s, s.vertices), c));
-  const auto base = face_polyhedron<double>(s, s.vertices);
-  std::vector<Vec3<T>> local = io::minus(converted<T>(s, posed(s, base.vertices(), *pose)), c);
-  if constexpr (std::is_same_v<T, double>) {
-    return base.with_vertices(std::move(local));
-  } else {
-    return ConvexPolyhedron<T>::convert_from(base).with_vertices(std::move(local));
+  auto base = face_polyhedron<double>(s, s.vertices);
+  const std::vector<Vec3<double>> moved = posed(s, base.vertices(), *pose);
+  std::vector<Vec3<T>> local = io::minus(converted<T>(s, moved), c);
+  ConvexPolyhedron<T> typed = [&] {
+    if constexpr (std::is_same_v<T, double>) {
+      return std::move(base);
+    } else {
+      return ConvexPolyhedron<T>::convert_from(base);
+    }
+  }();
+  try {
+    return typed.with_vertices(std::move(local));
+  } catch (const InvalidInput& e) {
+    // A pose far from the origin rounds the coordinates (posed in double,
+    // then converted to T) to a coarse spacing, which can take a face's
+    // plane triple together; the shape is built at those coordinates minus
+    // the centre c, so the error's own coordinates are small: say how far
+    // the pose placed it.
+    if (e.code() != ErrorCode::BadScale) throw;
+    double reach = 0;
+    for (const Vec3<double>& p : moved) reach = std::max({reach, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+    const std::string_view rounded = number_traits<T>::is_exact ? "double" : number_traits<T>::name;
+    throw InvalidInput(ErrorCode::BadScale, "as posed (at coordinates up to " + format_number(reach) +
+                                                ", rounded in " + std::string(rounded) + " there): " + e.what());
   }
 }
 
