@@ -208,6 +208,7 @@ class Builder {
   std::optional<ConvexPolyhedron<T>> tent_hull(const ConvexPolyhedron<T>& h, Vec3<double>& nrm);
   std::optional<ConvexPolyhedron<T>> simplex_hull();
   bool thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& nrm, double& lo, double& hi) const;
+  std::vector<int> extreme_points() const;
   double shadow_out(const ConvexPolyhedron<T>& h, const Vec3<double>& nrm) const;
   std::optional<ConvexPolyhedron<T>> projected_slab(const Vec3<double>& nrm, double lo, double hi);
   // ---- welded_points.hpp ----

@@ -54,6 +54,10 @@ inline std::optional<ConvexPolyhedron<T>> Builder<T>::simplex_hull() {
 // twice that of it, the face or coordinate plane across which they spread
 // least (a coordinate plane if within 2 eps of the least).  nrm
 // is its unit normal, [lo, hi] the points' range of heights along it.
+// A candidate normal's range over a few points (those extreme along 13
+// fixed directions) is a lower bound of its range over all of them, and
+// rules out most of a slab's side faces at once (their normals lie along
+// the slab); the rest are measured in full.
 template <Number T>
 inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& nrm, double& lo,
                                    double& hi) const {
@@ -69,11 +73,20 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
       u = std::max(u, t);
     }
   };
-  // After the first width: the same range through a VertexTree of the points (its largest dot product
-  // along n and along -n, the value the pass above finds: rounding to nearest is symmetric, so the
-  // smallest dot along n is exactly minus the largest along -n).
+  // The same range, by the pass above for the first kPasses normals, then through a VertexTree of the
+  // points (its largest dot product along n and along -n, the value the pass finds: rounding to nearest
+  // is symmetric, so the smallest dot along n is exactly minus the largest along -n).  The normals the
+  // lower bound leaves are those across the slab, where the tree's bounds are all near the answer and a
+  // query visits most of it: a pass is cheaper than building the tree, unless there are many.
+  constexpr int kPasses = 8;
+  int passes = 0;
   std::optional<VertexTree<double>> tree;
   auto range = [&](const Vec3<double>& n, double& l, double& u) {
+    if (passes < kPasses) {
+      ++passes;
+      width(n, l, u);
+      return;
+    }
     if (!tree) {
       std::vector<int> all(pts_.size());
       for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
@@ -98,8 +111,23 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
   width(faces[big].n, lo, hi);
   if (hi - lo > kHullSlabCandidateWidth * e) return false;
   nrm = faces[big].n;
+  // The lower bound: the points' values along n are the ones range gives the
+  // largest and smallest of, so over a subset the largest is no larger and
+  // the smallest no smaller, and (rounding is monotone) the subset's
+  // difference is at most range's u - l.  A normal whose subset difference
+  // already exceeds the bar cannot be chosen: skipping it changes nothing.
+  const std::vector<int> probes = extreme_points();
+  auto probed_width = [&](const Vec3<double>& n) {
+    double l = 1e300, u = -1e300;
+    for (const int i : probes) {
+      const double t = dot(n, vec_to_double(local_point(i)));
+      l = std::min(l, t);
+      u = std::max(u, t);
+    }
+    return u - l;
+  };
   for (const auto& fc : faces) {
-    if (squared_norm(fc.n) == 0) continue;
+    if (squared_norm(fc.n) == 0 || !(probed_width(fc.n) < hi - lo)) continue;
     double l = 0, u = 0;
     range(fc.n, l, u);
     if (u - l < hi - lo) {
@@ -115,6 +143,7 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
   for (int c = 0; c < 3; ++c) {
     Vec3<double> n(0, 0, 0);
     n[c] = 1;
+    if (!(probed_width(n) <= hi - lo + kHullSlabAxisPreference * e)) continue;
     double l = 0, u = 0;
     range(n, l, u);
     if (u - l <= hi - lo + kHullSlabAxisPreference * e) {
@@ -124,6 +153,51 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
     }
   }
   return hi - lo <= kHullSlabThickness * e;
+}
+
+// Float T: the welded points with the largest and the smallest value of
+// dot(d, local point) for 13 fixed directions d (the axes, the face
+// diagonals, the body diagonals): a few points spread the way the set
+// spreads (thin_plane's lower bounds of widths).
+template <Number T>
+inline std::vector<int> Builder<T>::extreme_points() const {
+  constexpr int kDirections = 13;
+  static constexpr std::array<std::array<double, 3>, kDirections> kDir{{{1, 0, 0},
+                                                                         {0, 1, 0},
+                                                                         {0, 0, 1},
+                                                                         {1, 1, 0},
+                                                                         {1, -1, 0},
+                                                                         {1, 0, 1},
+                                                                         {1, 0, -1},
+                                                                         {0, 1, 1},
+                                                                         {0, 1, -1},
+                                                                         {1, 1, 1},
+                                                                         {1, 1, -1},
+                                                                         {1, -1, 1},
+                                                                         {1, -1, -1}}};
+  std::array<double, kDirections> lo, hi;
+  lo.fill(1e300);
+  hi.fill(-1e300);
+  std::array<int, 2 * kDirections> at{};
+  for (std::size_t i = 0; i < pts_.size(); ++i) {
+    const Vec3<double> x = vec_to_double(local_point(static_cast<int>(i)));
+    for (int d = 0; d < kDirections; ++d) {
+      const auto& w = kDir[static_cast<std::size_t>(d)];
+      const double t = w[0] * x[0] + w[1] * x[1] + w[2] * x[2];
+      if (t < lo[static_cast<std::size_t>(d)]) {
+        lo[static_cast<std::size_t>(d)] = t;
+        at[static_cast<std::size_t>(2 * d)] = static_cast<int>(i);
+      }
+      if (t > hi[static_cast<std::size_t>(d)]) {
+        hi[static_cast<std::size_t>(d)] = t;
+        at[static_cast<std::size_t>(2 * d + 1)] = static_cast<int>(i);
+      }
+    }
+  }
+  std::vector<int> out(at.begin(), at.end());
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 // Float T: how far (in units of eps) the points' shadow on a plane (unit
@@ -148,10 +222,37 @@ inline double Builder<T>::shadow_out(const ConvexPolyhedron<T>& h, const Vec3<do
   PolygonFace shadow;
   shadow.v = corners;
   shadow.n = Vec3<double>(0, 0, 1);
+  // A disk about the corners' mean, of 99% of the distance from it to the nearest edge line (0 when the
+  // mean is not inside every edge): a shadow point within it is inside the shadow by at least 1% of that
+  // distance, where face_distance's sign tests (cross products of differences, each within a few ulps of
+  // |edge| x diameter) cannot call it beyond an edge while that margin exceeds 2^-40 of the shadow's
+  // diameter; its distance is 0 without them.
+  double cx = 0, cy = 0;
+  for (const Vec3<double>& p : corners) {
+    cx += p[0];
+    cy += p[1];
+  }
+  cx /= static_cast<double>(corners.size());
+  cy /= static_cast<double>(corners.size());
+  double inner = 1e300, diameter = 0;
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const Vec3<double>& a = corners[k];
+    const Vec3<double>& b = corners[(k + 1) % corners.size()];
+    const double ex = b[0] - a[0], ey = b[1] - a[1];
+    const double len = std::sqrt(ex * ex + ey * ey);
+    diameter = std::max({diameter, std::abs(a[0] - cx), std::abs(a[1] - cy)});
+    // (the loop is counter-clockwise: the mean is left of every edge)
+    if (len > 0) inner = std::min(inner, (ex * (cy - a[1]) - ey * (cx - a[0])) / len);
+  }
+  diameter *= 4;  // (twice the largest |coordinate - mean| bounds a width; twice again for a diagonal)
+  const double disk = inner > 0x1p-40 * diameter ? 0.99 * inner : 0.0;
+  const double disk2 = disk * disk;
   double worst = 0;
   for (std::size_t i = 0; i < pts_.size(); ++i) {
     const Vec3<double> x = vec_to_double(local_point(static_cast<int>(i)));
-    worst = std::max(worst, face_distance(shadow, Vec3<double>(dot(ax, x), dot(bx, x), 0.0), 0.0));
+    const double px = dot(ax, x), py = dot(bx, x);
+    if ((px - cx) * (px - cx) + (py - cy) * (py - cy) < disk2) continue;
+    worst = std::max(worst, face_distance(shadow, Vec3<double>(px, py, 0.0), 0.0));
   }
   return worst / to_double(eps_);
 }
