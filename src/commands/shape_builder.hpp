@@ -180,10 +180,12 @@ ConvexPolyhedron<T> build_unnamed(const io::ShapeData& s, const Pose* pose, cons
     // the pose placed it.
     if (e.code() != ErrorCode::BadScale) throw;
     double reach = 0;
-    for (const Vec3<double>& p : moved) reach = std::max({reach, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+    for (const Vec3<double>& p : moved)
+      reach = std::max({reach, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
     const std::string_view rounded = number_traits<T>::is_exact ? "double" : number_traits<T>::name;
     throw InvalidInput(ErrorCode::BadScale, "as posed (at coordinates up to " + format_number(reach) +
-                                                ", rounded in " + std::string(rounded) + " there): " + e.what());
+                                                ", rounded in " + std::string(rounded) +
+                                                " there): " + e.what());
   }
 }
 

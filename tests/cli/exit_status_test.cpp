@@ -79,12 +79,14 @@ TEST_CASE("exit status: query gives 0, 1 (a batch line failed), 2 and 3", "[exit
            {{"query", "box:1e20,1e20,1e20", "cube", "--pose", "0", "1e19", "0"},
             3,
             "",
-            "cube: as posed (at coordinates up to 1e+19, rounded in double there): face 0 has no plane at these "
+            "cube: as posed (at coordinates up to 1e+19, rounded in double there): face 0 has no plane at "
+            "these "
             "coordinates"},
            {{"query", "box:1e20,1e20,1e20", "cube", "--pose", "0", "1e19", "0", "--number", "exact"},
             3,
             "",
-            "cube: as posed (at coordinates up to 1e+19, rounded in double there): face 0 has no plane at these "
+            "cube: as posed (at coordinates up to 1e+19, rounded in double there): face 0 has no plane at "
+            "these "
             "coordinates"},
            {{"query", "triangle", "cube", "--pose", "1e8", "-1e8", "0", "--number", "float", "--robust"},
             3,
@@ -104,7 +106,8 @@ TEST_CASE("exit status: info gives 0, 2 and 3", "[exit]") {
            {{"info", "cube", "--pose", "1e308", "0", "0"},
             3,
             "",
-            "sepax info: error: cube: as posed (at coordinates up to 1e+308, rounded in double there): face 0 has "
+            "sepax info: error: cube: as posed (at coordinates up to 1e+308, rounded in double there): face "
+            "0 has "
             "no plane at these coordinates"},
            {{"info", kData + "malformed.off"}, 3, "", "malformed.off:5: "},
            // a file of several objects lists them, as text or as JSON

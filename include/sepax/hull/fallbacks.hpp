@@ -162,19 +162,9 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
 template <Number T>
 inline std::vector<int> Builder<T>::extreme_points() const {
   constexpr int kDirections = 13;
-  static constexpr std::array<std::array<double, 3>, kDirections> kDir{{{1, 0, 0},
-                                                                         {0, 1, 0},
-                                                                         {0, 0, 1},
-                                                                         {1, 1, 0},
-                                                                         {1, -1, 0},
-                                                                         {1, 0, 1},
-                                                                         {1, 0, -1},
-                                                                         {0, 1, 1},
-                                                                         {0, 1, -1},
-                                                                         {1, 1, 1},
-                                                                         {1, 1, -1},
-                                                                         {1, -1, 1},
-                                                                         {1, -1, -1}}};
+  static constexpr double kDir[kDirections][3] = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},  {1, 1, 0},  {1, -1, 0},
+                                                  {1, 0, 1},  {1, 0, -1}, {0, 1, 1},  {0, 1, -1}, {1, 1, 1},
+                                                  {1, 1, -1}, {1, -1, 1}, {1, -1, -1}};
   std::array<double, kDirections> lo, hi;
   lo.fill(1e300);
   hi.fill(-1e300);
@@ -182,7 +172,7 @@ inline std::vector<int> Builder<T>::extreme_points() const {
   for (std::size_t i = 0; i < pts_.size(); ++i) {
     const Vec3<double> x = vec_to_double(local_point(static_cast<int>(i)));
     for (int d = 0; d < kDirections; ++d) {
-      const auto& w = kDir[static_cast<std::size_t>(d)];
+      const double* w = kDir[d];
       const double t = w[0] * x[0] + w[1] * x[1] + w[2] * x[2];
       if (t < lo[static_cast<std::size_t>(d)]) {
         lo[static_cast<std::size_t>(d)] = t;
