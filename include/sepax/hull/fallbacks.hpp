@@ -212,11 +212,12 @@ inline double Builder<T>::shadow_out(const ConvexPolyhedron<T>& h, const Vec3<do
   PolygonFace shadow;
   shadow.v = corners;
   shadow.n = Vec3<double>(0, 0, 1);
-  // A disk about the corners' mean, of 99% of the distance from it to the nearest edge line (0 when the
-  // mean is not inside every edge): a shadow point within it is inside the shadow by at least 1% of that
-  // distance, where face_distance's sign tests (cross products of differences, each within a few ulps of
-  // |edge| x diameter) cannot call it beyond an edge while that margin exceeds 2^-40 of the shadow's
-  // diameter; its distance is 0 without them.
+  // A disk and a square about the corners' mean, shrunk to 99% of the largest inside every edge line (none
+  // when the mean is not inside every edge): a shadow point within either is inside the shadow by at
+  // least 1% of the mean's distance from the nearest edge line, where face_distance's sign tests (cross
+  // products of differences, each within a few ulps of |edge| x diameter) cannot call it beyond an edge
+  // while that margin exceeds 2^-40 of the shadow's diameter; its distance is 0 without them.  (The square
+  // of half-side s is inside an edge at distance d with unit normal (nx, ny) while s (|nx| + |ny|) <= d.)
   double cx = 0, cy = 0;
   for (const Vec3<double>& p : corners) {
     cx += p[0];
@@ -224,24 +225,30 @@ inline double Builder<T>::shadow_out(const ConvexPolyhedron<T>& h, const Vec3<do
   }
   cx /= static_cast<double>(corners.size());
   cy /= static_cast<double>(corners.size());
-  double inner = 1e300, diameter = 0;
+  double inner = 1e300, square = 1e300, diameter = 0;
   for (std::size_t k = 0; k < corners.size(); ++k) {
     const Vec3<double>& a = corners[k];
     const Vec3<double>& b = corners[(k + 1) % corners.size()];
     const double ex = b[0] - a[0], ey = b[1] - a[1];
     const double len = std::sqrt(ex * ex + ey * ey);
     diameter = std::max({diameter, std::abs(a[0] - cx), std::abs(a[1] - cy)});
+    if (!(len > 0)) continue;
     // (the loop is counter-clockwise: the mean is left of every edge)
-    if (len > 0) inner = std::min(inner, (ex * (cy - a[1]) - ey * (cx - a[0])) / len);
+    const double d = (ex * (cy - a[1]) - ey * (cx - a[0])) / len;
+    inner = std::min(inner, d);
+    square = std::min(square, d / ((std::abs(ex) + std::abs(ey)) / len));
   }
   diameter *= 4;  // (twice the largest |coordinate - mean| bounds a width; twice again for a diagonal)
-  const double disk = inner > 0x1p-40 * diameter ? 0.99 * inner : 0.0;
+  const bool usable = inner > 0x1p-40 * diameter;
+  const double disk = usable ? 0.99 * inner : 0.0;
   const double disk2 = disk * disk;
+  const double half_side = usable ? 0.99 * square : 0.0;
   double worst = 0;
   for (std::size_t i = 0; i < pts_.size(); ++i) {
     const Vec3<double> x = vec_to_double(local_point(static_cast<int>(i)));
     const double px = dot(ax, x), py = dot(bx, x);
-    if ((px - cx) * (px - cx) + (py - cy) * (py - cy) < disk2) continue;
+    const double dx = px - cx, dy = py - cy;
+    if (dx * dx + dy * dy < disk2 || (std::abs(dx) < half_side && std::abs(dy) < half_side)) continue;
     worst = std::max(worst, face_distance(shadow, Vec3<double>(px, py, 0.0), 0.0));
   }
   return worst / to_double(eps_);
