@@ -31,6 +31,7 @@
 #include "hull_distance.hpp"
 #include "plane_tree.hpp"
 #include "quickhull.hpp"
+#include "radix_sort.hpp"
 #include "vertex_removal.hpp"
 
 namespace sepax::hull::detail {
@@ -428,7 +429,8 @@ inline std::vector<int> Builder<T>::measure_order(bool coherent) const {
     }
     keyed.emplace_back(key, p);
   }
-  std::sort(keyed.begin(), keyed.end());
+  // (by key, ties in point order: keyed is in point order and the radix sort is stable)
+  radix_sort<1>(keyed, [](const std::pair<std::uint64_t, int>& k, int) { return k.first; });
   for (std::size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].second;
   return order;
 }

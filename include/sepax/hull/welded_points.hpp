@@ -8,16 +8,18 @@
 //   3. shadow: exact T whose coordinates are all exactly doubles gets a double copy, so that welding sorts
 //      on doubles and the quickhull predicates are filtered (orientation_filter.hpp) before they are
 //      decided in T.
-//   4. weld: one representative of the points closer than weld * extent (exact T: of exact duplicates);
-//      fewer than 3 left is TooFewPoints.
+//   4. weld: one representative of the points closer than weld * extent (exact T: of exact duplicates),
+//      walking the points in lexicographic order (radix_sort.hpp); fewer than 3 left is TooFewPoints.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <numeric>
+#include <span>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -25,6 +27,7 @@
 #include "../number_traits.hpp"
 #include "../tolerances.hpp"
 #include "builder.hpp"
+#include "radix_sort.hpp"
 
 namespace sepax::hull::detail {
 
@@ -64,22 +67,24 @@ template <Number T>
 inline void Builder<T>::weld() {
   const auto loc = Traits::local_points(*this);  // float: a vector of differences; exact T: in_ itself
   Traits::shadow(*this, loc);
-  std::vector<int> order(in_.size());
-  std::iota(order.begin(), order.end(), 0);
-  auto lex = [&](const auto& pts) {
-    return [&pts](int i, int j) {
-      const auto& a = pts[as_index(i)];
-      const auto& b = pts[as_index(j)];
+  // lexicographic order, ties by index (float and double coordinates by lex_order, a radix sort; exact
+  // T's doubles give its order: they are its values)
+  std::vector<int> order;
+  if (shadow_) {
+    order = lex_order(std::span<const Vec3<double>>(qd_));
+  } else if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    order = lex_order(std::span<const Vec3<T>>(loc));
+  } else {
+    order.resize(in_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int i, int j) {
+      const auto& a = loc[as_index(i)];
+      const auto& b = loc[as_index(j)];
       if (a[0] != b[0]) return a[0] < b[0];
       if (a[1] != b[1]) return a[1] < b[1];
       if (a[2] != b[2]) return a[2] < b[2];
       return i < j;
-    };
-  };
-  if (shadow_) {
-    std::sort(order.begin(), order.end(), lex(qd_));  // (the same order: the doubles are the values)
-  } else {
-    std::sort(order.begin(), order.end(), lex(loc));
+    });
   }
   pts_.reserve(in_.size());
   if constexpr (!Traits::kLocalIsInput) q_.reserve(in_.size());
