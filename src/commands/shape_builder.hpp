@@ -61,19 +61,25 @@ inline constexpr bool kHullAvailable = SEPAX_CLI_HAVE_HULL != 0;
 namespace detail {
 
 /// "name: message", or "name:LINE: message" when message starts by naming a
-/// face ("face K ...") that was read from line LINE of a file.
-inline std::string located_message(const io::ShapeData& s, const std::string& message) {
-  std::size_t line = 0;
-  if (message.starts_with("face ")) {
-    std::size_t i = 5, k = 0;
+/// face ("face K ...") that was read from line LINE of a file, or (an unused
+/// vertex: validation numbers the file's vertices as given) a vertex
+/// ("vertex K ...").
+inline std::string located_message(const io::ShapeData& s, const InvalidInput& e) {
+  const std::string message = e.what();
+  // the K of a message starting with prefix K, as an index into lines; 0 if none
+  auto line_of = [&](std::string_view prefix, const std::vector<std::size_t>& lines) -> std::size_t {
+    if (!message.starts_with(prefix)) return 0;
+    std::size_t i = prefix.size(), k = 0;
     bool digits = false;
     while (i < message.size() && std::isdigit(static_cast<unsigned char>(message[i]))) {
       k = k * 10 + static_cast<std::size_t>(message[i] - '0');
       ++i;
       digits = true;
     }
-    if (digits && k < s.face_lines.size()) line = s.face_lines[k];
-  }
+    return digits && k < lines.size() ? lines[k] : 0;
+  };
+  std::size_t line = line_of("face ", s.face_lines);
+  if (line == 0 && e.code() == ErrorCode::UnusedVertex) line = line_of("vertex ", s.vertex_lines);
   return line ? s.name + ":" + std::to_string(line) + ": " + message : s.name + ": " + message;
 }
 
@@ -183,9 +189,9 @@ ConvexPolyhedron<T> build_unnamed(const io::ShapeData& s, const Pose* pose, cons
     for (const Vec3<double>& p : moved)
       reach = std::max({reach, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
     const std::string_view rounded = number_traits<T>::is_exact ? "double" : number_traits<T>::name;
-    throw InvalidInput(ErrorCode::BadScale, "as posed (at coordinates up to " + format_number(reach) +
-                                                ", rounded in " + std::string(rounded) +
-                                                " there): " + e.what());
+    throw InvalidInput(ErrorCode::BadScale,
+                       e.what() + std::string("; the pose placed the shape at coordinates up to ") +
+                           format_number(reach) + ", rounded in " + std::string(rounded) + " there");
   }
 }
 
@@ -198,7 +204,7 @@ std::vector<Vec3<T>> shape_points(const io::ShapeData& s, const Pose* pose = nul
   try {
     return detail::world_points<T>(s, pose);
   } catch (const InvalidInput& e) {
-    throw InvalidInput(e.code(), detail::located_message(s, e.what()));
+    throw InvalidInput(e.code(), detail::located_message(s, e));
   }
 }
 
@@ -209,7 +215,7 @@ ConvexPolyhedron<T> build_shape(const io::ShapeData& s, const Pose* pose = nullp
   try {
     return detail::build_unnamed<T>(s, pose, centre ? *centre : Vec3<T>(T(0), T(0), T(0)));
   } catch (const InvalidInput& e) {
-    throw InvalidInput(e.code(), detail::located_message(s, e.what()));
+    throw InvalidInput(e.code(), detail::located_message(s, e));
   }
 }
 

@@ -57,6 +57,7 @@ ShapeData object_shape(const ShapeData& all, const std::string& name, const std:
     if (renumber[v] < 0) continue;
     renumber[v] = static_cast<int>(out.vertices.size());
     out.vertices.push_back(all.vertices[v]);
+    out.vertex_lines.push_back(all.vertex_lines[v]);
   }
   for (const std::size_t f : faces) {
     std::vector<int> loop;
@@ -104,6 +105,7 @@ std::vector<ObjObject> read_obj_objects(std::istream& in, const std::string& nam
           (void)parse_double(r, tok[c], [&] { return "a colour value of " + what; });
       }
       out.vertices.push_back(p);
+      out.vertex_lines.push_back(r.line_number());
     } else if (tok[0] == "f") {
       const std::string what = "face " + std::to_string(out.faces.size() + 1);
       if (tok.size() - 1 < 3) {

@@ -91,6 +91,7 @@ ShapeData read_off(std::istream& in, const std::string& name) {
                           [&] { return "coordinate " + std::string(1, "xyz"[c]) + " of " + what; });
     }
     out.vertices.push_back(p);
+    out.vertex_lines.push_back(r.line_number());
   }
 
   for (long long f = 0; f < nf; ++f) {

@@ -454,7 +454,10 @@ void read_body(const Header& h, const std::string& name, std::size_t vertex_elem
       Vec3<double> p(0, 0, 0);
       std::vector<int> loop;
       const std::size_t line = read(e, roles, i, p, loop);
-      if (vertex) out.vertices.push_back(p);
+      if (vertex) {
+        out.vertices.push_back(p);
+        out.vertex_lines.push_back(line);
+      }
       if (face) {
         out.faces.push_back(std::move(loop));
         out.face_lines.push_back(line);

@@ -183,6 +183,7 @@ ShapeData as_points(ShapeData d, const std::string& spec) {
   d.name = spec;
   d.faces.clear();
   d.face_lines.clear();
+  d.vertex_lines.clear();
   return d;
 }
 

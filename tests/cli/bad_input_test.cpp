@@ -149,6 +149,21 @@ TEST_CASE("bad input: a pose that moves a point beyond double's range", "[bad_in
   }
 }
 
+TEST_CASE("bad input: a vertex on no face is named with its line", "[bad_input]") {
+  // OFF and ASCII PLY: the unused vertex is the file's fifth (index 4), on line 7 and 14.  (An OBJ's
+  // object takes the vertices its faces use: an unused one is dropped.)
+  const std::string off = test::temp_file(
+      "unused.off", "OFF\n5 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n5 5 5\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const std::string ply =
+      test::temp_file("unused.ply",
+                      "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\n"
+                      "property float y\nproperty float z\nelement face 4\n"
+                      "property list uchar int vertex_indices\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n0 0 1\n5 5 5\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  check_run({"info", off}, 3, "unused.off:7: vertex 4 is on no face");
+  check_run({"info", ply}, 3, "unused.ply:14: vertex 4 is on no face");
+}
+
 TEST_CASE("bad input: 1e300 coordinates", "[bad_input]") {
   // A face list at 1e300 is a valid shape in double and exactly: the same
   // answer both ways.  float cannot hold it: an error naming the coordinate.

@@ -74,25 +74,31 @@ TEST_CASE("exit status: query gives 0, 1 (a batch line failed), 2 and 3", "[exit
             "malformed.off:5: bad number 'oops'"},
            {{"query", "--batch", "/nonexistent/lines.jsonl"}, 3, "", "/nonexistent/lines.jsonl: cannot open"},
            // a unit cube posed 1e19 away: its coordinates round to a spacing of 2048 in double, so its
-           // faces have no plane, in double and in the exact run on the same coordinates; the error says
-           // where the pose placed it (the shape is built about its centre, at small coordinates)
+           // faces have no plane, in double and in the exact run on the same coordinates; the error ends
+           // by saying where the pose placed it (the shape is built about its centre, at small coordinates)
            {{"query", "box:1e20,1e20,1e20", "cube", "--pose", "0", "1e19", "0"},
             3,
             "",
-            "cube: as posed (at coordinates up to 1e+19, rounded in double there): face 0 has no plane at "
-            "these "
-            "coordinates"},
+            "cube: face 0 has no plane at these coordinates"},
            {{"query", "box:1e20,1e20,1e20", "cube", "--pose", "0", "1e19", "0", "--number", "exact"},
             3,
             "",
-            "cube: as posed (at coordinates up to 1e+19, rounded in double there): face 0 has no plane at "
-            "these "
-            "coordinates"},
+            "cube: face 0 has no plane at these coordinates"},
            {{"query", "triangle", "cube", "--pose", "1e8", "-1e8", "0", "--number", "float", "--robust"},
             3,
             "",
-            "cube: as posed (at coordinates up to 100000001, rounded in float there): face 0 has no plane at "
-            "these coordinates: its plane vertices 0, 3, 2 are collinear in float"},
+            "cube: face 0 has no plane at these coordinates: its plane vertices 0, 3, 2 are collinear in "
+            "float"},
+           {{"query", "triangle", "cube", "--pose", "1e8", "-1e8", "0", "--number", "float"},
+            3,
+            "",
+            "wider number type; the pose placed the shape at coordinates up to 100000001, rounded in float "
+            "there"},
+           {{"query", "box:1e20,1e20,1e20", "cube", "--pose", "0", "1e19", "0", "--number", "exact"},
+            3,
+            "",
+            "wider number type; the pose placed the shape at coordinates up to 1e+19, rounded in double "
+            "there"},
        })
     check_program(e);
 }
@@ -106,9 +112,12 @@ TEST_CASE("exit status: info gives 0, 2 and 3", "[exit]") {
            {{"info", "cube", "--pose", "1e308", "0", "0"},
             3,
             "",
-            "sepax info: error: cube: as posed (at coordinates up to 1e+308, rounded in double there): face "
-            "0 has "
-            "no plane at these coordinates"},
+            "sepax info: error: cube: face 0 has no plane at these coordinates: its plane vertices 0, 3, 2 "
+            "are "
+            "collinear in double (extent 2.83, coordinates up to 1): the shape is too small for its distance "
+            "from the origin in this type; place it nearer the origin of its frame or use a wider number "
+            "type; "
+            "the pose placed the shape at coordinates up to 1e+308, rounded in double there"},
            {{"info", kData + "malformed.off"}, 3, "", "malformed.off:5: "},
            // a file of several objects lists them, as text or as JSON
            {{"info", kData + "vhacd_pieces.obj"}, 0, "2  convex_2: 14 vertices, 24 faces in the file", ""},
