@@ -17,12 +17,12 @@ namespace sepax::cli::io {
 struct ShapeData {
   enum class Kind { Faces, Points };
   Kind kind = Kind::Faces;
-  std::string name;                     // file name or built-in spec, for messages
-  std::vector<Vec3<double>> vertices;   // Faces: the vertices; Points: the point set
-  std::vector<std::vector<int>> faces;  // Faces only: 0-based vertex indices, CCW from outside
-  std::vector<std::size_t> face_lines;  // Faces read from a file: the line of each face (0 if none)
+  std::string name;                       // file name or built-in spec, for messages
+  std::vector<Vec3<double>> vertices;     // Faces: the vertices; Points: the point set
+  std::vector<std::vector<int>> faces;    // Faces only: 0-based vertex indices, CCW from outside
+  std::vector<std::size_t> face_lines;    // Faces read from a file: the line of each face (0 if none)
   std::vector<std::size_t> vertex_lines;  // Faces read from a file: the line of each vertex (0 if none)
-  bool from_file = false;               // read from a mesh file (errors suggest hull:)
+  bool from_file = false;                 // read from a mesh file (errors suggest hull:)
 
   /// The face list to build: a single face is that face as a double-sided
   /// polygon (sepax's flat shape: the loop and the same loop reversed), so a
