@@ -170,7 +170,7 @@ TEST_CASE("sat runner: the robust policy decides what exact arithmetic decides o
   CHECK(run_sat(cube, cube, &touch, config(NumberKind::Exact, AlgorithmKind::Gauss)).overlap);
 }
 
-TEST_CASE("shape builder: face-list errors name the file and the line of the face", "[runner]") {
+TEST_CASE("shape builder: face-list errors name the file and the line of the face or vertex", "[runner]") {
   std::istringstream in(
       "OFF\n4 4 6\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n"
       "3 0 1 2\n3 0 3 1\n3 0 2 2\n3 1 3 2\n");
@@ -179,12 +179,13 @@ TEST_CASE("shape builder: face-list errors name the file and the line of the fac
     INFO(name(n));
     CHECK_THROWS_WITH(shape_counts(d, n), Catch::StartsWith("tet.off:9: face 2 uses vertex 2 twice"));
   }
-  // an error that names no face gets the file name only
+  // a vertex on no face is named with its line (validation numbers the file's vertices as given)
   std::istringstream in2(
       "OFF\n5 4 6\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n0 0 0\n"
       "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
   const auto d2 = io::read_off(in2, "tet5.off");
-  CHECK_THROWS_WITH(shape_counts(d2, NumberKind::Double), Catch::StartsWith("tet5.off: "));
+  CHECK_THROWS_WITH(shape_counts(d2, NumberKind::Double),
+                    Catch::StartsWith("tet5.off:7: vertex 4 is on no face"));
   CHECK_THROWS_AS(shape_counts(d2, NumberKind::Exact), InvalidInput);
   // inward faces
   std::istringstream in3(
