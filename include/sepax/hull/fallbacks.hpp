@@ -116,7 +116,17 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
   // the smallest no smaller, and (rounding is monotone) the subset's
   // difference is at most range's u - l.  A normal whose subset difference
   // already exceeds the bar cannot be chosen: skipping it changes nothing.
+  // (Less a margin for a dot product evaluated here with FMA contraction and
+  // there without, or the other way: each evaluation of the 3-term dot of a
+  // unit n and x is within 3u sum |n_i x_i| <= 3 sqrt(3) u M of the exact
+  // value, M the largest |coordinate| of any point (attained by an axis's
+  // extreme point, a probe), so two differ by at most 6 sqrt(3) u M < 2^-49 M
+  // for double u = 2^-53; 2^-44 M covers both ends with room to spare.)
   const std::vector<int> probes = extreme_points();
+  double reach = 0;
+  for (const int i : probes)
+    for (int c = 0; c < 3; ++c) reach = std::max(reach, std::abs(to_double(local_point(i)[c])));
+  const double margin = 0x1p-44 * reach;
   auto probed_width = [&](const Vec3<double>& n) {
     double l = 1e300, u = -1e300;
     for (const int i : probes) {
@@ -124,7 +134,7 @@ inline bool Builder<T>::thin_plane(const ConvexPolyhedron<T>& h, Vec3<double>& n
       l = std::min(l, t);
       u = std::max(u, t);
     }
-    return u - l;
+    return (u - l) - margin;
   };
   for (const auto& fc : faces) {
     if (squared_norm(fc.n) == 0 || !(probed_width(fc.n) < hi - lo)) continue;
